@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# The README's test command: installs what is missing, builds with warnings as errors, and runs
+# the whole suite (unit, GL and replay tests) under Xvfb with Mesa's llvmpipe.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+"$root/.ci/deps.sh"
+"$root/.ci/build.sh" -DVDFX_WERROR=ON
+build=${VDFX_BUILD_DIR:-$root/build}
+cd "$build"
+# GL tests need a display; they are never skipped silently: without one they fail.
+export LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe
+if [ -z "${DISPLAY:-}" ]; then
+  exec xvfb-run -a -s "-screen 0 1920x1080x24" ctest --output-on-failure -j "${VDFX_JOBS:-$(nproc)}" "$@"
+fi
+exec ctest --output-on-failure -j "${VDFX_JOBS:-$(nproc)}" "$@"

@@ -1,0 +1,61 @@
+#include "app/commands.h"
+
+#include <exception>
+#include <iostream>
+
+#include "io/input_error.h"
+
+namespace vdfx::app {
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> list = {
+      {"eval", "print the interpolated parameters of every effect at given views", cmd_eval},
+      {"render", "render one view of a panorama or video frame to a PNG", cmd_render},
+      {"validate", "check a sidecar file; list every problem", cmd_validate},
+  };
+  return list;
+}
+
+namespace {
+void print_help(std::ostream& out) {
+  out << "vdfx: author view-dependent effects for 360-degree video\n\n"
+         "usage: vdfx COMMAND [ARGS...]   (vdfx COMMAND --help for its options)\n\ncommands:\n";
+  for (const auto& c : commands()) {
+    std::string name = c.name;
+    name.resize(10, ' ');
+    out << "  " << name << c.summary << "\n";
+  }
+  out << "\nexit codes: 0 success, 1 the input was wrong, 2 usage error, 3 internal error\n";
+}
+}  // namespace
+
+int run_main(const Args& args) {
+  if (args.empty()) {
+    print_help(std::cerr);
+    return kExitUsage;
+  }
+  if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    print_help(std::cout);
+    return kExitOk;
+  }
+  if (args[0] == "--version") {
+    std::cout << "vdfx 0.1.0\n";
+    return kExitOk;
+  }
+  for (const auto& c : commands()) {
+    if (args[0] != c.name) continue;
+    try {
+      return c.run(Args(args.begin() + 1, args.end()));
+    } catch (const io::InputError& e) {
+      std::cerr << "vdfx " << c.name << ": " << e.what() << "\n";
+      return kExitBadInput;
+    } catch (const std::exception& e) {
+      std::cerr << "vdfx " << c.name << ": internal error: " << e.what() << "\n";
+      return kExitInternal;
+    }
+  }
+  std::cerr << "vdfx: unknown command '" << args[0] << "' (vdfx --help lists them)\n";
+  return kExitUsage;
+}
+
+}  // namespace vdfx::app

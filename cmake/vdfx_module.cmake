@@ -1,0 +1,25 @@
+# One static library per top-level folder (style: Monado's drivers/CMakeLists.txt).
+# Every .cpp in the folder belongs to the library, so adding a file needs no CMake edit.
+
+function(vdfx_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -pedantic)
+  if(VDFX_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()
+
+# vdfx_add_module(NAME [PUBLIC_LIBS libs...] [PRIVATE_LIBS libs...] [EXCLUDE_REGEX regex])
+function(vdfx_add_module name)
+  cmake_parse_arguments(ARG "" "EXCLUDE_REGEX" "PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.cpp")
+  if(ARG_EXCLUDE_REGEX)
+    list(FILTER sources EXCLUDE REGEX "${ARG_EXCLUDE_REGEX}")
+  endif()
+  add_library(vdfx_${name} STATIC ${sources})
+  add_library(vdfx::${name} ALIAS vdfx_${name})
+  # Includes are written as "effects/rbf_interpolator.h", relative to the repository root.
+  target_include_directories(vdfx_${name} PUBLIC "${PROJECT_SOURCE_DIR}")
+  target_link_libraries(vdfx_${name} PUBLIC ${ARG_PUBLIC_LIBS} PRIVATE ${ARG_PRIVATE_LIBS})
+  target_compile_definitions(vdfx_${name} PUBLIC VDFX_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  vdfx_warnings(vdfx_${name})
+endfunction()
