@@ -22,12 +22,26 @@ inline bool operator==(const Direction& a, const Direction& b) {
   return a.azimuth_deg == b.azimuth_deg && a.altitude_deg == b.altitude_deg;
 }
 
+/// How the angular part dsigma of the RBF distance is measured between two unit directions.
+/// Geodesic is the paper's angle; Chordal is |n_a - n_b| = 2 sin(angle / 2), which makes the
+/// whole distance Euclidean in (x, y, z, t) and so keeps the RBF system well-posed
+/// (docs/interpolation.md says why and what it changes).
+enum class AngularDistance { Chordal, Geodesic };
+
 /// Contract: phi(d) = d^exponent; dt = |f_v - f_k| * (24 / fps) * time_scale.
 struct InterpolationSettings {
   double exponent = 1.0;
   double time_scale = 1.0;
+  AngularDistance distance = AngularDistance::Chordal;  //!< sidecar extension "distance"
   bool operator==(const InterpolationSettings&) const = default;
 };
+
+/// Accepted ranges (sidecar validation and the RBF agree on these). Exponent 2 is accepted and
+/// handled explicitly by the solver (r^2 is a polynomial kernel; see docs/interpolation.md).
+inline constexpr double kExponentMin = 0.0;  //!< exclusive
+inline constexpr double kExponentMax = 4.0;  //!< exclusive
+inline constexpr double kTimeScaleMin = 0.0;  //!< exclusive: time must separate frames
+inline constexpr double kTimeScaleMax = 1000.0;
 
 /// One effect's keyframe set as stored in a sidecar.
 struct EffectTrack {
