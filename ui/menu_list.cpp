@@ -38,6 +38,7 @@ void MenuList::set_scroll(int first) {
 void MenuList::select(int index) {
   if (items_.empty()) return set(selected_, 0);
   set(selected_, std::clamp(index, 0, static_cast<int>(items_.size()) - 1));
+  if (rect().empty()) return;  // scrolled into view once laid out
   if (selected_ < scroll_) set_scroll(selected_);
   if (selected_ >= scroll_ + visible_rows()) set_scroll(selected_ - visible_rows() + 1);
 }

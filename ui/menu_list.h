@@ -39,6 +39,7 @@ class MenuList : public Widget {
   static constexpr double kRepeatSeconds = 0.2;
 
  private:
+  void layout_changed() override { select(selected_); }
   std::vector<std::string> items_;
   int selected_;
   double row_h_;

@@ -6,6 +6,7 @@
 #include "ui/font.h"
 #include "ui/theme.h"
 
+#include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
@@ -13,7 +14,7 @@
 namespace vdfx::ui {
 
 namespace {
-constexpr double kTitleH = 56.0;
+constexpr double kTitleH = 72.0;
 }
 
 Minimap::Minimap(std::string id, std::string title)
@@ -47,7 +48,7 @@ void Minimap::set_view(effects::Direction forward, double hfov_deg, double vfov_
 
 Rect Minimap::map_area() const {
   const Rect r = rect().inset(16.0);
-  const Rect avail{r.x, r.y + kTitleH, r.w, r.h - kTitleH};
+  const Rect avail{r.x, rect().y + kTitleH, r.w, r.bottom() - rect().y - kTitleH};
   const double w = std::min(avail.w, 2.0 * avail.h);
   return {avail.centre().x - 0.5 * w, avail.y + 0.5 * (avail.h - 0.5 * w), w, 0.5 * w};
 }
@@ -92,7 +93,7 @@ void Minimap::draw(DrawContext& ctx) const {
   const Rect r = rect();
   c.fill_rounded_rect(r, t.corner_radius, t.surface);
   c.text(*ctx.fonts.regular, t.font_body, title_,
-         {r.x + t.padding, r.y + 12, r.w - 2 * t.padding, kTitleH - 8}, Align::Left, t.text);
+         {r.x + t.padding, r.y + 8, r.w - 2 * t.padding, 56}, Align::Left, t.text);
   const Rect a = map_area();
   if (!image_.empty()) c.image(image_, a, ChannelOrder::Bgr);
   else c.fill_rect(a, t.surface_pressed);

@@ -11,7 +11,7 @@
 namespace vdfx::ui {
 
 namespace {
-constexpr double kTitleH = 56.0, kAxisW = 110.0, kAxisH = 48.0;
+constexpr double kTitleH = 84.0, kAxisW = 110.0, kAxisH = 48.0;
 }
 
 Plot::Plot(std::string id, std::string title, double y_min, double y_max, const char* y_format)
@@ -33,8 +33,7 @@ void Plot::draw(DrawContext& ctx) const {
   Canvas& c = ctx.canvas;
   const Rect r = rect();
   c.fill_rounded_rect(r, t.corner_radius, t.surface);
-  c.text(*ctx.fonts.regular, t.font_body, title_, {r.x + t.padding, r.y + 4, r.w - 2 * t.padding,
-                                                   kTitleH - 4},
+  c.text(*ctx.fonts.regular, t.font_body, title_, {r.x + t.padding, r.y + 8, r.w - 2 * t.padding, 56},
          Align::Left, t.text);
   const Rect a = plot_area();
   const int n = static_cast<int>(values_.size());
@@ -61,7 +60,7 @@ void Plot::draw(DrawContext& ctx) const {
   std::vector<glm::dvec2> pts;
   pts.reserve(values_.size());
   for (int i = 0; i < n; ++i) pts.push_back({xf(i), yf(values_[static_cast<size_t>(i)])});
-  c.push_clip(a.inset(-4.0));
+  c.push_clip(a.inset(-14.0));  // room for keyframe dots at the ends
   c.polyline(pts, 4.0, t.plot_line);
   for (int f : keyframes_)
     if (f >= 0 && f < n) {

@@ -129,10 +129,12 @@ void Pad2D::draw(DrawContext& ctx) const {
     ctx.canvas.line({gx, a.y + 4}, {gx, a.bottom() - 4}, 2.0, t.track);
     ctx.canvas.line({a.x + 4, gy}, {a.right() - 4, gy}, 2.0, t.track);
   }
+  ctx.canvas.push_clip(a);
   const double px = a.x + (value_.x - x_.min) / (x_.max - x_.min) * a.w;
   const double py = a.bottom() - (value_.y - y_.min) / (y_.max - y_.min) * a.h;
   ctx.canvas.line({px, a.y}, {px, a.bottom()}, 3.0, t.accent.with_alpha(0.6f));
   ctx.canvas.line({a.x, py}, {a.right(), py}, 3.0, t.accent.with_alpha(0.6f));
+  ctx.canvas.pop_clip();
   const double rad = hovered() || pressed() ? kThumbRadius + 3.0 : kThumbRadius;
   ctx.canvas.fill_circle({px, py}, rad, t.text);
   ctx.canvas.stroke_circle({px, py}, rad - 3.0, 6.0, t.accent);

@@ -90,9 +90,11 @@ void TimelineStrip::draw(DrawContext& ctx) const {
     c.pop_clip();
   }
   if (focused()) c.stroke_rounded_rect(tr.inset(-6.0), 12.0, t.focus_width, t.accent);
-  // Keyframe diamonds on a rail below the thumbnails.
+  // Keyframe diamonds on a rail below the thumbnails, over the playhead line.
   const double my = tr.bottom() + 0.5 * kMarkerBand;
+  const double px = x_of(playhead_);
   c.line({tr.x, my}, {tr.right(), my}, 3.0, t.track);
+  c.line({px, tr.y}, {px, tr.bottom() + kMarkerBand}, pressed() ? 6.0 : 4.0, t.playhead);
   for (int f : keyframes_) {
     const bool hi = f == playhead_ ||
                     std::find(highlighted_.begin(), highlighted_.end(), f) != highlighted_.end();
@@ -110,8 +112,6 @@ void TimelineStrip::draw(DrawContext& ctx) const {
   c.text(*ctx.fonts.regular, t.font_small, std::to_string(frame_count_ - 1),
          {lab.right() - kSide - 190, lab.y, 200, lab.h}, Align::Right, t.text_muted);
   // Playhead: a line over the thumbnails with a handle on top.
-  const double px = x_of(playhead_);
-  c.line({px, tr.y}, {px, tr.bottom() + kMarkerBand}, pressed() ? 6.0 : 4.0, t.playhead);
   const glm::dvec2 head[3] = {{px - 16, tr.y}, {px + 16, tr.y}, {px, tr.y + 22}};
   c.fill_convex(head, t.playhead);
   const std::string ftxt = "frame " + std::to_string(playhead_);

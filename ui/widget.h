@@ -53,7 +53,12 @@ class Widget {
 
   const std::string& id() const { return id_; }
   const Rect& rect() const { return rect_; }
-  void set_rect(const Rect& r) { set(rect_, r); }
+  void set_rect(const Rect& r) {
+    if (rect_ == r) return;
+    rect_ = r;
+    touch();
+    layout_changed();
+  }
 
   bool hovered() const { return hovered_; }
   bool pressed() const { return pressed_; }
@@ -90,6 +95,8 @@ class Widget {
   virtual void draw(DrawContext& ctx) const = 0;
 
  protected:
+  /// Called after the rectangle changed (widgets whose state depends on their size).
+  virtual void layout_changed() {}
   void touch() { ++revision_; }
   template <class T>
   void set(T& field, const T& v) {
