@@ -99,14 +99,20 @@ void Canvas::blend(int x, int y, float coverage, const float pm[4]) {
 }
 
 template <class Distance>
-void Canvas::fill_distance(const Rect& bounds, Rgba c, Distance&& dist) {
+void Canvas::fill_distance(const Rect& bounds, Rgba c, Distance&& dist,
+                           std::span<const Rect> solid) {
   if (c.a <= 0.f) return;
   float pm[4];
   premultiply(c, pm);
   const PixelBox b = pixel_box(bounds.inset(-1.0));
   for (int y = b.y0; y < b.y1; ++y)
     for (int x = b.x0; x < b.x1; ++x) {
-      const double d = dist(glm::dvec2(x + 0.5, y + 0.5));
+      const glm::dvec2 centre(x + 0.5, y + 0.5);
+      if (std::any_of(solid.begin(), solid.end(), [&](const Rect& s) { return s.contains(centre); })) {
+        blend(x, y, 1.f, pm);
+        continue;
+      }
+      const double d = dist(centre);
       const float cov = static_cast<float>(std::clamp(0.5 - d, 0.0, 1.0));
       if (cov > 0.f) blend(x, y, cov, pm);
     }
@@ -114,7 +120,11 @@ void Canvas::fill_distance(const Rect& bounds, Rgba c, Distance&& dist) {
 
 void Canvas::fill_rounded_rect(const Rect& r, double radius, Rgba c) {
   if (r.empty()) return;
-  fill_distance(r, c, [&](glm::dvec2 p) { return rounded_box_distance(p, r, radius); });
+  // The cross of the rectangle minus its corner squares, shrunk by half a pixel, is solid.
+  const double rad = std::clamp(radius, 0.0, 0.5 * std::min(r.w, r.h)) + 0.5;
+  const Rect solid[2] = {{r.x + 0.5, r.y + rad, r.w - 1.0, r.h - 2 * rad},
+                         {r.x + rad, r.y + 0.5, r.w - 2 * rad, r.h - 1.0}};
+  fill_distance(r, c, [&](glm::dvec2 p) { return rounded_box_distance(p, r, radius); }, solid);
 }
 
 void Canvas::stroke_rounded_rect(const Rect& r, double radius, double width, Rgba c) {

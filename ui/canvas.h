@@ -73,8 +73,11 @@ class Canvas {
                Rgba c);
 
  private:
+  /// Pixels whose centres lie in one of the `solid` rectangles are known to be fully covered and
+  /// skip the distance evaluation (panel backgrounds are mostly interior).
   template <class Distance>
-  void fill_distance(const Rect& bounds, Rgba c, Distance&& dist);
+  void fill_distance(const Rect& bounds, Rgba c, Distance&& dist,
+                     std::span<const Rect> solid = {});
   void blend(int x, int y, float coverage, const float premul[4]);
   struct PixelBox {
     int x0, y0, x1, y1;
