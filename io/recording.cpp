@@ -260,8 +260,8 @@ Recording parse_recording(std::istream& in, const std::string& name) {
     Json obj;
     try {
       obj = Json::parse(line);
-    } catch (const Json::parse_error& e) {
-      if (!terminated && have_header) {
+    } catch (const Json::exception& e) {  // syntax errors, and numbers beyond double (1e999)
+      if (!terminated && have_header && e.id >= 100 && e.id < 200) {
         // A crash while writing leaves a partial last line; the rest is still good.
         rec.warnings.push_back(name + ":" + std::to_string(line_no) +
                                ": truncated last line ignored (" + e.what() + ")");
