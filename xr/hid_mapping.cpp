@@ -108,11 +108,13 @@ void HidInputMapper::advance(std::int64_t t_ns) {
     const glm::dvec2 look = apply_deadzone({pad_.left_stick[0], pad_.left_stick[1]}, config_.stick_deadzone);
     const double yaw = -look.x * config_.look_rate_deg_s * dt * kDegToRad;  // stick right: turn right
     const double pitch = look.y * config_.look_rate_deg_s * dt * kDegToRad;
-    // Yaw about the world up axis, pitch about the head's own x axis; refuse pitch past the poles.
+    // Yaw about the world up axis, pitch about the head's own x axis.
     head_q_ = glm::normalize(glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * head_q_);
-    const glm::dquat pitched = glm::normalize(head_q_ * glm::angleAxis(pitch, glm::dvec3(1, 0, 0)));
-    const glm::dvec3 f = pitched * glm::dvec3(0, 0, -1);
-    if (std::abs(std::asin(std::clamp(f.y, -1.0, 1.0))) <= kMaxPitchDeg * kDegToRad) head_q_ = pitched;
+    // Clamp the resulting altitude rather than the step, so long steps stop at the limit.
+    const double alt = std::asin(std::clamp((head_q_ * glm::dvec3(0, 0, -1)).y, -1.0, 1.0));
+    const double limit = kMaxPitchDeg * kDegToRad;
+    const double step = std::clamp(alt + pitch, -limit, limit) - alt;
+    head_q_ = glm::normalize(head_q_ * glm::angleAxis(step, glm::dvec3(1, 0, 0)));
   }
 
   const glm::dvec3 omega = spacemouse_to_openxr(spacemouse_.rotation, config_.spacemouse_deadzone) *
