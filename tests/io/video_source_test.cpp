@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+#include <mutex>
 #include <set>
 #include <thread>
 
@@ -64,9 +65,13 @@ fs::path write_video(const fs::path& dir, const std::string& name, int fourcc, i
 const int kMjpg = cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
 const int kMp4v = cv::VideoWriter::fourcc('m', 'p', '4', 'v');
 
+/// Warnings arrive on the decode thread: collected under a lock.
+std::mutex warnings_mutex;
+
 VideoSourceOptions quiet(std::vector<std::string>* warnings = nullptr) {
   VideoSourceOptions o;
   o.on_warning = [warnings](const std::string& w) {
+    std::lock_guard lock(warnings_mutex);
     if (warnings) warnings->push_back(w);
   };
   return o;
@@ -189,11 +194,13 @@ TEST(VideoSource, PausedDecodesOnlyWhatIsAskedFor) {
   EXPECT_EQ(frame_code(g->image), 21);
 }
 
-/// A decoder that fails on chosen frames and can be slow: the worker's error and timeout paths.
+/// A decoder that fails on chosen frames, and decodes frame i only once `*allowed` > i: the
+/// worker's error and timeout paths without relying on timing.
 class FakeDecoder final : public FrameDecoder {
  public:
-  FakeDecoder(std::int64_t frames, std::set<std::int64_t> bad, std::chrono::milliseconds delay = 0ms)
-      : bad_(std::move(bad)), delay_(delay) {
+  FakeDecoder(std::int64_t frames, std::set<std::int64_t> bad,
+              std::shared_ptr<std::atomic<std::int64_t>> allowed = nullptr)
+      : bad_(std::move(bad)), allowed_(std::move(allowed)) {
     props_ = {"fake.mp4", {25, 1}, frames, kW, kH, false, "fake"};
   }
   const VideoProperties& properties() const override { return props_; }
@@ -203,7 +210,7 @@ class FakeDecoder final : public FrameDecoder {
     next_ = index;
   }
   DecodeStatus read(cv::Mat& out) override {
-    std::this_thread::sleep_for(delay_);
+    while (allowed_ && *allowed_ <= next_) std::this_thread::sleep_for(1ms);
     if (next_ >= props_.frames) return DecodeStatus::End;
     const std::int64_t i = next_++;
     if (bad_.count(i)) return DecodeStatus::Error;
@@ -214,7 +221,7 @@ class FakeDecoder final : public FrameDecoder {
  private:
   VideoProperties props_;
   std::set<std::int64_t> bad_;
-  std::chrono::milliseconds delay_;
+  std::shared_ptr<std::atomic<std::int64_t>> allowed_;
   std::int64_t next_ = 0;
 };
 
@@ -229,6 +236,7 @@ TEST(VideoSource, MidStreamDecodeErrorIsSkippedWithAWarning) {
   ASSERT_TRUE(f6);
   EXPECT_EQ(frame_code(f6->image), 6);
   EXPECT_GE(src.stats().decode_errors, 1);
+  std::lock_guard lock(warnings_mutex);
   ASSERT_FALSE(warnings.empty());
   EXPECT_NE(warnings[0].find("frame 5 could not be decoded"), std::string::npos) << warnings[0];
   EXPECT_FALSE(src.stats().ended_early);
@@ -250,15 +258,24 @@ TEST(VideoSource, RunOfErrorsEndsTheStreamThere) {
 }
 
 TEST(VideoSource, SlowDecodeTimesOutInsteadOfBlocking) {
-  VideoSource src(std::make_unique<FakeDecoder>(10, std::set<std::int64_t>{}, 300ms), quiet());
-  EXPECT_FALSE(src.frame_at(0, 1ms).has_value());  // not decoded yet: no frame, no hang
+  auto allowed = std::make_shared<std::atomic<std::int64_t>>(0);
+  VideoSource src(std::make_unique<FakeDecoder>(10, std::set<std::int64_t>{}, allowed), quiet());
+  EXPECT_FALSE(src.frame_at(0, 20ms).has_value());  // not decoded yet: no frame, no hang
+  *allowed = 1;
   const auto f = src.frame_at(0, 10s);
   ASSERT_TRUE(f);
   EXPECT_EQ(f->index, 0);
-  // Frame 1 is still being decoded: a zero timeout gives the newest frame <= 1 at once.
+  // Frame 1 is still "decoding": a zero timeout gives the newest frame <= 1 at once.
   const auto g = src.frame_at(1, 0ms);
   ASSERT_TRUE(g);
   EXPECT_EQ(g->index, 0);
+  const auto h = src.frame_at(1, 20ms);
+  ASSERT_TRUE(h);
+  EXPECT_EQ(h->index, 0);
+  *allowed = 100;  // let the worker finish so the source can stop
+  const auto k = src.frame_at(1, 10s);
+  ASSERT_TRUE(k);
+  EXPECT_EQ(k->index, 1);
 }
 
 TEST(VideoSource, StillImageIsAOneFrameVideo) {
