@@ -39,9 +39,20 @@ VideoSource::~VideoSource() {
 }
 
 void VideoSource::warn(const std::string& message) {
-  const std::string line = props_.path.string() + ": " + message;
-  if (options_.on_warning) options_.on_warning(line);
-  else std::cerr << "vdfx: warning: " << line << "\n";
+  pending_warnings_.push_back(props_.path.string() + ": " + message);
+}
+
+void VideoSource::flush_warnings(std::unique_lock<std::mutex>& lock) {
+  if (pending_warnings_.empty()) return;
+  std::vector<std::string> lines;
+  lines.swap(pending_warnings_);
+  // Outside the lock: the callback may take its own locks or ask the source for stats.
+  lock.unlock();
+  for (const std::string& line : lines) {
+    if (options_.on_warning) options_.on_warning(line);
+    else std::cerr << "vdfx: warning: " << line << "\n";
+  }
+  lock.lock();
 }
 
 bool VideoSource::wants_decode() const {
@@ -53,6 +64,7 @@ bool VideoSource::wants_decode() const {
 void VideoSource::run() {
   std::unique_lock lock(mutex_);
   while (true) {
+    flush_warnings(lock);
     changed_.wait(lock, [&] { return stop_ || seek_pending_ || wants_decode(); });
     if (stop_) return;
 
@@ -170,11 +182,10 @@ std::optional<VideoFrame> VideoSource::frame_at(std::int64_t index,
     // Will `index` arrive without a seek? Only if nothing else is queued before it and the
     // decoder is a little before it.
     // At the end of a looping video the decoder is about to wrap to frame 0.
-    const std::optional<std::int64_t> upcoming =
-        at_end_ ? (loop_ && limit_ > 1 ? std::optional<std::int64_t>(0) : std::nullopt)
-                : std::optional<std::int64_t>(next_);
-    const bool coming = queue_.empty() && !seek_pending_ && upcoming && *upcoming <= index &&
-                        index - *upcoming <= options_.max_wait_ahead;
+    // -1: nothing more comes.
+    const std::int64_t upcoming = at_end_ ? (loop_ && limit_ > 1 ? 0 : -1) : next_;
+    const bool coming = queue_.empty() && !seek_pending_ && upcoming >= 0 && upcoming <= index &&
+                        index - upcoming <= options_.max_wait_ahead;
     const bool pending = seek_pending_ && next_ == std::clamp<std::int64_t>(index, 0, limit_ - 1);
     const bool beyond_end = index >= limit_ && queue_.empty() && !loop_ && (at_end_ || next_ >= limit_);
     if (!coming && !pending) {

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "io/frame_decoder.h"
 #include "io/frame_queue.h"
@@ -29,8 +30,8 @@ struct VideoSourceOptions {
   /// This many failed frames in a row end the stream there (a truncated file).
   int max_consecutive_errors = 8;
   bool loop = false;
-  /// Warnings (skipped frames, early end). Called on the decode thread with the source's lock
-  /// held: it must not call back into the source. Default: a line on std::cerr.
+  /// Warnings (skipped frames, early end), each naming the file. Called on the decode thread,
+  /// without the source's lock held. Default: a line on std::cerr.
   std::function<void(const std::string&)> on_warning;
 };
 
@@ -73,7 +74,8 @@ class VideoSource {
   void run();
   bool wants_decode() const;
   void request_seek(std::int64_t index);
-  void warn(const std::string& message);
+  void warn(const std::string& message);  //!< queued; the worker reports it unlocked
+  void flush_warnings(std::unique_lock<std::mutex>& lock);
 
   std::unique_ptr<FrameDecoder> decoder_;
   VideoSourceOptions options_;
@@ -94,6 +96,7 @@ class VideoSource {
   bool stop_ = false;
   int consecutive_errors_ = 0;
   VideoStats stats_;
+  std::vector<std::string> pending_warnings_;
   std::thread worker_;
 };
 
