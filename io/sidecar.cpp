@@ -1,0 +1,97 @@
+/// @file
+/// @brief Sidecar reading and writing (format 1).
+#include "io/sidecar.h"
+
+#include "io/atomic_file.h"
+#include "io/input_error.h"
+#include "io/sidecar_validate.h"
+
+namespace vdfx::io {
+
+namespace {
+
+using ordered = nlohmann::ordered_json;
+
+ordered interpolation_json(const effects::InterpolationSettings& s) {
+  ordered j;
+  j["exponent"] = s.exponent;
+  j["time_scale"] = s.time_scale;
+  // The extension is written only when it differs from the default, so files that do not use
+  // it stay plain format 1 for readers that do not know it.
+  if (s.distance == effects::AngularDistance::Geodesic) j["distance"] = "geodesic";
+  return j;
+}
+
+/// The document in the contract's key order.
+ordered ordered_document(const Sidecar& s) {
+  ordered doc;
+  doc["format"] = kSidecarFormat;
+  doc["version"] = kSidecarVersion;
+  ordered video;
+  video["path"] = s.video.path;
+  video["fps"] = s.video.fps;
+  video["frames"] = s.video.frames;
+  video["width"] = s.video.width;
+  video["height"] = s.video.height;
+  doc["video"] = std::move(video);
+  doc["interpolation"] = interpolation_json(s.interpolation);
+  ordered effects_json = ordered::array();
+  for (const effects::EffectTrack& track : s.effects) {
+    const effects::EffectSpec& spec = effects::effect_spec(track.type);
+    ordered e;
+    e["type"] = std::string(spec.name);
+    if (track.interpolation) e["interpolation"] = interpolation_json(*track.interpolation);
+    ordered kfs = ordered::array();
+    for (const effects::Keyframe& k : track.keyframes) {
+      ordered kj;
+      kj["azimuth_deg"] = k.direction.azimuth_deg;
+      kj["altitude_deg"] = k.direction.altitude_deg;
+      kj["frame"] = k.frame;
+      ordered params = ordered::object();
+      std::size_t offset = 0;
+      for (const effects::ParamSpec& ps : spec.params) {
+        const auto at = [&](std::size_t i) {
+          // A malformed in-memory keyframe (wrong vector length) is written as neutral rather
+          // than read out of bounds; the reader would then flag nothing, so callers validate.
+          return offset + i < k.params.size() ? k.params[offset + i] : ps.neutral;
+        };
+        if (ps.size == 1) {
+          params[std::string(ps.name)] = at(0);
+        } else {
+          ordered arr = ordered::array();
+          for (int i = 0; i < ps.size; ++i) arr.push_back(at(static_cast<std::size_t>(i)));
+          params[std::string(ps.name)] = std::move(arr);
+        }
+        offset += static_cast<std::size_t>(ps.size);
+      }
+      kj["params"] = std::move(params);
+      kfs.push_back(std::move(kj));
+    }
+    e["keyframes"] = std::move(kfs);
+    effects_json.push_back(std::move(e));
+  }
+  doc["effects"] = std::move(effects_json);
+  return doc;
+}
+
+}  // namespace
+
+Sidecar read_sidecar(const std::filesystem::path& path) {
+  SidecarReport report = validate_sidecar_file(path);
+  if (!report.ok()) {
+    std::string msg = report.to_string();
+    if (!msg.empty() && msg.back() == '\n') msg.pop_back();
+    throw InputError(msg);
+  }
+  return std::move(*report.sidecar);
+}
+
+nlohmann::json to_json(const Sidecar& sidecar) { return nlohmann::json(ordered_document(sidecar)); }
+
+std::string format_sidecar(const Sidecar& sidecar) { return ordered_document(sidecar).dump(2) + "\n"; }
+
+void write_sidecar(const std::filesystem::path& path, const Sidecar& sidecar) {
+  write_file_atomic(path, format_sidecar(sidecar));
+}
+
+}  // namespace vdfx::io

@@ -1,0 +1,52 @@
+/// @file
+/// @brief The sidecar file, format 1 (contract: "Sidecar file, format 1"): data model, reading,
+/// writing. Validation with every problem listed is in io/sidecar_validate.h.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "effects/keyframe.h"
+
+namespace vdfx::io {
+
+/// The video a sidecar belongs to, as recorded when it was authored.
+struct VideoInfo {
+  std::string path;         //!< as written in the file (relative paths are relative to the sidecar)
+  double fps = 30.0;        //!< > 0
+  std::int64_t frames = 1;  //!< >= 1; keyframe frames lie in [0, frames)
+  int width = 1;            //!< > 0
+  int height = 1;           //!< > 0
+  bool operator==(const VideoInfo&) const = default;
+};
+
+struct Sidecar {
+  VideoInfo video;
+  effects::InterpolationSettings interpolation;  //!< the file's default
+  std::vector<effects::EffectTrack> effects;     //!< in file order; each type at most once
+  bool operator==(const Sidecar&) const = default;
+};
+
+inline constexpr const char* kSidecarFormat = "vdfx.sidecar";
+inline constexpr int kSidecarVersion = 1;
+
+/// Reads and validates a sidecar. Throws io::InputError listing every problem (one per line:
+/// "FILE: POINTER: what is wrong") when the file is unreadable or invalid.
+Sidecar read_sidecar(const std::filesystem::path& path);
+
+/// The document of a sidecar. Keys are sorted (nlohmann::json is a std::map); the text written
+/// by format_sidecar() keeps the contract's key order instead.
+nlohmann::json to_json(const Sidecar& sidecar);
+
+/// The text write_sidecar() writes: 2-space indented JSON in the contract's key order, shortest
+/// round-trip doubles, a final newline. write -> read -> write gives identical bytes.
+std::string format_sidecar(const Sidecar& sidecar);
+
+/// Writes format_sidecar(sidecar) atomically (io/atomic_file.h). Throws io::InputError naming the
+/// file when it cannot be written. Does not validate: callers write what they built.
+void write_sidecar(const std::filesystem::path& path, const Sidecar& sidecar);
+
+}  // namespace vdfx::io

@@ -1,0 +1,407 @@
+/// @file
+/// @brief parse_sidecar and the validate_* entry points. Effect parameters are checked from the
+/// effect specs (effects/effect_types.h), never by per-effect code, so a new effect type needs
+/// no change here.
+#include "io/sidecar_validate.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "io/json_text.h"
+
+namespace vdfx::io {
+
+using nlohmann::json;
+
+std::string Problem::to_string() const {
+  return file + ": " + (pointer.empty() ? std::string("(document)") : pointer) + ": " + message;
+}
+
+std::string SidecarReport::to_string() const {
+  std::string s;
+  for (const Problem& p : problems) s += p.to_string() + "\n";
+  return s;
+}
+
+namespace {
+
+/// A number for messages: integral values without ".0", others in shortest round-trip form.
+std::string num(double v) {
+  if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
+  return json(v).dump();
+}
+
+const char* type_name(const json& v) {
+  if (v.is_number_integer()) return "integer";
+  if (v.is_number_float()) return "number";
+  return v.type_name();
+}
+
+struct Range {
+  double lo;
+  double hi;
+  bool lo_open;
+  bool hi_open;
+  bool contains(double v) const {
+    return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+  }
+  std::string text() const {
+    return std::string(lo_open ? "(" : "[") + num(lo) + ", " + num(hi) + (hi_open ? ")" : "]");
+  }
+};
+
+class Checker {
+ public:
+  Checker(std::string file, std::vector<Problem>& out) : file_(std::move(file)), out_(out) {}
+
+  void error(const std::string& ptr, std::string msg) { out_.push_back({file_, ptr, std::move(msg)}); }
+
+  /// The object at `ptr`, or null (reported) when `v` is not an object.
+  const json* object(const json& v, const std::string& ptr) {
+    if (v.is_object()) return &v;
+    error(ptr, std::string("expected an object, found ") + type_name(v));
+    return nullptr;
+  }
+
+  /// Reports every key that is not in `known` (a reader must never silently drop data).
+  void only_keys(const json& obj, const std::string& ptr, std::initializer_list<const char*> known) {
+    for (const auto& [k, v] : obj.items()) {
+      bool ok = false;
+      for (const char* n : known) ok = ok || k == n;
+      if (!ok) {
+        std::string list;
+        for (const char* n : known) list += std::string(list.empty() ? "" : ", ") + n;
+        error(ptr + "/" + json_pointer_token(k), "unknown field \"" + k + "\" (expected: " + list + ")");
+      }
+    }
+  }
+
+  /// The member `key` of `obj`; reports it when missing and `required`.
+  const json* member(const json& obj, const std::string& ptr, const char* key, bool required = true) {
+    const auto it = obj.find(key);
+    if (it != obj.end()) return &*it;
+    if (required) error(ptr, std::string("missing field \"") + key + "\"");
+    return nullptr;
+  }
+
+  std::optional<double> number(const json& v, const std::string& ptr, const Range& range) {
+    if (!v.is_number()) {
+      error(ptr, std::string("expected a number, found ") + type_name(v));
+      return std::nullopt;
+    }
+    const double d = v.get<double>();
+    // JSON has no NaN or infinity literal and the parser rejects overflow, but a document built
+    // in memory can still hold them.
+    if (!std::isfinite(d)) {
+      error(ptr, "not a finite number");
+      return std::nullopt;
+    }
+    if (!range.contains(d)) {
+      error(ptr, "value " + num(d) + " is out of range " + range.text());
+      return std::nullopt;
+    }
+    return d;
+  }
+
+  /// An integer in [lo, hi]. A number with a fractional part is rejected; 75.0 is taken as 75.
+  std::optional<std::int64_t> integer(const json& v, const std::string& ptr, std::int64_t lo,
+                                      std::int64_t hi, const std::string& range_text) {
+    std::int64_t i = 0;
+    if (v.is_number_unsigned()) {
+      const auto u = v.get<std::uint64_t>();
+      if (u > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+        error(ptr, "value " + v.dump() + " is out of range " + range_text);
+        return std::nullopt;
+      }
+      i = static_cast<std::int64_t>(u);
+    } else if (v.is_number_integer()) {
+      i = v.get<std::int64_t>();
+    } else if (v.is_number_float()) {
+      const double d = v.get<double>();
+      if (!std::isfinite(d)) {
+        error(ptr, "not a finite number");
+        return std::nullopt;
+      }
+      if (d != std::floor(d)) {
+        error(ptr, "expected an integer, found " + num(d));
+        return std::nullopt;
+      }
+      // 2^63 is exactly representable; anything at or beyond it does not fit.
+      if (d < -9223372036854775808.0 || d >= 9223372036854775808.0) {
+        error(ptr, "value " + num(d) + " is out of range " + range_text);
+        return std::nullopt;
+      }
+      i = static_cast<std::int64_t>(d);
+    } else {
+      error(ptr, std::string("expected an integer, found ") + type_name(v));
+      return std::nullopt;
+    }
+    if (i < lo || i > hi) {
+      error(ptr, "value " + std::to_string(i) + " is out of range " + range_text);
+      return std::nullopt;
+    }
+    return i;
+  }
+
+  std::optional<std::string> string(const json& v, const std::string& ptr) {
+    if (v.is_string()) return v.get<std::string>();
+    error(ptr, std::string("expected a string, found ") + type_name(v));
+    return std::nullopt;
+  }
+
+ private:
+  std::string file_;
+  std::vector<Problem>& out_;
+};
+
+constexpr std::int64_t kIntMax = std::numeric_limits<int>::max();
+
+void read_video(Checker& c, const json& v, const std::string& ptr, VideoInfo& out) {
+  const json* obj = c.object(v, ptr);
+  if (!obj) return;
+  c.only_keys(*obj, ptr, {"path", "fps", "frames", "width", "height"});
+  if (const json* p = c.member(*obj, ptr, "path")) {
+    if (auto s = c.string(*p, ptr + "/path")) {
+      if (s->empty()) c.error(ptr + "/path", "empty path");
+      out.path = *s;
+    }
+  }
+  if (const json* p = c.member(*obj, ptr, "fps"))
+    if (auto d = c.number(*p, ptr + "/fps", {0.0, std::numeric_limits<double>::max(), true, false}))
+      out.fps = *d;
+  if (const json* p = c.member(*obj, ptr, "frames"))
+    if (auto i = c.integer(*p, ptr + "/frames", 1, std::numeric_limits<std::int64_t>::max(),
+                           "[1, 2^63)"))
+      out.frames = *i;
+  const std::string int_range = "[1, " + std::to_string(kIntMax) + "]";
+  if (const json* p = c.member(*obj, ptr, "width"))
+    if (auto i = c.integer(*p, ptr + "/width", 1, kIntMax, int_range)) out.width = static_cast<int>(*i);
+  if (const json* p = c.member(*obj, ptr, "height"))
+    if (auto i = c.integer(*p, ptr + "/height", 1, kIntMax, int_range)) out.height = static_cast<int>(*i);
+}
+
+void read_interpolation(Checker& c, const json& v, const std::string& ptr,
+                        effects::InterpolationSettings& out) {
+  const json* obj = c.object(v, ptr);
+  if (!obj) return;
+  c.only_keys(*obj, ptr, {"exponent", "time_scale", "distance"});
+  if (const json* p = c.member(*obj, ptr, "exponent"))
+    if (auto d = c.number(*p, ptr + "/exponent",
+                          {effects::kExponentMin, effects::kExponentMax, true, true}))
+      out.exponent = *d;
+  if (const json* p = c.member(*obj, ptr, "time_scale"))
+    if (auto d = c.number(*p, ptr + "/time_scale",
+                          {effects::kTimeScaleMin, effects::kTimeScaleMax, true, false}))
+      out.time_scale = *d;
+  // Extension of format 1: optional, chordal when absent (docs/sidecar.md).
+  if (const json* p = c.member(*obj, ptr, "distance", /*required=*/false)) {
+    if (auto s = c.string(*p, ptr + "/distance")) {
+      if (*s == "chordal") out.distance = effects::AngularDistance::Chordal;
+      else if (*s == "geodesic") out.distance = effects::AngularDistance::Geodesic;
+      else c.error(ptr + "/distance", "unknown distance \"" + *s + "\" (expected chordal or geodesic)");
+    }
+  }
+}
+
+/// Reads params against the effect's spec: exactly the spec's names, arrays of the spec's size.
+void read_params(Checker& c, const json& v, const std::string& ptr, const effects::EffectSpec& spec,
+                 std::vector<double>& out) {
+  out = spec.neutral();
+  const json* obj = c.object(v, ptr);
+  if (!obj) return;
+  for (const auto& [k, _] : obj->items()) {
+    bool known = false;
+    std::string names;
+    for (const auto& ps : spec.params) {
+      known = known || ps.name == k;
+      names += (names.empty() ? "" : ", ") + std::string(ps.name);
+    }
+    if (!known)
+      c.error(ptr + "/" + json_pointer_token(k), "unknown parameter \"" + k + "\" for effect " +
+                                                     std::string(spec.name) + " (expected: " + names + ")");
+  }
+  std::size_t offset = 0;
+  for (const auto& ps : spec.params) {
+    const std::string name(ps.name);
+    const std::string pp = ptr + "/" + json_pointer_token(name);
+    const Range range{ps.min, ps.max, false, false};
+    if (const json* p = c.member(*obj, ptr, name.c_str())) {
+      if (ps.size == 1) {
+        if (auto d = c.number(*p, pp, range)) out[offset] = *d;
+      } else if (!p->is_array()) {
+        c.error(pp, "expected an array of " + std::to_string(ps.size) + " numbers, found " + type_name(*p));
+      } else if (p->size() != static_cast<std::size_t>(ps.size)) {
+        c.error(pp, "expected an array of " + std::to_string(ps.size) + " numbers, found " +
+                        std::to_string(p->size()));
+      } else {
+        for (int i = 0; i < ps.size; ++i)
+          if (auto d = c.number((*p)[static_cast<std::size_t>(i)], pp + "/" + std::to_string(i), range))
+            out[offset + static_cast<std::size_t>(i)] = *d;
+      }
+    }
+    offset += static_cast<std::size_t>(ps.size);
+  }
+}
+
+void read_keyframe(Checker& c, const json& v, const std::string& ptr, const effects::EffectSpec* spec,
+                   std::optional<std::int64_t> frames, effects::Keyframe& out) {
+  const json* obj = c.object(v, ptr);
+  if (!obj) return;
+  c.only_keys(*obj, ptr, {"azimuth_deg", "altitude_deg", "frame", "params"});
+  if (const json* p = c.member(*obj, ptr, "azimuth_deg"))
+    if (auto d = c.number(*p, ptr + "/azimuth_deg", {-180.0, 180.0, true, false}))
+      out.direction.azimuth_deg = *d;
+  if (const json* p = c.member(*obj, ptr, "altitude_deg"))
+    if (auto d = c.number(*p, ptr + "/altitude_deg", {-90.0, 90.0, false, false}))
+      out.direction.altitude_deg = *d;
+  if (const json* p = c.member(*obj, ptr, "frame")) {
+    // Without a valid frame count only the lower bound can be checked.
+    const std::int64_t hi = frames ? *frames - 1 : std::numeric_limits<std::int64_t>::max();
+    const std::string text = frames ? "[0, " + std::to_string(*frames) + ") (video.frames is " +
+                                          std::to_string(*frames) + ")"
+                                    : std::string("[0, video.frames)");
+    if (auto i = c.integer(*p, ptr + "/frame", 0, hi, text)) out.frame = *i;
+  }
+  if (const json* p = c.member(*obj, ptr, "params")) {
+    if (spec) read_params(c, *p, ptr + "/params", *spec, out.params);
+    else c.object(*p, ptr + "/params");
+  }
+}
+
+std::string known_types() {
+  std::string s;
+  for (const auto& spec : effects::all_effect_specs())
+    s += (s.empty() ? "" : ", ") + std::string(spec.name);
+  return s;
+}
+
+void read_effect(Checker& c, const json& v, const std::string& ptr, std::optional<std::int64_t> frames,
+                 std::map<effects::EffectType, std::string>& seen, effects::EffectTrack& out) {
+  const json* obj = c.object(v, ptr);
+  if (!obj) return;
+  c.only_keys(*obj, ptr, {"type", "interpolation", "keyframes"});
+  const effects::EffectSpec* spec = nullptr;
+  if (const json* p = c.member(*obj, ptr, "type")) {
+    if (auto s = c.string(*p, ptr + "/type")) {
+      if (auto t = effects::effect_type_from_name(*s)) {
+        spec = &effects::effect_spec(*t);
+        out.type = *t;
+        if (auto [it, inserted] = seen.emplace(*t, ptr); !inserted)
+          c.error(ptr + "/type", "effect type \"" + *s + "\" appears twice (first at " + it->second +
+                                     "); each effect has one keyframe set");
+      } else {
+        c.error(ptr + "/type", "unknown effect type \"" + *s + "\" (known: " + known_types() + ")");
+      }
+    }
+  }
+  if (const json* p = c.member(*obj, ptr, "interpolation", /*required=*/false)) {
+    effects::InterpolationSettings s;
+    read_interpolation(c, *p, ptr + "/interpolation", s);
+    out.interpolation = s;
+  }
+  if (const json* p = c.member(*obj, ptr, "keyframes")) {
+    const std::string kp = ptr + "/keyframes";
+    if (!p->is_array()) {
+      c.error(kp, std::string("expected an array, found ") + type_name(*p));
+      return;
+    }
+    out.keyframes.resize(p->size());
+    for (std::size_t i = 0; i < p->size(); ++i)
+      read_keyframe(c, (*p)[i], kp + "/" + std::to_string(i), spec, frames, out.keyframes[i]);
+  }
+}
+
+}  // namespace
+
+Sidecar parse_sidecar(const json& document, const std::string& file_for_messages,
+                      std::vector<Problem>& problems) {
+  Sidecar out;
+  Checker c(file_for_messages, problems);
+  const json* root = c.object(document, "");
+  if (!root) return out;
+  c.only_keys(*root, "", {"format", "version", "video", "interpolation", "effects"});
+
+  // A file that is not a vdfx sidecar at all gets one clear message, not a cascade.
+  const json* format = c.member(*root, "", "format");
+  if (format) {
+    if (auto s = c.string(*format, "/format"); s && *s != kSidecarFormat) {
+      c.error("/format", "expected \"" + std::string(kSidecarFormat) + "\", found \"" + *s + "\"");
+      return out;
+    }
+  }
+  if (const json* p = c.member(*root, "", "version")) {
+    if (auto v = c.integer(*p, "/version", kSidecarVersion, kSidecarVersion,
+                           "(only version " + std::to_string(kSidecarVersion) + " is known)");
+        !v)
+      return out;  // another version's fields mean other things: do not guess
+  }
+
+  if (const json* p = c.member(*root, "", "video")) read_video(c, *p, "/video", out.video);
+  // Keyframe frames are checked against video.frames only when that is itself valid (its own
+  // problem is already reported above).
+  std::optional<std::int64_t> frames;
+  if (const auto v = root->find("video"); v != root->end() && v->is_object() && v->contains("frames")) {
+    std::vector<Problem> scratch;
+    Checker quiet(file_for_messages, scratch);
+    frames = quiet.integer(v->at("frames"), "", 1, std::numeric_limits<std::int64_t>::max(), "");
+  }
+
+  if (const json* p = c.member(*root, "", "interpolation"))
+    read_interpolation(c, *p, "/interpolation", out.interpolation);
+
+  if (const json* p = c.member(*root, "", "effects")) {
+    if (!p->is_array()) {
+      c.error("/effects", std::string("expected an array, found ") + type_name(*p));
+    } else {
+      std::map<effects::EffectType, std::string> seen;
+      out.effects.resize(p->size());
+      for (std::size_t i = 0; i < p->size(); ++i)
+        read_effect(c, (*p)[i], "/effects/" + std::to_string(i), frames, seen, out.effects[i]);
+    }
+  }
+  return out;
+}
+
+SidecarReport validate_sidecar_text(std::string_view text, const std::string& file_for_messages) {
+  SidecarReport report;
+  JsonText parsed = parse_json_text(text);
+  for (const JsonTextError& e : parsed.errors) {
+    std::string msg = e.message;
+    if (e.line > 0) msg = "line " + std::to_string(e.line) + ", column " + std::to_string(e.column) + ": " + msg;
+    report.problems.push_back({file_for_messages, e.pointer, msg});
+  }
+  if (parsed.value.is_discarded()) return report;
+  Sidecar s = parse_sidecar(parsed.value, file_for_messages, report.problems);
+  if (report.problems.empty()) report.sidecar = std::move(s);
+  return report;
+}
+
+SidecarReport validate_sidecar_file(const std::filesystem::path& path) {
+  std::error_code dir_ec;
+  if (std::filesystem::is_directory(path, dir_ec)) {
+    SidecarReport r;
+    r.problems.push_back({path.string(), "", "is a folder, not a sidecar file"});
+    return r;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    SidecarReport r;
+    std::error_code ec;
+    const bool exists = std::filesystem::exists(path, ec);
+    r.problems.push_back({path.string(), "", exists ? "cannot open the file for reading" : "no such file"});
+    return r;
+  }
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) {
+    SidecarReport r;
+    r.problems.push_back({path.string(), "", "read error"});
+    return r;
+  }
+  return validate_sidecar_text(ss.str(), path.string());
+}
+
+}  // namespace vdfx::io
