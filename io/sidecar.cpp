@@ -47,24 +47,7 @@ ordered ordered_document(const Sidecar& s) {
       kj["azimuth_deg"] = k.direction.azimuth_deg;
       kj["altitude_deg"] = k.direction.altitude_deg;
       kj["frame"] = k.frame;
-      ordered params = ordered::object();
-      std::size_t offset = 0;
-      for (const effects::ParamSpec& ps : spec.params) {
-        const auto at = [&](std::size_t i) {
-          // A malformed in-memory keyframe (wrong vector length) is written as neutral rather
-          // than read out of bounds; the reader would then flag nothing, so callers validate.
-          return offset + i < k.params.size() ? k.params[offset + i] : ps.neutral;
-        };
-        if (ps.size == 1) {
-          params[std::string(ps.name)] = at(0);
-        } else {
-          ordered arr = ordered::array();
-          for (int i = 0; i < ps.size; ++i) arr.push_back(at(static_cast<std::size_t>(i)));
-          params[std::string(ps.name)] = std::move(arr);
-        }
-        offset += static_cast<std::size_t>(ps.size);
-      }
-      kj["params"] = std::move(params);
+      kj["params"] = params_to_json(track.type, k.params);
       kfs.push_back(std::move(kj));
     }
     e["keyframes"] = std::move(kfs);
@@ -75,6 +58,28 @@ ordered ordered_document(const Sidecar& s) {
 }
 
 }  // namespace
+
+nlohmann::ordered_json params_to_json(effects::EffectType type, std::span<const double> values) {
+  const effects::EffectSpec& spec = effects::effect_spec(type);
+  ordered params = ordered::object();
+  std::size_t offset = 0;
+  for (const effects::ParamSpec& ps : spec.params) {
+    const auto at = [&](std::size_t i) {
+      // A malformed in-memory vector (wrong length) is written as neutral rather than read out
+      // of bounds; the reader would then flag nothing, so callers validate.
+      return offset + i < values.size() ? values[offset + i] : ps.neutral;
+    };
+    if (ps.size == 1) {
+      params[std::string(ps.name)] = at(0);
+    } else {
+      ordered arr = ordered::array();
+      for (int i = 0; i < ps.size; ++i) arr.push_back(at(static_cast<std::size_t>(i)));
+      params[std::string(ps.name)] = std::move(arr);
+    }
+    offset += static_cast<std::size_t>(ps.size);
+  }
+  return params;
+}
 
 Sidecar read_sidecar(const std::filesystem::path& path) {
   SidecarReport report = validate_sidecar_file(path);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,10 @@ Sidecar read_sidecar(const std::filesystem::path& path);
 /// The document of a sidecar. Keys are sorted (nlohmann::json is a std::map); the text written
 /// by format_sidecar() keeps the contract's key order instead.
 nlohmann::json to_json(const Sidecar& sidecar);
+
+/// One effect's flat parameter vector as the sidecar's "params" object ({"stops": 1.0},
+/// {"gain": [r, g, b]}, ...), in the effect spec's order.
+nlohmann::ordered_json params_to_json(effects::EffectType type, std::span<const double> values);
 
 /// The text write_sidecar() writes: 2-space indented JSON in the contract's key order, shortest
 /// round-trip doubles, a final newline. write -> read -> write gives identical bytes.

@@ -54,11 +54,11 @@ const std::vector<std::pair<std::string, Getter>>& table() {
 InputState neutral_input_state(std::int64_t t_ns) {
   InputState s;
   s.t_ns = t_ns;
-  s.head.p = {0.0, kDefaultEyeHeight, 0.0};
+  s.head.position = {0.0, kDefaultEyeHeight, 0.0};
   return s;
 }
 
-glm::dvec3 forward(const Pose& pose) { return glm::normalize(pose.q * glm::dvec3(0.0, 0.0, -1.0)); }
+glm::dvec3 forward(const Pose& pose) { return glm::normalize(pose.orientation * glm::dvec3(0.0, 0.0, -1.0)); }
 
 glm::dquat look_rotation(double azimuth_deg, double altitude_deg) {
   // Yaw about +y (a positive angle turns -z towards -x, i.e. left, hence the minus), then pitch

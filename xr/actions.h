@@ -26,12 +26,10 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "xr/pose.h"
+
 namespace vdfx::xr {
 
-struct Pose {
-  glm::dquat q{1.0, 0.0, 0.0, 0.0};  //!< orientation (w, x, y, z)
-  glm::dvec3 p{0.0, 0.0, 0.0};       //!< position, metres
-};
 
 enum class Hand { Left = 0, Right = 1 };
 

@@ -14,12 +14,9 @@
 #include "effects/coords.h"
 #include "xr/hmd_profile.h"
 
-namespace vdfx::xr {
+#include "xr/pose.h"
 
-struct Pose {
-  glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  //!< (w, x, y, z), unit
-  glm::dvec3 position{0.0};                    //!< metres
-};
+namespace vdfx::xr {
 
 /// Clip-space depth convention of the projection matrix.
 enum class ClipDepth { MinusOneToOne /* OpenGL */, ZeroToOne /* Vulkan, D3D */ };

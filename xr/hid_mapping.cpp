@@ -42,7 +42,7 @@ glm::dvec2 apply_deadzone(glm::dvec2 v, double deadzone) {
 }
 
 HidInputMapper::HidInputMapper(HidMappingConfig config) : config_(config) {
-  spacemouse_hand_.p = config_.head_position + glm::dvec3(0.2, -0.3, -0.3);
+  spacemouse_hand_.position = config_.head_position + glm::dvec3(0.2, -0.3, -0.3);
 }
 
 void HidInputMapper::on_descriptor(const std::string& device, std::span<const std::uint8_t> d) {
@@ -125,8 +125,8 @@ void HidInputMapper::advance(std::int64_t t_ns) {
     // Rates are about the head's own axes: twist the cap right and the view turns right.
     head_q_ = glm::normalize(head_q_ * rotation_from_vector(omega * dt));
   } else {
-    spacemouse_hand_.q = glm::normalize(spacemouse_hand_.q * rotation_from_vector(omega * dt));
-    spacemouse_hand_.p += head_q_ * velocity * dt;  // pushes move the hand in the view's frame
+    spacemouse_hand_.orientation = glm::normalize(spacemouse_hand_.orientation * rotation_from_vector(omega * dt));
+    spacemouse_hand_.position += head_q_ * velocity * dt;  // pushes move the hand in the view's frame
   }
 }
 
@@ -135,8 +135,8 @@ InputState HidInputMapper::state(std::int64_t t_ns) {
   InputState s;
   s.t_ns = t_ns;
   s.head_tracked = true;
-  s.head.q = head_q_;
-  s.head.p = config_.head_position;
+  s.head.orientation = head_q_;
+  s.head.position = config_.head_position;
 
   // Right hand: aims where the view looks (the ray through the view centre), unless steered.
   HandState& r = s.right;
@@ -151,8 +151,8 @@ InputState HidInputMapper::state(std::int64_t t_ns) {
 
   HandState& l = s.left;
   l.tracked = true;
-  l.aim.q = head_q_;
-  l.aim.p = config_.head_position + head_q_ * kLeftHandOffset;
+  l.aim.orientation = head_q_;
+  l.aim.position = config_.head_position + head_q_ * kLeftHandOffset;
   l.trigger = pad_.left_trigger;
   l.squeeze = pad_.pressed(PadButton::L1) ? 1.0 : 0.0;
   if (config_.left_stick == LeftStickRole::LeftThumbstick) {

@@ -7,13 +7,13 @@ namespace vdfx::xr {
 namespace {
 
 io::RecordedPose to_recorded(const Pose& p) {
-  return {{p.q.w, p.q.x, p.q.y, p.q.z}, {p.p.x, p.p.y, p.p.z}};
+  return {{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}, {p.position.x, p.position.y, p.position.z}};
 }
 
 Pose from_recorded(const io::RecordedPose& r) {
   Pose p;
-  p.q = glm::dquat(r.q[0], r.q[1], r.q[2], r.q[3]);  // glm's constructor takes (w, x, y, z)
-  p.p = {r.p[0], r.p[1], r.p[2]};
+  p.orientation = glm::dquat(r.q[0], r.q[1], r.q[2], r.q[3]);  // glm's constructor takes (w, x, y, z)
+  p.position = {r.p[0], r.p[1], r.p[2]};
   return p;
 }
 

@@ -126,11 +126,11 @@ TEST(HidMapping, SpaceMouseCanSteerTheRightHand) {
   HidMappingConfig cfg;
   cfg.spacemouse = SpaceMouseTarget::RightHand;
   HidInputMapper m(cfg);
-  const glm::dvec3 start = m.state(0).right.aim.p;
+  const glm::dvec3 start = m.state(0).right.aim.position;
   // Push the cap forward (device -y, away from the user): the hand moves along -z at 0.5 m/s.
   m.on_report(0, kSpace, test_data::spacemouse_report(1, 0, -350, 0));
   const InputState s = m.state(kSecond);
-  EXPECT_NEAR(s.right.aim.p.z - start.z, -0.5, 1e-9);
+  EXPECT_NEAR(s.right.aim.position.z - start.z, -0.5, 1e-9);
   EXPECT_NEAR(azimuth_deg(s.head), 0.0, 1e-12);
 }
 

@@ -67,7 +67,7 @@ TEST(Recordings, SimLookAndPlace) {
   EXPECT_NEAR(azimuth_deg(at(179).head), 90.0, 1e-9);
   // The cursor ends at (960, 200): right of and above the view centre.
   const InputState s = at(95);
-  const glm::dvec3 d = glm::inverse(s.head.q) * forward(s.right.aim);
+  const glm::dvec3 d = glm::inverse(s.head.orientation) * forward(s.right.aim);
   EXPECT_NEAR(std::atan2(d.x, -d.z), std::atan((960.0 / 640.0 - 1.0)), 1e-9);
   for (int f : {99, 110, 119, 130}) EXPECT_EQ(at(f).right.trigger, 0.0) << f;
   for (int f : {100, 109, 120, 129}) EXPECT_EQ(at(f).right.trigger, 1.0) << f;

@@ -116,7 +116,7 @@ TEST(Sim, RightDragTurnsTheHeadAtTheDocumentedSensitivity) {
   sim->push_event(MouseMoveEvent{100, 100});  // moving without the button: no turn
   s = sim->poll(2);
   EXPECT_NEAR(azimuth_deg(s.head), 20.0, 1e-9);
-  EXPECT_NEAR(s.head.p.y, kDefaultEyeHeight, 1e-12);
+  EXPECT_NEAR(s.head.position.y, kDefaultEyeHeight, 1e-12);
 }
 
 TEST(Sim, PitchStopsShortOfThePoles) {
@@ -153,9 +153,9 @@ TEST_P(SimCursor, AimRayGoesThroughTheCursor) {
   sim->push_event(MouseMoveEvent{r.x, r.y});
   const InputState s = sim->poll(1);
   EXPECT_NEAR(angle_deg(s.right.aim, s.head), r.expected_angle_deg, 1e-9);
-  EXPECT_NEAR(glm::length(s.right.aim.p - s.head.p), 0.0, 1e-12);  // ray starts at the eye
+  EXPECT_NEAR(glm::length(s.right.aim.position - s.head.position), 0.0, 1e-12);  // ray starts at the eye
   // Right of centre aims right of the view, above aims up.
-  const glm::dvec3 d = glm::inverse(s.head.q) * forward(s.right.aim);
+  const glm::dvec3 d = glm::inverse(s.head.orientation) * forward(s.right.aim);
   if (r.x > 640) {
     EXPECT_GT(d.x, 0.0);
   }
@@ -178,7 +178,7 @@ TEST(Sim, LeftHandedMouseAimsTheLeftHand) {
   EXPECT_NEAR(angle_deg(s.left.aim, s.head), 45.0, 1e-9);
   EXPECT_EQ(s.left.trigger, 1.0);
   EXPECT_EQ(s.right.trigger, 0.0);
-  EXPECT_GT(s.right.aim.p.x, s.head.p.x);  // the other hand rests on its own side
+  EXPECT_GT(s.right.aim.position.x, s.head.position.x);  // the other hand rests on its own side
 }
 
 TEST(Sim, EventsApplyAtTheNextPollAndTimeIsStamped) {
@@ -209,23 +209,23 @@ TEST(Actions, EveryPathResolvesAndUnknownOnesDoNot) {
   s.right.trigger = 0.75;
   s.left.thumbstick = {0.5, -0.25};
   s.left.menu = true;
-  s.head.p = {1, 2, 3};
+  s.head.position = {1, 2, 3};
   EXPECT_EQ(action_paths().size(), 2u + 2u * 11u + 1u);
   for (const std::string& p : action_paths()) EXPECT_TRUE(get_action(s, p).has_value()) << p;
   EXPECT_EQ(std::get<double>(*get_action(s, "/user/hand/right/input/trigger/value")), 0.75);
   EXPECT_EQ(std::get<glm::dvec2>(*get_action(s, "/user/hand/left/input/thumbstick")), glm::dvec2(0.5, -0.25));
   EXPECT_EQ(std::get<double>(*get_action(s, "/user/hand/left/input/thumbstick/y")), -0.25);
   EXPECT_TRUE(std::get<bool>(*get_action(s, "/user/hand/left/input/menu/click")));
-  EXPECT_EQ(std::get<Pose>(*get_action(s, "/user/head/pose")).p, glm::dvec3(1, 2, 3));
+  EXPECT_EQ(std::get<Pose>(*get_action(s, "/user/head/pose")).position, glm::dvec3(1, 2, 3));
   EXPECT_FALSE(get_action(s, "/user/hand/right/input/menu/click"));  // no menu on the right
   EXPECT_FALSE(get_action(s, "/user/hand/left/input/a/click"));
   EXPECT_FALSE(get_action(s, "/user/head"));
 }
 
 TEST(Actions, LookRotationFollowsTheContractDirections) {
-  EXPECT_NEAR(forward({look_rotation(90, 0), {}}).x, 1.0, 1e-12);   // azimuth +90 is +x
-  EXPECT_NEAR(forward({look_rotation(0, 90), {}}).y, 1.0, 1e-12);   // altitude +90 is up
-  EXPECT_NEAR(forward({look_rotation(0, 0), {}}).z, -1.0, 1e-12);   // forward is -z
+  EXPECT_NEAR(forward(Pose{{}, look_rotation(90, 0)}).x, 1.0, 1e-12);   // azimuth +90 is +x
+  EXPECT_NEAR(forward(Pose{{}, look_rotation(0, 90)}).y, 1.0, 1e-12);   // altitude +90 is up
+  EXPECT_NEAR(forward(Pose{{}, look_rotation(0, 0)}).z, -1.0, 1e-12);   // forward is -z
 }
 
 }  // namespace

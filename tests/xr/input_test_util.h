@@ -24,13 +24,13 @@ inline double angle_deg(const Pose& a, const Pose& b) {
 }
 
 inline void expect_pose_eq(const Pose& a, const Pose& b, double tol, const char* what) {
-  EXPECT_NEAR(a.q.w, b.q.w, tol) << what;
-  EXPECT_NEAR(a.q.x, b.q.x, tol) << what;
-  EXPECT_NEAR(a.q.y, b.q.y, tol) << what;
-  EXPECT_NEAR(a.q.z, b.q.z, tol) << what;
-  EXPECT_NEAR(a.p.x, b.p.x, tol) << what;
-  EXPECT_NEAR(a.p.y, b.p.y, tol) << what;
-  EXPECT_NEAR(a.p.z, b.p.z, tol) << what;
+  EXPECT_NEAR(a.orientation.w, b.orientation.w, tol) << what;
+  EXPECT_NEAR(a.orientation.x, b.orientation.x, tol) << what;
+  EXPECT_NEAR(a.orientation.y, b.orientation.y, tol) << what;
+  EXPECT_NEAR(a.orientation.z, b.orientation.z, tol) << what;
+  EXPECT_NEAR(a.position.x, b.position.x, tol) << what;
+  EXPECT_NEAR(a.position.y, b.position.y, tol) << what;
+  EXPECT_NEAR(a.position.z, b.position.z, tol) << what;
 }
 
 inline void expect_hand_eq(const HandState& a, const HandState& b, double tol, const char* what) {
