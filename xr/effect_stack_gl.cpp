@@ -1,0 +1,113 @@
+/// @file
+/// @brief EffectStackGl: shader variants per active set, separable blur in float textures.
+#include <epoxy/gl.h>
+
+#include <cmath>
+
+#include "effects/effect_shaders.h"
+#include "xr/effect_stack_gl.h"
+#include "xr/gl_context.h"
+
+namespace vdfx::xr {
+
+using effects::EffectType;
+using effects::shader_bit;
+
+BlurPixels blur_pixels(double sigma_deg, const RenderView& v, int width, int height) {
+  const double s = sigma_deg * effects::kDegToRad;
+  const double cx = v.optical_centre_tan.x(), cy = v.optical_centre_tan.y();
+  BlurPixels b;
+  b.sigma_x = s * (1.0 + cx * cx) * width / (v.tan_right - v.tan_left);
+  b.sigma_y = s * (1.0 + cy * cy) * height / (v.tan_up - v.tan_down);
+  b.radius_x = static_cast<int>(std::ceil(3.0 * b.sigma_x));
+  b.radius_y = static_cast<int>(std::ceil(3.0 * b.sigma_y));
+  return b;
+}
+
+namespace {
+
+// Sets u_radius, u_inv_two_sigma2, u_norm for a 1-D Gaussian of `sigma` pixels.
+void set_gaussian(const GlProgram& p, double sigma, int radius) {
+  double sum = 0.0;
+  const double inv = sigma > 0.0 ? 1.0 / (2.0 * sigma * sigma) : 0.0;
+  for (int i = -radius; i <= radius; ++i) sum += std::exp(-i * i * inv);
+  glUniform1i(p.uniform("u_radius"), radius);
+  glUniform1f(p.uniform("u_inv_two_sigma2"), static_cast<float>(inv));
+  glUniform1f(p.uniform("u_norm"), static_cast<float>(1.0 / sum));
+}
+
+}  // namespace
+
+EffectStackGl::EffectStackGl(TexFormat scratch_format) : scratch_format_(scratch_format) {
+  blur_h_ = GlProgram::build("blur_horizontal", fullscreen_vertex_source(),
+                             effects::blur_horizontal_fragment_source());
+  glGenVertexArrays(1, &vao_);
+}
+
+EffectStackGl::~EffectStackGl() {
+  if (vao_) glDeleteVertexArrays(1, &vao_);
+}
+
+const GlProgram& EffectStackGl::program_for(unsigned mask) {
+  auto it = programs_.find(mask);
+  if (it == programs_.end())
+    it = programs_
+             .emplace(mask, GlProgram::build("effect_stack_" + std::to_string(mask),
+                                             fullscreen_vertex_source(),
+                                             effects::stack_fragment_source(mask)))
+             .first;
+  return it->second;
+}
+
+void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effects::StackParams& sp,
+                          unsigned mask, const RenderView& v) {
+  const int w = dst.width(), h = dst.height();
+  if (src.width() != w || src.height() != h)
+    throw GlError("EffectStackGl::apply: source and target sizes differ");
+  glDisable(GL_BLEND);
+  glBindVertexArray(vao_);
+  glActiveTexture(GL_TEXTURE0);
+  const BlurPixels blur = blur_pixels(sp.blur_sigma_deg, v, w, h);
+  const bool blur_on = (mask & shader_bit(EffectType::Blur)) && sp.blur_sigma_deg > 0.0;
+  if (!blur_on) mask &= ~shader_bit(EffectType::Blur);
+  unsigned pass2_src = src.id();
+  if (blur_on) {
+    if (!scratch_ || scratch_.width() != w || scratch_.height() != h)
+      scratch_ = GlTarget(w, h, scratch_format_);
+    scratch_.bind();
+    blur_h_.use();
+    glBindTexture(GL_TEXTURE_2D, src.id());
+    glUniform1i(blur_h_.uniform("u_src"), 0);
+    set_gaussian(blur_h_, blur.sigma_x, blur.radius_x);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    pass2_src = scratch_.texture().id();
+  }
+  const GlProgram& p = program_for(mask);
+  dst.bind();
+  p.use();
+  glBindTexture(GL_TEXTURE_2D, pass2_src);
+  glUniform1i(p.uniform("u_src"), 0);
+  if (blur_on) set_gaussian(p, blur.sigma_y, blur.radius_y);
+  if (mask & shader_bit(EffectType::Tint)) {
+    const Eigen::Vector3f g = sp.tint_gain.cast<float>();
+    glUniform3f(p.uniform("u_tint"), g.x(), g.y(), g.z());
+  }
+  if (mask & shader_bit(EffectType::Exposure))
+    glUniform1f(p.uniform("u_exposure_gain"), static_cast<float>(std::exp2(sp.exposure_stops)));
+  if (mask & shader_bit(EffectType::Saturation))
+    glUniform1f(p.uniform("u_saturation"), static_cast<float>(sp.saturation));
+  if (mask & shader_bit(EffectType::Contrast))
+    glUniform1f(p.uniform("u_contrast"), static_cast<float>(sp.contrast));
+  if (mask & shader_bit(EffectType::Vignette)) {
+    glUniform2f(p.uniform("u_vignette"), static_cast<float>(sp.vignette_radius_deg * effects::kDegToRad),
+                static_cast<float>(sp.vignette_falloff_deg * effects::kDegToRad));
+    glUniform4f(p.uniform("u_tan"), static_cast<float>(v.tan_left), static_cast<float>(v.tan_right),
+                static_cast<float>(v.tan_down), static_cast<float>(v.tan_up));
+    glUniform2f(p.uniform("u_size"), static_cast<float>(w), static_cast<float>(h));
+    glUniform2f(p.uniform("u_centre_tan"), static_cast<float>(v.optical_centre_tan.x()),
+                static_cast<float>(v.optical_centre_tan.y()));
+  }
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace vdfx::xr
