@@ -10,6 +10,7 @@ namespace vdfx::app {
 const std::vector<Command>& commands() {
   static const std::vector<Command> list = {
       {"eval", "print the interpolated parameters of every effect at given views", cmd_eval},
+      {"hmd", "list the simulated headsets, or show one (vdfx hmd list | show NAME)", cmd_hmd},
       {"render", "render one view of a panorama or video frame to a PNG", cmd_render},
       {"validate", "check a sidecar file; list every problem", cmd_validate},
   };

@@ -25,6 +25,7 @@ const std::vector<Command>& commands();
 int run_main(const Args& args);
 
 int cmd_eval(const Args& args);
+int cmd_hmd(const Args& args);
 int cmd_render(const Args& args);
 int cmd_validate(const Args& args);
 

@@ -1,0 +1,40 @@
+/// @file
+/// @brief Shared command-line plumbing: CLI11 parsing with the contract's exit codes and the
+/// value syntaxes of the contract (AZ,ALT[,ROLL], AZ,ALT,FRAME, WxH).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "app/commands.h"
+#include "effects/coords.h"
+
+namespace vdfx::app {
+
+/// Parses args into cli. Returns std::nullopt to go on, or the exit code to return at once
+/// (0 after --help, kExitUsage after a usage error, whose message goes to stderr).
+std::optional<int> parse_cli(CLI::App& cli, const Args& args);
+
+struct ViewSpec {
+  effects::Direction direction;
+  double roll_deg = 0.0;
+};
+
+struct EvalPoint {
+  effects::Direction direction;
+  std::int64_t frame = 0;
+};
+
+struct ImageSize {
+  int width = 0;
+  int height = 0;
+};
+
+/// Each throws CLI::ValidationError (a usage error) with the offending text.
+ViewSpec parse_view(const std::string& text);  //!< "AZ,ALT" or "AZ,ALT,ROLL"
+EvalPoint parse_eval_point(const std::string& text);  //!< "AZ,ALT,FRAME"
+ImageSize parse_size(const std::string& text);  //!< "WxH"
+
+}  // namespace vdfx::app

@@ -1,0 +1,139 @@
+/// @file
+/// @brief Lens pre-distortion: inverse per point (closed form, Newton, OpenCV undistortPoints as
+/// the peer), mesh build per N, and the mesh error against the exact map per N (computed once).
+///
+/// All on the generic90 profile's left eye (1440 x 1600). Error counters are the largest
+/// difference from the Newton root, in normalised radius and in eye-image pixels at the panel.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <opencv2/calib3d.hpp>
+#include <vector>
+
+#include "effects/distortion_mesh.h"
+#include "xr/hmd_profile.h"
+
+namespace {
+
+using vdfx::effects::EyeLens;
+using vdfx::effects::InverseMethod;
+
+const EyeLens& eye() {
+  static const EyeLens e = vdfx::xr::load_hmd_profile("generic90").eye_lens(vdfx::xr::Eye::Left);
+  return e;
+}
+
+/// 4096 panel points on a 64 x 64 grid over the whole viewport, in normalised lens coordinates.
+const std::vector<cv::Point2d>& points() {
+  static const std::vector<cv::Point2d> pts = [] {
+    std::vector<cv::Point2d> out;
+    const double R = eye().lens.params().radius;
+    for (int j = 0; j < 64; ++j) {
+      for (int i = 0; i < 64; ++i) {
+        const Eigen::Vector2d t =
+            eye().pixel_to_tan({(i + 0.5) / 64.0 * eye().width, (j + 0.5) / 64.0 * eye().height});
+        out.emplace_back(t.x() / R, t.y() / R);
+      }
+    }
+    return out;
+  }();
+  return pts;
+}
+
+/// Pixels of the eye image per normalised lens unit (horizontal).
+double px_per_unit() {
+  const auto& e = eye();
+  return e.lens.params().radius * e.width / (e.fov.right - e.fov.left);
+}
+
+cv::Point2d invert(const cv::Point2d& p, InverseMethod method) {
+  const double r_d = std::hypot(p.x, p.y);
+  const auto r_u = eye().lens.inverse(r_d, method);
+  const double s = (r_u && r_d > 0.0) ? *r_u / r_d : 1.0;
+  return {p.x * s, p.y * s};
+}
+
+double max_error(const std::vector<cv::Point2d>& got) {
+  double worst = 0.0;
+  for (size_t k = 0; k < got.size(); ++k) {
+    const cv::Point2d want = invert(points()[k], InverseMethod::Newton);
+    worst = std::max(worst, std::hypot(got[k].x - want.x, got[k].y - want.y));
+  }
+  return worst;
+}
+
+void report(benchmark::State& state, const std::vector<cv::Point2d>& out) {
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(points().size()));
+  const double err = max_error(out);
+  state.counters["max_err"] = err;
+  state.counters["max_err_px"] = err * px_per_unit();
+}
+
+void run_inverse(benchmark::State& state, InverseMethod method) {
+  std::vector<cv::Point2d> out(points().size());
+  for (auto _ : state) {
+    for (size_t k = 0; k < out.size(); ++k) out[k] = invert(points()[k], method);
+    benchmark::DoNotOptimize(out.data());
+  }
+  report(state, out);
+}
+
+void BM_InverseClosedForm(benchmark::State& state) {
+  run_inverse(state, InverseMethod::ClosedForm);
+}
+void BM_InverseNewton(benchmark::State& state) {
+  run_inverse(state, InverseMethod::Newton);
+}
+
+/// The peer: OpenCV's iterative undistortion with the same radial model (k1 = c1, k2 = c2, an
+/// identity camera matrix); arg 0 uses OpenCV's default 5 iterations, arg N > 0 up to N with a
+/// 1e-15 tolerance.
+void BM_InverseOpenCvUndistortPoints(benchmark::State& state) {
+  const cv::Mat K = cv::Mat::eye(3, 3, CV_64F);
+  const auto& p = eye().lens.params();
+  const cv::Mat D = (cv::Mat_<double>(1, 4) << p.c1, p.c2, 0.0, 0.0);
+  std::vector<cv::Point2d> out;
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      cv::undistortPoints(points(), out, K, D);
+    } else {
+      cv::undistortPoints(points(), out, K, D, cv::noArray(), cv::noArray(),
+                          cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
+                                           static_cast<int>(state.range(0)), 1e-15));
+    }
+    benchmark::DoNotOptimize(out.data());
+  }
+  report(state, out);
+}
+
+void BM_MeshBuild(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(vdfx::effects::build_distortion_mesh(eye(), n));
+  state.counters["vertices"] = n * n;
+}
+
+/// Error of the mesh against the exact per-pixel map over every pixel of the eye: run once.
+void BM_MeshErrorVsN(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const auto mesh = vdfx::effects::build_distortion_mesh(eye(), n);
+  vdfx::effects::MeshError err;
+  for (auto _ : state) err = vdfx::effects::measure_mesh_error(eye(), mesh, 1);
+  state.counters["rms_px"] = err.rms_px;
+  state.counters["max_px"] = err.max_px;
+  state.counters["skipped"] = static_cast<double>(err.skipped);
+}
+
+}  // namespace
+
+BENCHMARK(BM_InverseClosedForm);
+BENCHMARK(BM_InverseNewton);
+BENCHMARK(BM_InverseOpenCvUndistortPoints)->Arg(0)->Arg(20);
+BENCHMARK(BM_MeshBuild)->Arg(5)->Arg(9)->Arg(17)->Arg(33)->Arg(65)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MeshErrorVsN)
+    ->Arg(5)
+    ->Arg(9)
+    ->Arg(17)
+    ->Arg(33)
+    ->Arg(65)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
