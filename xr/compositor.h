@@ -33,7 +33,7 @@ struct CompositorConfig {
   TexFormat eye_format = TexFormat::RGBA16F;
   LodMode lod = LodMode::Analytic;
   DistortionSettings distortion;
-  LensDistortion lens;
+  effects::LensModel lens;
   bool gpu_timing = false;  //!< timestamp queries per stage (stage_times())
 };
 
@@ -79,6 +79,6 @@ class Compositor {
 cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int width, int height,
                         const effects::StackParams& params, unsigned active_effects,
                         const DistortionSettings& distortion = {DistortionMethod::None},
-                        const LensDistortion& lens = {});
+                        const effects::LensModel& lens = {});
 
 }  // namespace vdfx::xr

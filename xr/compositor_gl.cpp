@@ -109,9 +109,9 @@ void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLay
       if (!q.texture) continue;
       const Pose p = Session::to_local(q.pose, q.space, head_in_local);
       Eigen::Matrix4d model = Eigen::Matrix4d::Identity();
-      model.topLeftCorner<3, 3>() = p.orientation.toRotationMatrix() *
-                                    Eigen::Vector3d(q.size_m.x(), q.size_m.y(), 1.0).asDiagonal();
-      model.topRightCorner<3, 1>() = p.position;
+      model.topLeftCorner<3, 3>() =
+          rotation_of(p) * Eigen::Vector3d(q.size_m.x(), q.size_m.y(), 1.0).asDiagonal();
+      model.topRightCorner<3, 1>() = position_of(p);
       const Eigen::Matrix4f mvp = (proj * view * model).cast<float>();
       glUniformMatrix4fv(m.quad_program.uniform("u_mvp"), 1, GL_FALSE, mvp.data());
       glBindTexture(GL_TEXTURE_2D, q.texture);
@@ -167,13 +167,13 @@ std::vector<StageTime> Compositor::stage_times() { return impl_->timer.collect()
 
 cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int width, int height,
                         const effects::StackParams& params, unsigned active_effects,
-                        const DistortionSettings& distortion, const LensDistortion& lens) {
+                        const DistortionSettings& distortion, const effects::LensModel& lens) {
   CompositorConfig c;
   c.eye_width = width;
   c.eye_height = height;
   c.eye_format = TexFormat::RGBA32F;
   c.distortion = distortion;
-  c.lens = lens;
+  c.lens = lens;  // copied: LensModel is a value
   Compositor comp(c);
   comp.set_video_frame(equirect);
   comp.render_eye(0, {view, params, active_effects});

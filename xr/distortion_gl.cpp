@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "effects/distortion_mesh.h"
 #include "xr/distortion_gl.h"
 #include "xr/gl_context.h"
 #include "xr/gl_program.h"
@@ -17,10 +18,11 @@ namespace {
 constexpr const char* kLensGlsl = R"(
 uniform vec4 u_tan;       // left, right, down, up tangents of eye buffer and panel
 uniform vec2 u_size;      // target size in pixels
-uniform vec2 u_centre;    // optical centre, tangent units
-uniform vec2 u_coef;      // c1, c2
+uniform vec2 u_centre;    // optical centre, tangent units (the optical axis: 0, 0)
+uniform vec2 u_coef;      // c1, c2 (on radii normalised by u_norm_radius)
+uniform float u_norm_radius;  // R of effects::LensParams
 uniform vec3 u_scale;     // per-channel radial scale s_c
-uniform float u_ru_max;   // largest r_u where the model still increases
+uniform float u_ru_max;   // largest normalised r_u where the model still increases
 uniform float u_rd_max;   // f(u_ru_max)
 float lens_forward(float r) { float r2 = r * r; return r * (1.0 + r2 * (u_coef.x + u_coef.y * r2)); }
 vec2 tan_at_fragment() {
@@ -54,9 +56,9 @@ void main() {
   vec3 c = vec3(0.0);
   vec2 uv_green = vec2(-1.0);
   for (int ch = 0; ch < 3; ++ch) {
-    float r = rd / u_scale[ch];
+    float r = rd / (u_scale[ch] * u_norm_radius);
     if (r > u_rd_max) continue;  // no inverse: black, never a folded image
-    vec2 uv = tan_to_uv(u_centre + dir * lens_inverse(r));
+    vec2 uv = tan_to_uv(u_centre + dir * (u_norm_radius * lens_inverse(r)));
     if (ch == 1) uv_green = uv;
     if (inside(uv)) c[ch] = texture(u_src, uv)[ch];
   }
@@ -89,7 +91,7 @@ uniform sampler2D u_src;
 uniform int u_output_uv;
 void main() {
   // The mesh interpolates UVs; the valid-radius cut is exact per fragment, not per triangle.
-  float rd = length(tan_at_fragment() - u_centre);
+  float rd = length(tan_at_fragment() - u_centre) / u_norm_radius;
   vec3 c = vec3(0.0);
   if (rd / u_scale.r <= u_rd_max && inside(v_r)) c.r = texture(u_src, v_r).r;
   if (rd / u_scale.g <= u_rd_max && inside(v_g)) c.g = texture(u_src, v_g).g;
@@ -103,12 +105,12 @@ out vec4 frag;
 uniform sampler2D u_panel;
 void main() {
   vec2 rel = tan_at_fragment() - u_centre;
-  float ru = length(rel);
-  vec2 dir = ru > 0.0 ? rel / ru : vec2(0.0);
+  float ru = length(rel) / u_norm_radius;
+  vec2 dir = ru > 0.0 ? normalize(rel) : vec2(0.0);
   vec3 c = vec3(0.0);
   if (ru <= u_ru_max) {
     for (int ch = 0; ch < 3; ++ch) {
-      vec2 uv = tan_to_uv(u_centre + dir * (u_scale[ch] * lens_forward(ru)));
+      vec2 uv = tan_to_uv(u_centre + dir * (u_norm_radius * u_scale[ch] * lens_forward(ru)));
       if (inside(uv)) c[ch] = texture(u_panel, uv)[ch];
     }
   }
@@ -120,27 +122,42 @@ float finite_or_big(double x) {
   return std::isfinite(x) ? static_cast<float>(x) : 1e30f;
 }
 
+Eigen::Vector3d lca_scale(const effects::LensModel& lens) {
+  const auto& s = lens.params().lca_scale;
+  return {s[0], s[1], s[2]};
+}
+
 void set_lens_uniforms(const GlProgram& p, const GlTarget& target, const RenderView& eye,
-                       const LensDistortion& lens, const Eigen::Vector3d& scale) {
+                       const effects::LensModel& lens, const Eigen::Vector3d& scale) {
   glUniform4f(p.uniform("u_tan"), static_cast<float>(eye.tan_left), static_cast<float>(eye.tan_right),
               static_cast<float>(eye.tan_down), static_cast<float>(eye.tan_up));
   glUniform2f(p.uniform("u_size"), static_cast<float>(target.width()),
               static_cast<float>(target.height()));
-  glUniform2f(p.uniform("u_centre"), static_cast<float>(eye.optical_centre_tan.x()),
-              static_cast<float>(eye.optical_centre_tan.y()));
-  glUniform2f(p.uniform("u_coef"), static_cast<float>(lens.c1), static_cast<float>(lens.c2));
+  glUniform2f(p.uniform("u_centre"), 0.0f, 0.0f);  // the lens is centred on the optical axis
+  glUniform2f(p.uniform("u_coef"), static_cast<float>(lens.params().c1),
+              static_cast<float>(lens.params().c2));
+  glUniform1f(p.uniform("u_norm_radius"), static_cast<float>(lens.params().radius));
   glUniform3f(p.uniform("u_scale"), static_cast<float>(scale.x()), static_cast<float>(scale.y()),
               static_cast<float>(scale.z()));
-  glUniform1f(p.uniform("u_ru_max"), finite_or_big(lens.max_valid_undistorted_radius()));
-  glUniform1f(p.uniform("u_rd_max"), finite_or_big(lens.max_valid_distorted_radius()));
+  glUniform1f(p.uniform("u_ru_max"), finite_or_big(lens.max_undistorted_radius()));
+  glUniform1f(p.uniform("u_rd_max"), finite_or_big(lens.max_distorted_radius()));
+}
+
+effects::EyeLens eye_lens(const RenderView& v, int width, int height, const effects::LensModel& lens) {
+  effects::EyeLens e;
+  e.width = width;
+  e.height = height;
+  e.fov = {v.tan_left, v.tan_right, v.tan_up, v.tan_down};
+  e.lens = lens;
+  return e;
 }
 
 struct MeshKey {
   int n = 0;
-  double c[2] = {};
+  bool lca = true;
+  double c[3] = {};
   double s[3] = {};
   double tan[4] = {};
-  double centre[2] = {};
   bool operator==(const MeshKey&) const = default;
 };
 
@@ -153,43 +170,32 @@ struct DistortionGl::Impl {
   int mesh_indices = 0;
   MeshKey mesh_key;
 
-  void build_mesh(const MeshKey& key, const RenderView& eye, const LensDistortion& lens,
-                  const Eigen::Vector3d& scale) {
-    const int n = key.n;
-    // Per vertex: position (2), uv r (2), uv g (2), uv b (2).
+  void build_mesh(const MeshKey& key, const RenderView& eye, const effects::LensModel& lens,
+                  int width, int height) {
+    const effects::DistortionMesh mesh =
+        effects::build_distortion_mesh(eye_lens(eye, width, height, lens), key.n, key.lca);
+    // Per vertex: position (2), uv r (2), uv g (2), uv b (2). The mesh is y-down in pixels and
+    // UVs; GL positions and texture t are y-up.
     std::vector<float> v;
-    v.reserve(static_cast<size_t>(n * n * 8));
-    const double rd_max = lens.max_valid_distorted_radius();
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const double a = static_cast<double>(i) / (n - 1), b = static_cast<double>(j) / (n - 1);
-        v.push_back(static_cast<float>(2 * a - 1));
-        v.push_back(static_cast<float>(2 * b - 1));
-        const Eigen::Vector2d t(eye.tan_left + a * (eye.tan_right - eye.tan_left),
-                                eye.tan_down + b * (eye.tan_up - eye.tan_down));
-        const Eigen::Vector2d rel = t - eye.optical_centre_tan;
-        const double rd = rel.norm();
-        for (int ch = 0; ch < 3; ++ch) {
-          const double r = rd / scale[ch];
-          // Beyond the valid radius the vertex keeps the UV at the radius limit, so the
-          // interpolation stays smooth up to the exact per-fragment cut.
-          const double ru = r <= rd_max ? lens.inverse(r, 50) : lens.max_valid_undistorted_radius();
-          const Eigen::Vector2d tu =
-              eye.optical_centre_tan +
-              (rd > 0 ? Eigen::Vector2d(rel * (ru / rd)) : Eigen::Vector2d::Zero());
-          const Eigen::Vector2d uv((tu.x() - eye.tan_left) / (eye.tan_right - eye.tan_left),
-                                   (tu.y() - eye.tan_down) / (eye.tan_up - eye.tan_down));
-          v.push_back(static_cast<float>(uv.x()));
-          v.push_back(static_cast<float>(uv.y()));
+    v.reserve(mesh.vertices.size() * 8);
+    const effects::EyeLens el = eye_lens(eye, width, height, lens);
+    for (const effects::MeshVertex& mv : mesh.vertices) {
+      v.push_back(static_cast<float>(2.0 * mv.panel_px.x() / width - 1.0));
+      v.push_back(static_cast<float>(1.0 - 2.0 * mv.panel_px.y() / height));
+      for (int ch = 0; ch < 3; ++ch) {
+        Eigen::Vector2d uv = mv.uv[static_cast<size_t>(ch)];
+        if (!mv.valid[static_cast<size_t>(ch)]) {
+          // Beyond the valid radius: the UV at the radius limit along the same direction keeps
+          // the interpolation smooth up to the exact per-fragment cut.
+          const Eigen::Vector2d t = el.pixel_to_tan(mv.panel_px);
+          const double r = lens.params().radius * lens.max_undistorted_radius();
+          uv = el.tan_to_uv(t.norm() > 0 ? Eigen::Vector2d(t.normalized() * r) : t);
         }
+        v.push_back(static_cast<float>(uv.x()));
+        v.push_back(static_cast<float>(1.0 - uv.y()));
       }
-    std::vector<unsigned> idx;
-    idx.reserve(static_cast<size_t>((n - 1) * (n - 1) * 6));
-    for (int j = 0; j + 1 < n; ++j)
-      for (int i = 0; i + 1 < n; ++i) {
-        const unsigned k = static_cast<unsigned>(j * n + i), un = static_cast<unsigned>(n);
-        for (unsigned q : {k, k + 1, k + un, k + 1, k + un + 1, k + un}) idx.push_back(q);
-      }
+    }
+    const auto& idx = mesh.indices;
     if (!mesh_vao) {
       glGenVertexArrays(1, &mesh_vao);
       glGenBuffers(1, &mesh_vbo);
@@ -200,7 +206,7 @@ struct DistortionGl::Impl {
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(),
                  GL_STATIC_DRAW);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh_ibo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(idx.size() * sizeof(unsigned)),
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)),
                  idx.data(), GL_STATIC_DRAW);
     for (unsigned a = 0; a < 4; ++a) {
       glEnableVertexAttribArray(a);
@@ -232,8 +238,8 @@ DistortionGl::~DistortionGl() {
 }
 
 void DistortionGl::predistort(const GlTexture& src, const GlTarget& panel, const RenderView& eye,
-                              const LensDistortion& lens, const DistortionSettings& s) {
-  const Eigen::Vector3d scale = s.correct_lca ? lens.lca_scale : Eigen::Vector3d::Ones();
+                              const effects::LensModel& lens, const DistortionSettings& s) {
+  const Eigen::Vector3d scale = s.correct_lca ? lca_scale(lens) : Eigen::Vector3d::Ones();
   panel.bind();
   glDisable(GL_BLEND);
   glClearColor(0, 0, 0, 1);
@@ -242,12 +248,13 @@ void DistortionGl::predistort(const GlTexture& src, const GlTarget& panel, const
   glBindTexture(GL_TEXTURE_2D, src.id());
   if (s.method == DistortionMethod::Mesh) {
     if (s.mesh_n < 2) throw GlError("DistortionGl: mesh_n must be at least 2");
+    const auto& lp = lens.params();
     const MeshKey key{s.mesh_n,
-                      {lens.c1, lens.c2},
+                      s.correct_lca,
+                      {lp.c1, lp.c2, lp.radius},
                       {scale.x(), scale.y(), scale.z()},
-                      {eye.tan_left, eye.tan_right, eye.tan_down, eye.tan_up},
-                      {eye.optical_centre_tan.x(), eye.optical_centre_tan.y()}};
-    if (!(key == impl_->mesh_key)) impl_->build_mesh(key, eye, lens, scale);
+                      {eye.tan_left, eye.tan_right, eye.tan_down, eye.tan_up}};
+    if (!(key == impl_->mesh_key)) impl_->build_mesh(key, eye, lens, panel.width(), panel.height());
     const GlProgram& p = impl_->mesh;
     p.use();
     glUniform1i(p.uniform("u_src"), 0);
@@ -265,6 +272,7 @@ void DistortionGl::predistort(const GlTexture& src, const GlTarget& panel, const
   const bool none = s.method == DistortionMethod::None;
   if (none) {
     glUniform2f(p.uniform("u_coef"), 0.0f, 0.0f);
+    glUniform1f(p.uniform("u_norm_radius"), 1.0f);
     glUniform3f(p.uniform("u_scale"), 1.0f, 1.0f, 1.0f);
     glUniform1f(p.uniform("u_ru_max"), 1e30f);
     glUniform1f(p.uniform("u_rd_max"), 1e30f);
@@ -276,7 +284,7 @@ void DistortionGl::predistort(const GlTexture& src, const GlTarget& panel, const
 }
 
 void DistortionGl::through_lens(const GlTexture& panel, const GlTarget& seen, const RenderView& eye,
-                                const LensDistortion& lens) {
+                                const effects::LensModel& lens) {
   seen.bind();
   glDisable(GL_BLEND);
   const GlProgram& p = impl_->through;
@@ -284,7 +292,7 @@ void DistortionGl::through_lens(const GlTexture& panel, const GlTarget& seen, co
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, panel.id());
   glUniform1i(p.uniform("u_panel"), 0);
-  set_lens_uniforms(p, seen, eye, lens, lens.lca_scale);
+  set_lens_uniforms(p, seen, eye, lens, lca_scale(lens));
   glBindVertexArray(impl_->empty_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

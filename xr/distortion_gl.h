@@ -2,13 +2,15 @@
 /// @brief Lens pre-distortion (pixel- and mesh-based, with inverse lateral chromatic aberration)
 /// and the through-the-lens simulation, on the GPU.
 ///
-/// The panel image of an eye spans the same tangent rectangle as its eye buffer (RenderView), so a
-/// panel pixel at tangent t_d (radius r_d about the optical centre) shows, per channel c, the eye
-/// buffer at radius r_u = f^-1(r_d / s_c) along the same direction (lens_distortion.h).
+/// The lens model is effects/lens_model.h (r_d = f(r_u) on radii normalised by R, centred on the
+/// optical axis, tangent (0, 0)). The panel image of an eye spans the same tangent rectangle as
+/// its eye buffer (RenderView / effects::EyeLens), so a panel pixel at tangent t_d shows, per
+/// channel c, the eye buffer at radius R f^-1(|t_d| / (R s_c)) along the same direction.
 ///  - Pixel: the fragment shader runs a capped Newton inverse per pixel and channel; black beyond
 ///    the valid radius (never a folded image) and outside the eye buffer.
-///  - Mesh: an N x N grid over the panel whose vertices carry one eye-buffer UV per channel,
-///    computed on the CPU in double; the rasteriser interpolates them linearly. Cost no longer
+///  - Mesh: effects::build_distortion_mesh (N x N, exact per-channel UVs in double) uploaded as
+///    vertex attributes; the rasteriser interpolates them linearly. The valid-radius cut is done
+///    per fragment, so the black edge is exact rather than following triangle edges. Cost no longer
 ///    depends on the iteration count; error falls with N (tests and docs/compositor.md).
 ///  - Through the lens: each pixel of what the wearer sees reads the panel at
 ///    r_d = s_c f(r_u): the forward model, to show the residual distortion and colour fringe.
@@ -17,7 +19,7 @@
 #include <memory>
 
 #include "xr/gl_texture.h"
-#include "xr/lens_distortion.h"
+#include "effects/lens_model.h"
 #include "xr/render_view.h"
 
 namespace vdfx::xr {
@@ -40,10 +42,10 @@ class DistortionGl {
   ~DistortionGl();
   /// Draws the pre-distorted panel image of `eye_buffer` into `panel`.
   void predistort(const GlTexture& eye_buffer, const GlTarget& panel, const RenderView& eye,
-                  const LensDistortion& lens, const DistortionSettings& settings);
+                  const effects::LensModel& lens, const DistortionSettings& settings);
   /// Draws what the wearer sees through the lens when `panel` is shown (forward model).
   void through_lens(const GlTexture& panel, const GlTarget& seen, const RenderView& eye,
-                    const LensDistortion& lens);
+                    const effects::LensModel& lens);
 
  private:
   struct Impl;

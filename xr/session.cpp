@@ -20,15 +20,15 @@ const char* to_string(SessionState s) {
   return "?";
 }
 
-Pose Pose::operator*(const Pose& c) const {
-  return {orientation * c.orientation, orientation * c.position + position};
+Pose operator*(const Pose& a, const Pose& b) {
+  return {a.orientation * b.orientation, a.orientation * b.position + a.position};
 }
 
-Session::Session(SessionConfig config) : config_(std::move(config)) {
-  if (!(config_.refresh_hz > 0.0 && config_.refresh_hz <= 1000.0))
-    throw SessionError("Session: refresh rate " + std::to_string(config_.refresh_hz) +
-                       " Hz is outside (0, 1000]");
-  period_ns_ = static_cast<std::int64_t>(std::llround(1e9 / config_.refresh_hz));
+Session::Session(HmdProfile profile) : profile_(std::move(profile)) {
+  if (!(profile_.refresh_hz > 0.0 && profile_.refresh_hz <= 1000.0))
+    throw SessionError("Session: refresh rate " + std::to_string(profile_.refresh_hz) +
+                       " Hz of profile '" + profile_.name + "' is outside (0, 1000]");
+  period_ns_ = static_cast<std::int64_t>(std::llround(1e9 / profile_.refresh_hz));
 }
 
 void Session::fail(const std::string& call, const std::string& what) const {
@@ -123,27 +123,28 @@ void Session::end_frame(std::int64_t display_time_ns, std::vector<QuadLayer> qua
   }
 }
 
-std::array<XrViewState, 2> Session::locate_views(const Pose& head_in_local,
-                                                 ReferenceSpace space) const {
-  std::array<XrViewState, 2> v;
-  for (size_t i = 0; i < 2; ++i) {
-    const EyeConfig& e = config_.eyes[i];
-    v[i].pose = space == ReferenceSpace::View ? e.eye_in_head : head_in_local * e.eye_in_head;
-    v[i].fov = e.fov;
-    v[i].optical_centre_tan = e.optical_centre_tan;
-  }
-  return v;
+std::array<EyeView, 2> Session::locate_views(const Pose& head_in_local,
+                                             ReferenceSpace space) const {
+  return locate_eye_views(space == ReferenceSpace::View ? Pose{} : head_in_local, profile_);
 }
 
 Pose Session::to_local(const Pose& pose, ReferenceSpace space, const Pose& head_in_local) {
   return space == ReferenceSpace::Local ? pose : head_in_local * pose;
 }
 
-RenderView render_view(const XrViewState& v) {
-  RenderView r = RenderView::from_angles(v.pose.orientation.toRotationMatrix(), v.fov.angle_left,
-                                         v.fov.angle_right, v.fov.angle_down, v.fov.angle_up);
-  r.position = v.pose.position;
-  r.optical_centre_tan = v.optical_centre_tan;
+Eigen::Matrix3d rotation_of(const Pose& p) {
+  const glm::dquat& q = p.orientation;
+  return Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized().toRotationMatrix();
+}
+
+Eigen::Vector3d position_of(const Pose& p) { return {p.position.x, p.position.y, p.position.z}; }
+
+RenderView render_view(const EyeView& v) {
+  const double d = effects::kDegToRad;
+  RenderView r = RenderView::from_angles(rotation_of(v.pose), v.fov.angle_left * d,
+                                         v.fov.angle_right * d, v.fov.angle_down * d,
+                                         v.fov.angle_up * d);
+  r.position = position_of(v.pose);
   return r;
 }
 

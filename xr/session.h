@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "xr/eye_views.h"
+#include "xr/hmd_profile.h"
 #include "xr/render_view.h"
 
 namespace vdfx::xr {
@@ -30,38 +32,9 @@ const char* to_string(SessionState s);
 
 enum class ReferenceSpace { View, Local };
 
-/// Rigid pose (XrPosef): orientation then position, mapping the local frame into its parent.
-struct Pose {
-  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();
-  /// this * child: child's frame expressed in this pose's parent.
-  Pose operator*(const Pose& child) const;
-  Eigen::Vector3d transform(const Eigen::Vector3d& p) const { return orientation * p + position; }
-};
-
-/// XrFovf: angles in radians, left and down negative for a usual eye.
-struct ViewFov {
-  double angle_left = -0.8, angle_right = 0.8, angle_up = 0.8, angle_down = -0.8;
-};
-
-/// XrView: one eye's pose in the located space and its asymmetric FOV.
-struct XrViewState {
-  Pose pose;
-  ViewFov fov;
-  Eigen::Vector2d optical_centre_tan = Eigen::Vector2d::Zero();  //!< lens centre, tangent units
-};
-
-/// What the session needs of the headset per eye (filled from xr/eye_views.h).
-struct EyeConfig {
-  Pose eye_in_head;  //!< eye relative to the head (VIEW space): IPD/2 sideways
-  ViewFov fov;
-  Eigen::Vector2d optical_centre_tan = Eigen::Vector2d::Zero();
-};
-
-struct SessionConfig {
-  double refresh_hz = 90.0;
-  std::array<EyeConfig, 2> eyes;
-};
+/// Pose (XrPosef) is xr/eye_views.h's: orientation then position, mapping a local frame into
+/// its parent. a * b is b's frame expressed in a's parent.
+Pose operator*(const Pose& a, const Pose& b);
 
 /// XrFrameState.
 struct FrameState {
@@ -77,7 +50,6 @@ struct QuadLayer {
   Pose pose;                                     //!< centre of the quad, +z towards the viewer
   Eigen::Vector2d size_m = {1.0, 0.5};           //!< width, height in metres
   unsigned texture = 0;                          //!< GL texture name (0: none yet)
-  bool operator==(const QuadLayer&) const = default;
 };
 
 struct SessionStateEvent {
@@ -92,7 +64,8 @@ class SessionError : public std::logic_error {
 
 class Session {
  public:
-  explicit Session(SessionConfig config);
+  /// Refresh rate, IPD and eye FOVs come from the headset profile.
+  explicit Session(HmdProfile profile);
 
   SessionState state() const { return state_; }
   /// Next queued state change (xrPollEvent). The runtime moves IDLE to READY on the first poll.
@@ -118,18 +91,18 @@ class Session {
   std::int64_t frames_ended() const { return frames_ended_; }
 
   /// xrLocateViews: both eyes at `head_in_local` (the input backend's pose at the display time),
-  /// in VIEW (head-locked) or LOCAL space.
-  std::array<XrViewState, 2> locate_views(const Pose& head_in_local, ReferenceSpace space) const;
+  /// in VIEW (head-locked) or LOCAL space (xr/eye_views.h does the per-eye geometry).
+  std::array<EyeView, 2> locate_views(const Pose& head_in_local, ReferenceSpace space) const;
   /// The pose of a layer authored in `space`, in LOCAL.
   static Pose to_local(const Pose& pose, ReferenceSpace space, const Pose& head_in_local);
-  const SessionConfig& config() const { return config_; }
+  const HmdProfile& profile() const { return profile_; }
 
  private:
   void set_state(SessionState s, std::int64_t now_ns);
   bool running() const;
   [[noreturn]] void fail(const std::string& call, const std::string& what) const;
 
-  SessionConfig config_;
+  HmdProfile profile_;
   SessionState state_ = SessionState::Idle;
   std::deque<SessionStateEvent> events_;
   bool exit_requested_ = false;
@@ -142,7 +115,10 @@ class Session {
   std::vector<QuadLayer> quads_;
 };
 
-/// The renderer's view of an eye located by the session.
-RenderView render_view(const XrViewState& v);
+/// The renderer's view of an eye located by the session (lens centre on the optical axis).
+RenderView render_view(const EyeView& v);
+/// Rotation and translation of a pose as Eigen types.
+Eigen::Matrix3d rotation_of(const Pose& p);
+Eigen::Vector3d position_of(const Pose& p);
 
 }  // namespace vdfx::xr

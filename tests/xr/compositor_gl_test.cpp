@@ -27,8 +27,10 @@ CompositorConfig small_config(DistortionMethod m) {
   c.eye_width = kW;
   c.eye_height = kH;
   c.distortion.method = m;
-  c.lens.c1 = 0.2;
-  c.lens.c2 = 0.1;
+  effects::LensParams lp;
+  lp.c1 = 0.2;
+  lp.c2 = 0.1;
+  c.lens = effects::LensModel(lp);
   c.gpu_timing = true;
   return c;
 }
@@ -48,9 +50,12 @@ TEST_F(CompositorGlTest, QuadLayersComeAfterTheEffectsAndFollowTheirSpace) {
   quad.size_m = {0.2, 0.2};
   quad.texture = panel_tex.id();
   Pose head;
-  head.orientation = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY());
-  const double a = std::atan(0.8);  // XrFovf holds angles: tangents +-0.8
-  const RenderView eye = render_view({head, {-a, a, a, -a}, {0, 0}});
+  head.orientation = glm::angleAxis(M_PI / 2, glm::dvec3(0, 1, 0));
+  const double a = std::atan(0.8) * effects::kRadToDeg;  // tangents +-0.8
+  EyeView ev;
+  ev.pose = head;
+  ev.fov = {-a, a, a, -a};
+  const RenderView eye = render_view(ev);
   comp.render_eye(0, {eye, p, effects::non_neutral_mask(p)}, std::span(&quad, 1), head);
   cv::Mat img = test::bgr_clamped(comp.read_eye_buffer(0));
   // The quad centre projects to tangent (0.3, 0): pixel x = (0.3 + 0.8) / 1.6 * W.

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "gl_test_support.h"
+#include "effects/distortion_mesh.h"
 #include "xr/distortion_gl.h"
 #include "xr/video_layer.h"
 
@@ -16,33 +17,39 @@ using test::GlTest;
 
 constexpr int kSize = 320;
 
+// An asymmetric eye (more FOV on the nasal side): the lens centre, on the optical axis, is off
+// the panel centre.
 RenderView eye_view() {
   RenderView v = RenderView::look_at({20, 5}, 0, 90.0, kSize, kSize);
-  v.optical_centre_tan = {0.04, -0.02};
+  v.tan_left = -1.08;
+  v.tan_right = 0.92;
+  v.tan_down = -0.96;
+  v.tan_up = 1.04;
   return v;
 }
 
-LensDistortion test_lens() {
-  LensDistortion l;
-  l.c1 = 0.22;
-  l.c2 = 0.24;
-  return l;
+effects::LensModel test_lens(std::array<double, 3> lca = {1, 1, 1}) {
+  effects::LensParams p;
+  p.c1 = 0.22;
+  p.c2 = 0.24;
+  p.lca_scale = lca;
+  return effects::LensModel(p);
 }
 
 // Pixels of the wearer's view whose panel point (every channel) lies at least `margin` pixels
 // inside the panel: elsewhere the wearer sees black by design.
-cv::Mat seen_mask(const RenderView& v, const LensDistortion& lens, double margin) {
+cv::Mat seen_mask(const RenderView& v, const effects::LensModel& lens, double margin) {
   cv::Mat m(kSize, kSize, CV_8U, cv::Scalar(0));
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
-      const Eigen::Vector2d rel = v.tangent_at(x + 0.5, y + 0.5, kSize, kSize) - v.optical_centre_tan;
-      const double ru = rel.norm();
       bool ok = true;
       for (int c = 0; c < 3; ++c) {
-        const double rd = lens.lca_scale[c] * lens.forward(ru);
-        const Eigen::Vector2d p =
-            v.pixel_at(v.optical_centre_tan + (ru > 0 ? Eigen::Vector2d(rel * (rd / ru)) : Eigen::Vector2d::Zero()),
-                       kSize, kSize);
+        const auto t = lens.view_to_panel(v.tangent_at(x + 0.5, y + 0.5, kSize, kSize), c);
+        if (!t) {
+          ok = false;
+          continue;
+        }
+        const Eigen::Vector2d p = v.pixel_at(*t, kSize, kSize);
         ok = ok && p.x() > margin && p.y() > margin && p.x() < kSize - margin && p.y() < kSize - margin;
       }
       m.at<uchar>(y, x) = ok ? 255 : 0;
@@ -79,7 +86,7 @@ class DistortionGlTest : public GlTest {
 TEST_F(DistortionGlTest, ThroughTheLensOfThePreDistortedImageReproducesTheImage) {
   DistortionGl dist;
   GlTarget panel(kSize, kSize, TexFormat::RGBA16F), seen(kSize, kSize, TexFormat::RGBA16F);
-  const LensDistortion lens = test_lens();
+  const effects::LensModel lens = test_lens();
   const cv::Mat original = test::bgr_clamped(eye_buffer_.read_float());
   const cv::Mat mask = seen_mask(eye_view(), lens, 2.0);
   ASSERT_GT(cv::countNonZero(mask), kSize * kSize / 2);
@@ -112,7 +119,7 @@ TEST_F(DistortionGlTest, ThroughTheLensOfThePreDistortedImageReproducesTheImage)
 TEST_F(DistortionGlTest, MeshSamplePositionErrorFallsAsTheGridGrows) {
   DistortionGl dist;
   GlTarget uv(kSize, kSize, TexFormat::RG32F);
-  const LensDistortion lens = test_lens();
+  const effects::LensModel lens = test_lens();
   DistortionSettings exact{DistortionMethod::Pixel, 0, 30, true, true};
   dist.predistort(eye_buffer_.texture(), uv, eye_view(), lens, exact);
   const cv::Mat ref = uv.read_float();
@@ -144,8 +151,7 @@ TEST_F(DistortionGlTest, InverseLcaMakesTheColourFringesCancel) {
   cv::cvtColor(grey, grey, cv::COLOR_GRAY2BGR);
   GlTexture src(kSize, kSize, TexFormat::RGBA32F);
   src.upload(grey);
-  LensDistortion lens = test_lens();
-  lens.lca_scale = {0.985, 1.0, 1.015};  // OpenHMD's DK2 values
+  const effects::LensModel lens = test_lens({0.985, 1.0, 1.015});  // OpenHMD's DK2 values
   const cv::Mat mask = seen_mask(eye_view(), lens, 2.0);
   DistortionGl dist;
   GlTarget panel(kSize, kSize, TexFormat::RGBA16F), seen(kSize, kSize, TexFormat::RGBA16F);
@@ -170,9 +176,10 @@ TEST_F(DistortionGlTest, InverseLcaMakesTheColourFringesCancel) {
 }
 
 TEST_F(DistortionGlTest, BeyondTheValidRadiusThePanelIsBlackNotFolded) {
-  LensDistortion lens;
-  lens.c1 = -0.25;  // f' = 1 - 0.75 r^2 reaches 0 at r = 1.1547: r_d max = 0.7698
-  ASSERT_NEAR(lens.max_valid_distorted_radius(), 2.0 / 3.0 * std::sqrt(4.0 / 3.0), 1e-12);
+  effects::LensParams lp;
+  lp.c1 = -0.25;  // f' = 1 - 0.75 r^2 reaches 0 at r = 1.1547: r_d max = 0.7698
+  const effects::LensModel lens(lp);
+  ASSERT_NEAR(lens.max_distorted_radius(), 2.0 / 3.0 * std::sqrt(4.0 / 3.0), 1e-12);
   GlTexture white(kSize, kSize, TexFormat::RGBA32F);
   white.upload(cv::Mat(kSize, kSize, CV_32FC3, cv::Scalar::all(1.0)));
   DistortionGl dist;

@@ -9,14 +9,18 @@
 namespace vdfx::xr {
 namespace {
 
-SessionConfig config(double hz) {
-  SessionConfig c;
-  c.refresh_hz = hz;
-  c.eyes[0].eye_in_head.position = {-0.032, 0, 0};
-  c.eyes[0].fov = {-0.9, 0.7, 0.8, -0.85};
-  c.eyes[1].eye_in_head.position = {0.032, 0, 0};
-  c.eyes[1].fov = {-0.7, 0.9, 0.8, -0.85};
-  return c;
+HmdProfile config(double hz) {
+  HmdProfile p;
+  p.name = "test";
+  p.refresh_hz = hz;
+  p.ipd_m = 0.064;
+  for (auto& e : p.eyes) {
+    e.width = 100;
+    e.height = 100;
+  }
+  p.eyes[0].fov = {-50, 40, 45, -48};
+  p.eyes[1].fov = {-40, 50, 45, -48};
+  return p;
 }
 
 std::vector<SessionState> drain(Session& s, std::int64_t t) {
@@ -126,25 +130,29 @@ TEST(Session, FastFramesGetSuccessiveVsyncsAndLateFramesSkip) {
 TEST(Session, ViewsCombineHeadPoseAndEyeOffsets) {
   Session s(config(90));
   Pose head;
-  head.orientation = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY());  // turned left
+  head.orientation = glm::angleAxis(M_PI / 2, glm::dvec3(0, 1, 0));  // turned left
   head.position = {0, 1.6, 0};
   const auto local = s.locate_views(head, ReferenceSpace::Local);
   // The right eye (+x in the head) of a head turned 90 degrees left sits at -z in LOCAL.
-  EXPECT_LT((local[1].pose.position - Eigen::Vector3d(0, 1.6, -0.032)).norm(), 1e-12);
-  EXPECT_LT((local[0].pose.position - Eigen::Vector3d(0, 1.6, 0.032)).norm(), 1e-12);
-  EXPECT_DOUBLE_EQ(local[0].fov.angle_left, -0.9);
+  EXPECT_LT((position_of(local[1].pose) - Eigen::Vector3d(0, 1.6, -0.032)).norm(), 1e-12);
+  EXPECT_LT((position_of(local[0].pose) - Eigen::Vector3d(0, 1.6, 0.032)).norm(), 1e-12);
+  EXPECT_DOUBLE_EQ(local[0].fov.angle_left, -50);
   const auto view = s.locate_views(head, ReferenceSpace::View);
-  EXPECT_LT((view[1].pose.position - Eigen::Vector3d(0.032, 0, 0)).norm(), 1e-12);
+  EXPECT_LT((position_of(view[1].pose) - Eigen::Vector3d(0.032, 0, 0)).norm(), 1e-12);
   // The render view looks where the head looks: -z turned left is -x.
   const RenderView rv = render_view(local[0]);
   EXPECT_LT((rv.orientation * Eigen::Vector3d(0, 0, -1) - Eigen::Vector3d(-1, 0, 0)).norm(), 1e-12);
-  EXPECT_NEAR(rv.tan_left, std::tan(-0.9), 1e-15);
+  EXPECT_NEAR(rv.tan_left, std::tan(-50 * M_PI / 180), 1e-15);
   // A head-locked quad moves with the head.
   Pose quad;
   quad.position = {0, 0, -1};
-  EXPECT_LT((Session::to_local(quad, ReferenceSpace::View, head).position -
+  EXPECT_LT((position_of(Session::to_local(quad, ReferenceSpace::View, head)) -
              Eigen::Vector3d(-1, 1.6, 0)).norm(), 1e-12);
-  EXPECT_EQ(Session::to_local(quad, ReferenceSpace::Local, head).position, quad.position);
+  EXPECT_EQ(position_of(Session::to_local(quad, ReferenceSpace::Local, head)), position_of(quad));
+}
+
+TEST(Session, RejectsAnImpossibleRefreshRate) {
+  EXPECT_THROW(Session(config(0.0)), SessionError);
 }
 
 }  // namespace
