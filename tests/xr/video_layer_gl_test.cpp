@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "effects/coords.h"
+#include "effects/equirect_sampler.h"
 #include "gl_test_support.h"
 #include "xr/gl_texture.h"
 #include "xr/video_layer.h"
@@ -15,29 +16,18 @@ namespace {
 
 using test::GlTest;
 
-// Bilinear sample of a BGR float equirect at texture coordinates (u, v), v = 0 at the top row;
-// wraps in u, clamps in v, texel centres at (i + 0.5) / W.
-cv::Vec3f bilinear(const cv::Mat& img, double u, double v) {
-  const double x = u * img.cols - 0.5, y = v * img.rows - 0.5;
-  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-  const double fx = x - x0, fy = y - y0;
-  const auto at = [&](int xx, int yy) {
-    xx = ((xx % img.cols) + img.cols) % img.cols;
-    yy = std::clamp(yy, 0, img.rows - 1);
-    return cv::Vec3d(img.at<cv::Vec3f>(yy, xx));
-  };
-  const cv::Vec3d c = (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
-                      fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
-  return cv::Vec3f(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]));
-}
-
-cv::Vec3f sample_ray(const cv::Mat& equirect, const Eigen::Vector3d& ray) {
-  const Eigen::Vector2d uv = effects::to_equirect_uv(effects::from_unit(ray));
-  return bilinear(equirect, uv.x(), uv.y());
+// The CPU reference sampler (effects/equirect_sampler.h, level-0 bilinear, rows clamped like
+// GL's CLAMP_TO_EDGE) on the RGB version of the image; returns BGR.
+cv::Vec3f sample_ray(const effects::EquirectSampler& sampler, const Eigen::Vector3d& ray) {
+  const Eigen::Vector3d c = sampler.sample(ray);
+  return cv::Vec3f(static_cast<float>(c.z()), static_cast<float>(c.y()), static_cast<float>(c.x()));
 }
 
 // CPU render: `ss` x `ss` samples per pixel, box-filtered (ss = 1: one sample at the centre).
-cv::Mat cpu_render(const cv::Mat& equirect, const RenderView& v, int w, int h, int ss) {
+cv::Mat cpu_render(const cv::Mat& equirect_bgr, const RenderView& v, int w, int h, int ss) {
+  cv::Mat rgb;
+  cv::cvtColor(equirect_bgr, rgb, cv::COLOR_BGR2RGB);
+  const effects::EquirectSampler equirect(rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
   cv::Mat out(h, w, CV_32FC3);
   out.forEach<cv::Vec3f>([&](cv::Vec3f& px, const int* pos) {
     cv::Vec3d acc(0, 0, 0);
