@@ -16,18 +16,19 @@ unsigned non_neutral_mask(const StackParams& p) {
 std::string blur_horizontal_fragment_source() {
   return R"(out vec4 frag;
 uniform sampler2D u_src;
-uniform int u_radius;
-uniform float u_inv_two_sigma2;
-uniform float u_norm;
+uniform sampler2D u_taps;    // texel k: (offset in texels, weight) of a symmetric pair
+uniform int u_tap_count;
+uniform float u_centre_weight;
 void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  int last = textureSize(u_src, 0).x - 1;
-  vec3 acc = vec3(0.0);
-  for (int i = -u_radius; i <= u_radius; ++i) {
-    float w = exp(-float(i * i) * u_inv_two_sigma2);
-    acc += w * texelFetch(u_src, ivec2(clamp(p.x + i, 0, last), p.y), 0).rgb;
+  vec2 texel = 1.0 / vec2(textureSize(u_src, 0));
+  vec2 p = gl_FragCoord.xy * texel;
+  vec3 acc = u_centre_weight * texture(u_src, p).rgb;
+  for (int k = 0; k < u_tap_count; ++k) {
+    vec2 t = texelFetch(u_taps, ivec2(k, 0), 0).xy;
+    vec2 d = vec2(t.x * texel.x, 0.0);
+    acc += t.y * (texture(u_src, p + d).rgb + texture(u_src, p - d).rgb);
   }
-  frag = vec4(acc * u_norm, 1.0);
+  frag = vec4(acc, 1.0);
 }
 )";
 }
@@ -46,9 +47,9 @@ std::string stack_fragment_source(unsigned mask) {
   s += R"(out vec4 frag;
 uniform sampler2D u_src;
 #if HAS_BLUR
-uniform int u_radius;
-uniform float u_inv_two_sigma2;
-uniform float u_norm;
+uniform sampler2D u_taps;
+uniform int u_tap_count;
+uniform float u_centre_weight;
 #endif
 #if HAS_TINT
 uniform vec3 u_tint;
@@ -72,13 +73,14 @@ void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
 #if HAS_BLUR
   // Vertical half of the separable Gaussian (the horizontal half ran in the pass before).
-  int last = textureSize(u_src, 0).y - 1;
-  vec3 c = vec3(0.0);
-  for (int i = -u_radius; i <= u_radius; ++i) {
-    float w = exp(-float(i * i) * u_inv_two_sigma2);
-    c += w * texelFetch(u_src, ivec2(p.x, clamp(p.y + i, 0, last)), 0).rgb;
+  vec2 texel = 1.0 / vec2(textureSize(u_src, 0));
+  vec2 q0 = gl_FragCoord.xy * texel;
+  vec3 c = u_centre_weight * texture(u_src, q0).rgb;
+  for (int k = 0; k < u_tap_count; ++k) {
+    vec2 t = texelFetch(u_taps, ivec2(k, 0), 0).xy;
+    vec2 d = vec2(0.0, t.x * texel.y);
+    c += t.y * (texture(u_src, q0 + d).rgb + texture(u_src, q0 - d).rgb);
   }
-  c *= u_norm;
 #else
   vec3 c = texelFetch(u_src, p, 0).rgb;
 #endif

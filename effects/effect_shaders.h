@@ -22,12 +22,15 @@ inline constexpr unsigned kAllEffectsMask = (1u << kEffectCount) - 1u;
 /// The effects of `p` that change some pixel (StackParams::is_neutral is false).
 unsigned non_neutral_mask(const StackParams& p);
 
-/// Pass 1: horizontal Gaussian. Uniforms: u_src, u_radius (int), u_inv_two_sigma2, u_norm
-/// (1 / sum of the weights, computed in double on the CPU). Replicates the border pixel.
+/// Pass 1: horizontal Gaussian. Uniforms: u_src (linear filtering, clamp to edge), u_taps (an
+/// RG32F row: texel k = (offset, weight) of the symmetric pair of taps k), u_tap_count,
+/// u_centre_weight. Two neighbouring kernel taps i, i+1 are read with one bilinear fetch at
+/// i + w_{i+1} / (w_i + w_{i+1}) weighted w_i + w_{i+1} (exact for linear filtering), halving the
+/// fetches; clamp-to-edge makes taps beyond the border read the border pixel (replicate).
 std::string blur_horizontal_fragment_source();
 
 /// Pass 2 for the effects in `mask`. Uniforms (present only when their effect is compiled in):
-/// u_src; blur: u_radius, u_inv_two_sigma2, u_norm; u_tint (vec3 gain), u_exposure_gain (2^stops),
+/// u_src; blur: u_taps, u_tap_count, u_centre_weight (as pass 1, vertical); u_tint (vec3 gain), u_exposure_gain (2^stops),
 /// u_saturation, u_contrast, u_vignette (radius, falloff in radians); vignette geometry u_tan
 /// (left, right, down, up tangents), u_size (pixels), u_centre_tan (optical centre).
 std::string stack_fragment_source(unsigned mask);

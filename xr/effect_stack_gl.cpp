@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <vector>
 
 #include "effects/effect_shaders.h"
 #include "xr/effect_stack_gl.h"
@@ -26,14 +27,25 @@ BlurPixels blur_pixels(double sigma_deg, const RenderView& v, int width, int hei
 
 namespace {
 
-// Sets u_radius, u_inv_two_sigma2, u_norm for a 1-D Gaussian of `sigma` pixels.
-void set_gaussian(const GlProgram& p, double sigma, int radius) {
+// The paired-tap table of a 1-D Gaussian of `sigma` pixels and `radius` taps per side, weights
+// normalised in double: texel k = (offset, weight) of the pair +-offset; returns the centre weight.
+double gaussian_taps(double sigma, int radius, cv::Mat* taps) {
+  std::vector<double> w(static_cast<size_t>(radius) + 1);
   double sum = 0.0;
-  const double inv = sigma > 0.0 ? 1.0 / (2.0 * sigma * sigma) : 0.0;
-  for (int i = -radius; i <= radius; ++i) sum += std::exp(-i * i * inv);
-  glUniform1i(p.uniform("u_radius"), radius);
-  glUniform1f(p.uniform("u_inv_two_sigma2"), static_cast<float>(inv));
-  glUniform1f(p.uniform("u_norm"), static_cast<float>(1.0 / sum));
+  for (int i = 0; i <= radius; ++i) {
+    w[static_cast<size_t>(i)] = std::exp(-i * i / (2.0 * sigma * sigma));
+    sum += (i == 0 ? 1.0 : 2.0) * w[static_cast<size_t>(i)];
+  }
+  for (double& x : w) x /= sum;
+  std::vector<cv::Vec2f> t;
+  for (int i = 1; i <= radius; i += 2) {
+    const double a = w[static_cast<size_t>(i)];
+    const double b = i + 1 <= radius ? w[static_cast<size_t>(i + 1)] : 0.0;
+    t.emplace_back(static_cast<float>(i + b / (a + b)), static_cast<float>(a + b));
+  }
+  if (t.empty()) t.emplace_back(0.0f, 0.0f);
+  *taps = cv::Mat(t, true).reshape(2, 1);
+  return w[0];
 }
 
 }  // namespace
@@ -59,6 +71,22 @@ const GlProgram& EffectStackGl::program_for(unsigned mask) {
   return it->second;
 }
 
+void EffectStackGl::set_gaussian(const GlProgram& p, double sigma, int radius, int unit) {
+  cv::Mat taps;
+  const double centre = gaussian_taps(sigma, radius, &taps);
+  // Upload on the tap table's own unit: unit 0 holds the source image.
+  glActiveTexture(GL_TEXTURE0 + static_cast<unsigned>(unit) + 1);
+  GlTexture& t = taps_[unit];
+  if (!t || t.width() != taps.cols) t = GlTexture(taps.cols, 1, TexFormat::RG32F);
+  t.set_sampling(false, false);
+  t.upload(taps);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glUniform1i(p.uniform("u_taps"), unit + 1);
+  glUniform1i(p.uniform("u_tap_count"), (radius + 1) / 2);
+  glUniform1f(p.uniform("u_centre_weight"), static_cast<float>(centre));
+  glActiveTexture(GL_TEXTURE0);
+}
+
 void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effects::StackParams& sp,
                           unsigned mask, const RenderView& v) {
   const int w = dst.width(), h = dst.height();
@@ -78,7 +106,7 @@ void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effec
     blur_h_.use();
     glBindTexture(GL_TEXTURE_2D, src.id());
     glUniform1i(blur_h_.uniform("u_src"), 0);
-    set_gaussian(blur_h_, blur.sigma_x, blur.radius_x);
+    set_gaussian(blur_h_, blur.sigma_x, blur.radius_x, 0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     pass2_src = scratch_.texture().id();
   }
@@ -87,7 +115,7 @@ void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effec
   p.use();
   glBindTexture(GL_TEXTURE_2D, pass2_src);
   glUniform1i(p.uniform("u_src"), 0);
-  if (blur_on) set_gaussian(p, blur.sigma_y, blur.radius_y);
+  if (blur_on) set_gaussian(p, blur.sigma_y, blur.radius_y, 1);
   if (mask & shader_bit(EffectType::Tint)) {
     const Eigen::Vector3f g = sp.tint_gain.cast<float>();
     glUniform3f(p.uniform("u_tint"), g.x(), g.y(), g.z());

@@ -4,8 +4,8 @@
 /// Blur: separable Gaussian, sigma in degrees converted to pixels at the optical centre
 /// (one pixel spans (tan_right - tan_left) / W tangent units, and d angle / d tan = 1 / (1 + c^2)
 /// at tangent c), radius ceil(3 sigma_px), border pixels replicated, weights normalised (their sum
-/// computed in double on the CPU). Intermediate results stay in float textures (RGBA16F by
-/// default) so no 8-bit rounding happens between passes. The per-pixel effects follow in the pass
+/// computed in double on the CPU), two taps per bilinear fetch. Intermediate results stay in
+/// float textures (RGBA16F by default) so no 8-bit rounding happens between passes. The per-pixel effects follow in the pass
 /// that does the vertical blur; the vignette is centred on the eye's optical centre
 /// (RenderView::optical_centre_tan).
 #pragma once
@@ -41,10 +41,12 @@ class EffectStackGl {
 
  private:
   const GlProgram& program_for(unsigned mask);
+  void set_gaussian(const GlProgram& p, double sigma, int radius, int unit);
   TexFormat scratch_format_;
   GlProgram blur_h_;
   std::map<unsigned, GlProgram> programs_;
   GlTarget scratch_;
+  GlTexture taps_[2];  //!< paired-tap tables of the horizontal and vertical pass
   unsigned vao_ = 0;
 };
 

@@ -64,6 +64,7 @@ void GlTexture::upload(const cv::Mat& m) {
                   std::to_string(height_));
   GLenum fmt = 0, type = 0;
   switch (m.type()) {
+    case CV_32FC2: fmt = GL_RG; type = GL_FLOAT; break;
     case CV_8UC3: fmt = GL_BGR; type = GL_UNSIGNED_BYTE; break;
     case CV_8UC4: fmt = GL_BGRA; type = GL_UNSIGNED_BYTE; break;
     case CV_32FC3: fmt = GL_BGR; type = GL_FLOAT; break;
