@@ -9,6 +9,7 @@ namespace vdfx::app {
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> list = {
+      {"devices", "list HID input devices (gamepads, SpaceMouse) and their ids for --input hid:", cmd_devices},
       {"eval", "print the interpolated parameters of every effect at given views", cmd_eval},
       {"hmd", "list the simulated headsets, or show one (vdfx hmd list | show NAME)", cmd_hmd},
       {"render", "render one view of a panorama or video frame to a PNG", cmd_render},

@@ -1,0 +1,306 @@
+/// @file
+/// @brief Software rasteriser of canvas.h: signed-distance coverage, premultiplied "over".
+#include "ui/canvas.h"
+
+#include "ui/font.h"
+#include "ui/utf8.h"
+
+#include <glm/geometric.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vdfx::ui {
+
+namespace {
+
+void premultiply(Rgba c, float out[4]) {
+  out[0] = c.r * c.a * 255.f;
+  out[1] = c.g * c.a * 255.f;
+  out[2] = c.b * c.a * 255.f;
+  out[3] = c.a * 255.f;
+}
+
+double rounded_box_distance(glm::dvec2 p, const Rect& r, double radius) {
+  const glm::dvec2 half{0.5 * r.w, 0.5 * r.h};
+  radius = std::clamp(radius, 0.0, std::min(half.x, half.y));
+  const glm::dvec2 q = glm::abs(p - r.centre()) - half + glm::dvec2(radius);
+  return glm::length(glm::max(q, glm::dvec2(0.0))) + std::min(std::max(q.x, q.y), 0.0) - radius;
+}
+
+double segment_distance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
+  const glm::dvec2 ab = b - a, ap = p - a;
+  const double len2 = glm::dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(glm::dot(ap, ab) / len2, 0.0, 1.0) : 0.0;
+  return glm::length(ap - t * ab);
+}
+
+Rect bounds_of(std::span<const glm::dvec2> pts, double pad) {
+  glm::dvec2 lo = pts.front(), hi = pts.front();
+  for (auto p : pts) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return {lo.x - pad, lo.y - pad, hi.x - lo.x + 2 * pad, hi.y - lo.y + 2 * pad};
+}
+
+}  // namespace
+
+Canvas::Canvas(int width, int height)
+    : image_(height, width, CV_8UC4, cv::Scalar::all(0)),
+      clips_{Rect{0, 0, static_cast<double>(width), static_cast<double>(height)}} {}
+
+cv::Mat Canvas::to_straight_rgba() const {
+  cv::Mat out = image_.clone();
+  out.forEach<cv::Vec4b>([](cv::Vec4b& p, const int*) {
+    if (p[3] == 0) {
+      p = cv::Vec4b(0, 0, 0, 0);
+      return;
+    }
+    for (int k = 0; k < 3; ++k)
+      p[k] = static_cast<uchar>(std::min(255, (p[k] * 255 + p[3] / 2) / p[3]));
+  });
+  return out;
+}
+
+void Canvas::clear(Rgba c) {
+  float pm[4];
+  premultiply(c, pm);
+  image_.setTo(cv::Scalar(std::round(pm[0]), std::round(pm[1]), std::round(pm[2]),
+                          std::round(pm[3])));
+}
+
+void Canvas::push_clip(const Rect& r) { clips_.push_back(clips_.back().intersect(r)); }
+
+void Canvas::pop_clip() {
+  if (clips_.size() <= 1) throw std::logic_error("Canvas::pop_clip without push_clip");
+  clips_.pop_back();
+}
+
+Canvas::PixelBox Canvas::pixel_box(const Rect& r) const {
+  const Rect c = clips_.back();
+  // The clip is applied on whole pixels: a pixel is drawn if its centre lies inside the clip.
+  const int cx0 = static_cast<int>(std::ceil(c.x - 0.5)), cy0 = static_cast<int>(std::ceil(c.y - 0.5));
+  const int cx1 = static_cast<int>(std::ceil(c.right() - 0.5));
+  const int cy1 = static_cast<int>(std::ceil(c.bottom() - 0.5));
+  PixelBox b{static_cast<int>(std::floor(r.x)), static_cast<int>(std::floor(r.y)),
+             static_cast<int>(std::ceil(r.right())), static_cast<int>(std::ceil(r.bottom()))};
+  b.x0 = std::max({b.x0, cx0, 0});
+  b.y0 = std::max({b.y0, cy0, 0});
+  b.x1 = std::min({b.x1, cx1, width()});
+  b.y1 = std::min({b.y1, cy1, height()});
+  return b;
+}
+
+void Canvas::blend(int x, int y, float coverage, const float pm[4]) {
+  auto& d = image_.at<cv::Vec4b>(y, x);
+  const float keep = 1.f - coverage * pm[3] / 255.f;
+  for (int k = 0; k < 4; ++k)
+    d[k] = static_cast<uchar>(std::clamp(std::lround(pm[k] * coverage + d[k] * keep), 0L, 255L));
+}
+
+template <class Distance>
+void Canvas::fill_distance(const Rect& bounds, Rgba c, Distance&& dist,
+                           std::span<const Rect> solid) {
+  if (c.a <= 0.f) return;
+  float pm[4];
+  premultiply(c, pm);
+  const PixelBox b = pixel_box(bounds.inset(-1.0));
+  for (int y = b.y0; y < b.y1; ++y)
+    for (int x = b.x0; x < b.x1; ++x) {
+      const glm::dvec2 centre(x + 0.5, y + 0.5);
+      if (std::any_of(solid.begin(), solid.end(), [&](const Rect& s) { return s.contains(centre); })) {
+        blend(x, y, 1.f, pm);
+        continue;
+      }
+      const double d = dist(centre);
+      const float cov = static_cast<float>(std::clamp(0.5 - d, 0.0, 1.0));
+      if (cov > 0.f) blend(x, y, cov, pm);
+    }
+}
+
+void Canvas::fill_rounded_rect(const Rect& r, double radius, Rgba c) {
+  if (r.empty()) return;
+  // The cross of the rectangle minus its corner squares, shrunk by half a pixel, is solid.
+  const double rad = std::clamp(radius, 0.0, 0.5 * std::min(r.w, r.h)) + 0.5;
+  const Rect solid[2] = {{r.x + 0.5, r.y + rad, r.w - 1.0, r.h - 2 * rad},
+                         {r.x + rad, r.y + 0.5, r.w - 2 * rad, r.h - 1.0}};
+  fill_distance(r, c, [&](glm::dvec2 p) { return rounded_box_distance(p, r, radius); }, solid);
+}
+
+void Canvas::stroke_rounded_rect(const Rect& r, double radius, double width, Rgba c) {
+  if (r.empty()) return;
+  fill_distance(r, c, [&](glm::dvec2 p) {
+    const double d = rounded_box_distance(p, r, radius);
+    return std::abs(d + 0.5 * width) - 0.5 * width;
+  });
+}
+
+void Canvas::fill_circle(glm::dvec2 centre, double radius, Rgba c) {
+  const Rect b{centre.x - radius, centre.y - radius, 2 * radius, 2 * radius};
+  fill_distance(b, c, [&](glm::dvec2 p) { return glm::length(p - centre) - radius; });
+}
+
+void Canvas::stroke_circle(glm::dvec2 centre, double radius, double width, Rgba c) {
+  const double outer = radius + 0.5 * width;
+  const Rect b{centre.x - outer, centre.y - outer, 2 * outer, 2 * outer};
+  fill_distance(b, c, [&](glm::dvec2 p) {
+    return std::abs(glm::length(p - centre) - radius) - 0.5 * width;
+  });
+}
+
+void Canvas::line(glm::dvec2 a, glm::dvec2 b, double width, Rgba c) {
+  const glm::dvec2 pts[2] = {a, b};
+  fill_distance(bounds_of(pts, 0.5 * width), c,
+                [&](glm::dvec2 p) { return segment_distance(p, a, b) - 0.5 * width; });
+}
+
+void Canvas::polyline(std::span<const glm::dvec2> pts, double width, Rgba c, bool closed) {
+  if (pts.size() < 2 || c.a <= 0.f) return;
+  // Coverage is the max over segments, gathered in a mask first so joints are blended once.
+  const double hw = 0.5 * width;
+  const PixelBox box = pixel_box(bounds_of(pts, hw + 1.0));
+  if (box.x1 <= box.x0 || box.y1 <= box.y0) return;
+  cv::Mat1f mask(box.y1 - box.y0, box.x1 - box.x0, 0.f);
+  const size_t n = closed ? pts.size() : pts.size() - 1;
+  for (size_t i = 0; i < n; ++i) {
+    const glm::dvec2 a = pts[i], b = pts[(i + 1) % pts.size()];
+    const glm::dvec2 seg[2] = {a, b};
+    const Rect sb = bounds_of(seg, hw + 1.0);
+    const int x0 = std::max(box.x0, static_cast<int>(std::floor(sb.x)));
+    const int y0 = std::max(box.y0, static_cast<int>(std::floor(sb.y)));
+    const int x1 = std::min(box.x1, static_cast<int>(std::ceil(sb.right())));
+    const int y1 = std::min(box.y1, static_cast<int>(std::ceil(sb.bottom())));
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const double d = segment_distance({x + 0.5, y + 0.5}, a, b) - hw;
+        float& m = mask(y - box.y0, x - box.x0);
+        m = std::max(m, static_cast<float>(std::clamp(0.5 - d, 0.0, 1.0)));
+      }
+  }
+  float pm[4];
+  premultiply(c, pm);
+  for (int y = box.y0; y < box.y1; ++y)
+    for (int x = box.x0; x < box.x1; ++x)
+      if (const float cov = mask(y - box.y0, x - box.x0); cov > 0.f) blend(x, y, cov, pm);
+}
+
+void Canvas::fill_convex(std::span<const glm::dvec2> pts, Rgba c) {
+  if (pts.size() < 3) return;
+  // Signed area tells the winding, so edge normals can point outwards either way.
+  double area = 0.0;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const glm::dvec2 a = pts[i], b = pts[(i + 1) % pts.size()];
+    area += a.x * b.y - b.x * a.y;
+  }
+  const double sign = area > 0 ? 1.0 : -1.0;
+  fill_distance(bounds_of(pts, 0.0), c, [&](glm::dvec2 p) {
+    double d = -1e9;  // max over edges of the distance outside that edge's half-plane
+    for (size_t i = 0; i < pts.size(); ++i) {
+      const glm::dvec2 a = pts[i], b = pts[(i + 1) % pts.size()];
+      const glm::dvec2 e = glm::normalize(b - a);
+      const glm::dvec2 outward = sign * glm::dvec2(e.y, -e.x);
+      d = std::max(d, glm::dot(p - a, outward));
+    }
+    return d;
+  });
+}
+
+void Canvas::image(const cv::Mat& src, const Rect& dst, ChannelOrder order, float opacity) {
+  if (src.empty() || dst.empty()) return;
+  cv::Mat rgba;
+  switch (src.type()) {
+    case CV_8UC1: cv::cvtColor(src, rgba, cv::COLOR_GRAY2RGBA); break;
+    case CV_8UC3:
+      cv::cvtColor(src, rgba, order == ChannelOrder::Bgr ? cv::COLOR_BGR2RGBA : cv::COLOR_RGB2RGBA);
+      break;
+    case CV_8UC4:
+      if (order == ChannelOrder::Bgr) cv::cvtColor(src, rgba, cv::COLOR_BGRA2RGBA);
+      else rgba = src;
+      break;
+    case CV_32FC3: {
+      cv::Mat u8;
+      src.convertTo(u8, CV_8UC3, 255.0);
+      cv::cvtColor(u8, rgba, order == ChannelOrder::Bgr ? cv::COLOR_BGR2RGBA : cv::COLOR_RGB2RGBA);
+      break;
+    }
+    default: throw std::invalid_argument("Canvas::image: unsupported cv::Mat type " +
+                                         std::to_string(src.type()));
+  }
+  const int x0 = static_cast<int>(std::lround(dst.x)), y0 = static_cast<int>(std::lround(dst.y));
+  const int w = static_cast<int>(std::lround(dst.right())) - x0;
+  const int h = static_cast<int>(std::lround(dst.bottom())) - y0;
+  if (w <= 0 || h <= 0) return;
+  cv::Mat scaled;
+  const bool shrink = w < rgba.cols || h < rgba.rows;
+  cv::resize(rgba, scaled, cv::Size(w, h), 0, 0, shrink ? cv::INTER_AREA : cv::INTER_LINEAR);
+  const PixelBox b = pixel_box(Rect{static_cast<double>(x0), static_cast<double>(y0),
+                                    static_cast<double>(w), static_cast<double>(h)});
+  for (int y = b.y0; y < b.y1; ++y)
+    for (int x = b.x0; x < b.x1; ++x) {
+      const cv::Vec4b s = scaled.at<cv::Vec4b>(y - y0, x - x0);
+      const float a = s[3] / 255.f * opacity;
+      if (a <= 0.f) continue;
+      const float pm[4] = {s[0] * a, s[1] * a, s[2] * a, a * 255.f};
+      blend(x, y, 1.f, pm);
+    }
+}
+
+void Canvas::text_at(const Font& font, int px, std::u32string_view text, double x, double baseline,
+                     Rgba c) {
+  float pm[4];
+  premultiply(c, pm);
+  const LineLayout line = font.layout(text, px);
+  const int base = static_cast<int>(std::lround(baseline));
+  for (const PlacedGlyph& g : line.glyphs) {
+    // Integer pen plus a quarter-pixel bucket: sharp stems, even spacing, a bounded cache.
+    const double pen = x + g.x;
+    double whole = std::floor(pen);
+    int sub = static_cast<int>(std::lround((pen - whole) * 4.0));
+    if (sub == 4) whole += 1.0, sub = 0;
+    const GlyphBitmap& bm = font.glyph(g.glyph, px, sub);
+    if (bm.coverage.empty()) continue;
+    const int gx = static_cast<int>(whole) + bm.left, gy = base + bm.top;
+    const PixelBox b = pixel_box(Rect{static_cast<double>(gx), static_cast<double>(gy),
+                                      static_cast<double>(bm.width),
+                                      static_cast<double>(bm.height)});
+    for (int y = b.y0; y < b.y1; ++y)
+      for (int xx = b.x0; xx < b.x1; ++xx) {
+        const std::uint8_t cov = bm.coverage[static_cast<size_t>(y - gy) * bm.width + (xx - gx)];
+        if (cov) blend(xx, y, cov / 255.f, pm);
+      }
+  }
+}
+
+double Canvas::text(const Font& font, int px, std::string_view utf8, const Rect& box, Align align,
+                    Rgba c) {
+  const std::u32string fitted = decode_utf8(fit_text(font, px, utf8, box.w));
+  const double width = font.layout(fitted, px).width;
+  const FontMetrics m = font.metrics(px);
+  double x = box.x;
+  if (align == Align::Centre) x = box.x + 0.5 * (box.w - width);
+  if (align == Align::Right) x = box.right() - width;
+  const double baseline = box.y + 0.5 * (box.h - (m.ascent + m.descent)) + m.ascent;
+  push_clip(box);
+  text_at(font, px, fitted, x, baseline, c);
+  pop_clip();
+  return width;
+}
+
+std::string fit_text(const Font& font, int px, std::string_view utf8, double max_width) {
+  std::u32string s = decode_utf8(utf8);
+  if (font.layout(s, px).width <= max_width) return std::string(utf8);
+  const std::u32string ellipsis = U"\u2026";
+  // Binary search on the prefix length: width grows with length (advances are positive).
+  size_t lo = 0, hi = s.size();
+  while (lo < hi) {
+    const size_t mid = (lo + hi + 1) / 2;
+    if (font.layout(s.substr(0, mid) + ellipsis, px).width <= max_width) lo = mid;
+    else hi = mid - 1;
+  }
+  while (lo > 0 && s[lo - 1] == U' ') --lo;  // no "word …"
+  std::string out;
+  for (size_t i = 0; i < lo; ++i) out += encode_utf8(s[i]);
+  return out + encode_utf8(ellipsis[0]);
+}
+
+}  // namespace vdfx::ui

@@ -1,0 +1,95 @@
+/// @file
+/// @brief An RGBA8 software canvas with anti-aliased shapes, image blits and text.
+///
+/// Pixels are stored PREMULTIPLIED: (r*a, g*a, b*a, a) in sRGB values, CV_8UC4 in R,G,B,A order,
+/// row 0 at the top. That is what a quad layer blended with (ONE, ONE_MINUS_SRC_ALPHA) wants, and
+/// "over" composites stay exact at translucent edges. to_straight_rgba() converts for PNG files.
+/// Shapes are anti-aliased by signed distance: pixel coverage = clamp(0.5 - d, 0, 1) where d is
+/// the distance in pixels from the pixel centre to the shape's edge (negative inside).
+/// No GL anywhere: the compositor uploads image() as a texture.
+#pragma once
+
+#include "ui/colour.h"
+#include "ui/rect.h"
+
+#include <glm/vec2.hpp>
+#include <opencv2/core.hpp>
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vdfx::ui {
+
+class Font;
+
+enum class Align { Left, Centre, Right };
+/// Channel order of colour images given to Canvas::image (OpenCV decodes to BGR).
+enum class ChannelOrder { Bgr, Rgb };
+
+class Canvas {
+ public:
+  Canvas(int width, int height);
+
+  int width() const { return image_.cols; }
+  int height() const { return image_.rows; }
+  /// Premultiplied RGBA8 pixels.
+  const cv::Mat& image() const { return image_; }
+  /// Straight-alpha RGBA8 copy (PNG convention).
+  cv::Mat to_straight_rgba() const;
+
+  /// Sets every pixel (ignores the clip).
+  void clear(Rgba c = {0, 0, 0, 0});
+  /// Restricts drawing to r intersected with the current clip, until the matching pop_clip.
+  void push_clip(const Rect& r);
+  void pop_clip();
+  Rect clip() const { return clips_.back(); }
+
+  void fill_rect(const Rect& r, Rgba c) { fill_rounded_rect(r, 0.0, c); }
+  void fill_rounded_rect(const Rect& r, double radius, Rgba c);
+  /// A stroke of the given width lying inside r's outline.
+  void stroke_rounded_rect(const Rect& r, double radius, double width, Rgba c);
+  void fill_circle(glm::dvec2 centre, double radius, Rgba c);
+  /// A ring of the given width centred on the circle of the given radius.
+  void stroke_circle(glm::dvec2 centre, double radius, double width, Rgba c);
+  /// A segment with round caps.
+  void line(glm::dvec2 a, glm::dvec2 b, double width, Rgba c);
+  /// Joined segments with round joins; each pixel is covered once, so translucent colours do not
+  /// darken at the joints.
+  void polyline(std::span<const glm::dvec2> points, double width, Rgba c, bool closed = false);
+  /// A convex polygon (triangles, diamonds), any winding.
+  void fill_convex(std::span<const glm::dvec2> points, Rgba c);
+  /// Scales an image into dst (rounded to whole pixels). Accepts CV_8UC1, CV_8UC3, CV_8UC4
+  /// (straight alpha) and CV_32FC3 (values in [0, 1]); colour images in the given channel order.
+  void image(const cv::Mat& src, const Rect& dst, ChannelOrder order = ChannelOrder::Bgr,
+             float opacity = 1.f);
+  /// One line of UTF-8 text in box, vertically centred, clipped to box; text wider than the box
+  /// is cut and ends in an ellipsis. Returns the drawn width in pixels.
+  double text(const Font& font, int px, std::string_view utf8, const Rect& box, Align align,
+              Rgba c);
+  /// Text with its baseline starting at (x, baseline); no fitting.
+  void text_at(const Font& font, int px, std::u32string_view text, double x, double baseline,
+               Rgba c);
+
+ private:
+  /// Pixels whose centres lie in one of the `solid` rectangles are known to be fully covered and
+  /// skip the distance evaluation (panel backgrounds are mostly interior).
+  template <class Distance>
+  void fill_distance(const Rect& bounds, Rgba c, Distance&& dist,
+                     std::span<const Rect> solid = {});
+  void blend(int x, int y, float coverage, const float premul[4]);
+  struct PixelBox {
+    int x0, y0, x1, y1;
+  };
+  PixelBox pixel_box(const Rect& r) const;  // r rounded outwards, intersected with the clip
+
+  cv::Mat image_;
+  std::vector<Rect> clips_;
+};
+
+/// The longest prefix of utf8 that fits max_width with a trailing "…", or utf8 itself if it
+/// fits. Cuts at code point boundaries.
+std::string fit_text(const Font& font, int px, std::string_view utf8, double max_width);
+
+}  // namespace vdfx::ui

@@ -1,0 +1,98 @@
+/// @file
+/// @brief Pointer interaction: ray hit testing against panels and the hover / press / drag /
+/// release / thumbstick state machine that turns controller input into widget events.
+///
+/// Time is passed in (dt); nothing here reads a clock. No GL: tests drive it with plain rays.
+#pragma once
+
+#include "ui/panel.h"
+#include "ui/widget.h"
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace vdfx::ui {
+
+struct Ray {
+  glm::dvec3 origin{0.0};
+  glm::dvec3 direction{0.0, 0.0, -1.0};  //!< need not be unit length
+};
+
+/// Where a ray meets a panel's plane.
+struct PlaneHit {
+  glm::dvec2 pixel{0.0};  //!< panel pixels (may lie outside the panel)
+  double distance = 0.0;  //!< along the ray, in units of |direction|
+  bool front = false;     //!< the ray comes from the side the panel faces
+  bool inside = false;    //!< within the panel's bounds
+};
+
+/// Ray-plane intersection in panel space; nullopt when parallel or behind the origin.
+std::optional<PlaneHit> intersect_panel_plane(const Panel& panel, const Ray& ray);
+
+struct PanelHit {
+  Panel* panel = nullptr;
+  glm::dvec2 pixel{0.0};
+  double distance = 0.0;
+};
+
+/// The nearest visible panel hit from the front within its bounds.
+std::optional<PanelHit> hit_panels(std::span<Panel* const> panels, const Ray& ray);
+
+/// One controller as the UI sees it.
+struct PointerInput {
+  Ray ray;
+  double trigger = 0.0;          //!< [0, 1]
+  glm::dvec2 thumbstick{0.0};    //!< [-1, 1]^2, +x right, +y up
+};
+
+/// Press / release thresholds with hysteresis, and the thumbstick dead zone.
+struct PointerSettings {
+  double press_threshold = 0.55;
+  double release_threshold = 0.45;
+  double stick_dead_zone = 0.2;
+};
+
+/// The interaction state of one pointer (one per hand).
+class Pointer {
+ public:
+  explicit Pointer(PointerSettings s = {}) : settings_(s) {}
+
+  /// Advances by one frame: hit test, hover, trigger edges, drags, thumbstick (for dt seconds).
+  /// Returns the events of this frame in the order they happened.
+  std::vector<Event> update(std::span<Panel* const> panels, const PointerInput& in, double dt);
+
+  /// Trigger state after hysteresis.
+  bool trigger_down() const { return down_; }
+  /// Current hit (nullopt when the ray misses every panel).
+  const std::optional<PanelHit>& hit() const { return hit_; }
+  /// Panel and widget ids under the pointer / held / focused ("" when none).
+  const std::string& hovered_widget() const { return hover_.widget; }
+  const std::string& pressed_widget() const { return press_.widget; }
+  const std::string& focused_widget() const { return focus_.widget; }
+  const std::string& focused_panel() const { return focus_.panel; }
+  /// Drops focus (e.g. when the editor closes a panel).
+  void clear_focus(std::span<Panel* const> panels);
+
+ private:
+  struct Ref {
+    std::string panel, widget;
+    bool empty() const { return widget.empty(); }
+    bool operator==(const Ref&) const = default;
+  };
+  static Panel* panel_of(std::span<Panel* const> panels, const std::string& id);
+  static Widget* widget_of(std::span<Panel* const> panels, const Ref& r);
+
+  PointerSettings settings_;
+  bool down_ = false;
+  std::optional<PanelHit> hit_;
+  Ref hover_, press_, focus_;
+  glm::dvec2 drag_start_value_{0.0};
+  bool stick_active_ = false;  //!< a thumbstick gesture is under way on the focused widget
+  glm::dvec2 stick_start_value_{0.0};
+};
+
+}  // namespace vdfx::ui

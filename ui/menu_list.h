@@ -1,0 +1,52 @@
+/// @file
+/// @brief MenuList: a vertical list of items with one selection and scrolling.
+#pragma once
+
+#include "ui/widget.h"
+
+#include <string>
+#include <vector>
+
+namespace vdfx::ui {
+
+class MenuList : public Widget {
+ public:
+  /// row_height in pixels (the theme's row_height suits the pointer).
+  MenuList(std::string id, std::vector<std::string> items, int selected = 0,
+           double row_height = 76.0);
+  const std::vector<std::string>& items() const { return items_; }
+  void set_items(std::vector<std::string> items);
+  int selected() const { return selected_; }
+  /// Clamped to the items; scrolls it into view.
+  void select(int index);
+  /// First visible row.
+  int scroll() const { return scroll_; }
+  void set_scroll(int first);
+  int visible_rows() const;
+  /// Row under a panel pixel, or -1.
+  int row_at(glm::dvec2 p) const;
+
+  glm::dvec2 value() const override { return {static_cast<double>(selected_), 0.0}; }
+  bool focusable() const override { return true; }
+  void hover_at(glm::dvec2 p) override;
+  void click(glm::dvec2 p) override;
+  /// y moves the selection: one row at once, then repeats every kRepeatSeconds after
+  /// kRepeatDelaySeconds while held past half deflection (up = previous item).
+  void thumbstick(glm::dvec2 stick, double dt) override;
+  void draw(DrawContext& ctx) const override;
+
+  static constexpr double kRepeatDelaySeconds = 0.45;
+  static constexpr double kRepeatSeconds = 0.2;
+
+ private:
+  void layout_changed() override { select(selected_); }
+  std::vector<std::string> items_;
+  int selected_;
+  double row_h_;
+  int scroll_ = 0;
+  int hover_row_ = -1;
+  double held_ = -1.0;  //!< seconds the stick has been held past half deflection, -1 = released
+  double next_repeat_ = 0.0;
+};
+
+}  // namespace vdfx::ui

@@ -1,0 +1,115 @@
+/// @file
+/// @brief Minimap.
+#include "ui/minimap.h"
+
+#include "ui/canvas.h"
+#include "ui/font.h"
+#include "ui/theme.h"
+
+#include <Eigen/Geometry>
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+
+namespace vdfx::ui {
+
+namespace {
+constexpr double kTitleH = 72.0;
+}
+
+Minimap::Minimap(std::string id, std::string title)
+    : Widget(std::move(id)), title_(std::move(title)) {}
+
+void Minimap::set_field(const cv::Mat& field, double lo, double hi) {
+  cv::Mat u8;
+  const double scale = hi > lo ? 255.0 / (hi - lo) : 0.0;
+  field.convertTo(u8, CV_8U, scale, -lo * scale);
+  cv::applyColorMap(u8, image_, cv::COLORMAP_VIRIDIS);
+  touch();
+}
+
+void Minimap::set_image(const cv::Mat& bgr) {
+  image_ = bgr.clone();
+  touch();
+}
+
+void Minimap::set_keyframes(std::vector<effects::Direction> dirs, int highlighted) {
+  keyframes_ = std::move(dirs);
+  highlighted_ = highlighted;
+  touch();
+}
+
+void Minimap::set_view(effects::Direction forward, double hfov_deg, double vfov_deg) {
+  view_ = forward;
+  hfov_ = hfov_deg;
+  vfov_ = vfov_deg;
+  touch();
+}
+
+Rect Minimap::map_area() const {
+  const Rect r = rect().inset(16.0);
+  const Rect avail{r.x, rect().y + kTitleH, r.w, r.bottom() - rect().y - kTitleH};
+  const double w = std::min(avail.w, 2.0 * avail.h);
+  return {avail.centre().x - 0.5 * w, avail.y + 0.5 * (avail.h - 0.5 * w), w, 0.5 * w};
+}
+
+glm::dvec2 Minimap::to_pixel(const effects::Direction& d) const {
+  const Rect a = map_area();
+  const Eigen::Vector2d uv = effects::to_equirect_uv(d);
+  return {a.x + uv.x() * a.w, a.y + uv.y() * a.h};
+}
+
+std::vector<std::vector<glm::dvec2>> Minimap::footprint() const {
+  // Rays through the border of the view's image rectangle, in a frame whose right vector stays
+  // horizontal (no roll), mapped onto the equirect image.
+  const Eigen::Vector3d fwd = effects::to_unit(view_);
+  const double az = view_.azimuth_deg * effects::kDegToRad;
+  const Eigen::Vector3d right(std::cos(az), 0.0, std::sin(az));
+  const Eigen::Vector3d up = right.cross(fwd).normalized();
+  const double tx = std::tan(0.5 * hfov_ * effects::kDegToRad);
+  const double ty = std::tan(0.5 * vfov_ * effects::kDegToRad);
+  constexpr int kPerSide = 48;
+  std::vector<Eigen::Vector2d> border;  // (sx, sy) in [-1, 1]^2, walked around the rectangle
+  for (int i = 0; i < kPerSide; ++i) border.emplace_back(-1.0 + 2.0 * i / kPerSide, 1.0);
+  for (int i = 0; i < kPerSide; ++i) border.emplace_back(1.0, 1.0 - 2.0 * i / kPerSide);
+  for (int i = 0; i < kPerSide; ++i) border.emplace_back(1.0 - 2.0 * i / kPerSide, -1.0);
+  for (int i = 0; i <= kPerSide; ++i) border.emplace_back(-1.0, -1.0 + 2.0 * i / kPerSide);
+  std::vector<std::vector<glm::dvec2>> lines(1);
+  const Rect a = map_area();
+  double prev_u = -1.0;
+  for (const auto& s : border) {
+    const Eigen::Vector3d ray = fwd + right * (s.x() * tx) + up * (s.y() * ty);
+    const Eigen::Vector2d uv = effects::to_equirect_uv(effects::from_unit(ray));
+    if (prev_u >= 0.0 && std::abs(uv.x() - prev_u) > 0.5) lines.emplace_back();  // wrapped
+    lines.back().push_back({a.x + uv.x() * a.w, a.y + uv.y() * a.h});
+    prev_u = uv.x();
+  }
+  return lines;
+}
+
+void Minimap::draw(DrawContext& ctx) const {
+  const Theme& t = ctx.theme;
+  Canvas& c = ctx.canvas;
+  const Rect r = rect();
+  c.fill_rounded_rect(r, t.corner_radius, t.surface);
+  c.text(*ctx.fonts.regular, t.font_body, title_,
+         {r.x + t.padding, r.y + 8, r.w - 2 * t.padding, 56}, Align::Left, t.text);
+  const Rect a = map_area();
+  if (!image_.empty()) c.image(image_, a, ChannelOrder::Bgr);
+  else c.fill_rect(a, t.surface_pressed);
+  c.push_clip(a);
+  for (const auto& line : footprint()) {
+    c.polyline(line, 7.0, Rgba::hex(0x000000, 0.7f));
+    c.polyline(line, 3.5, t.text);
+  }
+  for (size_t i = 0; i < keyframes_.size(); ++i) {
+    const glm::dvec2 p = to_pixel(keyframes_[i]);
+    const bool hi = static_cast<int>(i) == highlighted_;
+    c.fill_circle(p, hi ? 13.0 : 10.0, hi ? t.keyframe_highlight : t.keyframe);
+    c.stroke_circle(p, hi ? 13.0 : 10.0, 3.0, Rgba::hex(0x000000, 0.8f));
+  }
+  c.pop_clip();
+  c.stroke_rounded_rect(a.inset(-2.0), 2.0, 2.0, t.track);
+}
+
+}  // namespace vdfx::ui

@@ -1,0 +1,35 @@
+/// @file
+/// @brief Plot: values over frames ("effect tracks") with axes, keyframe dots and a playhead.
+#pragma once
+
+#include "ui/colour.h"
+#include "ui/widget.h"
+
+#include <string>
+#include <vector>
+
+namespace vdfx::ui {
+
+class Plot : public Widget {
+ public:
+  Plot(std::string id, std::string title, double y_min, double y_max, const char* y_format = "%.1f");
+  /// One value per frame (frame i at index i).
+  void set_values(std::vector<double> values);
+  void set_range(double y_min, double y_max);
+  void set_keyframes(std::vector<int> frames);
+  void set_playhead(int frame);
+  bool interactive() const override { return false; }
+  void draw(DrawContext& ctx) const override;
+  /// The plotting area inside the axes.
+  Rect plot_area() const;
+
+ private:
+  std::string title_;
+  double y_min_, y_max_;
+  const char* y_format_;
+  std::vector<double> values_;
+  std::vector<int> keyframes_;
+  int playhead_ = -1;
+};
+
+}  // namespace vdfx::ui

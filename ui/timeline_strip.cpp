@@ -1,0 +1,123 @@
+/// @file
+/// @brief TimelineStrip.
+#include "ui/timeline_strip.h"
+
+#include "ui/canvas.h"
+#include "ui/font.h"
+#include "ui/theme.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vdfx::ui {
+
+namespace {
+constexpr double kMarkerBand = 56.0;  // keyframe diamonds below the thumbnails
+constexpr double kLabelBand = 48.0;   // frame numbers below the markers
+constexpr double kSide = 28.0;        // horizontal inset so end markers are not cut
+
+cv::Mat centre_crop(const cv::Mat& m, double aspect) {
+  if (m.empty()) return m;
+  const double a = static_cast<double>(m.cols) / m.rows;
+  if (a > aspect) {
+    const int w = std::max(1, static_cast<int>(std::lround(m.rows * aspect)));
+    return m(cv::Rect((m.cols - w) / 2, 0, w, m.rows));
+  }
+  const int h = std::max(1, static_cast<int>(std::lround(m.cols / aspect)));
+  return m(cv::Rect(0, (m.rows - h) / 2, m.cols, h));
+}
+}  // namespace
+
+TimelineStrip::TimelineStrip(std::string id, int frame_count)
+    : Widget(std::move(id)), frame_count_(std::max(1, frame_count)) {}
+
+void TimelineStrip::set_frame_count(int n) {
+  set(frame_count_, std::max(1, n));
+  set_playhead(playhead_);
+}
+
+void TimelineStrip::set_playhead(int frame) { set(playhead_, std::clamp(frame, 0, frame_count_ - 1)); }
+
+void TimelineStrip::set_thumbnails(std::vector<cv::Mat> images) {
+  thumbs_ = std::move(images);
+  touch();
+}
+
+void TimelineStrip::set_keyframes(std::vector<int> frames) { set(keyframes_, frames); }
+void TimelineStrip::set_highlighted(std::vector<int> frames) { set(highlighted_, frames); }
+
+Rect TimelineStrip::track() const {
+  const Rect r = rect();
+  return {r.x + kSide, r.y, r.w - 2 * kSide, r.h - kMarkerBand - kLabelBand};
+}
+
+int TimelineStrip::frame_at(double x) const {
+  const Rect t = track();
+  if (frame_count_ <= 1) return 0;
+  const double f = (x - t.x) / t.w * (frame_count_ - 1);
+  return std::clamp(static_cast<int>(std::lround(f)), 0, frame_count_ - 1);
+}
+
+double TimelineStrip::x_of(int frame) const {
+  const Rect t = track();
+  return frame_count_ <= 1 ? t.x : t.x + t.w * frame / (frame_count_ - 1.0);
+}
+
+void TimelineStrip::thumbstick(glm::dvec2 stick, double dt) {
+  if (stick.x == 0.0) {
+    pending_ = 0.0;
+    return;
+  }
+  pending_ += stick.x * kStickFramesPerSecond * dt;
+  const double whole = std::trunc(pending_);
+  pending_ -= whole;
+  set_playhead(playhead_ + static_cast<int>(whole));
+}
+
+void TimelineStrip::draw(DrawContext& ctx) const {
+  const Theme& t = ctx.theme;
+  Canvas& c = ctx.canvas;
+  const Rect tr = track();
+  c.fill_rounded_rect(tr, 8.0, t.surface_pressed);
+  if (!thumbs_.empty()) {
+    const double cell = tr.w / static_cast<double>(thumbs_.size());
+    c.push_clip(tr);
+    for (size_t i = 0; i < thumbs_.size(); ++i) {
+      const Rect cr{tr.x + cell * i, tr.y, cell, tr.h};
+      const Rect inner = cr.inset(2.0);
+      c.image(centre_crop(thumbs_[i], inner.w / inner.h), inner, ChannelOrder::Bgr);
+    }
+    c.pop_clip();
+  }
+  if (focused()) c.stroke_rounded_rect(tr.inset(-6.0), 12.0, t.focus_width, t.accent);
+  // Keyframe diamonds on a rail below the thumbnails, over the playhead line.
+  const double my = tr.bottom() + 0.5 * kMarkerBand;
+  const double px = x_of(playhead_);
+  c.line({tr.x, my}, {tr.right(), my}, 3.0, t.track);
+  c.line({px, tr.y}, {px, tr.bottom() + kMarkerBand}, pressed() ? 6.0 : 4.0, t.playhead);
+  for (int f : keyframes_) {
+    const bool hi = f == playhead_ ||
+                    std::find(highlighted_.begin(), highlighted_.end(), f) != highlighted_.end();
+    const double s = hi ? 20.0 : 14.0;
+    const glm::dvec2 ctr{x_of(f), my};
+    const glm::dvec2 d[4] = {ctr + glm::dvec2(0, -s), ctr + glm::dvec2(s, 0),
+                             ctr + glm::dvec2(0, s), ctr + glm::dvec2(-s, 0)};
+    c.fill_convex(d, hi ? t.keyframe_highlight : t.keyframe);
+    if (hi) c.polyline(d, 3.0, t.text, true);
+  }
+  // Frame numbers: start, end and the playhead.
+  const Rect lab{rect().x, tr.bottom() + kMarkerBand, rect().w, kLabelBand};
+  c.text(*ctx.fonts.regular, t.font_small, "0", {lab.x + kSide - 10, lab.y, 200, lab.h}, Align::Left,
+         t.text_muted);
+  c.text(*ctx.fonts.regular, t.font_small, std::to_string(frame_count_ - 1),
+         {lab.right() - kSide - 190, lab.y, 200, lab.h}, Align::Right, t.text_muted);
+  // Playhead: a line over the thumbnails with a handle on top.
+  const glm::dvec2 head[3] = {{px - 16, tr.y}, {px + 16, tr.y}, {px, tr.y + 22}};
+  c.fill_convex(head, t.playhead);
+  const std::string ftxt = "frame " + std::to_string(playhead_);
+  const double fw = ctx.fonts.regular->measure(ftxt, t.font_small) + 8;
+  const double fx = std::clamp(px - 0.5 * fw, lab.x + kSide + 60, lab.right() - kSide - 110 - fw);
+  c.text(*ctx.fonts.regular, t.font_small, ftxt, {fx, lab.y, fw, lab.h}, Align::Centre, t.text);
+}
+
+}  // namespace vdfx::ui

@@ -1,0 +1,54 @@
+/// @file
+/// @brief TimelineStrip: frame thumbnails, keyframe markers and a playhead that scrubs by drag.
+#pragma once
+
+#include "ui/widget.h"
+
+#include <opencv2/core.hpp>
+
+#include <string>
+#include <vector>
+
+namespace vdfx::ui {
+
+class TimelineStrip : public Widget {
+ public:
+  TimelineStrip(std::string id, int frame_count);
+  int frame_count() const { return frame_count_; }
+  void set_frame_count(int n);
+  int playhead() const { return playhead_; }
+  void set_playhead(int frame);
+  /// Thumbnails in time order, shown side by side across the strip (BGR or BGRA cv::Mat,
+  /// centre-cropped to their cell). Replacing them always re-renders.
+  void set_thumbnails(std::vector<cv::Mat> images);
+  /// Frames that hold keyframes (of the selected effect).
+  void set_keyframes(std::vector<int> frames);
+  const std::vector<int>& keyframes() const { return keyframes_; }
+  /// Keyframes drawn highlighted (selected); keyframes at the playhead are highlighted too.
+  void set_highlighted(std::vector<int> frames);
+
+  /// Frame under a panel x (nearest), clamped to [0, frame_count - 1].
+  int frame_at(double x) const;
+  /// Panel x of a frame's centre.
+  double x_of(int frame) const;
+
+  glm::dvec2 value() const override { return {static_cast<double>(playhead_), 0.0}; }
+  bool focusable() const override { return true; }
+  bool draggable() const override { return true; }
+  void drag_to(glm::dvec2 p) override { set_playhead(frame_at(p.x)); }
+  /// x steps frames at up to kStickFramesPerSecond.
+  void thumbstick(glm::dvec2 stick, double dt) override;
+  void draw(DrawContext& ctx) const override;
+
+  static constexpr double kStickFramesPerSecond = 30.0;
+
+ private:
+  Rect track() const;
+  int frame_count_;
+  int playhead_ = 0;
+  std::vector<cv::Mat> thumbs_;
+  std::vector<int> keyframes_, highlighted_;
+  double pending_ = 0.0;
+};
+
+}  // namespace vdfx::ui

@@ -1,0 +1,86 @@
+/// @file
+/// @brief Action paths to InputState fields.
+#include "xr/actions.h"
+
+#include <cmath>
+#include <functional>
+
+namespace vdfx::xr {
+
+namespace {
+
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+
+using Getter = std::function<ActionValue(const InputState&)>;
+
+std::vector<std::pair<std::string, Getter>> build_table() {
+  std::vector<std::pair<std::string, Getter>> t;
+  t.emplace_back("/user/head/pose", [](const InputState& s) { return ActionValue(s.head); });
+  t.emplace_back("/user/head/tracked", [](const InputState& s) { return ActionValue(s.head_tracked); });
+  for (Hand hand : {Hand::Left, Hand::Right}) {
+    const std::string base =
+        std::string("/user/hand/") + (hand == Hand::Left ? "left" : "right");
+    const std::string in = base + "/input/";
+    auto h = [hand](const InputState& s) -> const HandState& { return s.hand(hand); };
+    t.emplace_back(base + "/tracked", [h](const InputState& s) { return ActionValue(h(s).tracked); });
+    t.emplace_back(in + "aim/pose", [h](const InputState& s) { return ActionValue(h(s).aim); });
+    t.emplace_back(in + "grip/pose", [h](const InputState& s) { return ActionValue(h(s).grip); });
+    t.emplace_back(in + "trigger/value", [h](const InputState& s) { return ActionValue(h(s).trigger); });
+    t.emplace_back(in + "squeeze/value", [h](const InputState& s) { return ActionValue(h(s).squeeze); });
+    t.emplace_back(in + "thumbstick", [h](const InputState& s) { return ActionValue(h(s).thumbstick); });
+    t.emplace_back(in + "thumbstick/x", [h](const InputState& s) { return ActionValue(h(s).thumbstick.x); });
+    t.emplace_back(in + "thumbstick/y", [h](const InputState& s) { return ActionValue(h(s).thumbstick.y); });
+    t.emplace_back(in + "thumbstick/click",
+                   [h](const InputState& s) { return ActionValue(h(s).thumbstick_click); });
+    const bool left = hand == Hand::Left;
+    t.emplace_back(in + (left ? "x/click" : "a/click"),
+                   [h](const InputState& s) { return ActionValue(h(s).primary); });
+    t.emplace_back(in + (left ? "y/click" : "b/click"),
+                   [h](const InputState& s) { return ActionValue(h(s).secondary); });
+    if (left) {
+      t.emplace_back(in + "menu/click", [h](const InputState& s) { return ActionValue(h(s).menu); });
+    }
+  }
+  return t;
+}
+
+const std::vector<std::pair<std::string, Getter>>& table() {
+  static const auto t = build_table();
+  return t;
+}
+
+}  // namespace
+
+InputState neutral_input_state(std::int64_t t_ns) {
+  InputState s;
+  s.t_ns = t_ns;
+  s.head.p = {0.0, kDefaultEyeHeight, 0.0};
+  return s;
+}
+
+glm::dvec3 forward(const Pose& pose) { return glm::normalize(pose.q * glm::dvec3(0.0, 0.0, -1.0)); }
+
+glm::dquat look_rotation(double azimuth_deg, double altitude_deg) {
+  // Yaw about +y (a positive angle turns -z towards -x, i.e. left, hence the minus), then pitch
+  // about the turned +x (a positive angle lifts -z towards +y).
+  return glm::angleAxis(-azimuth_deg * kDegToRad, glm::dvec3(0, 1, 0)) *
+         glm::angleAxis(altitude_deg * kDegToRad, glm::dvec3(1, 0, 0));
+}
+
+std::optional<ActionValue> get_action(const InputState& state, std::string_view path) {
+  for (const auto& [name, get] : table()) {
+    if (name == path) return get(state);
+  }
+  return std::nullopt;
+}
+
+const std::vector<std::string>& action_paths() {
+  static const std::vector<std::string> paths = [] {
+    std::vector<std::string> p;
+    for (const auto& entry : table()) p.push_back(entry.first);
+    return p;
+  }();
+  return paths;
+}
+
+}  // namespace vdfx::xr

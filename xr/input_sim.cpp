@@ -1,0 +1,219 @@
+/// @file
+/// @brief The sim backend: a desktop stand-in for a headset and two controllers.
+///
+/// Right-button drag turns the head; the main hand's aim ray goes through the cursor (its origin
+/// is the eye, so the ray hits exactly what is under the cursor); keys press buttons and move
+/// sticks. State is a function of the events alone: poll(t) applies the queued events and stamps t.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <set>
+#include <sstream>
+
+#include "xr/input_backend.h"
+
+namespace vdfx::xr {
+
+namespace {
+
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+constexpr double kMaxPitchDeg = 89.0;
+const glm::dvec3 kOffHandOffset{0.2, -0.3, -0.3};  // head frame, mirrored in x for the left hand
+
+enum class Role { Main, Off, Left };  // Left: the control exists on the left hand only (menu)
+enum class Control { Trigger, Squeeze, Primary, Secondary, Menu, StickClick, StickUp, StickDown, StickLeft, StickRight };
+
+struct KeyBinding {
+  Key key;
+  Role role;
+  Control control;
+};
+
+// The binding table: the sim applies it and sim_bindings_text prints it.
+constexpr std::array<KeyBinding, 20> kKeyBindings{{
+    {Key::Space, Role::Main, Control::Trigger},
+    {Key::G, Role::Main, Control::Squeeze},
+    {Key::J, Role::Main, Control::Primary},
+    {Key::K, Role::Main, Control::Secondary},
+    {Key::L, Role::Main, Control::StickClick},
+    {Key::Up, Role::Main, Control::StickUp},
+    {Key::Down, Role::Main, Control::StickDown},
+    {Key::Left, Role::Main, Control::StickLeft},
+    {Key::Right, Role::Main, Control::StickRight},
+    {Key::E, Role::Off, Control::Trigger},
+    {Key::Q, Role::Off, Control::Squeeze},
+    {Key::X, Role::Off, Control::Primary},
+    {Key::Y, Role::Off, Control::Secondary},
+    {Key::C, Role::Off, Control::StickClick},
+    {Key::W, Role::Off, Control::StickUp},
+    {Key::S, Role::Off, Control::StickDown},
+    {Key::A, Role::Off, Control::StickLeft},
+    {Key::D, Role::Off, Control::StickRight},
+    {Key::M, Role::Left, Control::Menu},
+    {Key::Tab, Role::Left, Control::Menu},
+}};
+
+Hand hand_of(Role role, bool left_handed) {
+  if (role == Role::Left) return Hand::Left;
+  const bool main = role == Role::Main;
+  return (main != left_handed) ? Hand::Right : Hand::Left;
+}
+
+std::string control_path(Hand hand, Control c) {
+  const bool left = hand == Hand::Left;
+  const std::string in = std::string("/user/hand/") + (left ? "left" : "right") + "/input/";
+  switch (c) {
+    case Control::Trigger: return in + "trigger/value";
+    case Control::Squeeze: return in + "squeeze/value";
+    case Control::Primary: return in + (left ? "x/click" : "a/click");
+    case Control::Secondary: return in + (left ? "y/click" : "b/click");
+    case Control::Menu: return in + "menu/click";
+    case Control::StickClick: return in + "thumbstick/click";
+    case Control::StickUp: return in + "thumbstick/y = +1";
+    case Control::StickDown: return in + "thumbstick/y = -1";
+    case Control::StickLeft: return in + "thumbstick/x = -1";
+    case Control::StickRight: return in + "thumbstick/x = +1";
+  }
+  return in;
+}
+
+class SimInputBackend final : public InputBackend {
+ public:
+  explicit SimInputBackend(const SimConfig& config) : config_(config) {
+    mouse_x_ = config_.window_width * 0.5;
+    mouse_y_ = config_.window_height * 0.5;
+  }
+
+  void push_event(const DesktopEvent& event) override { queue_.push_back(event); }
+
+  InputState poll(std::int64_t t_ns) override {
+    while (!queue_.empty()) {
+      std::visit([this](const auto& e) { apply(e); }, queue_.front());
+      queue_.pop_front();
+    }
+    return state(t_ns);
+  }
+
+ private:
+  void apply(const KeyEvent& e) {
+    if (e.pressed) keys_.insert(e.key);
+    else keys_.erase(e.key);
+  }
+  void apply(const MouseButtonEvent& e) {
+    if (e.button == MouseButton::Left) left_button_ = e.pressed;
+    if (e.button == MouseButton::Right) dragging_ = e.pressed;
+  }
+  void apply(const MouseMoveEvent& e) {
+    if (dragging_) {
+      // Look like a first-person camera: drag right turns right, drag down looks down.
+      azimuth_deg_ += (e.x - mouse_x_) * config_.look_deg_per_px;
+      azimuth_deg_ = std::remainder(azimuth_deg_, 360.0);
+      altitude_deg_ = std::clamp(altitude_deg_ - (e.y - mouse_y_) * config_.look_deg_per_px,
+                                 -kMaxPitchDeg, kMaxPitchDeg);
+    }
+    mouse_x_ = e.x;
+    mouse_y_ = e.y;
+  }
+  void apply(const ViewGeometryEvent& e) {
+    if (e.width_px > 0 && e.height_px > 0) {
+      config_.window_width = e.width_px;
+      config_.window_height = e.height_px;
+    }
+    if (e.hfov_deg > 0.0 && e.hfov_deg < 180.0) config_.hfov_deg = e.hfov_deg;
+  }
+
+  bool active(Hand hand, Control c) const {
+    for (const KeyBinding& b : kKeyBindings) {
+      if (b.control == c && hand_of(b.role, config_.left_handed) == hand && keys_.count(b.key)) return true;
+    }
+    return false;
+  }
+
+  // The ray through the cursor, in the view frame: a pinhole with the configured horizontal FOV,
+  // the vertical one following from the window's aspect ratio.
+  glm::dquat cursor_rotation() const {
+    const double w = std::max(1, config_.window_width), h = std::max(1, config_.window_height);
+    const double tan_h = std::tan(0.5 * config_.hfov_deg * kDegToRad);
+    const double tan_v = tan_h * h / w;
+    const glm::dvec3 dir = glm::normalize(glm::dvec3((2.0 * mouse_x_ / w - 1.0) * tan_h,
+                                                     (1.0 - 2.0 * mouse_y_ / h) * tan_v, -1.0));
+    return look_rotation(std::atan2(dir.x, -dir.z) * kRadToDeg, std::asin(dir.y) * kRadToDeg);
+  }
+
+  void fill_hand(HandState& hs, Hand hand) const {
+    hs.tracked = true;
+    hs.trigger = active(hand, Control::Trigger) ? 1.0 : 0.0;
+    hs.squeeze = active(hand, Control::Squeeze) ? 1.0 : 0.0;
+    hs.primary = active(hand, Control::Primary);
+    hs.secondary = active(hand, Control::Secondary);
+    hs.menu = hand == Hand::Left && active(hand, Control::Menu);
+    hs.thumbstick_click = active(hand, Control::StickClick);
+    glm::dvec2 stick{(active(hand, Control::StickRight) ? 1.0 : 0.0) - (active(hand, Control::StickLeft) ? 1.0 : 0.0),
+                     (active(hand, Control::StickUp) ? 1.0 : 0.0) - (active(hand, Control::StickDown) ? 1.0 : 0.0)};
+    if (glm::length(stick) > 1.0) stick = glm::normalize(stick);  // diagonals stay on the unit circle
+    hs.thumbstick = stick;
+  }
+
+  InputState state(std::int64_t t_ns) const {
+    InputState s;
+    s.t_ns = t_ns;
+    s.head_tracked = true;
+    s.head.q = look_rotation(azimuth_deg_, altitude_deg_);
+    s.head.p = config_.head_position;
+    const Hand main = config_.left_handed ? Hand::Left : Hand::Right;
+    const Hand off = config_.left_handed ? Hand::Right : Hand::Left;
+    fill_hand(s.left, Hand::Left);
+    fill_hand(s.right, Hand::Right);
+    HandState& m = s.hand(main);
+    m.aim.q = glm::normalize(s.head.q * cursor_rotation());
+    m.aim.p = s.head.p;
+    if (left_button_) m.trigger = 1.0;
+    HandState& o = s.hand(off);
+    glm::dvec3 offset = kOffHandOffset;
+    if (off == Hand::Left) offset.x = -offset.x;
+    o.aim.q = s.head.q;
+    o.aim.p = s.head.p + s.head.q * offset;
+    s.left.grip = s.left.aim;
+    s.right.grip = s.right.aim;
+    return s;
+  }
+
+  SimConfig config_;
+  std::deque<DesktopEvent> queue_;
+  std::set<Key> keys_;
+  bool left_button_ = false;
+  bool dragging_ = false;
+  double mouse_x_ = 0.0, mouse_y_ = 0.0;
+  double azimuth_deg_ = 0.0, altitude_deg_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<InputBackend> create_sim_backend(const SimConfig& config) {
+  return std::make_unique<SimInputBackend>(config);
+}
+
+std::string sim_bindings_text(const SimConfig& config) {
+  const Hand main = config.left_handed ? Hand::Left : Hand::Right;
+  const std::string main_name = main == Hand::Left ? "left" : "right";
+  std::vector<std::pair<std::string, std::string>> rows;
+  std::ostringstream look;
+  look << "turn the head (/user/head/pose), " << config.look_deg_per_px << " deg per pixel";
+  rows.emplace_back("right mouse button drag", look.str());
+  rows.emplace_back("mouse position", "/user/hand/" + main_name + "/input/aim/pose (ray through the cursor)");
+  rows.emplace_back("left mouse button", control_path(main, Control::Trigger));
+  for (const KeyBinding& b : kKeyBindings) {
+    rows.emplace_back(std::string(key_name(b.key)), control_path(hand_of(b.role, config.left_handed), b.control));
+  }
+  std::ostringstream out;
+  for (const auto& [input, action] : rows) {
+    std::string left = input;
+    left.resize(std::max<std::size_t>(left.size() + 2, 26), ' ');
+    out << "  " << left << action << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace vdfx::xr
