@@ -46,6 +46,7 @@ std::string stack_fragment_source(unsigned mask) {
   def(EffectType::Vignette, "HAS_VIGNETTE");
   s += R"(out vec4 frag;
 uniform sampler2D u_src;
+uniform int u_margin;  // the source is larger than the target by this many pixels on each side
 #if HAS_BLUR
 uniform sampler2D u_taps;
 uniform int u_tap_count;
@@ -70,11 +71,11 @@ uniform vec2 u_size;
 uniform vec2 u_centre_tan;
 #endif
 void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
+  ivec2 p = ivec2(gl_FragCoord.xy) + ivec2(u_margin);
 #if HAS_BLUR
   // Vertical half of the separable Gaussian (the horizontal half ran in the pass before).
   vec2 texel = 1.0 / vec2(textureSize(u_src, 0));
-  vec2 q0 = gl_FragCoord.xy * texel;
+  vec2 q0 = (gl_FragCoord.xy + vec2(float(u_margin))) * texel;
   vec3 c = u_centre_weight * texture(u_src, q0).rgb;
   for (int k = 0; k < u_tap_count; ++k) {
     vec2 t = texelFetch(u_taps, ivec2(k, 0), 0).xy;

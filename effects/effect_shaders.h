@@ -30,7 +30,8 @@ unsigned non_neutral_mask(const StackParams& p);
 std::string blur_horizontal_fragment_source();
 
 /// Pass 2 for the effects in `mask`. Uniforms (present only when their effect is compiled in):
-/// u_src; blur: u_taps, u_tap_count, u_centre_weight (as pass 1, vertical); u_tint (vec3 gain), u_exposure_gain (2^stops),
+/// u_src, u_margin (the source has this many extra pixels on every side: the target reads the
+/// source's interior, so a blur sees real image beyond the view's border); blur: u_taps, u_tap_count, u_centre_weight (as pass 1, vertical); u_tint (vec3 gain), u_exposure_gain (2^stops),
 /// u_saturation, u_contrast, u_vignette (radius, falloff in radians); vignette geometry u_tan
 /// (left, right, down, up tangents), u_size (pixels), u_centre_tan (optical centre).
 std::string stack_fragment_source(unsigned mask);

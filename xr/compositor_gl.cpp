@@ -56,6 +56,7 @@ struct Compositor::Impl {
   unsigned vao = 0;
   std::array<GlTarget, 2> video_out, eye_buffer, panel, seen;
   std::array<RenderView, 2> views;
+  std::array<int, 2> margin{0, 0};  //!< pixels of video rendered around each eye's view
   GpuTimer timer;
   explicit Impl(TexFormat f) : stack(f) {}
 };
@@ -85,11 +86,23 @@ void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLay
   const bool t = config_.gpu_timing;
   const std::string tag = eye == 0 ? "left " : "right ";
   m.views[eye] = in.view;
+  // The video is rendered with a margin of the blur radius so the blur sees real image beyond the
+  // view's border. The margin only grows while blur stays on (no reallocation per frame while
+  // sigma is animated) and drops back to 0 when blur is off.
+  const int w = config_.eye_width, h = config_.eye_height;
+  const int need = blur_margin(in.params, in.active_effects, in.view, w, h);
+  int& margin = m.margin[eye];
+  if (need == 0 || need > margin) {
+    margin = need;
+    if (m.video_out[eye].width() != w + 2 * margin)
+      m.video_out[eye] = GlTarget(w + 2 * margin, h + 2 * margin, config_.eye_format);
+  }
   if (t) m.timer.start(tag + "video");
-  m.video.render(m.video_out[eye], in.view, config_.lod);
+  m.video.render(m.video_out[eye], with_margin(in.view, w, h, margin), config_.lod);
   if (t) m.timer.stop();
   if (t) m.timer.start(tag + "effects");
-  m.stack.apply(m.video_out[eye].texture(), m.eye_buffer[eye], in.params, in.active_effects, in.view);
+  m.stack.apply(m.video_out[eye].texture(), m.eye_buffer[eye], in.params, in.active_effects,
+                in.view, margin);
   if (t) m.timer.stop();
   // Flare and grain layers will go here (after effects, before UI).
   if (!quads.empty()) {

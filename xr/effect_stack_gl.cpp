@@ -87,11 +87,31 @@ void EffectStackGl::set_gaussian(const GlProgram& p, double sigma, int radius, i
   glActiveTexture(GL_TEXTURE0);
 }
 
+RenderView with_margin(const RenderView& v, int width, int height, int margin) {
+  RenderView m = v;
+  const double dx = margin * (v.tan_right - v.tan_left) / width;
+  const double dy = margin * (v.tan_up - v.tan_down) / height;
+  m.tan_left -= dx;
+  m.tan_right += dx;
+  m.tan_down -= dy;
+  m.tan_up += dy;
+  return m;
+}
+
+int blur_margin(const effects::StackParams& p, unsigned mask, const RenderView& v, int width,
+                int height) {
+  if (!(mask & shader_bit(EffectType::Blur)) || !(p.blur_sigma_deg > 0.0)) return 0;
+  const BlurPixels b = blur_pixels(p.blur_sigma_deg, v, width, height);
+  return std::max(b.radius_x, b.radius_y);
+}
+
 void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effects::StackParams& sp,
-                          unsigned mask, const RenderView& v) {
+                          unsigned mask, const RenderView& v, int margin) {
   const int w = dst.width(), h = dst.height();
-  if (src.width() != w || src.height() != h)
-    throw GlError("EffectStackGl::apply: source and target sizes differ");
+  if (margin < 0 || src.width() != w + 2 * margin || src.height() != h + 2 * margin)
+    throw GlError("EffectStackGl::apply: source " + std::to_string(src.width()) + "x" +
+                  std::to_string(src.height()) + " is not the target " + std::to_string(w) + "x" +
+                  std::to_string(h) + " plus a margin of " + std::to_string(margin));
   glDisable(GL_BLEND);
   glBindVertexArray(vao_);
   glActiveTexture(GL_TEXTURE0);
@@ -100,8 +120,8 @@ void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effec
   if (!blur_on) mask &= ~shader_bit(EffectType::Blur);
   unsigned pass2_src = src.id();
   if (blur_on) {
-    if (!scratch_ || scratch_.width() != w || scratch_.height() != h)
-      scratch_ = GlTarget(w, h, scratch_format_);
+    if (!scratch_ || scratch_.width() != src.width() || scratch_.height() != src.height())
+      scratch_ = GlTarget(src.width(), src.height(), scratch_format_);
     scratch_.bind();
     blur_h_.use();
     glBindTexture(GL_TEXTURE_2D, src.id());
@@ -115,6 +135,7 @@ void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effec
   p.use();
   glBindTexture(GL_TEXTURE_2D, pass2_src);
   glUniform1i(p.uniform("u_src"), 0);
+  glUniform1i(p.uniform("u_margin"), margin);
   if (blur_on) set_gaussian(p, blur.sigma_y, blur.radius_y, 1);
   if (mask & shader_bit(EffectType::Tint)) {
     const Eigen::Vector3f g = sp.tint_gain.cast<float>();

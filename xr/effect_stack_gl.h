@@ -27,15 +27,25 @@ struct BlurPixels {
 };
 BlurPixels blur_pixels(double sigma_deg, const RenderView& view, int width, int height);
 
+/// The margin (pixels on every side) the video layer should render around a view so the blur
+/// never reaches the view's border: the kernel radius, 0 when blur is off (effects::view_renderer
+/// does the same on the CPU).
+int blur_margin(const effects::StackParams& p, unsigned mask, const RenderView& view, int width,
+                int height);
+/// `view` widened by `margin` pixels on every side at the same pixel pitch.
+RenderView with_margin(const RenderView& view, int width, int height, int margin);
+
 class EffectStackGl {
  public:
   explicit EffectStackGl(TexFormat scratch_format = TexFormat::RGBA16F);
   ~EffectStackGl();
 
   /// Runs the effects of `mask` (bits: effects::shader_bit) with parameters `p` from `src` into
-  /// `dst` (same size). An empty mask copies. Programs are generated per mask and cached.
+  /// `dst`. `src` is `dst` plus `margin` pixels on every side (rendered with with_margin());
+  /// with margin 0 the blur repeats the border pixel. An empty mask copies. Programs are
+  /// generated per mask and cached.
   void apply(const GlTexture& src, const GlTarget& dst, const effects::StackParams& p,
-             unsigned mask, const RenderView& view);
+             unsigned mask, const RenderView& view, int margin = 0);
   /// Number of compiled stack variants so far (the cache is keyed by the mask).
   std::size_t cached_variants() const { return programs_.size(); }
 

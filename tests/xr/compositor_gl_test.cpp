@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "effects/effect_shaders.h"
+#include "effects/equirect_sampler.h"
+#include "effects/view_camera.h"
+#include "effects/view_renderer.h"
 #include "gl_test_support.h"
 #include "xr/compositor.h"
 
@@ -126,6 +129,42 @@ TEST_F(CompositorGlTest, OffscreenRenderIsTheUndistortedEffectedViewIn8Bit) {
         }
       }
   EXPECT_GT(checked, 1000);
+}
+
+TEST_F(CompositorGlTest, WholeEyeMatchesTheCpuViewRendererIncludingTheBlurredBorder) {
+  // effects::render_view blurs a view sampled with a margin of one kernel radius, so the blur
+  // never meets an image border; the compositor renders the video layer with the same margin.
+  const cv::Mat eq = test::sunrise_float();
+  cv::Mat eq_rgb;
+  cv::cvtColor(eq, eq_rgb, cv::COLOR_BGR2RGB);
+  const effects::EquirectSampler sampler(eq_rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
+  const int w = 200, h = 150;  // 4 px/degree: magnified everywhere, so both read level 0
+  const effects::ViewPose pose{{35, 5}, 10};
+  const effects::ViewCamera cam = effects::ViewCamera::from_horizontal_fov(pose, 50, w, h);
+  RenderView v = RenderView::look_at(pose.look, pose.roll_deg, 50, w, h);
+  CompositorConfig c = small_config(DistortionMethod::None);
+  c.eye_width = w;
+  c.eye_height = h;
+  Compositor comp(c);
+  comp.set_video_frame(eq);
+  effects::StackParams p;
+  p.blur_sigma_deg = 1.5;
+  p.exposure_stops = 0.4;
+  p.vignette_radius_deg = 15;
+  p.vignette_falloff_deg = 20;
+  comp.render_eye(0, {v, p, effects::non_neutral_mask(p)});
+  comp.stage_times();
+  cv::Mat ref;
+  cv::cvtColor(effects::render_view(sampler, cam, p), ref, cv::COLOR_RGB2BGR);
+  cv::min(cv::max(ref, 0.0), 1.0, ref);
+  const test::ErrorStats e = test::compare(test::bgr_clamped(comp.read_eye_buffer(0)), ref);
+  const cv::Rect border_band(0, 0, 8, h);
+  const test::ErrorStats edge =
+      test::compare(test::bgr_clamped(comp.read_eye_buffer(0))(border_band), ref(border_band));
+  std::printf("[ eye      ] GPU eye vs effects::render_view: max %.3f/255 mean %.4f/255 "
+              "(left 8 columns: max %.3f/255)\n", e.max * 255, e.mean * 255, edge.max * 255);
+  EXPECT_LE(e.max, 2.0 / 255);
+  EXPECT_LE(edge.max, 2.0 / 255);
 }
 
 }  // namespace
