@@ -1,0 +1,167 @@
+/// @file
+/// @brief Per-eye GPU time of each compositor stage at 1440 x 1600 (video layer, effect stack,
+/// pre-distortion pixel vs mesh N, through-the-lens), with a plain textured copy of the same size
+/// measured in the same run as the memory-bound floor (counter "x_copy" = time / copy time).
+///
+/// Timing: every iteration ends with glFinish, and the benchmark uses real time, so a stage's
+/// time is the wall time of its GPU work (llvmpipe runs it on the CPU threads). Needs a display
+/// (run under `xvfb-run -a`); without one every case reports the context error.
+#include <epoxy/gl.h>
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+#include "effects/effect_shaders.h"
+#include "xr/distortion_gl.h"
+#include "xr/effect_stack_gl.h"
+#include "xr/gl_context.h"
+#include "xr/video_layer.h"
+
+namespace {
+
+using namespace vdfx;
+using namespace vdfx::xr;
+
+constexpr int kW = 1440, kH = 1600;
+
+struct Fixture {
+  std::unique_ptr<GlContext> ctx;
+  std::string error;
+  std::unique_ptr<VideoLayerGl> video;
+  std::unique_ptr<EffectStackGl> stack;
+  std::unique_ptr<DistortionGl> distortion;
+  GlTarget a, b;
+  RenderView eye;
+  effects::LensModel lens;
+  double copy_ms = 0.0;
+};
+
+double time_ms(const std::function<void()>& f) {
+  glFinish();
+  const auto t0 = std::chrono::steady_clock::now();
+  f();
+  glFinish();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Fixture& fixture() {
+  static Fixture fx = [] {
+    Fixture f;
+    try {
+      f.ctx = GlContext::create();
+    } catch (const GlError& e) {
+      f.error = e.what();
+      return f;
+    }
+    // A 3840 x 1920 frame (a common 4K 360 video size): a synthetic smooth pattern with detail.
+    cv::Mat frame(1920, 3840, CV_8UC3);
+    frame.forEach<cv::Vec3b>([](cv::Vec3b& p, const int* pos) {
+      p = cv::Vec3b(static_cast<uchar>((pos[1] * 7) & 255), static_cast<uchar>((pos[0] * 3) & 255),
+                    static_cast<uchar>(((pos[0] + pos[1]) / 4) & 255));
+    });
+    f.video = std::make_unique<VideoLayerGl>();
+    f.video->set_frame(frame);
+    f.stack = std::make_unique<EffectStackGl>();
+    f.distortion = std::make_unique<DistortionGl>();
+    f.a = GlTarget(kW, kH, TexFormat::RGBA16F);
+    f.b = GlTarget(kW, kH, TexFormat::RGBA16F);
+    // An eye like generic90's: about 100 x 104 degrees, asymmetric horizontally.
+    f.eye = RenderView::look_at({20, 10}, 0, 100, kW, kH);
+    f.eye.tan_left = -1.30;
+    f.eye.tan_right = 1.08;
+    effects::LensParams lp;
+    lp.c1 = 0.22;
+    lp.c2 = 0.24;
+    lp.lca_scale = {0.985, 1.0, 1.015};
+    f.lens = effects::LensModel(lp);
+    f.video->render(f.a, f.eye);
+    // The memory-bound floor: the stack's copy pass (an empty mask), median of 7.
+    std::vector<double> t;
+    for (int i = 0; i < 7; ++i)
+      t.push_back(time_ms([&] { f.stack->apply(f.a.texture(), f.b, {}, 0, f.eye); }));
+    std::nth_element(t.begin(), t.begin() + 3, t.end());
+    f.copy_ms = t[3];
+    return f;
+  }();
+  return fx;
+}
+
+void run(benchmark::State& state, const std::function<void(Fixture&)>& body) {
+  Fixture& f = fixture();
+  if (!f.ctx) {
+    state.SkipWithError(f.error.c_str());
+    return;
+  }
+  body(f);  // warm-up: compiles the variant, builds the mesh
+  glFinish();
+  double total = 0.0;
+  for (auto _ : state) {
+    const double ms = time_ms([&] { body(f); });
+    state.SetIterationTime(ms * 1e-3);
+    total += ms;
+  }
+  const double mean_ms = total / static_cast<double>(state.iterations());
+  state.counters["x_copy"] = mean_ms / f.copy_ms;
+  state.counters["copy_ms"] = f.copy_ms;
+}
+
+void BM_GlCopyFloor(benchmark::State& s) {
+  run(s, [](Fixture& f) { f.stack->apply(f.a.texture(), f.b, {}, 0, f.eye); });
+}
+void BM_GlVideoLayer(benchmark::State& s) {
+  const auto lod = static_cast<LodMode>(s.range(0));
+  run(s, [lod](Fixture& f) { f.video->render(f.a, f.eye, lod); });
+}
+void BM_GlColourEffects(benchmark::State& s) {
+  effects::StackParams p;
+  p.set(effects::EffectType::Tint, std::vector<double>{1.2, 1.0, 0.8});
+  p.exposure_stops = 0.5;
+  p.saturation = 1.3;
+  p.contrast = 1.2;
+  p.vignette_radius_deg = 30;
+  p.vignette_falloff_deg = 20;
+  run(s, [p](Fixture& f) { f.stack->apply(f.a.texture(), f.b, p, effects::non_neutral_mask(p), f.eye); });
+}
+void BM_GlFullStackBlurSigmaCentiDeg(benchmark::State& s) {
+  effects::StackParams p;
+  p.blur_sigma_deg = static_cast<double>(s.range(0)) / 100.0;
+  p.exposure_stops = 0.5;
+  p.saturation = 1.3;
+  p.contrast = 1.2;
+  p.vignette_radius_deg = 30;
+  p.vignette_falloff_deg = 20;
+  run(s, [p](Fixture& f) { f.stack->apply(f.a.texture(), f.b, p, effects::non_neutral_mask(p), f.eye); });
+}
+void BM_GlPredistortPixel(benchmark::State& s) {
+  const int iters = static_cast<int>(s.range(0));
+  run(s, [iters](Fixture& f) {
+    f.distortion->predistort(f.a.texture(), f.b, f.eye, f.lens,
+                             {DistortionMethod::Pixel, 0, iters, true, false});
+  });
+}
+void BM_GlPredistortMesh(benchmark::State& s) {
+  const int n = static_cast<int>(s.range(0));
+  run(s, [n](Fixture& f) {
+    f.distortion->predistort(f.a.texture(), f.b, f.eye, f.lens, {DistortionMethod::Mesh, n, 0, true, false});
+  });
+}
+void BM_GlThroughLens(benchmark::State& s) {
+  run(s, [](Fixture& f) { f.distortion->through_lens(f.a.texture(), f.b, f.eye, f.lens); });
+}
+
+#define VDFX_GL_BENCH(fn) BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
+VDFX_GL_BENCH(BM_GlCopyFloor);
+VDFX_GL_BENCH(BM_GlVideoLayer)->Arg(0)->Arg(1)->Arg(2);  // LodMode analytic, derivatives, base
+VDFX_GL_BENCH(BM_GlColourEffects);
+VDFX_GL_BENCH(BM_GlFullStackBlurSigmaCentiDeg)->Arg(50)->Arg(100)->Arg(200);
+VDFX_GL_BENCH(BM_GlPredistortPixel)->Arg(4)->Arg(8);
+VDFX_GL_BENCH(BM_GlPredistortMesh)->Arg(5)->Arg(9)->Arg(17)->Arg(33)->Arg(65);
+VDFX_GL_BENCH(BM_GlThroughLens);
+
+}  // namespace

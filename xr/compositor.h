@@ -1,0 +1,84 @@
+/// @file
+/// @brief The simulated headset's compositor: per eye, video layer -> effect stack -> quad layers
+/// -> lens pre-distortion -> panel; mirror modes; offscreen readback.
+///
+/// Effects see only the video (and, later, flare/grain layers); UI quads are composited after
+/// them, so a panel is never blurred or vignetted. Everything renders into textures; the mirror
+/// window (or a test) reads them. The eye buffers are float (RGBA16F by default): no 8-bit
+/// rounding happens before the panel.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <span>
+
+#include <opencv2/core.hpp>
+
+#include "effects/effect_types.h"
+#include "xr/distortion_gl.h"
+#include "xr/gpu_timer.h"
+#include "xr/session.h"
+#include "xr/video_layer.h"
+
+namespace vdfx::xr {
+
+enum class MirrorMode {
+  PreDistorted,    //!< both panels side by side, as the displays show them
+  ThroughTheLens,  //!< both eyes as the wearer sees them (forward lens model applied)
+  SingleEye,       //!< the left eye buffer, undistorted (effects and quads, no lens)
+};
+
+struct CompositorConfig {
+  int eye_width = 1440, eye_height = 1600;  //!< per eye, eye buffer and panel
+  TexFormat eye_format = TexFormat::RGBA16F;
+  LodMode lod = LodMode::Analytic;
+  DistortionSettings distortion;
+  effects::LensModel lens;
+  bool gpu_timing = false;  //!< timestamp queries per stage (stage_times())
+};
+
+/// What changes per eye per frame.
+struct EyeInput {
+  RenderView view;
+  effects::StackParams params;
+  unsigned active_effects = 0;  //!< effects::shader_bit mask: only these are compiled in
+};
+
+class Compositor {
+ public:
+  /// Needs a current GL 4.3 context (GlContext).
+  explicit Compositor(CompositorConfig config);
+  ~Compositor();
+
+  void set_video_frame(const cv::Mat& equirect);
+  /// Renders one eye (0 left, 1 right). Quads are placed with Session::to_local(head_in_local).
+  void render_eye(int eye, const EyeInput& in, std::span<const QuadLayer> quads = {},
+                  const Pose& head_in_local = {});
+  /// Draws the mirror into `target` (or the default framebuffer when null), scaled to fit.
+  void draw_mirror(MirrorMode mode, const GlTarget* target, int width, int height);
+
+  /// Undistorted eye buffer (effects and quads), CV_32FC4 BGRA, upright.
+  cv::Mat read_eye_buffer(int eye) const;
+  /// Pre-distorted panel image, CV_32FC4 BGRA, upright.
+  cv::Mat read_panel(int eye) const;
+  const GlTarget& eye_buffer(int eye) const;
+  const GlTarget& panel(int eye) const;
+  /// Per-stage GPU times of the frames rendered since the last call (gpu_timing on).
+  std::vector<StageTime> stage_times();
+  const CompositorConfig& config() const { return config_; }
+
+ private:
+  struct Impl;
+  CompositorConfig config_;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// One offscreen view for `vdfx render --gpu` (and tests): video layer -> effects ->
+/// optional pre-distortion (settings.method None: undistorted), read back as 8-bit BGR, clamped
+/// only at the end. Needs a current GL context.
+cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int width, int height,
+                        const effects::StackParams& params, unsigned active_effects,
+                        const DistortionSettings& distortion = {DistortionMethod::None},
+                        const effects::LensModel& lens = {});
+
+}  // namespace vdfx::xr

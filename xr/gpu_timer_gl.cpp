@@ -1,0 +1,49 @@
+/// @file
+/// @brief GpuTimer with GL_TIMESTAMP queries.
+#include <epoxy/gl.h>
+
+#include "xr/gl_context.h"
+#include "xr/gpu_timer.h"
+
+namespace vdfx::xr {
+
+GpuTimer::~GpuTimer() {
+  for (const Pending& p : pending_) {
+    glDeleteQueries(1, &p.begin);
+    glDeleteQueries(1, &p.end);
+  }
+}
+
+void GpuTimer::start(const std::string& stage) {
+  Pending p;
+  p.stage = stage;
+  glGenQueries(1, &p.begin);
+  glGenQueries(1, &p.end);
+  glQueryCounter(p.begin, GL_TIMESTAMP);
+  open_.push_back(pending_.size());
+  pending_.push_back(std::move(p));
+}
+
+void GpuTimer::stop() {
+  if (open_.empty()) throw GlError("GpuTimer::stop without a started stage");
+  glQueryCounter(pending_[open_.back()].end, GL_TIMESTAMP);
+  open_.pop_back();
+}
+
+std::vector<StageTime> GpuTimer::collect() {
+  if (!open_.empty())
+    throw GlError("GpuTimer::collect: stage '" + pending_[open_.back()].stage + "' is still open");
+  std::vector<StageTime> out;
+  for (const Pending& p : pending_) {
+    GLuint64 a = 0, b = 0;
+    glGetQueryObjectui64v(p.begin, GL_QUERY_RESULT, &a);  // waits for the GPU
+    glGetQueryObjectui64v(p.end, GL_QUERY_RESULT, &b);
+    out.push_back({p.stage, static_cast<double>(b - a) * 1e-6});
+    glDeleteQueries(1, &p.begin);
+    glDeleteQueries(1, &p.end);
+  }
+  pending_.clear();
+  return out;
+}
+
+}  // namespace vdfx::xr
