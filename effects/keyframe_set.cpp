@@ -229,7 +229,21 @@ bool KeyframeSet::finish_incremental(int checked_centre) {
   State& st = *state_;
   // The active polynomial terms must be those a full solve would choose.
   if (!select_polynomial_basis(st.points).same_columns(st.basis)) return false;
-  const int m = st.m();
+  const int m = st.m(), r = st.r();
+  {
+    // One refinement step with the full residual (O(N^2) kernel evaluations): the explicit
+    // inverse carries ~cond * eps error after each update, and this keeps it from accumulating.
+    const Eigen::MatrixXd p = polynomial_matrix(st.points, st.basis);
+    Eigen::MatrixXd res(r + m, dimension_);
+    res.topRows(r) = -(p.transpose() * st.z.bottomRows(m));
+    Eigen::ArrayXd krow(m);
+    for (int i = 0; i < m; ++i) {
+      kernel_row(st.points, kernel_, st.points.unit(i), st.points.t[i], krow);
+      res.row(r + i) = st.points.values.row(i) - krow.matrix().transpose() * st.z.bottomRows(m) -
+                       p.row(i) * st.z.topRows(r);
+    }
+    st.z += st.inverse * res;
+  }
   std::vector<int> rows;
   if (checked_centre >= 0) rows.push_back(checked_centre);
   const int samples = std::min(m, 32);
