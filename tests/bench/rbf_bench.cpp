@@ -1,0 +1,82 @@
+/// @file
+/// @brief RBF interpolation speed: evaluation, the whole stack, incremental add, full solve.
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "effects/keyframe_set.h"
+#include "effects/rbf_interpolator.h"
+#include "effects/stack_interpolator.h"
+
+namespace vdfx::effects {
+namespace {
+
+std::vector<Keyframe> random_keyframes(int n, int dim, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> az(-180, 180), h(-1, 1), v(0, 4);
+  std::uniform_int_distribution<std::int64_t> f(0, 3000);
+  std::vector<Keyframe> k(static_cast<size_t>(n));
+  for (auto& kf : k) {
+    kf.direction = {az(rng), std::asin(h(rng)) * kRadToDeg};
+    kf.frame = f(rng);
+    for (int i = 0; i < dim; ++i) kf.params.push_back(v(rng));
+  }
+  return k;
+}
+
+void BM_RbfEvaluateOneEffect(benchmark::State& state) {
+  const RbfInterpolator rbf(random_keyframes(static_cast<int>(state.range(0)), 1, 1), 1, {}, 30.0);
+  const Eigen::Vector3d n = to_unit(Direction{12.0, 5.0});
+  double out = 0;
+  std::int64_t frame = 100;
+  for (auto _ : state) {
+    rbf.evaluate_into(n, frame++, &out);
+    benchmark::DoNotOptimize(out);
+  }
+}
+BENCHMARK(BM_RbfEvaluateOneEffect)->Arg(1000);
+
+void BM_RbfEvaluateStackSixEffects(benchmark::State& state) {
+  std::vector<EffectTrack> tracks;
+  for (int e = 0; e < kEffectCount; ++e) {
+    EffectTrack t;
+    t.type = static_cast<EffectType>(e);
+    t.keyframes = random_keyframes(1000, effect_spec(t.type).dimension(), 10 + e);
+    tracks.push_back(std::move(t));
+  }
+  const StackInterpolator s(tracks, {}, 30.0);
+  std::int64_t frame = 100;
+  for (auto _ : state) benchmark::DoNotOptimize(s.evaluate(Direction{12.0, 5.0}, frame++));
+}
+BENCHMARK(BM_RbfEvaluateStackSixEffects)->Unit(benchmark::kMicrosecond);
+
+void BM_RbfIncrementalAdd(benchmark::State& state) {
+  KeyframeSetOptions opt;
+  opt.async = false;
+  KeyframeSet set(1, {}, 30.0, random_keyframes(1000, 1, 2), opt);
+  const auto extra = random_keyframes(4096, 1, 3);
+  size_t i = 0;
+  double full = 0;
+  for (auto _ : state) {
+    const auto e = set.add(extra[i % extra.size()]);
+    state.PauseTiming();
+    full += e.incremental ? 0 : 1;
+    set.remove(set.keyframes().size() - 1);  // back to N = 1000 (untimed)
+    ++i;
+    state.ResumeTiming();
+  }
+  state.counters["full_solves"] = full;  // adds that fell back to a full solve (expect 0)
+}
+BENCHMARK(BM_RbfIncrementalAdd)->Unit(benchmark::kMillisecond);
+
+void BM_RbfFullSolve(benchmark::State& state) {
+  const auto k = random_keyframes(static_cast<int>(state.range(0)), 1, 4);
+  for (auto _ : state) {
+    const RbfInterpolator rbf(k, 1, {}, 30.0);
+    benchmark::DoNotOptimize(rbf.diagnostics().max_residual);
+  }
+}
+BENCHMARK(BM_RbfFullSolve)->Arg(100)->Arg(1000)->Arg(3000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace vdfx::effects

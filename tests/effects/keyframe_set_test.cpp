@@ -1,0 +1,122 @@
+/// @file
+/// @brief KeyframeSet: replace-on-top, incremental updates equal full solves, async re-solves.
+#include "effects/keyframe_set.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/effects/rbf_test_util.h"
+
+namespace vdfx::effects {
+namespace {
+
+constexpr int kDim = 2;
+
+/// Max difference between the set's published solution and a fresh full solve, at random views.
+double max_diff_to_full_solve(const KeyframeSet& set, std::mt19937_64& rng) {
+  const RbfInterpolator fresh(set.keyframes(), kDim, {}, 30.0);
+  const auto sol = set.solution();
+  double worst = 0.0;
+  std::uniform_int_distribution<std::int64_t> f(0, 200);
+  for (int i = 0; i < 25; ++i) {
+    const Direction d = test::random_direction(rng);
+    const std::int64_t fr = f(rng);
+    worst = std::max(worst, (sol->evaluate(d, fr) - fresh.evaluate(d, fr)).cwiseAbs().maxCoeff());
+  }
+  for (const Keyframe& k : set.keyframes())  // and every keyframe is reproduced
+    worst = std::max(worst, (sol->evaluate(k.direction, k.frame) -
+                             Eigen::Map<const Eigen::VectorXd>(k.params.data(), kDim))
+                                .cwiseAbs()
+                                .maxCoeff());
+  return worst;
+}
+
+TEST(KeyframeSet, IncrementalEditsMatchAFullSolve) {
+  std::mt19937_64 rng(5);
+  std::vector<Keyframe> initial;
+  for (int i = 0; i < 60; ++i) initial.push_back(test::random_keyframe(rng, kDim, 0, 200));
+  KeyframeSetOptions opt;
+  opt.async = false;
+  KeyframeSet set(kDim, {}, 30.0, initial, opt);
+  int incremental = 0, edits = 0;
+  std::uniform_int_distribution<int> op(0, 3);
+  for (int step = 0; step < 60; ++step, ++edits) {
+    std::uniform_int_distribution<size_t> pick(0, set.keyframes().size() - 1);
+    switch (op(rng)) {
+      case 0:
+      case 1: incremental += set.add(test::random_keyframe(rng, kDim, 0, 200)).incremental; break;
+      case 2: set.remove(pick(rng)); break;
+      case 3: {
+        const size_t i = pick(rng);
+        incremental += set.move(i, test::random_direction(rng), set.keyframes()[i].frame).incremental;
+        set.set_params(i, {0.5, 3.5});
+        break;
+      }
+    }
+    ASSERT_EQ(set.solution_version(), set.version()) << "sync mode publishes every edit";
+    ASSERT_LE(max_diff_to_full_solve(set, rng), 1e-9) << "after edit " << step;
+  }
+  EXPECT_GT(incremental, edits / 3) << "adds and moves should mostly avoid a full solve";
+}
+
+TEST(KeyframeSet, AddingOnTopOfAKeyframeReplacesIt) {
+  KeyframeSetOptions opt;
+  opt.async = false;
+  KeyframeSet set(kDim, {}, 30.0, {{{10, 0}, 5, {1, 1}}, {{50, 0}, 5, {2, 2}}}, opt);
+  const auto e = set.add({{10.3, 0.2}, 5, {3, 3}});  // 0.36 degrees away, same frame
+  ASSERT_TRUE(e.replaced.has_value());
+  EXPECT_EQ(*e.replaced, 0u);
+  EXPECT_EQ(set.keyframes().size(), 2u);
+  EXPECT_NEAR(set.solution()->evaluate(Direction{10.3, 0.2}, 5)[0], 3.0, 1e-9);
+  EXPECT_FALSE(set.add({{10.3, 0.2}, 6, {4, 4}}).replaced);  // another frame
+  EXPECT_FALSE(set.add({{11.0, 0.0}, 5, {4, 4}}).replaced);  // 1 degree away
+  EXPECT_EQ(set.keyframes().size(), 4u);
+  // Moving a keyframe onto another removes the one it lands on.
+  const auto m = set.move(3, {50.1, 0}, 5);
+  ASSERT_TRUE(m.replaced.has_value());
+  EXPECT_EQ(set.keyframes().size(), 3u);
+  EXPECT_NEAR(set.solution()->evaluate(Direction{50.1, 0}, 5)[0], 4.0, 1e-9);
+}
+
+TEST(KeyframeSet, ChangingTheActiveTermsForcesAFullSolve) {
+  std::mt19937_64 rng(8);
+  std::vector<Keyframe> k;
+  for (int i = 0; i < 60; ++i) {
+    k.push_back(test::random_keyframe(rng, kDim, 0, 0));  // all at frame 0: no t term
+  }
+  KeyframeSetOptions opt;
+  opt.async = false;
+  KeyframeSet set(kDim, {}, 30.0, k, opt);
+  EXPECT_FALSE(set.solution()->basis().has(PolynomialBasis::T));
+  EXPECT_TRUE(set.add(test::random_keyframe(rng, kDim, 0, 0)).incremental);
+  const auto e = set.add(test::random_keyframe(rng, kDim, 50, 50));
+  EXPECT_FALSE(e.incremental);
+  EXPECT_TRUE(set.solution()->basis().has(PolynomialBasis::T));
+  EXPECT_LE(max_diff_to_full_solve(set, rng), 1e-9);
+}
+
+TEST(KeyframeSet, AsyncFullSolveIsSwappedInAndReadersAlwaysHaveASolution) {
+  std::mt19937_64 rng(9);
+  std::vector<Keyframe> k;
+  for (int i = 0; i < 300; ++i) k.push_back(test::random_keyframe(rng, kDim, 0, 0));
+  KeyframeSetOptions opt;
+  opt.inline_full_solve_max = 0;  // every full solve goes to the worker
+  KeyframeSet set(kDim, {}, 30.0, k, opt);
+  ASSERT_NE(set.solution(), nullptr);
+  // A new frame adds the t term: a full re-solve, on the worker.
+  const auto e = set.add(test::random_keyframe(rng, kDim, 40, 40));
+  EXPECT_FALSE(e.incremental);
+  const std::uint64_t v1 = set.version();
+  set.add(test::random_keyframe(rng, kDim, 70, 70));  // edit while the worker may be busy
+  const std::uint64_t v2 = set.version();
+  ASSERT_NE(set.solution(), nullptr);
+  ASSERT_TRUE(set.wait_for_version(v2, std::chrono::seconds(60)));
+  EXPECT_GE(set.solution_version(), v1);
+  EXPECT_EQ(set.solution()->centres(), 302);
+  EXPECT_LE(max_diff_to_full_solve(set, rng), 1e-9);
+  // After the worker's result is adopted, edits are incremental again.
+  EXPECT_TRUE(set.add(test::random_keyframe(rng, kDim, 40, 70)).incremental);
+  EXPECT_EQ(set.solution_version(), set.version());
+}
+
+}  // namespace
+}  // namespace vdfx::effects
