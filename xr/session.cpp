@@ -20,10 +20,6 @@ const char* to_string(SessionState s) {
   return "?";
 }
 
-Pose operator*(const Pose& a, const Pose& b) {
-  return {a.orientation * b.orientation, a.orientation * b.position + a.position};
-}
-
 Session::Session(HmdProfile profile) : profile_(std::move(profile)) {
   if (!(profile_.refresh_hz > 0.0 && profile_.refresh_hz <= 1000.0))
     throw SessionError("Session: refresh rate " + std::to_string(profile_.refresh_hz) +

@@ -32,9 +32,7 @@ const char* to_string(SessionState s);
 
 enum class ReferenceSpace { View, Local };
 
-/// Pose (XrPosef) is xr/eye_views.h's: orientation then position, mapping a local frame into
-/// its parent. a * b is b's frame expressed in a's parent.
-Pose operator*(const Pose& a, const Pose& b);
+/// Poses (XrPosef) are xr/pose.h's; a * b (Pose::operator*) is b's frame expressed in a's parent.
 
 /// XrFrameState.
 struct FrameState {
