@@ -82,6 +82,12 @@ class Widget {
   virtual glm::dvec2 value() const { return glm::dvec2(0.0); }
   /// Hit test in panel pixels.
   virtual bool hit(glm::dvec2 p) const { return rect_.contains(p); }
+  /// Everything draw() may touch: rect() grown by kPaintMargin, since focus rings, thumbs and
+  /// markers reach a few pixels past it (the colour wheel's marker 8.5 px, the strip's focus
+  /// ring 6.5 px). A widget drawing farther out must override this, or partial re-renders
+  /// (Panel::dirty_rects) leave stale pixels behind.
+  virtual Rect paint_bounds() const { return rect_.inset(-kPaintMargin); }
+  static constexpr double kPaintMargin = 12.0;
 
   /// Pointer position while hovering (for per-row highlights); not called when not hovered.
   virtual void hover_at(glm::dvec2 /*p*/) {}
