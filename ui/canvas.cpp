@@ -64,7 +64,20 @@ class Paint {
       for (int i = 0; i < n; ++i) std::memcpy(d + 4 * i, &solid_, 4);
       return;
     }
-    for (int i = 0; i < n; ++i) {
+    constexpr int kBlock = 8;
+    for (int i = 0; i < n;) {
+      if (memo_valid_ && i + kBlock <= n) {  // 8 pixels equal to the memo: one branch
+        std::uint32_t v[kBlock];
+        std::memcpy(v, d + 4 * i, sizeof v);
+        std::uint32_t differ = 0;
+        for (int j = 0; j < kBlock; ++j) differ |= v[j] ^ memo_in_;
+        if (!differ) {
+          for (int j = 0; j < kBlock; ++j) v[j] = memo_out_;
+          std::memcpy(d + 4 * i, v, sizeof v);
+          i += kBlock;
+          continue;
+        }
+      }
       std::uint32_t v;
       std::memcpy(&v, d + 4 * i, 4);
       if (!memo_valid_ || v != memo_in_) {
@@ -76,6 +89,7 @@ class Paint {
         memo_valid_ = true;
       }
       std::memcpy(d + 4 * i, &memo_out_, 4);
+      ++i;
     }
   }
 
