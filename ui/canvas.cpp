@@ -315,8 +315,17 @@ void Canvas::fill_convex(std::span<const glm::dvec2> pts, Rgba c) {
   });
 }
 
-void Canvas::image(const cv::Mat& src, const Rect& dst, ChannelOrder order, float opacity) {
-  if (src.empty() || dst.empty()) return;
+namespace {
+
+/// Whole-pixel placement of an image drawn into dst: x0, y0 and the scaled size.
+cv::Rect image_placement(const Rect& dst) {
+  const int x0 = static_cast<int>(std::lround(dst.x)), y0 = static_cast<int>(std::lround(dst.y));
+  return {x0, y0, static_cast<int>(std::lround(dst.right())) - x0,
+          static_cast<int>(std::lround(dst.bottom())) - y0};
+}
+
+/// src as straight RGBA8 (see Canvas::image for the accepted types).
+cv::Mat to_rgba(const cv::Mat& src, ChannelOrder order) {
   cv::Mat rgba;
   switch (src.type()) {
     case CV_8UC1: cv::cvtColor(src, rgba, cv::COLOR_GRAY2RGBA); break;
@@ -336,13 +345,39 @@ void Canvas::image(const cv::Mat& src, const Rect& dst, ChannelOrder order, floa
     default: throw std::invalid_argument("Canvas::image: unsupported cv::Mat type " +
                                          std::to_string(src.type()));
   }
-  const int x0 = static_cast<int>(std::lround(dst.x)), y0 = static_cast<int>(std::lround(dst.y));
-  const int w = static_cast<int>(std::lround(dst.right())) - x0;
-  const int h = static_cast<int>(std::lround(dst.bottom())) - y0;
-  if (w <= 0 || h <= 0) return;
+  return rgba;
+}
+
+/// rgba resampled to size (INTER_AREA when shrinking); shared, not copied, when it fits already.
+cv::Mat scale_to(const cv::Mat& rgba, cv::Size size) {
+  if (rgba.size() == size) return rgba;
   cv::Mat scaled;
-  const bool shrink = w < rgba.cols || h < rgba.rows;
-  cv::resize(rgba, scaled, cv::Size(w, h), 0, 0, shrink ? cv::INTER_AREA : cv::INTER_LINEAR);
+  const bool shrink = size.width < rgba.cols || size.height < rgba.rows;
+  cv::resize(rgba, scaled, size, 0, 0, shrink ? cv::INTER_AREA : cv::INTER_LINEAR);
+  return scaled;
+}
+
+}  // namespace
+
+const cv::Mat& ScaledImage::get(const cv::Mat& src, const Rect& dst, ChannelOrder order) {
+  if (src.data != src_data_ || src.size() != src_size_ || src.type() != src_type_ ||
+      order != order_ || !(dst == dst_) || rgba_.empty()) {
+    const cv::Rect place = image_placement(dst);
+    rgba_ = src.empty() || place.width <= 0 || place.height <= 0
+                ? cv::Mat()
+                : scale_to(to_rgba(src, order), place.size()).clone();
+    src_data_ = src.data, src_size_ = src.size(), src_type_ = src.type();
+    order_ = order, dst_ = dst;
+  }
+  return rgba_;
+}
+
+void Canvas::image(const cv::Mat& src, const Rect& dst, ChannelOrder order, float opacity) {
+  if (src.empty() || dst.empty()) return;
+  const cv::Rect place = image_placement(dst);
+  const int x0 = place.x, y0 = place.y, w = place.width, h = place.height;
+  if (w <= 0 || h <= 0) return;
+  const cv::Mat scaled = scale_to(to_rgba(src, order), place.size());
   const PixelBox b = pixel_box(Rect{static_cast<double>(x0), static_cast<double>(y0),
                                     static_cast<double>(w), static_cast<double>(h)});
   for (int y = b.y0; y < b.y1; ++y) {
@@ -365,9 +400,13 @@ void Canvas::image(const cv::Mat& src, const Rect& dst, ChannelOrder order, floa
 
 void Canvas::text_at(const Font& font, int px, std::u32string_view text, double x, double baseline,
                      Rgba c) {
+  draw_line(font, px, font.layout(text, px), x, baseline, c);
+}
+
+void Canvas::draw_line(const Font& font, int px, const LineLayout& line, double x, double baseline,
+                       Rgba c) {
   if (c.a <= 0.f) return;
   Paint paint(c);
-  const LineLayout line = font.layout(text, px);
   const int base = static_cast<int>(std::lround(baseline));
   for (const PlacedGlyph& g : line.glyphs) {
     // Integer pen plus a quarter-pixel bucket: sharp stems, even spacing, a bounded cache.
@@ -394,15 +433,17 @@ void Canvas::text_at(const Font& font, int px, std::u32string_view text, double 
 
 double Canvas::text(const Font& font, int px, std::string_view utf8, const Rect& box, Align align,
                     Rgba c) {
-  const std::u32string fitted = decode_utf8(fit_text(font, px, utf8, box.w));
-  const double width = font.layout(fitted, px).width;
+  // Lay the line out once; only text that does not fit is cut (as fit_text does) and redone.
+  LineLayout line = font.layout(decode_utf8(utf8), px);
+  if (line.width > box.w) line = font.layout(decode_utf8(fit_text(font, px, utf8, box.w)), px);
+  const double width = line.width;
   const FontMetrics m = font.metrics(px);
   double x = box.x;
   if (align == Align::Centre) x = box.x + 0.5 * (box.w - width);
   if (align == Align::Right) x = box.right() - width;
   const double baseline = box.y + 0.5 * (box.h - (m.ascent + m.descent)) + m.ascent;
   push_clip(box);
-  text_at(font, px, fitted, x, baseline, c);
+  draw_line(font, px, line, x, baseline, c);
   pop_clip();
   return width;
 }

@@ -23,6 +23,7 @@
 namespace vdfx::ui {
 
 class Font;
+struct LineLayout;
 
 enum class Align { Left, Centre, Right };
 /// Channel order of colour images given to Canvas::image (OpenCV decodes to BGR).
@@ -84,6 +85,8 @@ class Canvas {
   /// walked in jumps of |d| and interiors filled as spans, evaluating dist only near edges.
   template <class Distance>
   void fill_distance(const Rect& bounds, Rgba c, Distance&& dist);
+  void draw_line(const Font& font, int px, const LineLayout& line, double x, double baseline,
+                 Rgba c);
   struct PixelBox {
     int x0, y0, x1, y1;
   };
@@ -91,6 +94,23 @@ class Canvas {
 
   cv::Mat image_;
   std::vector<Rect> clips_;
+};
+
+/// An image converted and scaled for one destination rectangle, kept by widgets that draw the
+/// same picture every render: Canvas::image(rgba, dst, ChannelOrder::Rgb, opacity) then skips
+/// the conversion and resampling and gives the same pixels as drawing the source.
+class ScaledImage {
+ public:
+  /// Straight RGBA8 at dst's whole-pixel size, rebuilt only when src's buffer or dst changed.
+  const cv::Mat& get(const cv::Mat& src, const Rect& dst, ChannelOrder order = ChannelOrder::Bgr);
+
+ private:
+  const void* src_data_ = nullptr;
+  cv::Size src_size_;
+  int src_type_ = -1;
+  ChannelOrder order_ = ChannelOrder::Bgr;
+  Rect dst_;
+  cv::Mat rgba_;
 };
 
 /// The longest prefix of utf8 that fits max_width with a trailing "…", or utf8 itself if it

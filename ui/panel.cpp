@@ -98,9 +98,14 @@ Panel::Damage Panel::damage() const {
     return {{all}, true};
   Damage d;
   for (size_t i = 0; i < widgets_.size(); ++i) {
-    if (widgets_[i]->revision() == rendered_widget_revisions_[i]) continue;
+    const Widget& w = *widgets_[i];
+    if (w.revision() == rendered_widget_revisions_[i]) continue;
+    if (w.damage_is_partial()) {  // the widget knows which part changed
+      add_merged(d.rects, snap(w.damage().intersect(w.paint_bounds()), all));
+      continue;
+    }
     add_merged(d.rects, snap(rendered_bounds_[i], all));  // where it was
-    add_merged(d.rects, snap(widgets_[i]->paint_bounds(), all));  // where it is
+    add_merged(d.rects, snap(w.paint_bounds(), all));     // where it is
   }
   if (d.rects.empty()) return d;
   double area = 0.0;
@@ -147,6 +152,7 @@ bool Panel::render_if_dirty() {
   for (size_t i = 0; i < widgets_.size(); ++i) {
     rendered_widget_revisions_[i] = widgets_[i]->revision();
     rendered_bounds_[i] = widgets_[i]->paint_bounds();
+    widgets_[i]->reset_damage();
   }
   ++render_count_;
   return true;

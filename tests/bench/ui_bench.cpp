@@ -14,7 +14,9 @@
 #include "ui/button.h"
 #include "ui/canvas.h"
 #include "ui/demo_panels.h"
+#include "ui/plot.h"
 #include "ui/theme.h"
+#include "ui/timeline_strip.h"
 
 namespace {
 
@@ -77,6 +79,24 @@ void BM_EffectPanelHoverMenuRow(benchmark::State& state) {
   state.counters["renders_per_iter"] = 2;
 }
 BENCHMARK(BM_EffectPanelHoverMenuRow)->Unit(benchmark::kMillisecond);
+
+/// Playback: the playhead moves one frame, on the strip and on the plot (what the editor
+/// redraws every video frame while playing).
+void BM_TimelinePlayheadStep(benchmark::State& state) {
+  auto p = demo::make_timeline_panel();
+  auto& strip = *p->find_as<TimelineStrip>("strip");
+  auto& plot = *p->find_as<Plot>("exposure_plot");
+  p->texture();
+  int frame = 0;
+  for (auto _ : state) {
+    frame = (frame + 1) % 240;
+    strip.set_playhead(frame);
+    plot.set_playhead(frame);
+    p->render_if_dirty();
+    benchmark::DoNotOptimize(p->texture().data);
+  }
+}
+BENCHMARK(BM_TimelinePlayheadStep)->Unit(benchmark::kMillisecond);
 
 void BM_TextDraw(benchmark::State& state) {
   Canvas c(1000, 100);

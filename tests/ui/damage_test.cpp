@@ -8,6 +8,7 @@
 #include "ui/menu_list.h"
 #include "ui/plot.h"
 #include "ui/slider.h"
+#include "ui/theme.h"
 #include "ui/timeline_strip.h"
 
 #include <gtest/gtest.h>
@@ -48,6 +49,17 @@ const DamageCase kDamageCases[] = {
         auto& m = *p.find("effect_menu");
         m.set_hovered(true);
         m.hover_at({m.rect().x + 50, m.rect().y + 40});
+      }}},
+    {"MenuHoverMovesDownTwoRows",  // the second step redraws just the two rows' bands
+     make_effect_panel,
+     {[](Panel& p) {
+        auto& m = *p.find("effect_menu");
+        m.set_hovered(true);
+        m.hover_at({m.rect().x + 50, m.rect().y + 40});
+      },
+      [](Panel& p) {
+        auto& m = *p.find("effect_menu");
+        m.hover_at({m.rect().x + 50, m.rect().y + 40 + 2 * Theme::dark().row_height});
       }}},
     {"SliderDragAndFocus",
      make_effect_panel,
@@ -105,6 +117,23 @@ TEST(Damage, HoverDirtiesOnlyThatWidgetsPaintBounds) {
   EXPECT_EQ(rects[0], whole_pixels(undo.paint_bounds(), 1000, 1000));
   EXPECT_TRUE(rects[0].intersect(p->find("redo")->rect()).empty());
   EXPECT_LT(rects[0].w * rects[0].h, 0.1 * 1000 * 1000);
+}
+
+TEST(Damage, MenuHoverRowChangeDirtiesOnlyTheTwoRows) {
+  auto p = make_effect_panel();
+  auto& m = *p->find("effect_menu");
+  const Rect r = m.rect();
+  const double row = Theme::dark().row_height;
+  m.set_hovered(true);
+  m.hover_at({r.x + 50, r.y + 40});
+  p->texture();
+  m.hover_at({r.x + 50, r.y + 40 + row});  // next row down: two adjacent bands
+  const std::vector<Rect> rects = p->dirty_rects();
+  ASSERT_EQ(rects.size(), 1u);
+  EXPECT_LE(rects[0].h, 2 * row + 4);
+  EXPECT_GE(rects[0].h, 2 * row);
+  EXPECT_LT(rects[0].h, 0.5 * r.h);
+  EXPECT_GE(rects[0].y, r.y);
 }
 
 TEST(Damage, TwoWidgetsFarApartGiveTwoRectangles) {
