@@ -6,6 +6,7 @@
 #include "ui/button.h"
 #include "ui/canvas.h"
 #include "ui/menu_list.h"
+#include "ui/minimap.h"
 #include "ui/plot.h"
 #include "ui/slider.h"
 #include "ui/theme.h"
@@ -76,6 +77,16 @@ const DamageCase kDamageCases[] = {
      {[](Panel& p) {
         auto& s = *p.find_as<TimelineStrip>("strip");
         s.set_playhead(31), s.set_focused(true);
+      }}},
+    {"NewMinimapFieldAndThumbnails",  // cached scaled images must follow new content
+     make_timeline_panel,
+     {[](Panel& p) {
+        p.find_as<Minimap>("exposure_map")->set_field(cv::Mat(64, 128, CV_32FC1, 0.7f), -1, 1);
+      },
+      [](Panel& p) {
+        std::vector<cv::Mat> thumbs;
+        for (int i = 0; i < 8; ++i) thumbs.push_back(synthetic_frame(i + 5, 320, 180));
+        p.find_as<TimelineStrip>("strip")->set_thumbnails(std::move(thumbs));
       }}},
     {"PlotPlayhead",
      make_timeline_panel,
