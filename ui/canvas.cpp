@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 
 namespace vdfx::ui {
@@ -21,6 +23,91 @@ void premultiply(Rgba c, float out[4]) {
   out[1] = c.g * c.a * 255.f;
   out[2] = c.b * c.a * 255.f;
   out[3] = c.a * 255.f;
+}
+
+/// lround(v) clamped to [0, 255] for v > -0.5 (blend sums are never below zero): v + 0.5 is
+/// exact in double for any float v below 2^28, so truncation rounds half away from zero exactly
+/// as lround does, without the libm call.
+inline std::uint8_t round_u8(float v) {
+  const double r = static_cast<double>(v) + 0.5;
+  return r >= 255.0 ? 255 : r <= 0.0 ? 0 : static_cast<std::uint8_t>(r);
+}
+
+/// One premultiplied colour "over" RGBA8 pixels: out = src * coverage + dst * (1 - coverage a).
+/// Every path computes bit-for-bit what the per-pixel float formula gives (the goldens depend on
+/// it); the fast paths only avoid recomputing it.
+class Paint {
+ public:
+  explicit Paint(Rgba c) {
+    premultiply(c, pm_);
+    keep1_ = 1.f - 1.f * pm_[3] / 255.f;
+    if (keep1_ == 0.f) {  // opaque: full coverage writes the colour whatever was there
+      std::uint8_t px[4];
+      for (int k = 0; k < 4; ++k) px[k] = round_u8(pm_[k]);
+      std::memcpy(&solid_, px, 4);
+    }
+  }
+  explicit Paint(const float pm[4]) {
+    std::copy(pm, pm + 4, pm_);
+    keep1_ = 1.f - 1.f * pm_[3] / 255.f;
+  }
+
+  /// Partial coverage in (0, 1].
+  void blend(std::uint8_t* d, float coverage) const {
+    const float keep = 1.f - coverage * pm_[3] / 255.f;
+    for (int k = 0; k < 4; ++k) d[k] = round_u8(pm_[k] * coverage + d[k] * keep);
+  }
+  /// Full coverage of n consecutive pixels. Interiors mostly lie over one uniform colour, so
+  /// the result of the last distinct destination pixel is reused.
+  void fill(std::uint8_t* d, int n) {
+    if (keep1_ == 0.f) {
+      for (int i = 0; i < n; ++i) std::memcpy(d + 4 * i, &solid_, 4);
+      return;
+    }
+    constexpr int kBlock = 8;
+    for (int i = 0; i < n;) {
+      if (memo_valid_ && i + kBlock <= n) {  // 8 pixels equal to the memo: one branch
+        std::uint32_t v[kBlock];
+        std::memcpy(v, d + 4 * i, sizeof v);
+        std::uint32_t differ = 0;
+        for (int j = 0; j < kBlock; ++j) differ |= v[j] ^ memo_in_;
+        if (!differ) {
+          for (int j = 0; j < kBlock; ++j) v[j] = memo_out_;
+          std::memcpy(d + 4 * i, v, sizeof v);
+          i += kBlock;
+          continue;
+        }
+      }
+      std::uint32_t v;
+      std::memcpy(&v, d + 4 * i, 4);
+      if (!memo_valid_ || v != memo_in_) {
+        memo_in_ = v;
+        std::uint8_t px[4];
+        std::memcpy(px, &v, 4);
+        for (int k = 0; k < 4; ++k) px[k] = round_u8(pm_[k] * 1.f + px[k] * keep1_);
+        std::memcpy(&memo_out_, px, 4);
+        memo_valid_ = true;
+      }
+      std::memcpy(d + 4 * i, &memo_out_, 4);
+      ++i;
+    }
+  }
+
+ private:
+  float pm_[4];
+  float keep1_;
+  std::uint32_t solid_ = 0;
+  std::uint32_t memo_in_ = 0, memo_out_ = 0;
+  bool memo_valid_ = false;
+};
+
+/// How many further pixels along a row are certainly on the same side as one at signed distance
+/// margin beyond the half-pixel coverage ramp: the distances are 1-Lipschitz (exact SDFs, or max
+/// / abs of them), so moving j pixels changes d by at most j. The epsilon keeps float rounding
+/// of d from ever deciding a pixel the per-pixel evaluation would have decided otherwise.
+inline int certain_run(double margin) {
+  constexpr double kEps = 1e-6;
+  return margin > kEps ? static_cast<int>(std::min(margin - kEps, 1e9)) : 0;
 }
 
 double rounded_box_distance(glm::dvec2 p, const Rect& r, double radius) {
@@ -49,6 +136,14 @@ Canvas::Canvas(int width, int height)
     : image_(height, width, CV_8UC4, cv::Scalar::all(0)),
       clips_{Rect{0, 0, static_cast<double>(width), static_cast<double>(height)}} {}
 
+Canvas::Canvas(cv::Mat pixels)
+    : image_(std::move(pixels)),
+      clips_{Rect{0, 0, static_cast<double>(image_.cols), static_cast<double>(image_.rows)}} {
+  if (image_.type() != CV_8UC4)
+    throw std::invalid_argument("Canvas: pixels must be CV_8UC4 (premultiplied RGBA8), got type " +
+                                std::to_string(image_.type()));
+}
+
 cv::Mat Canvas::to_straight_rgba() const {
   cv::Mat out = image_.clone();
   out.forEach<cv::Vec4b>([](cv::Vec4b& p, const int*) {
@@ -67,6 +162,21 @@ void Canvas::clear(Rgba c) {
   premultiply(c, pm);
   image_.setTo(cv::Scalar(std::round(pm[0]), std::round(pm[1]), std::round(pm[2]),
                           std::round(pm[3])));
+}
+
+void Canvas::clear_rect(const Rect& r, Rgba c) {
+  float pm[4];
+  premultiply(c, pm);
+  // Whole pixels whose centres lie in r (pixel_box rounds outwards, so cut it again).
+  const PixelBox b = pixel_box(r);
+  const int x0 = std::max(b.x0, static_cast<int>(std::ceil(r.x - 0.5)));
+  const int y0 = std::max(b.y0, static_cast<int>(std::ceil(r.y - 0.5)));
+  const int x1 = std::min(b.x1, static_cast<int>(std::ceil(r.right() - 0.5)));
+  const int y1 = std::min(b.y1, static_cast<int>(std::ceil(r.bottom() - 0.5)));
+  if (x1 <= x0 || y1 <= y0) return;
+  image_(cv::Rect(x0, y0, x1 - x0, y1 - y0))
+      .setTo(cv::Scalar(std::round(pm[0]), std::round(pm[1]), std::round(pm[2]),
+                        std::round(pm[3])));
 }
 
 void Canvas::push_clip(const Rect& r) { clips_.push_back(clips_.back().intersect(r)); }
@@ -91,40 +201,38 @@ Canvas::PixelBox Canvas::pixel_box(const Rect& r) const {
   return b;
 }
 
-void Canvas::blend(int x, int y, float coverage, const float pm[4]) {
-  auto& d = image_.at<cv::Vec4b>(y, x);
-  const float keep = 1.f - coverage * pm[3] / 255.f;
-  for (int k = 0; k < 4; ++k)
-    d[k] = static_cast<uchar>(std::clamp(std::lround(pm[k] * coverage + d[k] * keep), 0L, 255L));
-}
-
 template <class Distance>
-void Canvas::fill_distance(const Rect& bounds, Rgba c, Distance&& dist,
-                           std::span<const Rect> solid) {
+void Canvas::fill_distance(const Rect& bounds, Rgba c, Distance&& dist) {
   if (c.a <= 0.f) return;
-  float pm[4];
-  premultiply(c, pm);
   const PixelBox b = pixel_box(bounds.inset(-1.0));
-  for (int y = b.y0; y < b.y1; ++y)
-    for (int x = b.x0; x < b.x1; ++x) {
-      const glm::dvec2 centre(x + 0.5, y + 0.5);
-      if (std::any_of(solid.begin(), solid.end(), [&](const Rect& s) { return s.contains(centre); })) {
-        blend(x, y, 1.f, pm);
-        continue;
+  if (b.x1 <= b.x0 || b.y1 <= b.y0) return;
+  Paint paint(c);
+  // Walk each row: evaluate d only where coverage may be fractional; where |d| says the next
+  // pixels are certainly outside (coverage 0) skip them, certainly inside (coverage 1) fill them
+  // as a span. Coverage where evaluated is clamp(0.5 - d, 0, 1), as everywhere in the canvas.
+  for (int y = b.y0; y < b.y1; ++y) {
+    std::uint8_t* row = image_.ptr<std::uint8_t>(y);
+    const double cy = y + 0.5;
+    int x = b.x0;
+    while (x < b.x1) {
+      const double d = dist(glm::dvec2(x + 0.5, cy));
+      if (d >= 0.5) {
+        x += 1 + certain_run(d - 0.5);
+      } else if (d <= -0.5) {
+        const int n = std::min(b.x1 - x, 1 + certain_run(-0.5 - d));
+        paint.fill(row + 4 * x, n);
+        x += n;
+      } else {
+        paint.blend(row + 4 * x, static_cast<float>(std::clamp(0.5 - d, 0.0, 1.0)));
+        ++x;
       }
-      const double d = dist(centre);
-      const float cov = static_cast<float>(std::clamp(0.5 - d, 0.0, 1.0));
-      if (cov > 0.f) blend(x, y, cov, pm);
     }
+  }
 }
 
 void Canvas::fill_rounded_rect(const Rect& r, double radius, Rgba c) {
   if (r.empty()) return;
-  // The cross of the rectangle minus its corner squares, shrunk by half a pixel, is solid.
-  const double rad = std::clamp(radius, 0.0, 0.5 * std::min(r.w, r.h)) + 0.5;
-  const Rect solid[2] = {{r.x + 0.5, r.y + rad, r.w - 1.0, r.h - 2 * rad},
-                         {r.x + rad, r.y + 0.5, r.w - 2 * rad, r.h - 1.0}};
-  fill_distance(r, c, [&](glm::dvec2 p) { return rounded_box_distance(p, r, radius); }, solid);
+  fill_distance(r, c, [&](glm::dvec2 p) { return rounded_box_distance(p, r, radius); });
 }
 
 void Canvas::stroke_rounded_rect(const Rect& r, double radius, double width, Rgba c) {
@@ -177,11 +285,13 @@ void Canvas::polyline(std::span<const glm::dvec2> pts, double width, Rgba c, boo
         m = std::max(m, static_cast<float>(std::clamp(0.5 - d, 0.0, 1.0)));
       }
   }
-  float pm[4];
-  premultiply(c, pm);
-  for (int y = box.y0; y < box.y1; ++y)
+  Paint paint(c);
+  for (int y = box.y0; y < box.y1; ++y) {
+    std::uint8_t* row = image_.ptr<std::uint8_t>(y);
+    const float* m = mask.ptr<float>(y - box.y0);
     for (int x = box.x0; x < box.x1; ++x)
-      if (const float cov = mask(y - box.y0, x - box.x0); cov > 0.f) blend(x, y, cov, pm);
+      if (const float cov = m[x - box.x0]; cov > 0.f) paint.blend(row + 4 * x, cov);
+  }
 }
 
 void Canvas::fill_convex(std::span<const glm::dvec2> pts, Rgba c) {
@@ -205,8 +315,17 @@ void Canvas::fill_convex(std::span<const glm::dvec2> pts, Rgba c) {
   });
 }
 
-void Canvas::image(const cv::Mat& src, const Rect& dst, ChannelOrder order, float opacity) {
-  if (src.empty() || dst.empty()) return;
+namespace {
+
+/// Whole-pixel placement of an image drawn into dst: x0, y0 and the scaled size.
+cv::Rect image_placement(const Rect& dst) {
+  const int x0 = static_cast<int>(std::lround(dst.x)), y0 = static_cast<int>(std::lround(dst.y));
+  return {x0, y0, static_cast<int>(std::lround(dst.right())) - x0,
+          static_cast<int>(std::lround(dst.bottom())) - y0};
+}
+
+/// src as straight RGBA8 (see Canvas::image for the accepted types).
+cv::Mat to_rgba(const cv::Mat& src, ChannelOrder order) {
   cv::Mat rgba;
   switch (src.type()) {
     case CV_8UC1: cv::cvtColor(src, rgba, cv::COLOR_GRAY2RGBA); break;
@@ -226,30 +345,68 @@ void Canvas::image(const cv::Mat& src, const Rect& dst, ChannelOrder order, floa
     default: throw std::invalid_argument("Canvas::image: unsupported cv::Mat type " +
                                          std::to_string(src.type()));
   }
-  const int x0 = static_cast<int>(std::lround(dst.x)), y0 = static_cast<int>(std::lround(dst.y));
-  const int w = static_cast<int>(std::lround(dst.right())) - x0;
-  const int h = static_cast<int>(std::lround(dst.bottom())) - y0;
-  if (w <= 0 || h <= 0) return;
+  return rgba;
+}
+
+/// rgba resampled to size (INTER_AREA when shrinking); shared, not copied, when it fits already.
+cv::Mat scale_to(const cv::Mat& rgba, cv::Size size) {
+  if (rgba.size() == size) return rgba;
   cv::Mat scaled;
-  const bool shrink = w < rgba.cols || h < rgba.rows;
-  cv::resize(rgba, scaled, cv::Size(w, h), 0, 0, shrink ? cv::INTER_AREA : cv::INTER_LINEAR);
+  const bool shrink = size.width < rgba.cols || size.height < rgba.rows;
+  cv::resize(rgba, scaled, size, 0, 0, shrink ? cv::INTER_AREA : cv::INTER_LINEAR);
+  return scaled;
+}
+
+}  // namespace
+
+const cv::Mat& ScaledImage::get(const cv::Mat& src, const Rect& dst, ChannelOrder order) {
+  if (src.data != src_data_ || src.size() != src_size_ || src.type() != src_type_ ||
+      order != order_ || !(dst == dst_) || rgba_.empty()) {
+    const cv::Rect place = image_placement(dst);
+    rgba_ = src.empty() || place.width <= 0 || place.height <= 0
+                ? cv::Mat()
+                : scale_to(to_rgba(src, order), place.size()).clone();
+    src_data_ = src.data, src_size_ = src.size(), src_type_ = src.type();
+    order_ = order, dst_ = dst;
+  }
+  return rgba_;
+}
+
+void Canvas::image(const cv::Mat& src, const Rect& dst, ChannelOrder order, float opacity) {
+  if (src.empty() || dst.empty()) return;
+  const cv::Rect place = image_placement(dst);
+  const int x0 = place.x, y0 = place.y, w = place.width, h = place.height;
+  if (w <= 0 || h <= 0) return;
+  const cv::Mat scaled = scale_to(to_rgba(src, order), place.size());
   const PixelBox b = pixel_box(Rect{static_cast<double>(x0), static_cast<double>(y0),
                                     static_cast<double>(w), static_cast<double>(h)});
-  for (int y = b.y0; y < b.y1; ++y)
+  for (int y = b.y0; y < b.y1; ++y) {
+    std::uint8_t* row = image_.ptr<std::uint8_t>(y);
+    const std::uint8_t* srow = scaled.ptr<std::uint8_t>(y - y0);
     for (int x = b.x0; x < b.x1; ++x) {
-      const cv::Vec4b s = scaled.at<cv::Vec4b>(y - y0, x - x0);
+      const std::uint8_t* s = srow + 4 * (x - x0);
+      if (s[3] == 255 && opacity == 1.f) {  // opaque: "over" gives the source exactly
+        std::memcpy(row + 4 * x, s, 3);
+        row[4 * x + 3] = 255;
+        continue;
+      }
       const float a = s[3] / 255.f * opacity;
       if (a <= 0.f) continue;
       const float pm[4] = {s[0] * a, s[1] * a, s[2] * a, a * 255.f};
-      blend(x, y, 1.f, pm);
+      Paint(pm).blend(row + 4 * x, 1.f);
     }
+  }
 }
 
 void Canvas::text_at(const Font& font, int px, std::u32string_view text, double x, double baseline,
                      Rgba c) {
-  float pm[4];
-  premultiply(c, pm);
-  const LineLayout line = font.layout(text, px);
+  draw_line(font, px, font.layout(text, px), x, baseline, c);
+}
+
+void Canvas::draw_line(const Font& font, int px, const LineLayout& line, double x, double baseline,
+                       Rgba c) {
+  if (c.a <= 0.f) return;
+  Paint paint(c);
   const int base = static_cast<int>(std::lround(baseline));
   for (const PlacedGlyph& g : line.glyphs) {
     // Integer pen plus a quarter-pixel bucket: sharp stems, even spacing, a bounded cache.
@@ -263,25 +420,30 @@ void Canvas::text_at(const Font& font, int px, std::u32string_view text, double 
     const PixelBox b = pixel_box(Rect{static_cast<double>(gx), static_cast<double>(gy),
                                       static_cast<double>(bm.width),
                                       static_cast<double>(bm.height)});
-    for (int y = b.y0; y < b.y1; ++y)
+    for (int y = b.y0; y < b.y1; ++y) {
+      std::uint8_t* row = image_.ptr<std::uint8_t>(y);
+      const std::uint8_t* cov = bm.coverage.data() + static_cast<size_t>(y - gy) * bm.width - gx;
       for (int xx = b.x0; xx < b.x1; ++xx) {
-        const std::uint8_t cov = bm.coverage[static_cast<size_t>(y - gy) * bm.width + (xx - gx)];
-        if (cov) blend(xx, y, cov / 255.f, pm);
+        if (cov[xx] == 255) paint.fill(row + 4 * xx, 1);
+        else if (cov[xx]) paint.blend(row + 4 * xx, cov[xx] / 255.f);
       }
+    }
   }
 }
 
 double Canvas::text(const Font& font, int px, std::string_view utf8, const Rect& box, Align align,
                     Rgba c) {
-  const std::u32string fitted = decode_utf8(fit_text(font, px, utf8, box.w));
-  const double width = font.layout(fitted, px).width;
+  // Lay the line out once; only text that does not fit is cut (as fit_text does) and redone.
+  LineLayout line = font.layout(decode_utf8(utf8), px);
+  if (line.width > box.w) line = font.layout(decode_utf8(fit_text(font, px, utf8, box.w)), px);
+  const double width = line.width;
   const FontMetrics m = font.metrics(px);
   double x = box.x;
   if (align == Align::Centre) x = box.x + 0.5 * (box.w - width);
   if (align == Align::Right) x = box.right() - width;
   const double baseline = box.y + 0.5 * (box.h - (m.ascent + m.descent)) + m.ascent;
   push_clip(box);
-  text_at(font, px, fitted, x, baseline, c);
+  draw_line(font, px, line, x, baseline, c);
   pop_clip();
   return width;
 }

@@ -23,6 +23,7 @@
 namespace vdfx::ui {
 
 class Font;
+struct LineLayout;
 
 enum class Align { Left, Centre, Right };
 /// Channel order of colour images given to Canvas::image (OpenCV decodes to BGR).
@@ -31,6 +32,9 @@ enum class ChannelOrder { Bgr, Rgb };
 class Canvas {
  public:
   Canvas(int width, int height);
+  /// Draws into existing premultiplied RGBA8 pixels (CV_8UC4), sharing the buffer; throws
+  /// std::invalid_argument for any other type.
+  explicit Canvas(cv::Mat pixels);
 
   int width() const { return image_.cols; }
   int height() const { return image_.rows; }
@@ -41,6 +45,9 @@ class Canvas {
 
   /// Sets every pixel (ignores the clip).
   void clear(Rgba c = {0, 0, 0, 0});
+  /// Sets the pixels whose centres lie in r and in the clip (no blending): how a partial
+  /// re-render wipes the region it redraws.
+  void clear_rect(const Rect& r, Rgba c = {0, 0, 0, 0});
   /// Restricts drawing to r intersected with the current clip, until the matching pop_clip.
   void push_clip(const Rect& r);
   void pop_clip();
@@ -73,12 +80,13 @@ class Canvas {
                Rgba c);
 
  private:
-  /// Pixels whose centres lie in one of the `solid` rectangles are known to be fully covered and
-  /// skip the distance evaluation (panel backgrounds are mostly interior).
+  /// Blends c with coverage clamp(0.5 - dist(pixel centre), 0, 1) over bounds (grown by one
+  /// pixel). dist must be 1-Lipschitz (a signed distance, or min/max/abs of them): rows are
+  /// walked in jumps of |d| and interiors filled as spans, evaluating dist only near edges.
   template <class Distance>
-  void fill_distance(const Rect& bounds, Rgba c, Distance&& dist,
-                     std::span<const Rect> solid = {});
-  void blend(int x, int y, float coverage, const float premul[4]);
+  void fill_distance(const Rect& bounds, Rgba c, Distance&& dist);
+  void draw_line(const Font& font, int px, const LineLayout& line, double x, double baseline,
+                 Rgba c);
   struct PixelBox {
     int x0, y0, x1, y1;
   };
@@ -86,6 +94,23 @@ class Canvas {
 
   cv::Mat image_;
   std::vector<Rect> clips_;
+};
+
+/// An image converted and scaled for one destination rectangle, kept by widgets that draw the
+/// same picture every render: Canvas::image(rgba, dst, ChannelOrder::Rgb, opacity) then skips
+/// the conversion and resampling and gives the same pixels as drawing the source.
+class ScaledImage {
+ public:
+  /// Straight RGBA8 at dst's whole-pixel size, rebuilt only when src's buffer or dst changed.
+  const cv::Mat& get(const cv::Mat& src, const Rect& dst, ChannelOrder order = ChannelOrder::Bgr);
+
+ private:
+  const void* src_data_ = nullptr;
+  cv::Size src_size_;
+  int src_type_ = -1;
+  ChannelOrder order_ = ChannelOrder::Bgr;
+  Rect dst_;
+  cv::Mat rgba_;
 };
 
 /// The longest prefix of utf8 that fits max_width with a trailing "…", or utf8 itself if it

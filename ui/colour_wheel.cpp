@@ -82,7 +82,7 @@ void ColourWheel::draw(DrawContext& ctx) const {
   const glm::dvec2 c = disc_centre();
   const double rad = disc_radius();
   const int n = static_cast<int>(std::ceil(2 * rad));
-  if (n > 0) {  // the disc as an image with an anti-aliased rim in its alpha
+  if (n > 0 && wheel_radius_ != rad) {  // the disc as an image with an anti-aliased rim in alpha
     cv::Mat wheel(n, n, CV_8UC4);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {
@@ -95,9 +95,12 @@ void ColourWheel::draw(DrawContext& ctx) const {
                                               cv::saturate_cast<uchar>(col.b * 255.0),
                                               cv::saturate_cast<uchar>(a * 255.0));
       }
-    ctx.canvas.image(wheel, {c.x - 0.5 * n, c.y - 0.5 * n, double(n), double(n)},
-                     ChannelOrder::Rgb);
+    wheel_ = wheel;
+    wheel_radius_ = rad;
   }
+  if (n > 0)
+    ctx.canvas.image(wheel_, {c.x - 0.5 * n, c.y - 0.5 * n, double(n), double(n)},
+                     ChannelOrder::Rgb);
   const double ang = hue_ / kDeg;
   const glm::dvec2 m = c + sat_ * rad * glm::dvec2(std::cos(ang), -std::sin(ang));
   ctx.canvas.stroke_circle(m, 16.0, 8.0, Rgba::hex(0x000000, 0.8f));

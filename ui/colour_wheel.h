@@ -5,6 +5,8 @@
 
 #include "ui/widget.h"
 
+#include <opencv2/core.hpp>
+
 #include <Eigen/Core>
 
 #include <string>
@@ -40,6 +42,9 @@ class ColourWheel : public Widget {
  private:
   std::string label_;
   double hue_, sat_;
+  /// The disc image depends only on its radius: built once per size, not per draw.
+  mutable cv::Mat wheel_;
+  mutable double wheel_radius_ = -1.0;
 };
 
 }  // namespace vdfx::ui

@@ -51,7 +51,19 @@ int MenuList::row_at(glm::dvec2 p) const {
   return index < static_cast<int>(items_.size()) ? index : -1;
 }
 
-void MenuList::hover_at(glm::dvec2 p) { set(hover_row_, row_at(p)); }
+void MenuList::hover_at(glm::dvec2 p) {
+  const int row = row_at(p);
+  if (row == hover_row_) return;
+  // Only the rows losing and gaining the highlight change (1 px more for anti-aliasing).
+  const Rect r = rect();
+  auto band = [&](int index) {
+    return Rect{r.x, r.y + kInset + (index - scroll_) * row_h_ - 1.0, r.w, row_h_ + 2.0};
+  };
+  const int old = hover_row_;
+  hover_row_ = row;
+  if (old >= 0) touch(band(old));
+  if (row >= 0) touch(band(row));
+}
 
 void MenuList::click(glm::dvec2 p) {
   if (const int row = row_at(p); row >= 0) select(row);

@@ -25,11 +25,13 @@ void Minimap::set_field(const cv::Mat& field, double lo, double hi) {
   const double scale = hi > lo ? 255.0 / (hi - lo) : 0.0;
   field.convertTo(u8, CV_8U, scale, -lo * scale);
   cv::applyColorMap(u8, image_, cv::COLORMAP_VIRIDIS);
+  scaled_ = {};
   touch();
 }
 
 void Minimap::set_image(const cv::Mat& bgr) {
   image_ = bgr.clone();
+  scaled_ = {};
   touch();
 }
 
@@ -95,7 +97,7 @@ void Minimap::draw(DrawContext& ctx) const {
   c.text(*ctx.fonts.regular, t.font_body, title_,
          {r.x + t.padding, r.y + 8, r.w - 2 * t.padding, 56}, Align::Left, t.text);
   const Rect a = map_area();
-  if (!image_.empty()) c.image(image_, a, ChannelOrder::Bgr);
+  if (!image_.empty()) c.image(scaled_.get(image_, a), a, ChannelOrder::Rgb);
   else c.fill_rect(a, t.surface_pressed);
   c.push_clip(a);
   for (const auto& line : footprint()) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "effects/coords.h"
+#include "ui/canvas.h"
 #include "ui/widget.h"
 
 #include <opencv2/core.hpp>
@@ -36,6 +37,7 @@ class Minimap : public Widget {
  private:
   std::string title_;
   cv::Mat image_;  //!< BGR
+  mutable ScaledImage scaled_;  //!< image_ scaled to map_area()
   std::vector<effects::Direction> keyframes_;
   int highlighted_ = -1;
   effects::Direction view_{};

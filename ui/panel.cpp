@@ -4,6 +4,9 @@
 
 #include "ui/canvas.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace vdfx::ui {
 
 Panel::Panel(std::string id, int width_px, int height_px, glm::dvec2 size_m,
@@ -54,32 +57,110 @@ glm::dvec3 Panel::world_of_pixel(glm::dvec2 pixel) const {
   return world_.transform({l.x, l.y, 0.0});
 }
 
-std::uint64_t Panel::state_revision() const {
-  // Revisions only grow, so the sum changes whenever any of them does.
-  std::uint64_t sum = revision_;
-  for (const auto& w : widgets_) sum += w->revision();
-  return sum;
+namespace {
+
+/// r grown to whole pixels and cut to the panel.
+Rect snap(const Rect& r, const Rect& panel) {
+  const double x0 = std::floor(r.x), y0 = std::floor(r.y);
+  return Rect{x0, y0, std::ceil(r.right()) - x0, std::ceil(r.bottom()) - y0}.intersect(panel);
 }
 
-bool Panel::dirty() const { return rendered_revision_ != state_revision(); }
+Rect bounding(const Rect& a, const Rect& b) {
+  const double x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+  return {x0, y0, std::max(a.right(), b.right()) - x0, std::max(a.bottom(), b.bottom()) - y0};
+}
 
-bool Panel::render_if_dirty() {
-  if (!dirty()) return false;
-  Canvas canvas(width_, height_);
-  const Rect all{0, 0, static_cast<double>(width_), static_cast<double>(height_)};
+/// Adds r to a set of disjoint rectangles, merging it with every one it overlaps (each pixel is
+/// then redrawn once).
+void add_merged(std::vector<Rect>& rects, Rect r) {
+  if (r.empty()) return;
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (auto it = rects.begin(); it != rects.end(); ++it)
+      if (!it->intersect(r).empty()) {
+        r = bounding(r, *it);
+        rects.erase(it);
+        merged = true;
+        break;
+      }
+  }
+  rects.push_back(r);
+}
+
+}  // namespace
+
+Panel::~Panel() = default;
+
+Panel::Damage Panel::damage() const {
+  const Rect all = whole();
+  if (!canvas_ || rendered_revision_ != revision_ ||
+      rendered_widget_revisions_.size() != widgets_.size())
+    return {{all}, true};
+  Damage d;
+  for (size_t i = 0; i < widgets_.size(); ++i) {
+    const Widget& w = *widgets_[i];
+    if (w.revision() == rendered_widget_revisions_[i]) continue;
+    if (w.damage_is_partial()) {  // the widget knows which part changed
+      add_merged(d.rects, snap(w.damage().intersect(w.paint_bounds()), all));
+      continue;
+    }
+    add_merged(d.rects, snap(rendered_bounds_[i], all));  // where it was
+    add_merged(d.rects, snap(w.paint_bounds(), all));     // where it is
+  }
+  if (d.rects.empty()) return d;
+  double area = 0.0;
+  for (const Rect& r : d.rects) area += r.w * r.h;
+  if (!partial_ || area > kFullRenderFraction * all.w * all.h) return {{all}, true};
+  return d;
+}
+
+std::vector<Rect> Panel::dirty_rects() const { return damage().rects; }
+
+bool Panel::dirty() const { return !damage().rects.empty(); }
+
+void Panel::draw_region(Canvas& canvas, const Rect* clip) const {
+  const Rect all = whole();
   canvas.fill_rounded_rect(all, 2 * theme_.corner_radius, theme_.panel_bg);
   canvas.stroke_rounded_rect(all, 2 * theme_.corner_radius, 3.0, theme_.panel_border);
   DrawContext ctx{canvas, theme_, *fonts_};
-  for (const auto& w : widgets_) w->draw(ctx);
-  texture_ = canvas.image();
-  rendered_revision_ = state_revision();
+  for (const auto& w : widgets_)
+    if (!clip || !w->paint_bounds().intersect(*clip).empty()) w->draw(ctx);
+}
+
+bool Panel::render_if_dirty() {
+  const Damage dmg = damage();
+  if (dmg.rects.empty()) return false;
+  // Someone still holds the last texture: draw into a new buffer so theirs stays as it was.
+  const bool shared = canvas_ && canvas_->image().u && canvas_->image().u->refcount > 1;
+  if (dmg.full) {
+    if (!canvas_ || shared) canvas_ = std::make_unique<Canvas>(width_, height_);
+    else canvas_->clear();
+    draw_region(*canvas_, nullptr);
+    ++full_render_count_;
+  } else {
+    if (shared) canvas_ = std::make_unique<Canvas>(canvas_->image().clone());
+    for (const Rect& r : dmg.rects) {
+      canvas_->push_clip(r);
+      canvas_->clear_rect(r);
+      draw_region(*canvas_, &r);
+      canvas_->pop_clip();
+    }
+  }
+  rendered_revision_ = revision_;
+  rendered_widget_revisions_.resize(widgets_.size());
+  rendered_bounds_.resize(widgets_.size());
+  for (size_t i = 0; i < widgets_.size(); ++i) {
+    rendered_widget_revisions_[i] = widgets_[i]->revision();
+    rendered_bounds_[i] = widgets_[i]->paint_bounds();
+    widgets_[i]->reset_damage();
+  }
   ++render_count_;
   return true;
 }
 
 const cv::Mat& Panel::texture() {
   render_if_dirty();
-  return texture_;
+  return canvas_->image();
 }
 
 }  // namespace vdfx::ui

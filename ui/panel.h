@@ -4,9 +4,13 @@
 /// Panel space: the quad is centred on pose().position, its local +x is right, +y up and it
 /// faces its local +z (like an OpenXR quad layer): rays must come from the +z side to hit it.
 /// Pixel (0, 0) is the top-left corner. The texture is re-rendered only when a widget or the
-/// panel changed since the last render (render_count() counts renders).
+/// panel changed since the last render (render_count() counts renders), and then only in the
+/// damaged rectangles: the old and new paint_bounds() of every widget whose revision moved. A
+/// partial render clears those rectangles and redraws the background and every widget meeting
+/// them, clipped to them, so its pixels equal a full render's exactly.
 #pragma once
 
+#include "ui/canvas.h"
 #include "ui/font.h"
 #include "ui/pose.h"
 #include "ui/theme.h"
@@ -27,6 +31,9 @@ class Panel {
   /// size_m: quad width and height in metres; fonts shared between panels.
   Panel(std::string id, int width_px, int height_px, glm::dvec2 size_m,
         std::shared_ptr<const FontSet> fonts, const Theme& theme = Theme::dark());
+  ~Panel();
+  Panel(const Panel&) = delete;
+  Panel& operator=(const Panel&) = delete;
 
   const std::string& id() const { return id_; }
   int width_px() const { return width_; }
@@ -83,12 +90,31 @@ class Panel {
   void mark_dirty() { ++revision_; }
   /// Re-renders if dirty; returns whether it did.
   bool render_if_dirty();
-  /// The texture (premultiplied RGBA8, see canvas.h), rendered first if dirty.
+  /// The texture (premultiplied RGBA8, see canvas.h), rendered first if dirty. Later renders
+  /// draw into the same buffer unless a copy of this cv::Mat header is still held elsewhere:
+  /// then the pixels are copied first, so a texture kept by a caller never changes.
   const cv::Mat& texture();
   int render_count() const { return render_count_; }
+  /// Renders that drew the whole panel (the first, after add()/mark_dirty(), when more than
+  /// kFullRenderFraction of it was damaged, or every render with partial rendering off).
+  int full_render_count() const { return full_render_count_; }
+  /// Whole-pixel rectangles the next render redraws: empty when clean, the whole panel when a
+  /// full render is due. Overlapping rectangles are merged.
+  std::vector<Rect> dirty_rects() const;
+  /// On (the default): renders redraw only dirty_rects(). Off: every render is full.
+  void set_partial_render(bool on) { partial_ = on; }
+  bool partial_render() const { return partial_; }
+  /// Above this fraction of the panel's area damaged, a full render is cheaper than clipping.
+  static constexpr double kFullRenderFraction = 0.6;
 
  private:
-  std::uint64_t state_revision() const;
+  struct Damage {
+    std::vector<Rect> rects;
+    bool full = false;
+  };
+  Damage damage() const;
+  Rect whole() const { return {0, 0, static_cast<double>(width_), static_cast<double>(height_)}; }
+  void draw_region(Canvas& canvas, const Rect* clip) const;
   std::string id_;
   int width_, height_;
   glm::dvec2 size_m_;
@@ -99,9 +125,13 @@ class Panel {
   bool attached_ = false;
   bool visible_ = true;
   std::uint64_t revision_ = 1;
-  std::optional<std::uint64_t> rendered_revision_;
-  cv::Mat texture_;
+  std::optional<std::uint64_t> rendered_revision_;  //!< revision_ at the last render
+  std::vector<std::uint64_t> rendered_widget_revisions_;  //!< per widget, at the last render
+  std::vector<Rect> rendered_bounds_;                //!< per widget paint_bounds(), ditto
+  std::unique_ptr<Canvas> canvas_;                   //!< holds the texture between renders
+  bool partial_ = true;
   int render_count_ = 0;
+  int full_render_count_ = 0;
 };
 
 }  // namespace vdfx::ui

@@ -40,6 +40,7 @@ void TimelineStrip::set_playhead(int frame) { set(playhead_, std::clamp(frame, 0
 
 void TimelineStrip::set_thumbnails(std::vector<cv::Mat> images) {
   thumbs_ = std::move(images);
+  scaled_.assign(thumbs_.size(), ScaledImage{});
   touch();
 }
 
@@ -85,7 +86,8 @@ void TimelineStrip::draw(DrawContext& ctx) const {
     for (size_t i = 0; i < thumbs_.size(); ++i) {
       const Rect cr{tr.x + cell * i, tr.y, cell, tr.h};
       const Rect inner = cr.inset(2.0);
-      c.image(centre_crop(thumbs_[i], inner.w / inner.h), inner, ChannelOrder::Bgr);
+      c.image(scaled_[i].get(centre_crop(thumbs_[i], inner.w / inner.h), inner), inner,
+              ChannelOrder::Rgb);
     }
     c.pop_clip();
   }

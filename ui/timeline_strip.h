@@ -2,6 +2,7 @@
 /// @brief TimelineStrip: frame thumbnails, keyframe markers and a playhead that scrubs by drag.
 #pragma once
 
+#include "ui/canvas.h"
 #include "ui/widget.h"
 
 #include <opencv2/core.hpp>
@@ -47,6 +48,7 @@ class TimelineStrip : public Widget {
   int frame_count_;
   int playhead_ = 0;
   std::vector<cv::Mat> thumbs_;
+  mutable std::vector<ScaledImage> scaled_;  //!< thumbs_ scaled to their cells, per thumbnail
   std::vector<int> keyframes_, highlighted_;
   double pending_ = 0.0;
 };

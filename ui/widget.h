@@ -11,6 +11,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -82,6 +83,22 @@ class Widget {
   virtual glm::dvec2 value() const { return glm::dvec2(0.0); }
   /// Hit test in panel pixels.
   virtual bool hit(glm::dvec2 p) const { return rect_.contains(p); }
+  /// Everything draw() may touch: rect() grown by kPaintMargin, since focus rings, thumbs and
+  /// markers reach a few pixels past it (the colour wheel's marker 8.5 px, the strip's focus
+  /// ring 6.5 px). A widget drawing farther out must override this, or partial re-renders
+  /// (Panel::dirty_rects) leave stale pixels behind.
+  virtual Rect paint_bounds() const { return rect_.inset(-kPaintMargin); }
+  static constexpr double kPaintMargin = 12.0;
+  /// Whether every change since the panel last drew this widget was reported with an area
+  /// (touch(area)); then damage() bounds them, else the whole paint_bounds() must be redrawn.
+  bool damage_is_partial() const { return !damage_all_; }
+  /// The union of the areas reported since the last draw (meaningful when damage_is_partial()).
+  const Rect& damage() const { return damage_; }
+  /// Called by the panel once it has drawn the widget.
+  void reset_damage() {
+    damage_all_ = false;
+    damage_ = {};
+  }
 
   /// Pointer position while hovering (for per-row highlights); not called when not hovered.
   virtual void hover_at(glm::dvec2 /*p*/) {}
@@ -97,7 +114,23 @@ class Widget {
  protected:
   /// Called after the rectangle changed (widgets whose state depends on their size).
   virtual void layout_changed() {}
-  void touch() { ++revision_; }
+  void touch() {
+    ++revision_;
+    damage_all_ = true;
+  }
+  /// A change whose pixels all lie in area (panel pixels, anti-aliasing included): a panel
+  /// redraws just that, e.g. two menu rows when the hovered row moves.
+  void touch(const Rect& area) {
+    ++revision_;
+    if (damage_all_) return;
+    if (damage_.empty()) {
+      damage_ = area;
+      return;
+    }
+    const double x0 = std::min(damage_.x, area.x), y0 = std::min(damage_.y, area.y);
+    damage_ = {x0, y0, std::max(damage_.right(), area.right()) - x0,
+               std::max(damage_.bottom(), area.bottom()) - y0};
+  }
   template <class T>
   void set(T& field, const T& v) {
     if (!(field == v)) field = v, touch();
@@ -108,6 +141,8 @@ class Widget {
   Rect rect_;
   bool hovered_ = false, pressed_ = false, focused_ = false, enabled_ = true;
   std::uint64_t revision_ = 1;
+  bool damage_all_ = true;
+  Rect damage_;
 };
 
 /// Draws the rounded widget background in the state's colour and the focus ring.

@@ -1,25 +1,15 @@
 /// @file
-/// @brief Mock editor panels for golden images and interaction tests: an effect panel and a
-/// timeline panel built only from ui/ widgets, with synthetic thumbnails and fields.
+/// @brief The demo panels of ui/demo_panels.h under the names the ui tests use.
 #pragma once
 
-#include "ui/panel.h"
-
-#include <memory>
+#include "ui/demo_panels.h"
 
 namespace vdfx::ui::test {
 
-/// Shared fonts (loaded once per test binary).
-std::shared_ptr<const FontSet> test_fonts();
-
-/// 1000 x 1000 px, 0.25 x 0.25 m: title, menu of the six effects, exposure slider, undo/redo,
-/// a world-lock toggle.
-std::unique_ptr<Panel> make_effect_panel();
-/// 2000 x 1200 px, 0.5 x 0.3 m: play/pause, timeline strip with thumbnails and keyframes,
-/// a plot of exposure over time and a minimap of it over the sphere.
-std::unique_ptr<Panel> make_timeline_panel();
-
-/// A deterministic synthetic "video frame" (BGR), different per index.
-cv::Mat synthetic_frame(int index, int width, int height);
+using demo::make_effect_panel;
+using demo::make_timeline_panel;
+using demo::synthetic_frame;
+/// Shared fonts (loaded once per process).
+inline std::shared_ptr<const FontSet> test_fonts() { return demo::demo_fonts(); }
 
 }  // namespace vdfx::ui::test

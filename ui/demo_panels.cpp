@@ -1,6 +1,6 @@
 /// @file
-/// @brief The mock panels of sample_panels.h.
-#include "sample_panels.h"
+/// @brief The demo panels of demo_panels.h.
+#include "ui/demo_panels.h"
 
 #include "ui/button.h"
 #include "ui/menu_list.h"
@@ -13,9 +13,9 @@
 
 #include <cmath>
 
-namespace vdfx::ui::test {
+namespace vdfx::ui::demo {
 
-std::shared_ptr<const FontSet> test_fonts() {
+std::shared_ptr<const FontSet> demo_fonts() {
   static const auto fonts = std::make_shared<const FontSet>(FontSet::load());
   return fonts;
 }
@@ -38,7 +38,7 @@ cv::Mat synthetic_frame(int index, int width, int height) {
 }
 
 std::unique_ptr<Panel> make_effect_panel() {
-  auto p = std::make_unique<Panel>("effects", 1000, 1000, glm::dvec2(0.25, 0.25), test_fonts());
+  auto p = std::make_unique<Panel>("effects", 1000, 1000, glm::dvec2(0.25, 0.25), demo_fonts());
   const Theme& t = p->theme();
   Stack col(Rect{0, 0, 1000, 1000}.inset(40.0), t.gap);
   p->add<Label>("title", "Effects", Label::Role::Title).set_rect(col.next(64));
@@ -57,7 +57,7 @@ std::unique_ptr<Panel> make_effect_panel() {
 }
 
 std::unique_ptr<Panel> make_timeline_panel() {
-  auto p = std::make_unique<Panel>("timeline", 2000, 1200, glm::dvec2(0.5, 0.3), test_fonts());
+  auto p = std::make_unique<Panel>("timeline", 2000, 1200, glm::dvec2(0.5, 0.3), demo_fonts());
   const Theme& t = p->theme();
   constexpr int kFrames = 240;
   const std::vector<int> keys = {0, 48, 120, 200};
@@ -97,4 +97,4 @@ std::unique_ptr<Panel> make_timeline_panel() {
   return p;
 }
 
-}  // namespace vdfx::ui::test
+}  // namespace vdfx::ui::demo
