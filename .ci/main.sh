@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The README's main job: installs what is missing, builds, and runs vdfx on the bundled demo
-# (a CC0 sunrise panorama from Debian's blender-data with the demo sidecar app/demo/sunrise.vdfx.json).
-# It renders the view towards the sun and the view away from it, so the view-dependent exposure,
-# saturation and vignette are visible side by side, and prints the interpolated parameters.
+# (a CC0 hotel-room panorama from Debian's blender-data with the demo sidecar
+# app/demo/interior.vdfx.json): exposure adapts when the viewer turns to the window, the bed is
+# warmer, and looking away from the window desaturates and closes a vignette to guide the gaze.
+# It renders those views in both modes and prints the interpolated parameters.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/.ci/deps.sh"
@@ -11,12 +12,12 @@ build=${VDFX_BUILD_DIR:-$root/build}
 out=${VDFX_OUT:-$root/out}
 mkdir -p "$out"
 vdfx="$build/vdfx"
-demo="$root/app/demo/sunrise.vdfx.json"
-pano=/usr/share/blender/datafiles/studiolights/world/sunrise.exr
+demo="$root/app/demo/interior.vdfx.json"
+pano=/usr/share/blender/datafiles/studiolights/world/interior.exr
 
 "$vdfx" validate "$demo"
-"$vdfx" eval "$demo" --at 36,8,0 --at -144,0,0
-for view in "sun 36,8" "away -144,0" "ground 0,-60"; do
+"$vdfx" eval "$demo" --at 31,5,0 --at -75,-10,0 --at 75,-15,0 --at -150,0,0
+for view in "window 31,5" "desk -75,-10" "bed 75,-15" "behind -150,0"; do
   set -- $view
   "$vdfx" render "$pano" --sidecar "$demo" --view "$2" --frame 0 --fov 100 --size 1280x720 \
     --out "$out/demo-$1.png"

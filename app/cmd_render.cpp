@@ -1,12 +1,100 @@
+/// @file
+/// @brief `vdfx render`: one view of a panorama or video frame with the sidecar's effects, on the
+/// CPU reference path or (--gpu) through the GL compositor, optionally as one HMD eye with lens
+/// pre-distortion.
 #include <iostream>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
-#include "app/commands.h"
+#include "app/cli_util.h"
+#include "app/view_render.h"
+#include "io/atomic_file.h"
+#include "io/input_error.h"
+#include "io/sidecar.h"
+#include "xr/hmd_profile.h"
 
 namespace vdfx::app {
 
-int cmd_render(const Args&) {
-  std::cerr << "vdfx render: not implemented yet\n";
-  return kExitInternal;
+int cmd_render(const Args& args) {
+  CLI::App cli{"Renders one view of INPUT (a panorama image or a video, equirectangular) with the\n"
+               "sidecar's view-dependent effects to an 8-bit sRGB PNG.",
+               "vdfx render"};
+  std::string input, sidecar_path, view_text, size_text, mode_text = "view", out_path;
+  std::string hmd_name, eye_text = "left", distort_text = "none";
+  std::int64_t frame = 0;
+  double fov = 0.0;
+  bool gpu = false, no_lca = false;
+  cli.add_option("INPUT", input, "equirect image (PNG, JPEG, EXR, HDR) or video")->required();
+  cli.add_option("--sidecar", sidecar_path, "the effects (.vdfx.json)")->required();
+  cli.add_option("--view", view_text, "where to look: AZ,ALT[,ROLL] in degrees")->required();
+  cli.add_option("--frame", frame, "video frame index (0-based)")->check(CLI::NonNegativeNumber);
+  cli.add_option("--fov", fov, "horizontal field of view in degrees (not with --hmd)")
+      ->check(CLI::Range(1.0, 179.0));
+  cli.add_option("--size", size_text, "output size WxH (with --hmd: default the eye's size)");
+  cli.add_option("--mode", mode_text,
+                 "view: parameters interpolated once at the view centre (the paper's method);\n"
+                 "pixel: at each pixel's own direction (the static per-pixel baseline)")
+      ->check(CLI::IsMember({"view", "pixel"}));
+  cli.add_flag("--gpu", gpu, "render through the OpenGL compositor (offscreen)");
+  cli.add_option("--hmd", hmd_name, "render one eye of this headset profile (vdfx hmd list)");
+  cli.add_option("--eye", eye_text, "with --hmd: left or right")
+      ->check(CLI::IsMember({"left", "right"}));
+  cli.add_option("--distort", distort_text,
+                 "with --hmd: lens pre-distortion none, pixel (exact per pixel) or mesh:N "
+                 "(N x N vertex grid)");
+  cli.add_flag("--no-lca", no_lca, "with --distort: no inverse lateral chromatic aberration");
+  cli.add_option("--out", out_path, "the PNG to write")->required();
+  if (auto code = parse_cli(cli, args)) return *code;
+
+  RenderRequest request;
+  try {
+    const ViewSpec view = parse_view(view_text);
+    request.look = view.direction;
+    request.roll_deg = view.roll_deg;
+    request.mode = mode_text == "pixel" ? effects::RenderMode::Pixel : effects::RenderMode::View;
+    request.gpu = gpu;
+    request.frame = frame;
+    try {
+      request.distortion = parse_distortion(distort_text);
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError("--distort", e.what());
+    }
+    request.distortion.correct_lca = !no_lca;
+    if (!size_text.empty()) {
+      const ImageSize s = parse_size(size_text);
+      request.width = s.width;
+      request.height = s.height;
+    }
+    if (hmd_name.empty()) {
+      if (fov <= 0.0) throw CLI::ValidationError("--fov", "required (unless --hmd is given)");
+      if (size_text.empty()) throw CLI::ValidationError("--size", "required (unless --hmd is given)");
+      if (request.distortion.method != xr::DistortionMethod::None)
+        throw CLI::ValidationError("--distort", "needs --hmd (the lens comes from the profile)");
+      request.hfov_deg = fov;
+    } else if (fov > 0.0) {
+      throw CLI::ValidationError("--fov", "the eye's field of view comes from --hmd; drop --fov");
+    }
+    if (gpu && request.mode == effects::RenderMode::Pixel)
+      throw CLI::ValidationError("--mode", "pixel mode is rendered on the CPU; drop --gpu");
+  } catch (const CLI::ValidationError& e) {
+    std::cerr << "vdfx render: " << e.what() << "\n";
+    return kExitUsage;
+  }
+  if (!hmd_name.empty()) {
+    request.hmd = xr::load_hmd_profile(hmd_name);
+    request.eye = eye_text == "right" ? xr::Eye::Right : xr::Eye::Left;
+  }
+
+  const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
+  const cv::Mat rgb8 = render_request(input, sidecar, request);
+  cv::Mat bgr;
+  cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);
+  std::vector<unsigned char> png;
+  if (!cv::imencode(".png", bgr, png)) throw std::runtime_error("PNG encoding failed");
+  io::write_file_atomic(out_path, std::string_view(reinterpret_cast<const char*>(png.data()),
+                                                   png.size()));
+  std::cout << out_path << ": " << rgb8.cols << "x" << rgb8.rows << "\n";
+  return kExitOk;
 }
 
 }  // namespace vdfx::app

@@ -1,0 +1,173 @@
+#include "app/view_render.h"
+
+#include <charconv>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+#include "effects/distortion_mesh.h"
+#include "effects/effect_shaders.h"
+#include "effects/stack_interpolator.h"
+#include "effects/view_camera.h"
+#include "io/frame_decoder.h"
+#include "io/input_error.h"
+#include "xr/compositor.h"
+#include "xr/eye_views.h"
+#include "xr/gl_context.h"
+#include "xr/render_view.h"
+
+namespace vdfx::app {
+
+cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame) {
+  io::DecoderOptions options;
+  options.format = io::PixelFormat::RgbF32;
+  auto decoder = io::open_frame_decoder(input, options);
+  const std::int64_t frames = decoder->properties().frames;
+  if (frame < 0 || frame >= frames)
+    throw io::InputError(input.string() + ": frame " + std::to_string(frame) +
+                         " does not exist (the file has " + std::to_string(frames) + " frame" +
+                         (frames == 1 ? "" : "s") + ")");
+  try {
+    decoder->seek(frame);
+  } catch (const std::exception& e) {
+    throw io::InputError(input.string() + ": cannot seek to frame " + std::to_string(frame) +
+                         ": " + e.what());
+  }
+  cv::Mat image;
+  if (decoder->read(image) != io::DecodeStatus::Ok || image.empty())
+    throw io::InputError(input.string() + ": frame " + std::to_string(frame) +
+                         " could not be decoded");
+  if (image.type() != CV_32FC3) image.convertTo(image, CV_32FC3, 1.0 / 255.0);
+  return image;
+}
+
+xr::DistortionSettings parse_distortion(const std::string& text) {
+  xr::DistortionSettings s;
+  if (text == "none") {
+    s.method = xr::DistortionMethod::None;
+  } else if (text == "pixel") {
+    s.method = xr::DistortionMethod::Pixel;
+  } else if (text.starts_with("mesh:")) {
+    s.method = xr::DistortionMethod::Mesh;
+    const std::string n = text.substr(5);
+    int value = 0;
+    const auto [ptr, ec] = std::from_chars(n.data(), n.data() + n.size(), value);
+    if (n.empty() || ec != std::errc() || ptr != n.data() + n.size() || value < 2 || value > 257)
+      throw std::invalid_argument("'" + text + "': N must be a whole number in 2..257");
+    s.mesh_n = value;
+  } else {
+    throw std::invalid_argument("'" + text + "': expected none, pixel or mesh:N");
+  }
+  return s;
+}
+
+cv::Mat predistort_cpu(const cv::Mat& eye_rgb, const effects::EyeLens& eye,
+                       const xr::DistortionSettings& settings) {
+  if (settings.method == xr::DistortionMethod::None) return eye_rgb.clone();
+  std::optional<effects::DistortionMesh> mesh;
+  if (settings.method == xr::DistortionMethod::Mesh)
+    mesh = effects::build_distortion_mesh(eye, settings.mesh_n, settings.correct_lca);
+  // One remap per channel: maps hold source pixel positions (OpenCV: pixel centres at integers);
+  // invalid samples point far outside so the constant black border fills them.
+  const float kOff = -1.0e6f;
+  std::array<cv::Mat, 3> map_x, map_y;
+  for (int c = 0; c < 3; ++c) {
+    map_x[c].create(eye.height, eye.width, CV_32F);
+    map_y[c].create(eye.height, eye.width, CV_32F);
+  }
+  const int src_w = eye_rgb.cols, src_h = eye_rgb.rows;
+  cv::parallel_for_(cv::Range(0, eye.height), [&](const cv::Range& rows) {
+    for (int j = rows.start; j < rows.end; ++j) {
+      for (int i = 0; i < eye.width; ++i) {
+        const Eigen::Vector2d px(i + 0.5, j + 0.5);
+        const effects::ChannelSamples s =
+            mesh ? effects::sample_mesh(*mesh, px)
+                 : effects::panel_source_uv(eye, px, settings.correct_lca);
+        for (int c = 0; c < 3; ++c) {
+          const bool ok = s.valid[c];
+          map_x[c].at<float>(j, i) = ok ? float(s.uv[c].x() * src_w - 0.5) : kOff;
+          map_y[c].at<float>(j, i) = ok ? float(s.uv[c].y() * src_h - 0.5) : kOff;
+        }
+      }
+    }
+  });
+  std::vector<cv::Mat> channels(3), out(3);
+  cv::split(eye_rgb, channels);
+  for (int c = 0; c < 3; ++c)
+    cv::remap(channels[c], out[c], map_x[c], map_y[c], cv::INTER_LINEAR, cv::BORDER_CONSTANT,
+              cv::Scalar(0));
+  cv::Mat merged;
+  cv::merge(out, merged);
+  return merged;
+}
+
+namespace {
+
+struct EyeSetup {
+  effects::ViewCamera cpu_camera;
+  xr::RenderView gpu_view;
+  effects::EyeLens lens;
+};
+
+EyeSetup eye_setup(const RenderRequest& r) {
+  const xr::HmdProfile& profile = *r.hmd;
+  const xr::EyeProfile& ep = profile.eye(r.eye);
+  const int w = r.width > 0 ? r.width : ep.width;
+  const int h = r.height > 0 ? r.height : ep.height;
+  const effects::TanRect t = ep.fov.tangents();
+  const double left = std::atan(t.left), right = std::atan(t.right);
+  const double up = std::atan(t.up), down = std::atan(t.down);
+  effects::EyeLens lens = profile.eye_lens(r.eye);
+  lens.width = w;
+  lens.height = h;
+  return {effects::ViewCamera::from_fov_angles({r.look, r.roll_deg}, {left, right, up, down}, w, h),
+          xr::RenderView::from_angles(xr::view_rotation(r.look, r.roll_deg), left, right, down, up),
+          lens};
+}
+
+}  // namespace
+
+cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
+                       const RenderRequest& r) {
+  const cv::Mat equirect = load_equirect_frame(input, r.frame);
+  const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+  const effects::StackParams view_params = stack.evaluate(r.look, r.frame);
+
+  std::optional<EyeSetup> eye;
+  if (r.hmd) eye = eye_setup(r);
+
+  if (r.gpu) {
+    const int w = eye ? eye->lens.width : r.width, h = eye ? eye->lens.height : r.height;
+    const xr::RenderView view =
+        eye ? eye->gpu_view : xr::RenderView::look_at(r.look, r.roll_deg, r.hfov_deg, w, h);
+    auto context = xr::GlContext::create({});
+    cv::Mat bgr_in;
+    cv::cvtColor(equirect, bgr_in, cv::COLOR_RGB2BGR);
+    const effects::LensModel lens = eye ? eye->lens.lens : effects::LensModel{};
+    const cv::Mat bgr = xr::render_view_gpu(bgr_in, view, w, h, view_params,
+                                            effects::non_neutral_mask(view_params), r.distortion,
+                                            lens);
+    cv::Mat rgb;
+    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+    return rgb;
+  }
+
+  const effects::ViewCamera camera =
+      eye ? eye->cpu_camera
+          : effects::ViewCamera::from_horizontal_fov({r.look, r.roll_deg}, r.hfov_deg, r.width,
+                                                     r.height);
+  const effects::EquirectSampler sampler(equirect);
+  cv::Mat rendered;
+  if (r.mode == effects::RenderMode::View) {
+    rendered = effects::render_view(sampler, camera, view_params);
+  } else {
+    const effects::ParamsAt at = [&](const effects::Direction& d) {
+      return stack.evaluate(d, r.frame);
+    };
+    rendered = effects::render_view(sampler, camera, at, effects::RenderMode::Pixel);
+  }
+  if (eye && r.distortion.method != xr::DistortionMethod::None)
+    rendered = predistort_cpu(rendered, eye->lens, r.distortion);
+  return effects::to_rgb8(rendered);
+}
+
+}  // namespace vdfx::app
