@@ -1,0 +1,77 @@
+/// @file
+/// @brief Runs the real vdfx executable from tests and captures its output and exit code, and
+/// writes small inputs (a synthetic equirect image, sidecars) into a per-test folder.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+
+namespace vdfx::app::testing {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  //!< stdout and stderr together
+};
+
+inline CommandResult run_vdfx(const std::string& args) {
+  const std::string cmd = std::string(VDFX_BINARY) + " " + args + " 2>&1";
+  CommandResult r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe)) r.output += buf.data();
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+/// A fresh folder under the build tree, named after the running test.
+inline std::filesystem::path test_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::filesystem::path dir = std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "app" /
+                              (std::string(info->test_suite_name()) + "." + info->name());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline void write_text(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+/// A 256x128 equirect PNG with smooth colour gradients and a grid (so blur, tint and distortion
+/// all change it visibly).
+inline std::filesystem::path write_test_panorama(const std::filesystem::path& dir, int grid = 32) {
+  cv::Mat img(128, 256, CV_8UC3);
+  for (int y = 0; y < img.rows; ++y)
+    for (int x = 0; x < img.cols; ++x) {
+      const bool line = (x % grid == 0) || (y % grid == 0);
+      img.at<cv::Vec3b>(y, x) = line ? cv::Vec3b(20, 20, 20)
+                                     : cv::Vec3b(static_cast<uchar>(60 + y), 128,
+                                                 static_cast<uchar>(40 + x * 0.7));
+    }
+  const auto path = dir / "pano.png";
+  cv::imwrite(path.string(), img);
+  return path;
+}
+
+/// A sidecar for a 256x128 still with exposure +1 stop at azimuth 90 and -1 at azimuth -90.
+inline std::string exposure_sidecar(const std::string& extra_effects = "") {
+  return R"({"format": "vdfx.sidecar", "version": 1,
+  "video": {"path": "pano.png", "fps": 30.0, "frames": 1, "width": 256, "height": 128},
+  "interpolation": {"exponent": 1.0, "time_scale": 1.0},
+  "effects": [
+    {"type": "exposure", "keyframes": [
+      {"azimuth_deg": 90.0, "altitude_deg": 0.0, "frame": 0, "params": {"stops": 1.0}},
+      {"azimuth_deg": -90.0, "altitude_deg": 0.0, "frame": 0, "params": {"stops": -1.0}}]})" +
+         extra_effects + "]}";
+}
+
+}  // namespace vdfx::app::testing
