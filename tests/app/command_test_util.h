@@ -74,4 +74,15 @@ inline std::string exposure_sidecar(const std::string& extra_effects = "") {
          extra_effects + "]}";
 }
 
+/// `vdfx render DIR/pano.png --sidecar DIR/s.vdfx.json ARGS --out DIR/OUT`, expected to succeed;
+/// returns the written image (BGR).
+inline cv::Mat render(const std::filesystem::path& dir, const std::string& args,
+                      const std::string& out) {
+  const CommandResult r = run_vdfx("render " + (dir / "pano.png").string() + " --sidecar " +
+                                   (dir / "s.vdfx.json").string() + " " + args + " --out " +
+                                   (dir / out).string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return cv::imread((dir / out).string(), cv::IMREAD_COLOR);
+}
+
 }  // namespace vdfx::app::testing

@@ -70,14 +70,6 @@ TEST(Commands, EvalPrintsParsableJsonPerView) {
   EXPECT_NE(beyond.output.find("frame 5"), std::string::npos) << beyond.output;
 }
 
-cv::Mat render(const std::filesystem::path& dir, const std::string& args, const std::string& out) {
-  const CommandResult r = run_vdfx("render " + (dir / "pano.png").string() + " --sidecar " +
-                                   (dir / "s.vdfx.json").string() + " " + args + " --out " +
-                                   (dir / out).string());
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  return cv::imread((dir / out).string(), cv::IMREAD_COLOR);
-}
-
 TEST(Commands, RenderViewAndPixelModes) {
   const auto dir = test_dir();
   write_test_panorama(dir);

@@ -8,14 +8,6 @@
 namespace vdfx::app::testing {
 namespace {
 
-cv::Mat render(const std::filesystem::path& dir, const std::string& args, const std::string& out) {
-  const CommandResult r = run_vdfx("render " + (dir / "pano.png").string() + " --sidecar " +
-                                   (dir / "s.vdfx.json").string() + " " + args + " --out " +
-                                   (dir / out).string());
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  return cv::imread((dir / out).string(), cv::IMREAD_COLOR);
-}
-
 double max_abs_diff(const cv::Mat& a, const cv::Mat& b) {
   cv::Mat d;
   cv::absdiff(a, b, d);
