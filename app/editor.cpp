@@ -56,9 +56,13 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
     const glm::dvec3 f = xr::forward(input.head);
     return Eigen::Vector3d(f.x, f.y, f.z);
   }());
-  if (playing_)
-    frame_ = io::playback_frame(io::frame_start_ns(play_f0_, fps_) + (t_ns - play_t0_), fps_,
-                                doc_.video().frames, options_.loop);
+  if (playing_) {
+    // Frames elapsed since play was pressed, from the elapsed time itself (adding two rounded
+    // frame start times could land a nanosecond short of a frame).
+    const std::int64_t n = doc_.video().frames;
+    const std::int64_t f = play_f0_ + io::frame_at_time(t_ns - play_t0_, fps_);
+    frame_ = options_.loop ? ((f % n) + n) % n : std::clamp<std::int64_t>(f, 0, n - 1);
+  }
 
   panels_.place(input);
 

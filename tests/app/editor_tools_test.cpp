@@ -129,12 +129,13 @@ TEST(EditorTools, PlaybackAdvancesFramesFromTheDisplayTimeAndWraps) {
   ed.update(looking(0.0, 0.0), 0);
   ed.seek(10);
   ed.set_playing(true);
-  ed.update(looking(0.0, 0.0), 10 * kFrame);
+  const auto at = [](std::int64_t f) { return io::frame_start_ns(f, {30, 1}); };  // exact frame starts
+  ed.update(looking(0.0, 0.0), at(10));
   EXPECT_EQ(ed.frame(), 20);
-  ed.update(looking(0.0, 0.0), 25 * kFrame);
+  ed.update(looking(0.0, 0.0), at(25));
   EXPECT_EQ(ed.frame(), 5);  // 35 wraps to 5
   ed.set_playing(false);
-  ed.update(looking(0.0, 0.0), 40 * kFrame);
+  ed.update(looking(0.0, 0.0), at(40));
   EXPECT_EQ(ed.frame(), 5);
 }
 
