@@ -13,6 +13,7 @@ const std::vector<Command>& commands() {
       {"eval", "print the interpolated parameters of every effect at given views", cmd_eval},
       {"hmd", "list the simulated headsets, or show one (vdfx hmd list | show NAME)", cmd_hmd},
       {"render", "render one view of a panorama or video frame to a PNG", cmd_render},
+      {"replay", "replay a recorded editing session headless and write its sidecar", cmd_replay},
       {"validate", "check a sidecar file; list every problem", cmd_validate},
   };
   return list;

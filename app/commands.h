@@ -28,6 +28,7 @@ int cmd_devices(const Args& args);
 int cmd_eval(const Args& args);
 int cmd_hmd(const Args& args);
 int cmd_render(const Args& args);
+int cmd_replay(const Args& args);
 int cmd_validate(const Args& args);
 
 }  // namespace vdfx::app

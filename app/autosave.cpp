@@ -1,0 +1,74 @@
+/// @file
+/// @brief Autosave: sidecar + recovery copy per change, removed on a clean exit.
+#include "app/autosave.h"
+
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "io/atomic_file.h"
+
+namespace vdfx::app {
+
+namespace fs = std::filesystem;
+
+fs::path recovery_path(const fs::path& sidecar_path) {
+  fs::path p = sidecar_path;
+  p += ".autosave";
+  return p;
+}
+
+namespace {
+std::optional<std::string> slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+}  // namespace
+
+std::optional<RecoveryOffer> find_recovery(const fs::path& sidecar_path) {
+  const fs::path rec = recovery_path(sidecar_path);
+  std::error_code ec;
+  if (!fs::is_regular_file(rec, ec)) return std::nullopt;
+  const auto rec_bytes = slurp(rec);
+  if (!rec_bytes) return std::nullopt;
+  const auto side_bytes = slurp(sidecar_path);
+  std::string why;
+  if (!side_bytes) {
+    why = "the sidecar is missing";
+  } else if (*side_bytes != *rec_bytes) {
+    why = "it differs from the sidecar";
+  } else {
+    why = "the last session did not exit cleanly; the sidecar holds the same edits";
+  }
+  return RecoveryOffer{rec, "found an autosave " + rec.string() + " (" + why +
+                                "): start with it to recover the last session"};
+}
+
+Autosave::Autosave(fs::path sidecar_path) : path_(std::move(sidecar_path)) {}
+
+bool Autosave::save(const io::Sidecar& sidecar) {
+  const std::string text = io::format_sidecar(sidecar);
+  try {
+    // The recovery copy first: if the sidecar write fails, the recovery copy still holds the edit.
+    io::write_file_atomic(recovery_path(path_), text);
+    io::write_file_atomic(path_, text);
+  } catch (const std::exception& e) {
+    status_ = std::string("autosave FAILED: ") + e.what();
+    return false;
+  }
+  ++saves_;
+  status_ = "saved " + path_.filename().string() + " (" + std::to_string(saves_) + " changes)";
+  return true;
+}
+
+bool Autosave::finish(const io::Sidecar& sidecar) {
+  if (!save(sidecar)) return false;
+  std::error_code ec;
+  fs::remove(recovery_path(path_), ec);
+  return !ec;
+}
+
+}  // namespace vdfx::app

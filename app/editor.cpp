@@ -1,0 +1,367 @@
+/// @file
+/// @brief Editor: actions -> edits, preview, playback, panels and visualizations.
+#include "app/editor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "app/visualizations.h"
+#include "ui/colour_wheel.h"
+
+namespace vdfx::app {
+
+using effects::Direction;
+using effects::EffectType;
+
+namespace {
+std::shared_ptr<const ui::FontSet> fonts_or_default(std::shared_ptr<const ui::FontSet> f) {
+  return f ? f : std::make_shared<const ui::FontSet>(ui::FontSet::load());
+}
+double angle_deg(const Direction& a, const Direction& b) {
+  return effects::angle_between(effects::to_unit(a), effects::to_unit(b)) * effects::kRadToDeg;
+}
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+std::string title_case(std::string_view s) {
+  std::string n(s);
+  if (!n.empty()) n[0] = static_cast<char>(n[0] - 'a' + 'A');
+  return n;
+}
+}  // namespace
+
+Editor::Editor(io::Sidecar sidecar, DocumentOptions document_options, EditorOptions options)
+    : doc_(std::move(sidecar), document_options),
+      options_(options),
+      panels_(fonts_or_default(options.fonts), doc_.video().frames, options.layout),
+      fps_(io::fps_to_rational(doc_.video().fps)),
+      input_(xr::neutral_input_state(0)) {
+  track_frames_ = track_sample_frames(doc_.video().frames, options_.track_samples);
+  if (options_.autosave_path) {
+    autosave_ = std::make_unique<Autosave>(*options_.autosave_path);
+    doc_.set_change_listener([this] { autosave_->save(doc_.sidecar()); });
+  }
+  select_effect(EffectType::Exposure);
+}
+
+void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
+  const double dt = last_t_ ? std::max<double>(0.0, static_cast<double>(t_ns - *last_t_) * 1e-9) : 0.0;
+  last_t_ = t_ns;
+  now_ = t_ns;
+  input_ = input;
+  if (input.head_tracked) view_ = effects::from_unit([&] {
+    const glm::dvec3 f = xr::forward(input.head);
+    return Eigen::Vector3d(f.x, f.y, f.z);
+  }());
+  if (playing_) {
+    // Frames elapsed since play was pressed, from the elapsed time itself (adding two rounded
+    // frame start times could land a nanosecond short of a frame).
+    const std::int64_t n = doc_.video().frames;
+    const std::int64_t f = play_f0_ + io::frame_at_time(t_ns - play_t0_, fps_);
+    frame_ = options_.loop ? ((f % n) + n) % n : std::clamp<std::int64_t>(f, 0, n - 1);
+  }
+
+  panels_.place(input);
+
+  // Pointers: each hand's aim ray drives the panels not attached to it.
+  auto pointer_input = [](const xr::HandState& h) {
+    ui::PointerInput p;
+    if (!h.tracked) {
+      p.ray.direction = glm::dvec3(0.0);  // parallel to everything: hits nothing
+      return p;
+    }
+    p.ray = {h.aim.position, xr::forward(h.aim)};
+    p.trigger = h.trigger;
+    p.thumbstick = h.thumbstick;
+    return p;
+  };
+  std::vector<ui::Event> events;
+  {
+    auto reach = panels_.reachable_by(xr::Hand::Left);
+    auto ev = left_ptr_.update(reach, pointer_input(input.left), dt);
+    events.insert(events.end(), ev.begin(), ev.end());
+  }
+  {
+    auto reach = panels_.reachable_by(xr::Hand::Right);
+    auto ev = right_ptr_.update(reach, pointer_input(input.right), dt);
+    events.insert(events.end(), ev.begin(), ev.end());
+  }
+  for (const auto& e : events) handle(e);
+
+  // Placement: a right-trigger press that did not land on a panel previews; release places.
+  const bool down = right_ptr_.trigger_down();
+  if (down && !right_was_down_ && !right_ptr_.hit() && right_ptr_.pressed_widget().empty())
+    previewing_ = true;
+  if (!down && previewing_) {
+    previewing_ = false;
+    place_keyframe();
+  }
+  right_was_down_ = down;
+
+  unaltered_ = input.right.tracked && input.right.secondary;
+  const bool a = input.right.tracked && input.right.primary;
+  if (a && !a_was_down_) delete_nearest();
+  a_was_down_ = a;
+  const bool x = input.left.tracked && input.left.primary;
+  if (x && !x_was_down_) undo();
+  x_was_down_ = x;
+  const bool y = input.left.tracked && input.left.secondary;
+  if (y && !y_was_down_) redo();
+  y_was_down_ = y;
+
+  if (look_target_ && angle_deg(*look_target_, view_) < 5.0) look_target_.reset();
+  sync_widgets();
+  refresh_visualizations();
+}
+
+effects::StackParams Editor::params_for_view(const Direction& direction, std::int64_t frame) const {
+  if (unaltered_) return {};
+  effects::StackParams sp = doc_.interpolator().evaluate(direction, frame);
+  if (!previewing_) return sp;
+  const auto& chosen = doc_.params(effect_);
+  // At the view centre the preview keyframe's values are exact; elsewhere interpolate with it.
+  if (frame == frame_ && angle_deg(direction, view_) < 1e-9) {
+    sp.set(effect_, chosen);
+    return sp;
+  }
+  std::vector<double> key = {view_.azimuth_deg, view_.altitude_deg, static_cast<double>(frame_),
+                             static_cast<double>(doc_.revision()), static_cast<double>(effect_)};
+  key.insert(key.end(), chosen.begin(), chosen.end());
+  if (!preview_rbf_ || key != preview_key_) {
+    std::vector<effects::Keyframe> ks = doc_.keyframes(effect_);
+    std::erase_if(ks, [&](const effects::Keyframe& k) {
+      return k.frame == frame_ && angle_deg(k.direction, view_) <= effects::kReplaceAngleDeg;
+    });
+    ks.push_back({view_, frame_, chosen});
+    const auto& spec = effects::effect_spec(effect_);
+    preview_rbf_ = std::make_shared<const effects::RbfInterpolator>(
+        ks, spec.dimension(), doc_.interpolation(effect_), doc_.video().fps, spec.neutral());
+    preview_key_ = key;
+  }
+  const Eigen::VectorXd v = preview_rbf_->evaluate(direction, frame);
+  sp.set(effect_, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
+  return sp;
+}
+
+std::vector<ui::Panel*> Editor::panels() { return panels_.all(); }
+
+std::string Editor::status_text() const {
+  const auto& chosen = doc_.params(effect_);
+  std::string s = title_case(effects::effect_name(effect_)) + " ";
+  switch (effect_) {
+    case EffectType::Tint: s += fmt("gain %.2f", chosen[0]) + fmt(" %.2f", chosen[1]) + fmt(" %.2f", chosen[2]); break;
+    case EffectType::Vignette: s += fmt("radius %.0f", chosen[0]) + fmt(" falloff %.0f deg", chosen[1]); break;
+    case EffectType::Exposure: s += fmt("%+.1f stops", chosen[0]); break;
+    case EffectType::Blur: s += fmt("%.1f deg", chosen[0]); break;
+    default: s += fmt("%.2f", chosen[0]); break;
+  }
+  s += " | frame " + std::to_string(frame_) + "/" + std::to_string(doc_.video().frames);
+  s += " | " + std::to_string(doc_.keyframes(effect_).size()) + " keyframes";
+  if (playing_) s += " | playing";
+  if (previewing_) s += " | PREVIEW: release to place";
+  if (unaltered_) s += " | UNALTERED";
+  if (look_target_) {
+    const double daz = effects::wrap_azimuth_deg(look_target_->azimuth_deg - view_.azimuth_deg);
+    const double dalt = look_target_->altitude_deg - view_.altitude_deg;
+    s += " | look " + fmt("%.0f deg ", std::abs(daz)) + (daz >= 0 ? "right" : "left") + ", " +
+         fmt("%.0f deg ", std::abs(dalt)) + (dalt >= 0 ? "up" : "down");
+  }
+  if (!message_.empty()) s += " | " + message_;
+  return s;
+}
+
+bool Editor::finish() { return autosave_ ? autosave_->finish(doc_.sidecar()) : true; }
+
+void Editor::select_effect(EffectType type) {
+  effect_ = type;
+  panels_.show_effect(type);
+  previewing_ = false;
+  sync_widgets();
+}
+
+void Editor::set_chosen_params(std::vector<double> params) { doc_.set_params(effect_, std::move(params)); }
+
+void Editor::set_playing(bool on) {
+  playing_ = on;
+  play_t0_ = now_;
+  play_f0_ = frame_;
+}
+
+void Editor::seek(std::int64_t frame) {
+  frame_ = std::clamp<std::int64_t>(frame, 0, doc_.video().frames - 1);
+  play_t0_ = now_;
+  play_f0_ = frame_;
+}
+
+std::optional<Direction> Editor::jump_to_keyframe(int step) {
+  const auto& ks = doc_.keyframes(effect_);
+  const auto i = adjacent_keyframe(ks, view_, frame_, step);
+  if (!i) {
+    message_ = step > 0 ? "no keyframe after this frame" : "no keyframe before this frame";
+    return std::nullopt;
+  }
+  seek(ks[*i].frame);
+  look_target_ = ks[*i].direction;
+  message_.clear();
+  return look_target_;
+}
+
+bool Editor::delete_nearest() {
+  const auto& ks = doc_.keyframes(effect_);
+  const auto i = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
+  if (!i) {
+    message_ = "no keyframe to delete";
+    return false;
+  }
+  doc_.remove_keyframe(effect_, *i);
+  message_ = "deleted a keyframe";
+  return true;
+}
+
+void Editor::place_keyframe() {
+  const auto edit = doc_.add_keyframe(effect_, {view_, frame_, doc_.params(effect_)});
+  message_ = edit.replaced ? "replaced a keyframe" : "placed a keyframe";
+}
+
+bool Editor::undo() {
+  const bool ok = doc_.undo();
+  message_ = ok ? "undone" : "nothing to undo";
+  return ok;
+}
+
+bool Editor::redo() {
+  const bool ok = doc_.redo();
+  message_ = ok ? "redone" : "nothing to redo";
+  return ok;
+}
+
+std::vector<double> Editor::widget_params(const ui::Event& e) const {
+  switch (effect_) {
+    case EffectType::Tint: {
+      const Eigen::Vector3d g = ui::tint_gain_from_hue_sat(e.new_value.x, e.new_value.y);
+      return {g[0], g[1], g[2]};
+    }
+    case EffectType::Vignette: return {e.new_value.x, e.new_value.y};
+    default: return {e.new_value.x};
+  }
+}
+
+void Editor::handle(const ui::Event& e) {
+  using ui::EventKind;
+  const bool drag_begin = e.kind == EventKind::DragBegin, drag_end = e.kind == EventKind::DragEnd;
+  const bool changed = e.kind == EventKind::ValueChanged, clicked = e.kind == EventKind::Clicked;
+  if (e.panel == kEffectPanelId) {
+    if (e.widget == "effect_menu" && changed) {
+      select_effect(static_cast<EffectType>(std::clamp(static_cast<int>(e.new_value.x), 0, effects::kEffectCount - 1)));
+    } else if (e.widget == effect_widget_id(effect_) || e.widget == "exponent" || e.widget == "time_scale") {
+      if (drag_begin) doc_.begin_group(e.widget);
+      if (drag_end) doc_.end_group();
+      if (!changed) return;
+      if (e.widget == "exponent" || e.widget == "time_scale") {
+        auto s = doc_.interpolation(effect_);
+        (e.widget == "exponent" ? s.exponent : s.time_scale) = e.new_value.x;
+        doc_.set_interpolation(effect_, s);
+      } else {
+        set_chosen_params(widget_params(e));
+      }
+    } else if (clicked && e.widget == "undo") {
+      undo();
+    } else if (clicked && e.widget == "redo") {
+      redo();
+    } else if (clicked && e.widget == "delete_nearest") {
+      delete_nearest();
+    }
+  } else if (e.panel == kTimelinePanelId) {
+    if (clicked && e.widget == "play") set_playing(!playing_);
+    else if (clicked && e.widget == "prev_key") jump_to_keyframe(-1);
+    else if (clicked && e.widget == "next_key") jump_to_keyframe(+1);
+    else if (e.widget == "strip" && drag_begin) set_playing(false);
+    else if (e.widget == "strip" && changed) seek(static_cast<std::int64_t>(e.new_value.x));
+    else if (e.widget == "lock" && changed) panels_.lock_timeline(e.new_value.x > 0.5);
+  }
+}
+
+void Editor::sync_widgets() {
+  // Widgets show the document; a widget being dragged already shows its own value (setters
+  // compare, so re-setting equal values costs nothing), and the wheel is left alone while held
+  // because tint normalisation would nudge it.
+  const auto& chosen = doc_.params(effect_);
+  ui::Widget* w = panels_.effect_widgets[static_cast<std::size_t>(effect_)];
+  if (!w->pressed()) {
+    if (auto* s = dynamic_cast<ui::Slider1D*>(w)) s->set_value(chosen[0]);
+    if (auto* p = dynamic_cast<ui::Pad2D*>(w)) p->set_value({chosen[0], chosen[1]});
+    if (auto* c = dynamic_cast<ui::ColourWheel*>(w)) {
+      const glm::dvec2 hs = ui::hue_sat_from_tint_gain({chosen[0], chosen[1], chosen[2]});
+      if (glm::length(hs - glm::dvec2(c->hue(), c->sat())) > 1e-6) c->set_hue_sat(hs.x, hs.y);
+    }
+  }
+  const auto s = doc_.interpolation(effect_);
+  if (!panels_.exponent->pressed()) panels_.exponent->set_value(s.exponent);
+  if (!panels_.time_scale->pressed()) panels_.time_scale->set_value(s.time_scale);
+  panels_.undo->set_enabled(doc_.undo_stack().can_undo());
+  panels_.redo->set_enabled(doc_.undo_stack().can_redo());
+  panels_.title->set_text("Effects \u2014 " + title_case(effects::effect_name(effect_)));
+  panels_.play->set_icon(playing_ ? ui::Icon::Pause : ui::Icon::Play);
+  panels_.strip->set_playhead(static_cast<int>(frame_));
+  const double fps = doc_.video().fps;
+  panels_.time->set_text(fmt("frame %.0f", static_cast<double>(frame_)) + fmt("  %.2f s", static_cast<double>(frame_) / fps));
+  panels_.status->set_text(autosave_ ? message_ + (message_.empty() ? "" : " \u2014 ") + autosave_->status() : message_);
+  panels_.hint->set_text(status_text());
+}
+
+void Editor::refresh_visualizations() {
+  const auto& ks = doc_.keyframes(effect_);
+  const int eff = static_cast<int>(effect_);
+  // Markers follow the view: recomputed when it moved by a degree, or the keyframes changed.
+  if (marker_revision_ != doc_.revision() || marker_effect_ != eff || angle_deg(marker_view_, view_) > 1.0) {
+    near_ = keyframes_near_view(ks, view_, options_.marker_cone_deg);
+    std::vector<int> frames, highlighted;
+    for (const auto& k : ks) frames.push_back(static_cast<int>(k.frame));
+    for (const auto i : near_) highlighted.push_back(static_cast<int>(ks[i].frame));
+    panels_.strip->set_keyframes(frames);
+    panels_.strip->set_highlighted(highlighted);
+    marker_revision_ = doc_.revision();
+    marker_effect_ = eff;
+    marker_view_ = view_;
+    ++marker_count_;
+  }
+  const auto rbf = doc_.keyframe_set(effect_).solution();
+  const VisKey base{doc_.revision(), doc_.keyframe_set(effect_).solution_version(), eff, -1};
+  const auto [lo, hi] = display_range(effect_);
+  if (!(track_key_ == base) || angle_deg(track_view_, view_) > 1.0) {
+    track_ = effect_track(rbf.get(), effect_, view_, track_frames_);
+    panels_.plot->set_values(track_);
+    panels_.plot->set_range(lo, hi);
+    std::vector<int> marks;  // keyframe frames as sample indices
+    for (const auto& k : ks) {
+      const auto it = std::lower_bound(track_frames_.begin(), track_frames_.end(), k.frame);
+      if (it != track_frames_.end()) marks.push_back(static_cast<int>(it - track_frames_.begin()));
+    }
+    panels_.plot->set_keyframes(marks);
+    track_key_ = base;
+    track_view_ = view_;
+  }
+  {
+    const auto it = std::lower_bound(track_frames_.begin(), track_frames_.end(), frame_);
+    panels_.plot->set_playhead(static_cast<int>(std::min<std::ptrdiff_t>(it - track_frames_.begin(),
+                                                                          static_cast<std::ptrdiff_t>(track_frames_.size()) - 1)));
+  }
+  VisKey mk = base;
+  mk.frame = frame_;
+  if (!(minimap_key_ == mk)) {
+    minimap_ = effect_minimap(rbf.get(), effect_, frame_, options_.minimap_width, options_.minimap_height);
+    panels_.minimap->set_field(minimap_, lo, hi);
+    std::vector<Direction> dirs;
+    for (const auto& k : ks) dirs.push_back(k.direction);
+    const auto nearest = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
+    panels_.minimap->set_keyframes(dirs, nearest ? static_cast<int>(*nearest) : -1);
+    minimap_key_ = mk;
+    ++minimap_count_;
+  }
+  panels_.minimap->set_view(view_, options_.view_hfov_deg, options_.view_vfov_deg);
+}
+
+}  // namespace vdfx::app

@@ -1,0 +1,156 @@
+/// @file
+/// @brief The in-headset editor without GL: turns OpenXR-style actions into edits of a Document
+/// and says what to render (stack parameters, panels, status).
+///
+/// Per frame the GL loop calls update(input, t_ns) with the frame's input snapshot and display
+/// time, then current_params() (or params_for_view per eye/pixel) for the effect stack, panels()
+/// for the quad layers (Panel::texture() renders a panel's CPU image only when it changed) and
+/// status_text() for the mirror window. Time is passed in, never read, so replay is exact.
+///
+/// Bindings (docs/editor.md): right trigger on nothing = preview, release = place a keyframe at
+/// the view centre and the current frame; trigger on a panel = UI. Right B held = unaltered film.
+/// Right A = delete the keyframe nearest the view. Left X / Y = undo / redo. Each hand's aim ray
+/// drives the panels not attached to that hand (ui::Pointer).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "app/autosave.h"
+#include "app/document.h"
+#include "app/editor_panels.h"
+#include "effects/effect_types.h"
+#include "io/frame_time.h"
+#include "ui/interaction.h"
+#include "xr/actions.h"
+
+namespace vdfx::app {
+
+struct EditorOptions {
+  PanelLayout layout = PanelLayout::Hands;
+  std::shared_ptr<const ui::FontSet> fonts;  //!< null: ui::FontSet::load() (DejaVu)
+  double marker_cone_deg = 30.0;             //!< timeline markers highlighted within this angle of the view
+  int track_samples = 240;                   //!< frames sampled for the effect-track plot
+  int minimap_width = 128;
+  int minimap_height = 64;
+  bool loop = true;                          //!< playback wraps at the end
+  double view_hfov_deg = 90.0;               //!< the view footprint drawn on the minimap
+  double view_vfov_deg = 90.0;
+  //! Autosave every change to this sidecar path (+ a recovery copy, removed by finish()).
+  std::optional<std::filesystem::path> autosave_path;
+};
+
+class Editor {
+ public:
+  Editor(io::Sidecar sidecar, DocumentOptions document_options = {}, EditorOptions options = {});
+
+  /// One frame: input at display time t_ns (non-decreasing between calls).
+  void update(const xr::InputState& input, std::int64_t t_ns);
+
+  // ---- what to render
+  /// Stack parameters at the head's view direction and the current frame, preview and
+  /// "unaltered" (B) included.
+  effects::StackParams current_params() const { return params_for_view(view_, frame_); }
+  /// The same at any direction (per-eye centres, per-pixel mode): while the trigger previews,
+  /// the interpolant is the one with the preview keyframe at the view centre.
+  effects::StackParams params_for_view(const effects::Direction& direction, std::int64_t frame) const;
+  /// The panels for quad layers, with world poses (Panel::pose()) and textures (Panel::texture()).
+  std::vector<ui::Panel*> panels();
+  std::string status_text() const;
+  bool unaltered() const { return unaltered_; }
+  bool previewing() const { return previewing_; }
+  bool playing() const { return playing_; }
+  std::int64_t frame() const { return frame_; }
+  const effects::Direction& view_direction() const { return view_; }
+  /// The input of the last update.
+  const xr::InputState& input() const { return input_; }
+  effects::EffectType current_effect() const { return effect_; }
+  /// Where the last keyframe jump asks the user to look (cleared once the view is within 5 deg).
+  const std::optional<effects::Direction>& look_target() const { return look_target_; }
+
+  // ---- actions (panels and bindings call these; so can tests)
+  void select_effect(effects::EffectType type);
+  /// The current effect's chosen values (one undo step unless a group is open).
+  void set_chosen_params(std::vector<double> params);
+  void set_playing(bool on);
+  void seek(std::int64_t frame);
+  /// Jumps to the previous (-1) / next (+1) keyframe's frame; returns its direction.
+  std::optional<effects::Direction> jump_to_keyframe(int step);
+  /// Deletes the current effect's keyframe nearest the view (RBF distance); false when none.
+  bool delete_nearest();
+  /// Places the chosen values at the view centre and the current frame (replaces a keyframe
+  /// within 0.5 deg on the same frame).
+  void place_keyframe();
+  bool undo();
+  bool redo();
+
+  /// Clean exit: final save, recovery copy removed. False when saving failed.
+  bool finish();
+  /// The autosave line for the UI ("" without autosave).
+  std::string autosave_status() const { return autosave_ ? autosave_->status() : std::string(); }
+
+  Document& document() { return doc_; }
+  const Document& document() const { return doc_; }
+  EditorPanels& ui() { return panels_; }
+
+  // ---- visualization data (kept up to date by update)
+  const cv::Mat& minimap_field() const { return minimap_; }
+  const std::vector<double>& track_values() const { return track_; }
+  const std::vector<std::int64_t>& track_frames() const { return track_frames_; }
+  /// Indices of the current effect's keyframes within marker_cone_deg of the view.
+  const std::vector<std::size_t>& near_keyframes() const { return near_; }
+  /// How often each visualization was recomputed (they follow changes, not frames).
+  int minimap_computations() const { return minimap_count_; }
+  int marker_computations() const { return marker_count_; }
+
+ private:
+  void handle(const ui::Event& e);
+  void sync_widgets();
+  void refresh_visualizations();
+  std::vector<double> widget_params(const ui::Event& e) const;
+
+  Document doc_;
+  EditorOptions options_;
+  std::unique_ptr<Autosave> autosave_;
+  EditorPanels panels_;
+  ui::Pointer left_ptr_, right_ptr_;
+  io::Rational fps_;
+
+  xr::InputState input_;
+  std::optional<std::int64_t> last_t_;
+  effects::Direction view_{};
+  std::int64_t frame_ = 0;
+  effects::EffectType effect_ = effects::EffectType::Exposure;
+  bool previewing_ = false, unaltered_ = false, playing_ = false;
+  bool right_was_down_ = false, a_was_down_ = false, x_was_down_ = false, y_was_down_ = false;
+  std::int64_t play_t0_ = 0, play_f0_ = 0, now_ = 0;
+  std::optional<effects::Direction> look_target_;
+  std::string message_;
+
+  // visualization caches
+  struct VisKey {
+    std::uint64_t revision = ~0ull, solutions = 0;
+    int effect = -1;
+    std::int64_t frame = -1;
+    bool operator==(const VisKey&) const = default;
+  };
+  VisKey minimap_key_, track_key_;
+  effects::Direction marker_view_{}, track_view_{};
+  std::uint64_t marker_revision_ = ~0ull;
+  int marker_effect_ = -1;
+  cv::Mat minimap_;
+  std::vector<double> track_;
+  std::vector<std::int64_t> track_frames_;
+  std::vector<std::size_t> near_;
+  int minimap_count_ = 0, marker_count_ = 0;
+  // preview interpolant for directions other than the view centre
+  mutable std::shared_ptr<const effects::RbfInterpolator> preview_rbf_;
+  mutable std::vector<double> preview_key_;
+};
+
+}  // namespace vdfx::app

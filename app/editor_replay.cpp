@@ -1,0 +1,107 @@
+/// @file
+/// @brief run_replay: recording -> replay backend -> Editor -> sidecar (+ PNG frames).
+#include "app/editor_replay.h"
+
+#include <cstdio>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "app/editor.h"
+#include "effects/equirect_sampler.h"
+#include "effects/view_renderer.h"
+#include "io/frame_decoder.h"
+#include "io/input_error.h"
+#include "io/recording.h"
+#include "ui/interaction.h"
+#include "xr/input_backend.h"
+
+namespace vdfx::app {
+
+namespace fs = std::filesystem;
+
+void overlay_panels(cv::Mat& rgb8, const effects::ViewCamera& camera, const glm::dvec3& eye,
+                    const std::vector<ui::Panel*>& panels) {
+  for (ui::Panel* p : panels) {
+    if (!p->visible()) continue;
+    const cv::Mat& tex = p->texture();
+    for (int j = 0; j < rgb8.rows; ++j) {
+      auto* row = rgb8.ptr<cv::Vec3b>(j);
+      for (int i = 0; i < rgb8.cols; ++i) {
+        const Eigen::Vector3d d = camera.pixel_ray(i, j);
+        const auto hit = ui::intersect_panel_plane(*p, {eye, {d.x(), d.y(), d.z()}});
+        if (!hit || !hit->front || !hit->inside) continue;
+        const int x = std::clamp(static_cast<int>(hit->pixel.x), 0, tex.cols - 1);
+        const int y = std::clamp(static_cast<int>(hit->pixel.y), 0, tex.rows - 1);
+        const cv::Vec4b s = tex.at<cv::Vec4b>(y, x);  // premultiplied RGBA
+        for (int c = 0; c < 3; ++c)
+          row[i][c] = static_cast<uchar>(std::min(255, s[c] + (row[i][c] * (255 - s[3]) + 127) / 255));
+      }
+    }
+  }
+}
+
+ReplayResult run_replay(const ReplayOptions& o) {
+  ReplayResult result;
+  io::Recording rec = io::read_recording(o.recording);
+  for (const auto& w : rec.warnings) result.messages.push_back(w);
+
+  io::DecoderOptions dec_opts;
+  dec_opts.format = io::PixelFormat::RgbF32;
+  auto decoder = io::open_frame_decoder(o.video, dec_opts);
+  const auto& props = decoder->properties();
+
+  io::Sidecar sidecar;
+  if (o.sidecar_in) {
+    sidecar = io::read_sidecar(*o.sidecar_in);
+  } else {
+    sidecar.video = {o.video.string(), props.fps.value(), std::max<std::int64_t>(1, props.frames),
+                     props.width, props.height};
+  }
+
+  EditorOptions eo;
+  // The sim's recordings were made with the desktop layout (panels in front of the head).
+  eo.layout = rec.header.hmd == "sim" ? PanelLayout::Desktop : PanelLayout::Hands;
+  Editor editor(std::move(sidecar), DocumentOptions{{.async = false}}, eo);
+
+  auto backend = xr::create_replay_backend(std::move(rec), {});
+  const auto timeline = backend->timeline();
+  std::vector<std::size_t> shots;
+  if (o.frames_dir && !timeline.empty()) {
+    fs::create_directories(*o.frames_dir);
+    const int n = std::max(1, o.frame_images);
+    for (int k = 1; k <= n; ++k)
+      shots.push_back((timeline.size() - 1) * static_cast<std::size_t>(k) / static_cast<std::size_t>(n));
+  }
+  std::size_t next_shot = 0;
+  for (std::size_t i = 0; i < timeline.size(); ++i) {
+    editor.update(backend->poll(timeline[i]), timeline[i]);
+    while (next_shot < shots.size() && shots[next_shot] == i) {
+      const std::int64_t frame = std::clamp<std::int64_t>(editor.frame(), 0, std::max<std::int64_t>(0, props.frames - 1));
+      decoder->seek(props.is_still ? 0 : frame);
+      cv::Mat image;
+      if (decoder->read(image) != io::DecodeStatus::Ok)
+        throw io::InputError(o.video.string() + ": frame " + std::to_string(frame) + " could not be decoded");
+      if (image.type() != CV_32FC3) image.convertTo(image, CV_32FC3, 1.0 / 255.0);
+      effects::EquirectSampler sampler(image);
+      const auto camera = effects::ViewCamera::from_horizontal_fov({editor.view_direction(), 0.0}, o.hfov_deg,
+                                                                   o.width, o.height);
+      cv::Mat rgb8 = effects::to_rgb8(effects::render_view(sampler, camera, editor.current_params()));
+      overlay_panels(rgb8, camera, editor.input().head.position,
+                     editor.panels());
+      cv::Mat bgr;
+      cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);
+      char name[64];
+      std::snprintf(name, sizeof name, "replay_%03zu.png", next_shot);
+      const fs::path out = *o.frames_dir / name;
+      if (!cv::imwrite(out.string(), bgr)) throw io::InputError(out.string() + ": cannot write the PNG");
+      result.images.push_back(out);
+      ++next_shot;
+    }
+  }
+  result.samples = timeline.size();
+  result.sidecar = editor.document().sidecar();
+  io::write_sidecar(o.sidecar_out, result.sidecar);
+  return result;
+}
+
+}  // namespace vdfx::app

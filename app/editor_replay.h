@@ -1,0 +1,48 @@
+/// @file
+/// @brief `vdfx replay`: a recorded session stepped through the Editor headless, as fast as it
+/// goes, at every recorded sample time; the sidecar it leaves, and optionally mirror-like frames.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "effects/view_camera.h"
+#include "io/sidecar.h"
+#include "ui/panel.h"
+#include "xr/pose.h"
+
+namespace vdfx::app {
+
+struct ReplayOptions {
+  std::filesystem::path recording;
+  std::filesystem::path video;
+  std::optional<std::filesystem::path> sidecar_in;  //!< start from it (else an empty sidecar)
+  std::filesystem::path sidecar_out;
+  std::optional<std::filesystem::path> frames_dir;  //!< write mirror-like PNGs here
+  int frame_images = 5;   //!< evenly spaced over the session, the last sample included
+  int width = 640;        //!< of each PNG
+  int height = 360;
+  double hfov_deg = 90.0;
+  std::string log_prefix = "vdfx replay";
+};
+
+struct ReplayResult {
+  io::Sidecar sidecar;
+  std::size_t samples = 0;
+  std::vector<std::filesystem::path> images;
+  std::vector<std::string> messages;  //!< warnings and notes for the user
+};
+
+/// Runs the session. Throws io::InputError for a bad recording (file and line), video or sidecar.
+ReplayResult run_replay(const ReplayOptions& options);
+
+/// Draws the panels (premultiplied RGBA textures on their world quads) over an RGB8 view seen
+/// from `eye` through `camera` (nearest texel).
+void overlay_panels(cv::Mat& rgb8, const effects::ViewCamera& camera, const glm::dvec3& eye,
+                    const std::vector<ui::Panel*>& panels);
+
+}  // namespace vdfx::app
