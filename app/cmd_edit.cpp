@@ -38,9 +38,9 @@ int cmd_edit(const Args& args) {
   cli.footer("\nUntil the editor is wired in, this plays the sidecar (keys as `vdfx play`).\n");
   if (auto code = parse_cli(cli, args)) return *code;
 
-  const std::filesystem::path sc = sidecar_path.empty() ? demo_sidecar() : sidecar_path;
+  const std::filesystem::path sc = sidecar_path.empty() ? demo_sidecar() : std::filesystem::path(sidecar_path);
   const io::Sidecar sidecar = io::read_sidecar(sc);
-  const std::filesystem::path v = video.empty() ? sidecar_video(sc, sidecar) : video;
+  const std::filesystem::path v = video.empty() ? sidecar_video(sc, sidecar) : std::filesystem::path(video);
   LoopSetup setup = prepare_loop(loop, v, true);
   Player client(sidecar, setup.video->properties());
   FrameLoop frame_loop(setup.options, *setup.input, *setup.video, client);

@@ -1,6 +1,7 @@
 /// @file
 /// @brief `vdfx play VIDEO --sidecar F [--hmd P] [--input ...] [--record REC] [--stats] ...`:
 /// the player in the simulated headset's window (docs/player.md).
+#include <cmath>
 #include <iostream>
 
 #include "app/cli_util.h"

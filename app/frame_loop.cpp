@@ -2,7 +2,8 @@
 /// @brief FrameLoop: window, session timing, input, decode, parameters, compositor, mirror.
 #include "app/frame_loop.h"
 
-#include <sstream>
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #ifdef VDFX_WITH_GL

@@ -30,7 +30,6 @@ class VideoSource;
 namespace vdfx::xr {
 class Compositor;
 class InputBackend;
-enum class MirrorMode;
 }  // namespace vdfx::xr
 
 namespace vdfx::app {

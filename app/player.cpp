@@ -2,6 +2,7 @@
 /// @brief Player: playhead, keys, and the sidecar's interpolated effects.
 #include "app/player.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
