@@ -20,14 +20,14 @@ void warn_mismatch(const io::Sidecar& s, const io::VideoProperties& v) {
               << " frames at " << v.fps.value() << " fps (keyframe frames are used as they are)\n";
 }
 
-}  // namespace
-
 std::string play_help_footer() {
   return "\nPlayer keys:\n" + Player::keys_text() + "Window keys:\n" + frame_loop_keys_text() +
          "Simulated controllers (--input sim):\n" + xr::sim_bindings_text(xr::SimConfig{}) +
          "\nWith --input replay:REC the loop takes its times from the recording (no clock), runs "
          "as fast as it can and stops at the recording's end.\n";
 }
+
+}  // namespace
 
 int cmd_play(const Args& args) {
   CLI::App cli("play a 360-degree video with its view-dependent effects in the simulated headset",
