@@ -10,8 +10,10 @@ namespace vdfx::app {
 const std::vector<Command>& commands() {
   static const std::vector<Command> list = {
       {"devices", "list HID input devices (gamepads, SpaceMouse) and their ids for --input hid:", cmd_devices},
+      {"edit", "the in-headset editor (no VIDEO: the bundled demo)", cmd_edit},
       {"eval", "print the interpolated parameters of every effect at given views", cmd_eval},
       {"hmd", "list the simulated headsets, or show one (vdfx hmd list | show NAME)", cmd_hmd},
+      {"play", "play a video with its effects in the simulated headset", cmd_play},
       {"render", "render one view of a panorama or video frame to a PNG", cmd_render},
       {"replay", "replay a recorded editing session headless and write its sidecar", cmd_replay},
       {"validate", "check a sidecar file; list every problem", cmd_validate},

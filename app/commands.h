@@ -25,8 +25,10 @@ const std::vector<Command>& commands();
 int run_main(const Args& args);
 
 int cmd_devices(const Args& args);
+int cmd_edit(const Args& args);
 int cmd_eval(const Args& args);
 int cmd_hmd(const Args& args);
+int cmd_play(const Args& args);
 int cmd_render(const Args& args);
 int cmd_replay(const Args& args);
 int cmd_validate(const Args& args);

@@ -1,0 +1,105 @@
+/// @file
+/// @brief The windowed runtime loop of the simulated headset, shared by `vdfx play` and
+/// `vdfx edit`: a GLFW mirror window, the session's frame timing, input from a backend, video
+/// from the decode worker, the client's parameters, both eyes through the compositor.
+///
+/// One frame (docs/player.md):
+///   time: live -> Session::wait_frame(now) -> predicted display time;
+///         replay (the backend has a timeline) -> the recording's next sample time, no clock.
+///   window events -> input backend (push_event) and client (on_desktop_event);
+///   input.poll(display time) -> client.update() -> VideoSource::frame_at(frame, decode_timeout):
+///   a frame not decoded yet keeps the previous one on screen and counts as late (never blocks);
+///   params once at the head's forward direction (or the per-pixel bake) -> both eyes -> mirror.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/frame_client.h"
+#include "xr/hmd_profile.h"
+
+namespace vdfx::io {
+class VideoSource;
+}
+namespace vdfx::xr {
+class Compositor;
+class InputBackend;
+}  // namespace vdfx::xr
+
+namespace vdfx::app {
+
+/// Default eye scale for the window: llvmpipe renders 1440x1600 eyes at about 3 frames per
+/// second; a quarter of the width and height (1/16 of the pixels) keeps the loop usable.
+inline constexpr double kDefaultEyeScale = 0.25;
+
+struct FrameLoopOptions {
+  xr::HmdProfile profile;
+  double eye_scale = kDefaultEyeScale;  //!< eye buffers are the profile's resolution x this
+  int window_width = 1280;
+  int window_height = 720;
+  bool visible = true;       //!< false: hidden window (tests), the mirror still renders
+  bool vsync = true;         //!< live mode only; replay never waits
+  int mirror_mode = 0;       //!< xr::MirrorMode as int: 0 pre-distorted, 1 through lens, 2 eye
+  std::int64_t max_frames = -1;          //!< stop after this many frames (-1: no limit)
+  std::filesystem::path screenshot;      //!< write the last frame's mirror here (PNG)
+  bool stats = false;                    //!< GPU timer per stage, medians printed
+  double stats_period_s = 2.0;           //!< wall seconds between periodic stats lines
+  std::ostream* stats_out = nullptr;     //!< default std::cout
+  std::chrono::nanoseconds decode_timeout{0};  //!< how long a frame may wait for the decoder
+  int bake_width = 256, bake_height = 128;     //!< per-pixel mode's parameter grid
+  bool keep_records = false;             //!< fill FrameLoopResult::records (tests)
+  /// Called after each frame is rendered (before the mirror), with the compositor (tests read
+  /// eye buffers here).
+  std::function<void(xr::Compositor&, std::int64_t loop_frame)> on_frame;
+  /// Events injected before the window's own at a given loop frame (tests, scripted demos).
+  std::function<std::vector<xr::DesktopEvent>(std::int64_t loop_frame)> script;
+};
+
+struct FrameRecord {
+  std::int64_t display_time_ns = 0;
+  std::int64_t requested_frame = 0;  //!< what the client asked for
+  std::int64_t shown_frame = -1;     //!< what is on screen (-1: nothing decoded yet)
+  bool late = false;                 //!< shown != requested
+};
+
+/// Median milliseconds per frame over a window of frames.
+struct StageMedian {
+  std::string stage;
+  double ms = 0.0;
+};
+
+struct FrameLoopResult {
+  std::int64_t frames = 0;
+  std::int64_t late_frames = 0;
+  double wall_s = 0.0;
+  std::vector<FrameRecord> records;  //!< keep_records only
+  std::vector<StageMedian> medians;  //!< stats only: GPU stages (both eyes), CPU parts
+};
+
+class FrameLoop {
+ public:
+  /// Opens the window and GL context (throws xr::GlError without a display).
+  FrameLoop(FrameLoopOptions options, xr::InputBackend& input, io::VideoSource& video,
+            FrameClient& client);
+  ~FrameLoop();
+  FrameLoop(const FrameLoop&) = delete;
+  FrameLoop& operator=(const FrameLoop&) = delete;
+
+  /// Runs until the window closes, Escape, the client asks, max_frames, or the replay ends.
+  FrameLoopResult run();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The keys the loop itself handles (mirror modes, quit), as text for --help.
+std::string frame_loop_keys_text();
+
+}  // namespace vdfx::app

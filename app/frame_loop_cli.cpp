@@ -1,0 +1,100 @@
+/// @file
+/// @brief Shared options and setup of the windowed commands.
+#include "app/frame_loop_cli.h"
+
+#include <iostream>
+
+#include "app/cli_util.h"
+#include "io/input_error.h"
+#include "xr/hmd_profile.h"
+
+namespace vdfx::app {
+namespace {
+std::string size_problem(const std::string& text) {
+  try {
+    parse_size(text);
+    return {};
+  } catch (const CLI::ValidationError& e) {
+    return e.what();
+  }
+}
+}  // namespace
+
+void add_loop_options(CLI::App& cli, LoopCli& o) {
+  cli.add_option("--hmd", o.hmd, "headset profile name or file (vdfx hmd list)")
+      ->capture_default_str();
+  cli.add_option("--input", o.input, "sim | hid[:SEL,...] | replay:REC.vdrec.jsonl")
+      ->capture_default_str();
+  cli.add_option("--record", o.record, "record the input to this .vdrec.jsonl file");
+  cli.add_flag("--stats", o.stats, "GPU time per stage (video, effects, distortion): medians, "
+                                   "printed every 2 s and at exit");
+  cli.add_option("--scale", o.scale,
+                 "eye buffers at this fraction of the profile's resolution (1 = full; the default "
+                 "keeps llvmpipe interactive)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 4.0));
+  cli.add_option("--frames,--exit-after-frames", o.frames, "stop after N frames")
+      ->check(CLI::NonNegativeNumber);
+  cli.add_option("--screenshot", o.screenshot, "write the mirror of the last frame to this PNG");
+  cli.add_option("--mirror", o.mirror, "mirror window: pre (pre-distorted panels), lens (through "
+                                       "the lens), eye (left eye, undistorted)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"pre", "lens", "eye"}));
+  cli.add_option("--window", o.window, "window size WxH")->capture_default_str()->check(size_problem);
+  cli.add_flag("--hidden", o.hidden, "no visible window (offscreen; --screenshot still works)");
+  cli.add_flag("--no-vsync", o.no_vsync, "do not wait for the display's vsync (live input)");
+  cli.add_option("--decode-timeout", o.decode_timeout_ms,
+                 "ms a frame may wait for the decoder (0: never wait, show the previous frame)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 10000.0));
+  cli.add_option("--bake", o.bake, "per-pixel mode's parameter grid WxH (speed/error knob)")
+      ->capture_default_str()
+      ->check(size_problem);
+}
+
+LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video) {
+  LoopSetup s;
+  FrameLoopOptions& f = s.options;
+  f.profile = xr::load_hmd_profile(o.hmd);
+  const ImageSize window = parse_size(o.window);
+  const ImageSize bake = parse_size(o.bake);
+  f.window_width = window.width;
+  f.window_height = window.height;
+  f.bake_width = bake.width;
+  f.bake_height = bake.height;
+  f.eye_scale = o.scale;
+  f.max_frames = o.frames;
+  f.screenshot = o.screenshot;
+  f.stats = o.stats;
+  f.visible = !o.hidden;
+  f.vsync = !o.no_vsync;
+  f.mirror_mode = o.mirror == "pre" ? 0 : o.mirror == "lens" ? 1 : 2;
+  f.decode_timeout = std::chrono::nanoseconds(static_cast<std::int64_t>(o.decode_timeout_ms * 1e6));
+
+  io::VideoSourceOptions vo;
+  vo.loop = loop_video;
+  s.video = io::VideoSource::open(video_path, vo);
+
+  xr::InputBackendOptions io_opts;
+  io_opts.sim.window_width = window.width;
+  io_opts.sim.window_height = window.height;
+  const xr::FovDeg& fov = f.profile.eye(xr::Eye::Left).fov;
+  io_opts.sim.hfov_deg = fov.angle_right - fov.angle_left;
+  s.input = xr::create_input_backend(o.input, io_opts);
+  if (!o.record.empty()) {
+    io::RecordingHeader h;
+    h.hmd = f.profile.name;
+    h.video = video_path.string();
+    h.note = "vdfx " + o.input;
+    s.input = xr::create_recording_backend(std::move(s.input), o.record, h);
+  }
+  return s;
+}
+
+void report_loop(const char* command, const FrameLoopResult& r) {
+  std::cerr << command << ": " << r.frames << " frames in " << r.wall_s << " s ("
+            << (r.wall_s > 0 ? r.frames / r.wall_s : 0.0) << " frames/s), " << r.late_frames
+            << " late (video frame not decoded in time; the previous one stayed on screen)\n";
+}
+
+}  // namespace vdfx::app

@@ -1,0 +1,45 @@
+/// @file
+/// @brief The GLFW window glue: translates GLFW key, mouse and resize callbacks into
+/// xr::DesktopEvent and queues them. No logic lives here (style: imgui's AddKeyEvent queue);
+/// the frame loop drains the queue once per frame and hands each event to the input backend and
+/// to its client.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "xr/input_events.h"
+
+struct GLFWwindow;
+
+namespace vdfx::app {
+
+/// GLFW_KEY_* -> xr::Key; nullopt for keys vdfx has no name for.
+std::optional<xr::Key> translate_glfw_key(int glfw_key);
+/// GLFW_MOUSE_BUTTON_* -> xr::MouseButton; nullopt for the extra buttons.
+std::optional<xr::MouseButton> translate_glfw_mouse_button(int glfw_button);
+/// A GLFW key action (GLFW_PRESS, GLFW_REPEAT, GLFW_RELEASE) as an event; repeats are dropped
+/// (a held key is one press), so nullopt for them and for untranslated keys.
+std::optional<xr::DesktopEvent> key_event(int glfw_key, int glfw_action);
+
+#ifdef VDFX_WITH_GL
+/// Installs the callbacks on `window` (it takes the window's user pointer) and queues events.
+class GlfwInputGlue {
+ public:
+  explicit GlfwInputGlue(GLFWwindow* window);
+  ~GlfwInputGlue();
+  GlfwInputGlue(const GlfwInputGlue&) = delete;
+  GlfwInputGlue& operator=(const GlfwInputGlue&) = delete;
+
+  /// The events queued since the last call, in arrival order.
+  std::vector<xr::DesktopEvent> drain();
+  /// Queues an event as if the window had sent it (tests, scripted keys).
+  void push(const xr::DesktopEvent& e) { queue_.push_back(e); }
+
+ private:
+  GLFWwindow* window_;
+  std::vector<xr::DesktopEvent> queue_;
+};
+#endif
+
+}  // namespace vdfx::app

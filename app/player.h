@@ -1,0 +1,63 @@
+/// @file
+/// @brief The player (`vdfx play`): a FrameClient with no authoring UI. Plays the video against
+/// the display time (exact frame mapping, app/player_playhead.h), interpolates the sidecar's
+/// effects at the head's forward direction, and has the perception-study switches: view-dependent
+/// vs per-pixel parameters, and the unaltered film while a key is held.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "app/frame_client.h"
+#include "app/player_playhead.h"
+#include "effects/stack_interpolator.h"
+#include "io/frame_decoder.h"
+#include "io/sidecar.h"
+
+namespace vdfx::app {
+
+struct PlayerOptions {
+  bool loop = true;
+  double seek_step_s = 5.0;  //!< B / F keys
+  ParamMode mode = ParamMode::ViewDependent;
+};
+
+class Player : public FrameClient {
+ public:
+  /// `video` is what is played (its rate and length drive the playhead); the sidecar's keyframe
+  /// frames are indices of that video. Throws io::InputError when the sidecar's effects cannot be
+  /// interpolated (e.g. a duplicated effect type).
+  Player(const io::Sidecar& sidecar, const io::VideoProperties& video, PlayerOptions options = {});
+
+  void on_desktop_event(const xr::DesktopEvent& event) override;
+  void update(const xr::InputState& input, std::int64_t display_time_ns, FrameInfo& info) override;
+  effects::StackParams params(const effects::Direction& direction, std::int64_t frame) override;
+  unsigned active_effects() const override { return active_; }
+  bool unaltered() const override { return unaltered_key_ || unaltered_button_ || forced_unaltered_; }
+  ParamMode param_mode() const override { return mode_; }
+  std::string status_line() const override;
+
+  /// Programmatic switches (tests, scripts); the keys and buttons below do the same.
+  void set_param_mode(ParamMode m) { mode_ = m; }
+  void set_unaltered(bool on) { forced_unaltered_ = on; }
+  const Playhead& playhead() const { return playhead_; }
+  std::int64_t current_frame() const { return frame_; }
+
+  /// The player's keys and controller buttons, as text for --help and docs/player.md.
+  static std::string keys_text();
+
+ private:
+  void apply_key(xr::Key key, std::int64_t t_ns);
+  effects::StackInterpolator interp_;
+  unsigned active_ = 0;
+  Playhead playhead_;
+  PlayerOptions options_;
+  ParamMode mode_;
+  std::vector<xr::Key> pending_keys_;  //!< pressed since the last update (applied at its time)
+  bool unaltered_key_ = false, unaltered_button_ = false, forced_unaltered_ = false;
+  bool prev_b_ = false;
+  std::int64_t frame_ = 0;
+};
+
+}  // namespace vdfx::app

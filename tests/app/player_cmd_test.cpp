@@ -1,0 +1,76 @@
+/// @file
+/// @brief `vdfx play` / `vdfx edit` command-line checks that need no window: bad input is exit 1
+/// with a message saying what, --help documents the keys.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace vdfx::app {
+namespace {
+
+struct CmdResult {
+  int code;
+  std::string output;
+};
+
+CmdResult run(const std::string& args) {
+  // DISPLAY is unset so a command that got as far as opening a window would fail differently.
+  const std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(VDFX_BINARY) + " " +
+                          args + " 2>&1";
+  CmdResult r{-1, {}};
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), p)) r.output += buf.data();
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+const std::string kDemo = std::string(VDFX_SOURCE_DIR) + "/app/demo/sunrise.vdfx.json";
+const std::string kStill = "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
+
+TEST(PlayerCmd, BadInputIsExitOneWithAClearMessage) {
+  const struct {
+    std::string args;
+    std::string says;
+  } rows[] = {
+      {"play /nonexistent/clip.mp4 --sidecar " + kDemo, "/nonexistent/clip.mp4"},
+      {"play " + kStill + " --sidecar " + kDemo + " --hmd no-such-headset", "no-such-headset"},
+      {"play " + kStill + " --sidecar /nonexistent/fx.vdfx.json", "/nonexistent/fx.vdfx.json"},
+      {"play " + kStill + " --sidecar " + kDemo + " --input replay:/nonexistent/r.vdrec.jsonl",
+       "/nonexistent/r.vdrec.jsonl"},
+      {"edit /nonexistent/clip.mp4", "/nonexistent/clip.mp4"},
+      {"edit --hmd /nonexistent/h.json", "/nonexistent/h.json"},
+  };
+  for (const auto& r : rows) {
+    const CmdResult out = run(r.args);
+    EXPECT_EQ(out.code, 1) << r.args << "\n" << out.output;
+    EXPECT_NE(out.output.find(r.says), std::string::npos) << r.args << "\n" << out.output;
+  }
+}
+
+TEST(PlayerCmd, UsageErrorsAreExitTwo) {
+  for (const std::string& args : std::vector<std::string>{"play", "play " + kStill, "play " + kStill + " --sidecar " + kDemo + " --scale 0",
+                                 "play " + kStill + " --sidecar " + kDemo + " --window 12",
+                                 "play " + kStill + " --sidecar " + kDemo + " --mirror sideways"}) {
+    const CmdResult out = run(args);
+    EXPECT_EQ(out.code, 2) << args << "\n" << out.output;
+  }
+}
+
+TEST(PlayerCmd, HelpListsEveryKeyAndTheSimBindings) {
+  const CmdResult out = run("play --help");
+  EXPECT_EQ(out.code, 0);
+  for (const char* s : {"pause / play", "per-pixel", "unaltered", "mirror: pre-distorted",
+                        "mirror: through the lens", "mirror: single eye", "Escape",
+                        "/user/hand/right/input/trigger/value", "turn the head", "--stats",
+                        "--screenshot", "--frames", "--record", "--scale"})
+    EXPECT_NE(out.output.find(s), std::string::npos) << s;
+}
+
+}  // namespace
+}  // namespace vdfx::app
