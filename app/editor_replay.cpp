@@ -19,22 +19,60 @@ namespace vdfx::app {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+/// Bilinear sample of a premultiplied RGBA8 image at continuous pixel position (x, y).
+cv::Vec4f sample_bilinear(const cv::Mat& img, double x, double y) {
+  const double fx = std::clamp(x - 0.5, 0.0, img.cols - 1.0);
+  const double fy = std::clamp(y - 0.5, 0.0, img.rows - 1.0);
+  const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
+  const int x1 = std::min(x0 + 1, img.cols - 1), y1 = std::min(y0 + 1, img.rows - 1);
+  const double ax = fx - x0, ay = fy - y0;
+  cv::Vec4f out;
+  for (int c = 0; c < 4; ++c) {
+    const double top = img.at<cv::Vec4b>(y0, x0)[c] * (1 - ax) + img.at<cv::Vec4b>(y0, x1)[c] * ax;
+    const double bot = img.at<cv::Vec4b>(y1, x0)[c] * (1 - ax) + img.at<cv::Vec4b>(y1, x1)[c] * ax;
+    out[c] = static_cast<float>(top * (1 - ay) + bot * ay);
+  }
+  return out;
+}
+
+/// On-screen width of the panel in output pixels (0 when it cannot be projected).
+double screen_width(const effects::ViewCamera& camera, const glm::dvec3& eye, const ui::Panel& p,
+                    cv::Size tex) {
+  const auto at = [&](double x) -> std::optional<Eigen::Vector2d> {
+    const glm::dvec3 w = p.world_of_pixel({x, tex.height * 0.5}) - eye;
+    return camera.project(Eigen::Vector3d(w.x, w.y, w.z));
+  };
+  const auto a = at(0.0), b = at(tex.width);
+  return a && b ? (*a - *b).norm() : 0.0;
+}
+
+}  // namespace
+
 void overlay_panels(cv::Mat& rgb8, const effects::ViewCamera& camera, const glm::dvec3& eye,
                     const std::vector<ui::Panel*>& panels) {
   for (ui::Panel* p : panels) {
     if (!p->visible()) continue;
-    const cv::Mat& tex = p->texture();
+    // Panels render at about 4000 px/m, far finer than a small frame: shrink the texture to its
+    // on-screen size with an area filter first, then sample bilinearly, so text stays smooth
+    // instead of aliasing.
+    const cv::Mat& full = p->texture();
+    const double on_screen = screen_width(camera, eye, *p, full.size());
+    const double scale = on_screen > 1.0 ? std::min(1.0, on_screen / full.cols) : 1.0;
+    cv::Mat tex = full;
+    if (scale < 1.0)
+      cv::resize(full, tex, cv::Size(), scale, scale, cv::INTER_AREA);
     for (int j = 0; j < rgb8.rows; ++j) {
       auto* row = rgb8.ptr<cv::Vec3b>(j);
       for (int i = 0; i < rgb8.cols; ++i) {
         const Eigen::Vector3d d = camera.pixel_ray(i, j);
         const auto hit = ui::intersect_panel_plane(*p, {eye, {d.x(), d.y(), d.z()}});
         if (!hit || !hit->front || !hit->inside) continue;
-        const int x = std::clamp(static_cast<int>(hit->pixel.x), 0, tex.cols - 1);
-        const int y = std::clamp(static_cast<int>(hit->pixel.y), 0, tex.rows - 1);
-        const cv::Vec4b s = tex.at<cv::Vec4b>(y, x);  // premultiplied RGBA
-        for (int c = 0; c < 3; ++c)
-          row[i][c] = static_cast<uchar>(std::min(255, s[c] + (row[i][c] * (255 - s[3]) + 127) / 255));
+        const cv::Vec4f s = sample_bilinear(tex, hit->pixel.x * tex.cols / full.cols,
+                                            hit->pixel.y * tex.rows / full.rows);
+        for (int c = 0; c < 3; ++c)  // premultiplied "over"
+          row[i][c] = cv::saturate_cast<uchar>(s[c] + row[i][c] * (255.0f - s[3]) / 255.0f);
       }
     }
   }

@@ -24,8 +24,8 @@ struct ReplayOptions {
   std::filesystem::path sidecar_out;
   std::optional<std::filesystem::path> frames_dir;  //!< write mirror-like PNGs here
   int frame_images = 5;   //!< evenly spaced over the session, the last sample included
-  int width = 640;        //!< of each PNG
-  int height = 360;
+  int width = 1280;        //!< of each PNG
+  int height = 720;
   double hfov_deg = 90.0;
   std::string log_prefix = "vdfx replay";
 };

@@ -76,7 +76,7 @@ TEST(ReplaySessions, PlaceExposureUndoRedoIsByteIdenticalTwice) {
   for (int i = 0; i < 5; ++i) {
     const cv::Mat png = cv::imread((dir / "frames" / ("replay_00" + std::to_string(i) + ".png")).string());
     ASSERT_FALSE(png.empty()) << i;
-    EXPECT_EQ(png.cols, 640);
+    EXPECT_EQ(png.size(), cv::Size(1280, 720));
   }
 }
 
