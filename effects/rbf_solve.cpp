@@ -199,15 +199,12 @@ RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
   const double scale = max_abs(f);
   // Residuals accumulated in long double: near-coincident centres make the weights large and
   // their sums cancel, so a residual summed in double would be as wrong as the solution.
-  using LMat = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
-  LMat al;  // A in long double, converted once for all refinement steps
   auto residuals = [&](Eigen::MatrixXd& rf, Eigen::MatrixXd& rg) {
-    if (al.size() == 0) al = a.cast<long double>();
+    using LMat = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
     const LMat wl = s.weights.cast<long double>();
     const LMat cl = s.coefficients.cast<long double>();
-    LMat acc = f.cast<long double>() - p.cast<long double>() * cl;
-    acc.noalias() -= al * wl;
-    rf = acc.cast<double>();
+    rf = (f.cast<long double>() - a.cast<long double>() * wl - p.cast<long double>() * cl)
+             .cast<double>();
     rg = (-(p.cast<long double>().transpose() * wl)).cast<double>();
     return std::max(max_abs(rf), max_abs(rg));
   };
