@@ -8,22 +8,112 @@
 
 namespace vdfx::effects {
 
-/// The state the O(N^2) updates work on. Centres are in "slot" order: the inverse and z are
-/// ordered [polynomial (r); centres (m)], and centres are removed by moving the last into place.
+/// The state the O(N^2) updates work on. Slots are ordered [polynomial (r); centres (m)];
+/// centres are removed by moving the last into place. The saddle matrix M = [0 P^T; P A] and
+/// its inverse are both symmetric: only their lower triangles are kept, in the top-left n x n
+/// (n = r + m) of square buffers with spare capacity, so edits neither allocate nor copy them.
 struct KeyframeSet::State {
   std::uint64_t version = 0;
   RbfPoints points;
   PolynomialBasis basis;
-  Eigen::MatrixXd inverse;  //!< (r + m)^2 inverse of [0 P^T; P A]
-  Eigen::MatrixXd z;        //!< (r + m) x D: [c; w]
+  Eigen::MatrixXd saddle;   //!< capacity^2; lower triangle of M (its diagonal is 0: phi(0) = 0)
+  Eigen::MatrixXd inverse;  //!< capacity^2; lower triangle of M^-1
+  Eigen::MatrixXd z;        //!< capacity x D; top n rows: [c; w]
   std::vector<int> centre_of_keyframe;
   std::vector<int> keyframe_of_centre;
   RbfDiagnostics diagnostics;
   std::shared_ptr<const RbfInterpolator> interpolator;
+  bool exact = false;  //!< one centre per keyframe and M^-1 known: incremental updates possible
+  //! An add's rank-one term of the inverse, u u^T / s on the top-left u.size() block, not yet
+  //! applied: finish_incremental fuses it with the refinement product (one sweep, not two).
+  Eigen::VectorXd pending_u;
+  double pending_alpha = 0.0;
 
   int r() const { return basis.size(); }
   int m() const { return points.size(); }
+  int n() const { return r() + m(); }
+  int capacity() const { return static_cast<int>(inverse.rows()); }
+  Eigen::Block<Eigen::MatrixXd> weights() { return z.block(r(), 0, m(), z.cols()); }
+  Eigen::Block<Eigen::MatrixXd> coefficients() { return z.block(0, 0, r(), z.cols()); }
+
+  /// Makes room for `slots` slots (keeping the lower triangles), growing by half at a time;
+  /// true when it had to reallocate.
+  bool reserve(int slots) {
+    if (slots <= capacity()) return false;
+    const int cap = std::max({slots, capacity() + capacity() / 2, 16});
+    const int used = n();
+    auto grow = [&](Eigen::MatrixXd& a, Eigen::Index cols) {
+      Eigen::MatrixXd b = Eigen::MatrixXd::Zero(cap, cols);
+      b.topLeftCorner(used, std::min<Eigen::Index>(used, cols)) =
+          a.topLeftCorner(used, std::min<Eigen::Index>(used, cols));
+      a.swap(b);
+    };
+    grow(saddle, cap);
+    grow(inverse, cap);
+    grow(z, z.cols());
+    return true;
+  }
 };
+
+namespace {
+
+/// Spare slots kept after a full solve: edits add this many centres before a reallocation.
+int spare_slots(int n) { return std::max(32, n / 8); }
+
+/// Exchanges slots j and l = n - 1 of the symmetric matrix whose lower triangle is stored in
+/// s.topLeftCorner(n, n) (a symmetric permutation: rows and columns together), O(n).
+void symmetric_swap_with_last(Eigen::MatrixXd& s, int j, int n) {
+  const int l = n - 1;
+  if (j == l) return;
+  std::swap(s(j, j), s(l, l));
+  for (int k = 0; k < j; ++k) std::swap(s(j, k), s(l, k));
+  for (int k = j + 1; k < l; ++k) std::swap(s(k, j), s(l, k));
+}
+
+/// Applies the pending rank-one term of the inverse to the lower triangle of s (whose used
+/// block is n x n, n >= u.size()) and, with x and y given (n rows), adds S x to y with the
+/// updated S in the same sweep: each column is read from memory once.
+void lower_update_and_product(Eigen::MatrixXd& s, const Eigen::VectorXd& u, double alpha, int n,
+                              const Eigen::MatrixXd* x, Eigen::MatrixXd* y) {
+  const Eigen::Index nu = u.size();
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if (k < nu) s.col(k).segment(k, nu - k) += (alpha * u[k]) * u.tail(nu - k);
+    if (!x) continue;
+    const Eigen::Index len = n - k;
+    const auto col = s.col(k).segment(k, len);
+    for (Eigen::Index d = 0; d < x->cols(); ++d) {
+      const double xk = (*x)(k, d);
+      double acc = 0.0;
+      if (len > 1) acc = col.tail(len - 1).dot(x->col(d).segment(k + 1, len - 1));
+      y->col(d).segment(k, len) += xk * col;
+      (*y)(k, d) += acc;
+    }
+  }
+}
+
+/// y = S x for each column, S symmetric with its lower triangle in s.topLeftCorner(n, n):
+/// matrix-vector products (Eigen's selfadjoint matrix-matrix path packs for a few columns).
+template <typename X, typename Y>
+void lower_symmetric_product(const Eigen::MatrixXd& s, const X& x, Y&& y, bool subtract) {
+  const Eigen::Index n = x.rows();
+  const auto sym = s.topLeftCorner(n, n).template selfadjointView<Eigen::Lower>();
+  for (Eigen::Index d = 0; d < x.cols(); ++d) {
+    if (subtract) {
+      y.col(d).noalias() -= sym * x.col(d);
+    } else {
+      y.col(d).noalias() += sym * x.col(d);
+    }
+  }
+}
+
+/// Column j of the symmetric matrix stored as in symmetric_swap_with_last.
+void symmetric_column(const Eigen::MatrixXd& s, int j, int n, Eigen::VectorXd& out) {
+  out.resize(n);
+  out.head(j) = s.row(j).head(j).transpose();
+  out.tail(n - j) = s.col(j).segment(j, n - j);
+}
+
+}  // namespace
 
 namespace {
 
@@ -35,14 +125,14 @@ std::shared_ptr<const RbfInterpolator> make_interpolator(const RbfPoints& points
                                                          const Eigen::VectorXd& neutral) {
   RbfSolution s;
   s.coefficients = z.topRows(basis.size());
-  s.weights = z.bottomRows(points.size());
+  s.weights = z.middleRows(basis.size(), points.size());
   s.diagnostics = diagnostics;
   return std::make_shared<const RbfInterpolator>(points, kernel, basis, s, neutral);
 }
 
 }  // namespace
 
-/// Full solve; the returned state has an empty inverse when keyframes had to be merged (the
+/// Full solve; the returned state is not `exact` when keyframes had to be merged (the
 /// incremental path keeps one centre per keyframe).
 std::unique_ptr<KeyframeSet::State> KeyframeSet::solve_full(const std::vector<Keyframe>& keyframes,
                                                             int dimension, const RbfKernel& kernel,
@@ -52,11 +142,22 @@ std::unique_ptr<KeyframeSet::State> KeyframeSet::solve_full(const std::vector<Ke
   st->version = version;
   st->points = merge_keyframes(keyframes, dimension);
   st->basis = select_polynomial_basis(st->points);
-  const bool exact = st->points.merged() == 0;
-  const RbfSolution s = solve_rbf(st->points, kernel, st->basis, exact ? &st->inverse : nullptr);
-  st->z.resize(st->r() + st->m(), dimension);
-  st->z.topRows(st->r()) = s.coefficients;
-  st->z.bottomRows(st->m()) = s.weights;
+  st->exact = st->points.merged() == 0;
+  Eigen::MatrixXd inv, a;
+  const RbfSolution s = solve_rbf(st->points, kernel, st->basis, st->exact ? &inv : nullptr,
+                                  st->exact ? &a : nullptr);
+  const int r = st->r(), m = st->m(), n = r + m;
+  const int cap = st->exact ? n + spare_slots(n) : n;
+  st->z.setZero(cap, dimension);
+  st->z.topRows(r) = s.coefficients;
+  st->z.middleRows(r, m) = s.weights;
+  if (st->exact) {
+    st->inverse.setZero(cap, cap);
+    st->inverse.topLeftCorner(n, n).triangularView<Eigen::Lower>() = inv;
+    st->saddle.setZero(cap, cap);
+    st->saddle.block(r, r, m, m).triangularView<Eigen::Lower>() = a;
+    st->saddle.block(r, 0, m, r) = polynomial_matrix(st->points, st->basis);
+  }
   st->diagnostics = s.diagnostics;
   st->centre_of_keyframe = st->points.point_of_keyframe;
   st->keyframe_of_centre.assign(static_cast<size_t>(st->m()), -1);
@@ -88,7 +189,7 @@ KeyframeSet::KeyframeSet(int dimension, const InterpolationSettings& settings, d
   neutral_ = RbfInterpolator({}, dimension, settings, fps, std::move(neutral)).neutral();
   auto st = solve_full(keyframes_, dimension_, kernel_, neutral_, 0);
   publish(st->interpolator, 0);
-  if (!st->inverse.size() && st->m() > 0) st.reset();
+  if (!st->exact) st.reset();
   state_ = std::move(st);
   if (options_.async) {
     worker_ = std::make_unique<Worker>();
@@ -106,7 +207,7 @@ KeyframeSet::KeyframeSet(int dimension, const InterpolationSettings& settings, d
         auto st = solve_full(job.second, dimension_, kernel_, neutral_, job.first);
         publish(st->interpolator, job.first);
         std::lock_guard lock(pub_mu_);
-        if (st->inverse.size() || st->m() == 0) ready_ = std::move(st);
+        if (st->exact) ready_ = std::move(st);
       }
     });
   }
@@ -167,32 +268,40 @@ std::optional<std::size_t> KeyframeSet::find_coincident(const Direction& d, std:
   return std::nullopt;
 }
 
+void KeyframeSet::flush_pending() {
+  State& st = *state_;
+  if (!st.pending_u.size()) return;
+  lower_update_and_product(st.inverse, st.pending_u, st.pending_alpha, st.n(), nullptr, nullptr);
+  st.pending_u.resize(0);
+}
+
 bool KeyframeSet::try_add_centre(std::size_t ki) {
   State& st = *state_;
+  flush_pending();
   const Keyframe& kf = keyframes_[ki];
   const int r = st.r(), m = st.m(), n = r + m;
   const Eigen::Vector3d dir = to_unit(kf.direction);
   const double t = static_cast<double>(kf.frame - st.points.frame_origin);
+  // The new row of M: b = [P row; A row], and M_nn = phi(0) = 0.
   Eigen::VectorXd b(n);
   st.basis.row(dir, t, b.data());
-  Eigen::ArrayXd krow(m);
-  kernel_row(st.points, kernel_, dir, t, krow);
-  b.tail(m) = krow.matrix();
-  const Eigen::VectorXd u = st.inverse * b;
-  const double s = -b.dot(u);  // Schur complement: phi(0) - b^T M^-1 b, phi(0) = 0
+  kernel_row(st.points, kernel_, dir, t, b.tail(m).array());
+  const Eigen::VectorXd u =
+      st.inverse.topLeftCorner(n, n).selfadjointView<Eigen::Lower>() * b;
+  const double s = -b.dot(u);  // Schur complement: 0 - b^T M^-1 b
   if (!(std::abs(s) > 1e-13 * b.norm() * u.norm())) return false;
+  if (st.reserve(n + 1)) ++stats_.storage_growths;
   const Eigen::RowVectorXd v = Eigen::Map<const Eigen::RowVectorXd>(kf.params.data(), dimension_);
-  const Eigen::RowVectorXd bz = b.transpose() * st.z;
-  Eigen::MatrixXd inv(n + 1, n + 1);
-  inv.topLeftCorner(n, n) = st.inverse + u * (u.transpose() / s);
-  inv.col(n).head(n) = -u / s;
-  inv.row(n).head(n) = -u.transpose() / s;
-  inv(n, n) = 1.0 / s;
-  st.inverse.swap(inv);
-  Eigen::MatrixXd z(n + 1, dimension_);
-  z.topRows(n) = st.z + u * ((bz - v) / s);
-  z.row(n) = (v - bz) / s;
-  st.z.swap(z);
+  const Eigen::RowVectorXd bz = b.transpose() * st.z.topRows(n);
+  // Bordered inverse: [M^-1 + u u^T / s, -u / s; -u^T / s, 1 / s], lower triangle in place.
+  st.pending_u = u;  // the top-left rank-one term: applied by finish_incremental
+  st.pending_alpha = 1.0 / s;
+  st.inverse.row(n).head(n) = -u.transpose() / s;
+  st.inverse(n, n) = 1.0 / s;
+  st.saddle.row(n).head(n) = b.transpose();
+  st.saddle(n, n) = 0.0;
+  st.z.topRows(n) += u * ((bz - v) / s);
+  st.z.row(n) = (v - bz) / s;
   st.points.append(dir, kf.frame, v);
   st.keyframe_of_centre.push_back(static_cast<int>(ki));
   st.centre_of_keyframe[ki] = m;
@@ -201,21 +310,20 @@ bool KeyframeSet::try_add_centre(std::size_t ki) {
 
 bool KeyframeSet::try_remove_centre(std::size_t ki) {
   State& st = *state_;
-  const int r = st.r(), m = st.m();
+  flush_pending();
+  const int r = st.r(), m = st.m(), n = r + m;
   const int c = st.centre_of_keyframe[ki];
   if (m <= 1 || c < 0) return false;
-  const int j = r + c, last = r + m - 1;
+  const int j = r + c, last = n - 1;
   if (!(std::abs(st.inverse(j, j)) > 0.0)) return false;
   // Move the centre to the last slot, then take the Schur complement of that slot.
-  st.inverse.row(j).swap(st.inverse.row(last));
-  st.inverse.col(j).swap(st.inverse.col(last));
+  symmetric_swap_with_last(st.inverse, j, n);
+  symmetric_swap_with_last(st.saddle, j, n);
   st.z.row(j).swap(st.z.row(last));
   const double beta = st.inverse(last, last);
-  const Eigen::VectorXd col = st.inverse.col(last).head(last);
-  Eigen::MatrixXd inv = st.inverse.topLeftCorner(last, last) - col * (col.transpose() / beta);
-  st.inverse.swap(inv);
-  Eigen::MatrixXd z = st.z.topRows(last) - col * (st.z.row(last) / beta);
-  st.z.swap(z);
+  const Eigen::VectorXd col = st.inverse.row(last).head(last).transpose();
+  lower_update_and_product(st.inverse, col, -1.0 / beta, last, nullptr, nullptr);
+  st.z.topRows(last) -= col * (st.z.row(last) / beta);
   const int moved = st.keyframe_of_centre[static_cast<size_t>(m - 1)];
   st.points.swap_remove(c);
   st.keyframe_of_centre[static_cast<size_t>(c)] = moved;
@@ -229,38 +337,58 @@ bool KeyframeSet::finish_incremental(int checked_centre) {
   State& st = *state_;
   // The active polynomial terms must be those a full solve would choose.
   if (!select_polynomial_basis(st.points).same_columns(st.basis)) return false;
-  const int m = st.m(), r = st.r();
-  {
-    // One refinement step with the full residual (O(N^2) kernel evaluations): the explicit
-    // inverse carries ~cond * eps error after each update, and this keeps it from accumulating.
-    const Eigen::MatrixXd p = polynomial_matrix(st.points, st.basis);
-    Eigen::MatrixXd res(r + m, dimension_);
-    res.topRows(r) = -(p.transpose() * st.z.bottomRows(m));
-    Eigen::ArrayXd krow(m);
-    for (int i = 0; i < m; ++i) {
-      kernel_row(st.points, kernel_, st.points.unit(i), st.points.t[i], krow);
-      res.row(r + i) = st.points.values.row(i) - krow.matrix().transpose() * st.z.bottomRows(m) -
-                       p.row(i) * st.z.topRows(r);
-    }
-    st.z += st.inverse * res;
-  }
-  std::vector<int> rows;
-  if (checked_centre >= 0) rows.push_back(checked_centre);
-  const int samples = std::min(m, 32);
-  for (int i = 0; i < samples; ++i) rows.push_back(static_cast<int>((static_cast<long>(i) * m) / samples));
-  const Eigen::MatrixXd w = st.z.bottomRows(m), c = st.z.topRows(st.r());
-  const double res = rbf_residual(st.points, kernel_, st.basis, w, c, rows);
+  const int m = st.m(), r = st.r(), n = r + m;
   const double scale = st.points.values.cwiseAbs().maxCoeff();
-  if (!(res <= options_.residual_tolerance * std::max(scale, 1e-300))) return false;
+  // The full residual [0; F] - M z from the cached M: one symmetric matrix product, no kernel
+  // evaluations. The bordered updates carry ~cond * eps error; a refinement step with it keeps
+  // the error from accumulating, and is skipped when the residual already meets the full solve's
+  // own refinement threshold.
+  Eigen::MatrixXd res(n, dimension_);
+  res.topRows(r).setZero();
+  res.bottomRows(m) = st.points.values;
+  lower_symmetric_product(st.saddle, st.z.topRows(n), res, true);
+  const double full_res = res.cwiseAbs().maxCoeff();
+  bool refined = false;
+  if (options_.always_refine || full_res > kRefineTolerance * scale) {
+    Eigen::MatrixXd dz = Eigen::MatrixXd::Zero(n, dimension_);
+    lower_update_and_product(st.inverse, st.pending_u, st.pending_alpha, n, &res, &dz);
+    st.pending_u.resize(0);
+    st.z.topRows(n) += dz;
+    refined = true;
+    ++stats_.refinements;
+  } else {
+    flush_pending();
+  }
+  double check = full_res;
+  if (refined || options_.always_refine) {
+    // Independent check, kernel rows computed afresh: the new centre and 32 sampled ones.
+    std::vector<int> rows;
+    if (checked_centre >= 0) rows.push_back(checked_centre);
+    const int samples = std::min(m, 32);
+    for (int i = 0; i < samples; ++i)
+      rows.push_back(static_cast<int>((static_cast<long>(i) * m) / samples));
+    const Eigen::MatrixXd w = st.weights(), c = st.coefficients();
+    check = rbf_residual(st.points, kernel_, st.basis, w, c, rows);
+  }
+  if (!(check <= options_.residual_tolerance * std::max(scale, 1e-300))) return false;
+  ++stats_.incremental_edits;
   st.version = version_;
   st.diagnostics.keyframes = st.diagnostics.centres = m;
   st.diagnostics.merged = 0;
-  st.diagnostics.max_residual = res;
-  st.diagnostics.relative_residual = scale > 0 ? res / scale : res;
+  st.diagnostics.active_terms = r;
+  st.diagnostics.refined = refined;
+  st.diagnostics.max_residual = check;
+  st.diagnostics.relative_residual = scale > 0 ? check / scale : check;
   st.interpolator =
       make_interpolator(st.points, kernel_, st.basis, st.z, st.diagnostics, neutral_);
   publish(st.interpolator, version_);
   return true;
+}
+
+KeyframeSetStats KeyframeSet::stats() const {
+  KeyframeSetStats s = stats_;
+  s.capacity = state_ ? state_->capacity() : 0;
+  return s;
 }
 
 void KeyframeSet::full_solve() {
@@ -268,7 +396,7 @@ void KeyframeSet::full_solve() {
   if (!worker_ || static_cast<int>(keyframes_.size()) <= options_.inline_full_solve_max) {
     auto st = solve_full(keyframes_, dimension_, kernel_, neutral_, version_);
     publish(st->interpolator, version_);
-    if (st->inverse.size() || st->m() == 0) state_ = std::move(st);
+    if (st->exact) state_ = std::move(st);
     return;
   }
   {
@@ -365,7 +493,10 @@ void KeyframeSet::set_params(std::size_t index, std::vector<double> params) {
     const Eigen::RowVectorXd v =
         Eigen::Map<const Eigen::RowVectorXd>(keyframes_[index].params.data(), dimension_);
     // Only the right-hand side changes: z += M^-1 e_c (v - v_old).
-    st.z += st.inverse.col(st.r() + c) * (v - st.points.values.row(c));
+    flush_pending();
+    Eigen::VectorXd col;
+    symmetric_column(st.inverse, st.r() + c, st.n(), col);
+    st.z.topRows(st.n()) += col * (v - st.points.values.row(c));
     st.points.values.row(c) = v;
     ok = finish_incremental(c);
   }

@@ -2,8 +2,10 @@
 /// @brief One effect's editable keyframes with an always-available RBF solution.
 ///
 /// Edits update the solution without a full O(N^3) solve where they can: a bordered (rank-one)
-/// update of the explicit inverse of the saddle-point system, O(N^2) per add/remove/move. After
-/// each update the residual is checked at the new centre and a sample of others; a full re-solve
+/// update of the explicit inverse of the saddle-point system, O(N^2) per add/remove/move, in
+/// place in preallocated storage. The saddle matrix is cached, so the residual after each update
+/// is one matrix product; a refinement step runs when it is above the full solve's threshold, and
+/// the result is checked (fully, or at the new centre and a sample of others); a full re-solve
 /// follows when it grew beyond tolerance, when the active polynomial terms change, or when
 /// coincident keyframes need merging. Full re-solves of large sets run on a worker thread and are
 /// swapped in when done: readers (the render thread) always get a complete solution via
@@ -36,6 +38,18 @@ struct KeyframeSetOptions {
   //! explicit inverse carry ~cond * eps error (2e-9 at N = 1000 random keyframes, cond 3e7).
   double residual_tolerance = 1e-8;
   int inline_full_solve_max = 48;  //!< centres up to which a full solve is cheap enough inline
+  //! false: an incremental update runs its refinement step only when the full residual (from
+  //! the cached saddle matrix, O(N^2)) exceeds kRefineTolerance of the largest value, the full
+  //! solve's own threshold. true: always (tests compare the two).
+  bool always_refine = false;
+};
+
+/// Counters of the incremental path (editor thread), for tests and benchmarks.
+struct KeyframeSetStats {
+  std::uint64_t incremental_edits = 0;  //!< edits solved by an O(N^2) update
+  std::uint64_t refinements = 0;        //!< of those, the ones that ran a refinement step
+  std::uint64_t storage_growths = 0;    //!< reallocations of the incremental matrices by edits
+  int capacity = 0;  //!< slots (terms + centres) the current matrices hold without reallocating
 };
 
 class KeyframeSet {
@@ -66,6 +80,8 @@ class KeyframeSet {
   int dimension() const { return dimension_; }
   /// Number of edits so far (0 after construction).
   std::uint64_t version() const { return version_; }
+  /// Incremental-path counters (editor thread).
+  KeyframeSetStats stats() const;
 
   /// The latest complete solution (any thread).
   std::shared_ptr<const RbfInterpolator> solution() const;
@@ -86,6 +102,7 @@ class KeyframeSet {
   bool try_add_centre(std::size_t keyframe_index);
   bool try_remove_centre(std::size_t keyframe_index);
   bool finish_incremental(int checked_centre);
+  void flush_pending();
   void full_solve();
   void publish(std::shared_ptr<const RbfInterpolator> s, std::uint64_t version) const;
 
@@ -98,6 +115,7 @@ class KeyframeSet {
   std::vector<Keyframe> keyframes_;
   std::uint64_t version_ = 0;
   std::unique_ptr<State> state_;  // null while no valid incremental state
+  KeyframeSetStats stats_;
 
   mutable std::mutex pub_mu_;
   mutable std::condition_variable pub_cv_;

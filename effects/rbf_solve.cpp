@@ -171,7 +171,8 @@ double rbf_residual(const RbfPoints& points, const RbfKernel& kernel, const Poly
 }
 
 RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
-                      const PolynomialBasis& basis, Eigen::MatrixXd* inverse) {
+                      const PolynomialBasis& basis, Eigen::MatrixXd* inverse,
+                      Eigen::MatrixXd* kernel_out) {
   RbfSolution s;
   const int m = points.size(), d = points.dimension(), r = basis.size();
   s.diagnostics.keyframes = static_cast<int>(points.point_of_keyframe.size());
@@ -182,9 +183,10 @@ RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
   s.coefficients.setZero(r, d);
   if (m == 0) {
     if (inverse) inverse->resize(0, 0);
+    if (kernel_out) kernel_out->resize(0, 0);
     return s;
   }
-  const Eigen::MatrixXd a = kernel_matrix(points, kernel);
+  Eigen::MatrixXd a = kernel_matrix(points, kernel);
   const Eigen::MatrixXd p = polynomial_matrix(points, basis);
   const SaddleSolver solver(a, p, kernel.order_two());
   s.diagnostics.method = solver.method();
@@ -242,6 +244,7 @@ RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
     inverse->topRightCorner(r, m) = c1;
     inverse->bottomRightCorner(m, m) = w1;
   }
+  if (kernel_out) *kernel_out = std::move(a);
   return s;
 }
 

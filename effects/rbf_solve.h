@@ -61,8 +61,10 @@ Eigen::MatrixXd projected_kernel(const Eigen::MatrixXd& a, const Eigen::MatrixXd
 /// Solves for weights and coefficients; never returns non-finite numbers for finite input.
 /// With `inverse` set, also writes the explicit inverse of the saddle-point matrix, ordered
 /// [polynomial rows (r); centres (m)] (used by KeyframeSet's bordered updates; O(m^3) more).
+/// With `kernel_out` set, also hands over the kernel matrix A the solve assembled (m x m).
 RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
-                      const PolynomialBasis& basis, Eigen::MatrixXd* inverse = nullptr);
+                      const PolynomialBasis& basis, Eigen::MatrixXd* inverse = nullptr,
+                      Eigen::MatrixXd* kernel_out = nullptr);
 
 /// Max |A w + P c - F| over the rows listed in `rows` (all when empty), computing rows of A on
 /// the fly, and max |P^T w|: the larger of the two.

@@ -66,6 +66,11 @@ void BM_RbfIncrementalAdd(benchmark::State& state) {
     state.ResumeTiming();
   }
   state.counters["full_solves"] = full;  // adds that fell back to a full solve (expect 0)
+  // Edits (adds and the untimed removes) that ran a refinement step, per edit.
+  const KeyframeSetStats st = set.stats();
+  state.counters["refined"] =
+      st.incremental_edits ? static_cast<double>(st.refinements) / st.incremental_edits : 0.0;
+  state.counters["growths"] = static_cast<double>(st.storage_growths);
 }
 BENCHMARK(BM_RbfIncrementalAdd)->Unit(benchmark::kMillisecond);
 

@@ -58,6 +58,66 @@ TEST(KeyframeSet, IncrementalEditsMatchAFullSolve) {
   EXPECT_GT(incremental, edits / 3) << "adds and moves should mostly avoid a full solve";
 }
 
+TEST(KeyframeSet, SkippingTheRefinementGivesTheSameResultAsAlwaysRefining) {
+  std::mt19937_64 rng(21);
+  std::vector<Keyframe> initial;
+  // 20 keyframes: some updates already meet the refinement threshold, some do not.
+  for (int i = 0; i < 20; ++i) initial.push_back(test::random_keyframe(rng, kDim, 0, 200));
+  KeyframeSetOptions lazy, eager;
+  lazy.async = eager.async = false;
+  eager.always_refine = true;
+  KeyframeSet a(kDim, {}, 30.0, initial, lazy), b(kDim, {}, 30.0, initial, eager);
+  std::mt19937_64 edits(22);
+  for (int step = 0; step < 40; ++step) {
+    if (step % 2 == 1) {
+      const size_t i = static_cast<size_t>(step) % a.keyframes().size();
+      a.remove(i);
+      b.remove(i);
+    } else {
+      const Keyframe k = test::random_keyframe(edits, kDim, 0, 200);
+      a.add(k);
+      b.add(k);
+    }
+    std::mt19937_64 views(static_cast<std::uint64_t>(step));
+    for (int v = 0; v < 20; ++v) {
+      const Direction d = test::random_direction(views);
+      const std::int64_t f = static_cast<std::int64_t>(views() % 201);
+      ASSERT_LE((a.solution()->evaluate(d, f) - b.solution()->evaluate(d, f)).cwiseAbs().maxCoeff(),
+                1e-9)
+          << "after edit " << step;
+    }
+  }
+  ASSERT_LE(max_diff_to_full_solve(a, rng), 1e-9);
+  const KeyframeSetStats sa = a.stats(), sb = b.stats();
+  EXPECT_EQ(sb.refinements, sb.incremental_edits) << "always_refine refines every update";
+  EXPECT_GT(sa.incremental_edits, 30u);
+  EXPECT_GT(sa.refinements, 0u) << "and some should not";
+  EXPECT_LT(sa.refinements, sa.incremental_edits) << "some updates should meet the threshold";
+}
+
+TEST(KeyframeSet, EditsReuseTheIncrementalStorage) {
+  std::mt19937_64 rng(23);
+  std::vector<Keyframe> initial;
+  for (int i = 0; i < 100; ++i) initial.push_back(test::random_keyframe(rng, kDim, 0, 200));
+  KeyframeSetOptions opt;
+  opt.async = false;
+  KeyframeSet set(kDim, {}, 30.0, initial, opt);
+  const int capacity = set.stats().capacity;
+  ASSERT_GT(capacity, 100 + 5) << "spare slots after a full solve";
+  for (int i = 0; i < 200; ++i) {  // add/remove pairs: the size stays at 100-101
+    set.add(test::random_keyframe(rng, kDim, 0, 200));
+    set.remove(static_cast<size_t>(i) % set.keyframes().size());
+  }
+  EXPECT_EQ(set.stats().storage_growths, 0u);
+  EXPECT_EQ(set.stats().capacity, capacity);
+  EXPECT_EQ(set.stats().incremental_edits, 400u);
+  // Growing past the spare slots reallocates (by half), and results stay exact.
+  for (int i = 0; i < capacity - 100; ++i) set.add(test::random_keyframe(rng, kDim, 0, 200));
+  EXPECT_GE(set.stats().storage_growths, 1u);
+  EXPECT_GT(set.stats().capacity, capacity);
+  EXPECT_LE(max_diff_to_full_solve(set, rng), 1e-9);
+}
+
 TEST(KeyframeSet, AddingOnTopOfAKeyframeReplacesIt) {
   KeyframeSetOptions opt;
   opt.async = false;
