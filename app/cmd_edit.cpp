@@ -1,50 +1,163 @@
 /// @file
-/// @brief `vdfx edit [VIDEO] [--sidecar F] [--hmd P] [--input ...] [--record REC]`: the in-headset
-/// editor's window. The loop is app/frame_loop.h; the per-frame logic is a FrameClient. Until the
-/// editor's client is plugged in (make_edit_client), it plays the sidecar like `vdfx play`.
+/// @brief `vdfx edit [VIDEO] [--sidecar F] [--recover yes|no] [loop options]`: the in-headset
+/// editor in the simulated headset's window (docs/editor.md, "In the window"). The loop is
+/// app/frame_loop.h; the per-frame logic is EditorClient around app/editor.h's Editor.
+#include <unistd.h>
+
 #include <filesystem>
 #include <iostream>
+#include <string>
 
 #include "app/cli_util.h"
 #include "app/commands.h"
+#include "app/editor_client.h"
 #include "app/frame_loop_cli.h"
-#include "app/player.h"
+#include "io/input_error.h"
+#include "io/recording.h"
 #include "io/sidecar.h"
 
 namespace vdfx::app {
 namespace {
 
-std::filesystem::path demo_sidecar() {
-  return std::filesystem::path(VDFX_SOURCE_DIR) / "app" / "demo" / "sunrise.vdfx.json";
-}
+namespace fs = std::filesystem;
+
+fs::path demo_sidecar() { return fs::path(VDFX_SOURCE_DIR) / "app" / "demo" / "interior.vdfx.json"; }
 
 // The sidecar's video path, relative to the sidecar's folder when relative.
-std::filesystem::path sidecar_video(const std::filesystem::path& sidecar_path,
-                                    const io::Sidecar& s) {
-  std::filesystem::path p = s.video.path;
+fs::path sidecar_video(const fs::path& sidecar_path, const io::Sidecar& s) {
+  fs::path p = s.video.path;
   return p.is_absolute() ? p : sidecar_path.parent_path() / p;
+}
+
+// The desktop layout puts both panels in front of the head (the sim's mouse reaches them); sim
+// recordings were made with it, so their replays need it too.
+PanelLayout layout_for(const std::string& input) {
+  if (input == "sim") return PanelLayout::Desktop;
+  const std::string prefix = "replay:";
+  if (input.rfind(prefix, 0) == 0)
+    return io::read_recording(input.substr(prefix.size())).header.hmd == "sim" ? PanelLayout::Desktop
+                                                                                : PanelLayout::Hands;
+  return PanelLayout::Hands;
+}
+
+// Offers an unclean exit's recovery copy. Returns the file to load instead of the sidecar.
+std::optional<fs::path> handle_recovery(const fs::path& sidecar_path, const std::string& recover) {
+  const auto offer = find_recovery(sidecar_path);
+  if (!offer) return std::nullopt;
+  std::cerr << "vdfx edit: " << offer->message << "\n";
+  bool yes = recover == "yes";
+  if (recover == "ask") {
+    if (isatty(STDIN_FILENO)) {
+      std::cerr << "vdfx edit: load the recovery copy " << offer->path.string() << "? [y/N] " << std::flush;
+      std::string answer;
+      std::getline(std::cin, answer);
+      yes = !answer.empty() && (answer[0] == 'y' || answer[0] == 'Y');
+    } else {
+      std::cerr << "vdfx edit: not interactive: not recovered (--recover yes loads it)\n";
+    }
+  }
+  if (yes) {
+    std::cerr << "vdfx edit: recovered " << offer->path.string() << "\n";
+    return offer->path;
+  }
+  // Not taken: this session's autosave would overwrite it and its clean exit remove it, so it is
+  // set aside, never deleted.
+  fs::path kept = offer->path;
+  kept += ".declined";
+  std::error_code ec;
+  fs::rename(offer->path, kept, ec);
+  if (ec) {
+    std::cerr << "vdfx edit: cannot set the recovery copy aside (" << ec.message() << ")\n";
+  } else {
+    std::cerr << "vdfx edit: recovery copy set aside as " << kept.string() << "; to recover it later: mv "
+              << kept.string() << " " << offer->path.string() << " and run with --recover yes\n";
+  }
+  return std::nullopt;
+}
+
+std::string edit_help_footer() {
+  return "\nEditor controls (OpenXR actions):\n" + EditorClient::controls_text() +
+         "Window keys:\n" + frame_loop_keys_text() +
+         "Simulated controllers (--input sim):\n" + xr::sim_bindings_text(xr::SimConfig{}) +
+         "\nNo VIDEO and no --sidecar: the bundled demo (app/demo/interior.vdfx.json), edited without "
+         "saving (copy it and pass --sidecar COPY to keep edits). VIDEO without --sidecar edits "
+         "VIDEO's NAME.vdfx.json next to it; a --sidecar that does not exist yet is created for VIDEO. "
+         "Every change is saved at once (plus a NAME.vdfx.json.autosave recovery copy, removed on a "
+         "clean exit; one left by a crash is offered at the next start: --recover).\n"
+         "With --input replay:REC the loop takes its times from the recording and stops at its end.\n";
 }
 
 }  // namespace
 
 int cmd_edit(const Args& args) {
-  CLI::App cli("author view-dependent effects in the simulated headset (no VIDEO: the demo)",
-               "vdfx edit");
-  std::string video, sidecar_path;
+  CLI::App cli("author view-dependent effects in the simulated headset (no VIDEO: the demo)", "vdfx edit");
+  std::string video, sidecar_arg, recover = "ask";
   LoopCli loop;
   cli.add_option("VIDEO", video, "video file or still image; default: the sidecar's video");
-  cli.add_option("--sidecar", sidecar_path, "effects file (.vdfx.json); default: the bundled demo");
+  cli.add_option("--sidecar", sidecar_arg,
+                 "effects file (.vdfx.json) to edit, created when missing; default: VIDEO's "
+                 "NAME.vdfx.json, or the bundled demo without VIDEO");
+  cli.add_option("--recover", recover,
+                 "an autosave left by a crash: yes loads it, no sets it aside (NAME.autosave.declined); "
+                 "default: ask on a terminal, else no")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"ask", "yes", "no"}));
   add_loop_options(cli, loop);
-  cli.footer("\nUntil the editor is wired in, this plays the sidecar (keys as `vdfx play`).\n");
+  cli.footer(edit_help_footer());
   if (auto code = parse_cli(cli, args)) return *code;
 
-  const std::filesystem::path sc = sidecar_path.empty() ? demo_sidecar() : std::filesystem::path(sidecar_path);
-  const io::Sidecar sidecar = io::read_sidecar(sc);
-  const std::filesystem::path v = video.empty() ? sidecar_video(sc, sidecar) : std::filesystem::path(video);
+  const bool demo = video.empty() && sidecar_arg.empty();
+  fs::path sidecar_path;
+  if (demo) {
+    sidecar_path = demo_sidecar();
+  } else if (!sidecar_arg.empty()) {
+    sidecar_path = sidecar_arg;
+  } else {
+    sidecar_path = fs::path(video).parent_path() / (fs::path(video).stem().string() + ".vdfx.json");
+  }
+  const bool exists = fs::exists(sidecar_path);
+  if (!exists && video.empty())
+    throw io::InputError(sidecar_path.string() + ": no such sidecar (give VIDEO to start a new one)");
+
+  std::optional<fs::path> load_from;
+  if (exists && !demo) load_from = handle_recovery(sidecar_path, recover);
+  io::Sidecar sidecar;
+  if (exists) sidecar = io::read_sidecar(load_from ? *load_from : sidecar_path);
+  const fs::path v = video.empty() ? sidecar_video(sidecar_path, sidecar) : fs::path(video);
   LoopSetup setup = prepare_loop(loop, v, true);
-  Player client(sidecar, setup.video->properties());
+  if (!exists) {
+    const io::VideoProperties& p = setup.video->properties();
+    sidecar.video = {fs::absolute(v).string(), p.fps.value(), std::max<std::int64_t>(1, p.frames), p.width,
+                     p.height};
+    std::cerr << "vdfx edit: new sidecar " << sidecar_path.string() << " for " << v.string() << "\n";
+  }
+  if (demo)
+    std::cerr << "vdfx edit: the bundled demo, not saved (copy " << sidecar_path.string()
+              << " and pass --sidecar COPY to keep edits)\n";
+
+  EditorOptions eo;
+  eo.layout = layout_for(loop.input);
+  if (!demo) eo.autosave_path = sidecar_path;
+  DocumentOptions dopts;
+  // Replays are exact: every solve finishes before the frame that shows it.
+  if (loop.input.rfind("replay:", 0) == 0) dopts.keyframes.async = false;
+  Editor editor(std::move(sidecar), dopts, eo);
+  EditorClient client(editor, create_gl_panel_textures());
   FrameLoop frame_loop(setup.options, *setup.input, *setup.video, client);
-  report_loop("vdfx edit", frame_loop.run());
+  FrameLoopResult result;
+  try {
+    result = frame_loop.run();
+  } catch (...) {
+    client.release_textures();
+    throw;
+  }
+  client.release_textures();
+  report_loop("vdfx edit", result);
+  if (!editor.finish()) {
+    std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
+    return kExitBadInput;  // the sidecar could not be written (e.g. a read-only folder)
+  }
+  if (!demo) std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
   return kExitOk;
 }
 

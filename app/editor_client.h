@@ -1,0 +1,88 @@
+/// @file
+/// @brief The in-headset editor (app/editor.h) as a FrameClient of the windowed loop: `vdfx edit`.
+///
+/// Per frame: update() steps the Editor with the frame's input at the display time and hands its
+/// playhead to the loop; params() answers with the editor's interpolation, the trigger's live
+/// preview included; quads() turns the editor's panels into quad layers in LOCAL space (the
+/// panels' world is the input's LOCAL space; both face their local +z, like OpenXR quads).
+///
+/// Panel textures: a panel's CPU image (premultiplied RGBA8, row 0 at the top) is uploaded only
+/// when the panel re-rendered, and then only its damaged rectangles. The compositor blends quads
+/// with straight alpha (GL_SRC_ALPHA, 1 - src alpha) and samples row 0 at the quad's bottom, so
+/// the client keeps a straight-alpha, bottom-up copy of each panel and uploads from it.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "app/editor.h"
+#include "app/frame_client.h"
+
+namespace vdfx::app {
+
+/// Where panel images go: GL textures in the window (create_gl_panel_textures), a recorder in
+/// tests. Images are straight-alpha RGBA8, bottom row first (GL's texture orientation).
+class PanelTextures {
+ public:
+  virtual ~PanelTextures() = default;
+  /// Uploads `regions` of `image` (its whole size when empty, which also (re)allocates) to the
+  /// texture of `slot`; returns the texture's name (non-zero).
+  virtual unsigned upload(std::size_t slot, const cv::Mat& image, const std::vector<cv::Rect>& regions) = 0;
+  /// Frees the textures (needs the context that made them current; the destructor frees nothing,
+  /// since the window's context may already be gone by then).
+  virtual void release() {}
+};
+
+/// GL textures with mipmaps (panels are seen much smaller than their pixel size). Needs a current
+/// GL context at upload and release; throws std::runtime_error in a build without OpenGL.
+std::unique_ptr<PanelTextures> create_gl_panel_textures();
+
+/// Premultiplied RGBA8 (row 0 at the top) -> straight alpha, rows reversed, for the rectangle `r`
+/// of `premultiplied` into `out` (same size, allocated by the caller).
+void unpremultiply_flipped(const cv::Mat& premultiplied, const cv::Rect& r, cv::Mat& out);
+
+class EditorClient : public FrameClient {
+ public:
+  /// The editor stays owned by the caller; textures may be null (no quads: tests of the rest).
+  EditorClient(Editor& editor, std::unique_ptr<PanelTextures> textures);
+
+  void update(const xr::InputState& input, std::int64_t display_time_ns, FrameInfo& info) override;
+  effects::StackParams params(const effects::Direction& direction, std::int64_t video_frame) override;
+  unsigned active_effects() const override { return active_; }
+  std::uint64_t params_revision() const override { return revision_; }
+  std::vector<xr::QuadLayer> quads() override;
+  bool unaltered() const override { return editor_.unaltered(); }
+  std::string status_line() const override;
+
+  Editor& editor() { return editor_; }
+  /// Panel uploads so far (whole or partial), and the pixels they carried.
+  int uploads() const { return uploads_; }
+  std::int64_t uploaded_pixels() const { return uploaded_pixels_; }
+  /// Frees the GL textures while the context is still current (see PanelTextures::release).
+  void release_textures();
+
+  /// The editor's controls, as text for --help and docs/editor.md.
+  static std::string controls_text();
+
+ private:
+  struct Slot {
+    const ui::Panel* panel = nullptr;
+    int render_count = -1;  //!< the panel's render_count() at the last upload
+    unsigned texture = 0;
+    cv::Mat straight;       //!< straight alpha, bottom-up
+  };
+  Editor& editor_;
+  std::unique_ptr<PanelTextures> textures_;
+  std::vector<Slot> slots_;
+  unsigned active_ = 0;
+  std::uint64_t revision_ = 0;
+  std::vector<double> revision_key_;
+  int uploads_ = 0;
+  std::int64_t uploaded_pixels_ = 0;
+};
+
+}  // namespace vdfx::app

@@ -1,0 +1,148 @@
+/// @file
+/// @brief `vdfx edit` end to end under Xvfb: a recorded editing session replayed in the window
+/// leaves the same keyframes as `vdfx replay`, and the mirror shows the panels over the effects
+/// (golden screenshot, single-eye mirror at a small size).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+
+#include "command_test_util.h"
+#include "io/sidecar.h"
+
+namespace vdfx::app {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run_vdfx;
+
+const std::string kSrc = VDFX_SOURCE_DIR;
+const std::string kSunrise = "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
+const std::string kRecording = kSrc + "/recordings/editor_place_exposure.vdrec.jsonl";
+// Small and fast: the left eye at 1/4 of 1440x1600, shown as it is (no lens).
+const std::string kMirror = " --hidden --scale 0.25 --window 360x400 --mirror eye";
+
+// Golden comparison in the style of tests/ui/golden.h (BGR here): max and mean tolerances on
+// 8-bit values, actual and x8 diff written on failure, VDFX_BLESS=1 rewrites the golden.
+std::string compare_with_golden(const cv::Mat& actual, const std::string& name, double max_tol, double mean_tol) {
+  const std::string golden = kSrc + "/tests/app/golden/" + name + ".png";
+  const fs::path out_dir = fs::path(VDFX_TEST_OUTPUT_DIR) / "app" / "golden";
+  fs::create_directories(out_dir);
+  const std::string actual_path = (out_dir / (name + ".actual.png")).string();
+  const char* bless = std::getenv("VDFX_BLESS");
+  if (bless && std::string(bless) == "1") {
+    fs::create_directories(fs::path(golden).parent_path());
+    cv::imwrite(golden, actual);
+    return {};
+  }
+  const cv::Mat g = cv::imread(golden, cv::IMREAD_COLOR);
+  if (g.empty() || g.size() != actual.size()) {
+    cv::imwrite(actual_path, actual);
+    return "no golden of the right size at " + golden + " (actual " + actual_path +
+           "; VDFX_BLESS=1 writes it)";
+  }
+  cv::Mat diff;
+  cv::absdiff(g, actual, diff);
+  double max_diff = 0.0;
+  cv::minMaxLoc(diff.reshape(1), nullptr, &max_diff);
+  const cv::Scalar m = cv::mean(diff);
+  const double mean_diff = (m[0] + m[1] + m[2]) / 3.0;
+  if (max_diff <= max_tol && mean_diff <= mean_tol) return {};
+  cv::imwrite(actual_path, actual);
+  cv::Mat amplified;
+  diff.convertTo(amplified, CV_8UC3, 8.0);
+  const std::string diff_path = (out_dir / (name + ".diff.png")).string();
+  cv::imwrite(diff_path, amplified);
+  std::ostringstream s;
+  s << golden << ": max difference " << max_diff << " (tolerance " << max_tol << "), mean " << mean_diff
+    << " (tolerance " << mean_tol << "); actual " << actual_path << ", diff x8 " << diff_path
+    << "; VDFX_BLESS=1 rewrites the golden if the change is meant";
+  return s.str();
+}
+
+TEST(EditCmdGl, ReplayedSessionWritesTheReplaysKeyframesAndShowsPanels) {
+  const fs::path dir = testing::test_dir();
+  const fs::path sidecar = dir / "new.vdfx.json", reference = dir / "reference.vdfx.json";
+  const fs::path png = dir / "editor.png", plain = dir / "plain.png";
+
+  // The headless replay's answer.
+  const auto ref = run_vdfx("replay " + kRecording + " --video " + kSunrise + " --sidecar-out " + reference.string());
+  ASSERT_EQ(ref.exit_code, 0) << ref.output;
+
+  // The window: a sidecar that does not exist yet is created for the video.
+  const auto out = run_vdfx("edit " + kSunrise + " --sidecar " + sidecar.string() + " --input replay:" + kRecording +
+                            kMirror + " --screenshot " + png.string());
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  EXPECT_NE(out.output.find("new sidecar"), std::string::npos) << out.output;
+  ASSERT_TRUE(fs::exists(sidecar)) << out.output;
+  EXPECT_FALSE(fs::exists(fs::path(sidecar.string() + ".autosave"))) << "a clean exit removes the recovery copy";
+  const io::Sidecar got = io::read_sidecar(sidecar), want = io::read_sidecar(reference);
+  ASSERT_EQ(got.effects.size(), 1u);
+  EXPECT_EQ(got.effects, want.effects);
+
+  // The same view without the panels: the played sidecar in `vdfx play`, same input and mirror.
+  const auto p = run_vdfx("play " + kSunrise + " --sidecar " + sidecar.string() + " --input replay:" + kRecording +
+                          kMirror + " --screenshot " + plain.string());
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  const cv::Mat a = cv::imread(png.string()), b = cv::imread(plain.string());
+  ASSERT_FALSE(a.empty());
+  ASSERT_EQ(a.size(), b.size());
+  // The panels cover part of the view: there the images differ; elsewhere they agree.
+  cv::Mat diff, grey;
+  cv::absdiff(a, b, diff);
+  cv::cvtColor(diff, grey, cv::COLOR_BGR2GRAY);
+  const double changed = cv::countNonZero(grey > 24) / static_cast<double>(grey.total());
+  EXPECT_GT(changed, 0.05) << "panels cover part of the view";
+  EXPECT_LT(changed, 0.8) << "the video stays visible around the panels";
+  // Text: bright, near-white pixels on the dark panels, where the plain view has none.
+  // Text and highlights: light grey pixels on the dark panels (small at this size, so a low bar).
+  cv::Mat textish;
+  cv::inRange(a, cv::Scalar(110, 110, 110), cv::Scalar(255, 255, 255), textish);
+  EXPECT_GE(cv::countNonZero(textish & (grey > 24)), 20) << "light text pixels on the panels";
+
+  const std::string g = compare_with_golden(a, "edit_mirror_eye", 48.0, 1.5);
+  EXPECT_TRUE(g.empty()) << g;
+}
+
+TEST(EditCmdGl, DemoRecordingOnTheBundledDemoCopy) {
+  const fs::path dir = testing::test_dir();
+  const fs::path copy = dir / "demo.vdfx.json";
+  fs::copy_file(kSrc + "/app/demo/interior.vdfx.json", copy);
+  const std::size_t before = io::read_sidecar(copy).effects.size();
+  const auto out = run_vdfx("edit --sidecar " + copy.string() + " --input replay:" + kSrc +
+                            "/recordings/demo.vdrec.jsonl --frames 60 --hidden --scale 0.1 --window 160x90");
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  const io::Sidecar s = io::read_sidecar(copy);
+  EXPECT_GE(s.effects.size(), before);
+  EXPECT_FALSE(fs::exists(fs::path(copy.string() + ".autosave"))) << "clean exit";
+}
+
+TEST(EditCmdGl, RecoveryCopyIsOfferedAndDeclinedByDefault) {
+  const fs::path dir = testing::test_dir();
+  const fs::path sidecar = dir / "s.vdfx.json";
+  fs::copy_file(kSrc + "/app/demo/interior.vdfx.json", sidecar);
+  fs::copy_file(sidecar, fs::path(sidecar.string() + ".autosave"));
+  const auto out = run_vdfx("edit --sidecar " + sidecar.string() + " --input replay:" + kRecording +
+                            " --frames 2 --hidden --scale 0.05 --window 64x64 </dev/null");
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  EXPECT_NE(out.output.find("--recover yes"), std::string::npos) << out.output;
+  // Not interactive: not loaded, set aside (the clean exit must not delete it).
+  EXPECT_TRUE(fs::exists(fs::path(sidecar.string() + ".autosave.declined"))) << out.output;
+  EXPECT_FALSE(fs::exists(fs::path(sidecar.string() + ".autosave"))) << out.output;
+
+  // --recover yes loads it: a recovery copy with one more keyframe comes back as the sidecar.
+  io::Sidecar changed = io::read_sidecar(sidecar);
+  changed.effects.front().keyframes.push_back({{10.0, 20.0}, 0, {1.1, 1.0, 0.9}});
+  io::write_sidecar(fs::path(sidecar.string() + ".autosave"), changed);
+  const auto yes = run_vdfx("edit --sidecar " + sidecar.string() + " --recover yes --input replay:" + kRecording +
+                            " --frames 1 --hidden --scale 0.05 --window 64x64");
+  ASSERT_EQ(yes.exit_code, 0) << yes.output;
+  EXPECT_EQ(io::read_sidecar(sidecar).effects.front().keyframes.size(), changed.effects.front().keyframes.size())
+      << yes.output;
+}
+
+}  // namespace
+}  // namespace vdfx::app
