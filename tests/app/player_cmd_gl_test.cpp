@@ -37,8 +37,8 @@ TEST(PlayerCmdGl, ReplayedDemoWritesScreenshotRecordingAndStats) {
   std::filesystem::remove(png);
   std::filesystem::remove(rec);
   const std::string src = VDFX_SOURCE_DIR;
-  const CmdResult out = run("play /usr/share/blender/datafiles/studiolights/world/sunrise.exr --sidecar " +
-                      src + "/app/demo/sunrise.vdfx.json --input replay:" + src +
+  const CmdResult out = run("play /usr/share/blender/datafiles/studiolights/world/interior.exr --sidecar " +
+                      src + "/app/demo/interior.vdfx.json --input replay:" + src +
                       "/recordings/sim_look_and_place.vdrec.jsonl --frames 4 --scale 0.05 "
                       "--window 200x100 --hidden --stats --screenshot " + png.string() +
                       " --record " + rec.string());
