@@ -30,7 +30,7 @@ CmdResult run(const std::string& args) {
   return r;
 }
 
-const std::string kDemo = std::string(VDFX_SOURCE_DIR) + "/app/demo/sunrise.vdfx.json";
+const std::string kDemo = std::string(VDFX_SOURCE_DIR) + "/app/demo/interior.vdfx.json";
 const std::string kStill = "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
 
 TEST(PlayerCmd, BadInputIsExitOneWithAClearMessage) {
