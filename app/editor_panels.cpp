@@ -29,15 +29,17 @@ constexpr int kTimelineW = 2000, kTimelineH = 1200;
 
 PanelPlacement effect_panel_placement(PanelLayout layout) {
   // Desktop: the sim's left hand rests at (-0.2, -0.3, -0.3) m in the head frame looking where
-  // the head looks, so this puts the panel at (-0.3, 0, -0.7) m from the eye, left of the view
-  // centre and fully inside a 90-degree 16:9 view.
-  if (layout == PanelLayout::Desktop) return {Anchor::LeftHand, offset({-0.1, 0.3, -0.4})};
+  // the head looks, so this puts the panel at (-0.2, 0, -0.45) m from the eye: left of the view
+  // centre (9.5 to 36 degrees), fully inside a 90-degree 16:9 view, and close enough that its
+  // text stays legible in the desktop mirror's reduced eye buffers.
+  if (layout == PanelLayout::Desktop) return {Anchor::LeftHand, offset({0.0, 0.3, -0.15})};
   return {Anchor::LeftHand, offset({0.05, 0.16, -0.05}, -20.0)};
 }
 
 PanelPlacement timeline_panel_placement(PanelLayout layout) {
-  // Desktop: right of and below the view centre at 0.7 m, clear of the effect panel.
-  if (layout == PanelLayout::Desktop) return {Anchor::Head, offset({0.32, -0.16, -0.7})};
+  // Desktop: right of and below the view centre at 0.55 m (2 to 41 degrees right, 1 up to 26
+  // down), clear of the effect panel and large enough to read in the desktop mirror.
+  if (layout == PanelLayout::Desktop) return {Anchor::Head, offset({0.27, -0.135, -0.55})};
   return {Anchor::RightHand, offset({-0.05, 0.12, -0.05}, -20.0)};
 }
 
