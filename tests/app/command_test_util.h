@@ -20,8 +20,9 @@ struct CommandResult {
   std::string output;  //!< stdout and stderr together
 };
 
-inline CommandResult run_vdfx(const std::string& args) {
-  const std::string cmd = std::string(VDFX_BINARY) + " " + args + " 2>&1";
+/// Runs `vdfx ARGS`; `env_prefix` (e.g. "env -u DISPLAY ") goes before the executable.
+inline CommandResult run_vdfx(const std::string& args, const std::string& env_prefix = "") {
+  const std::string cmd = env_prefix + std::string(VDFX_BINARY) + " " + args + " 2>&1";
   CommandResult r;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;

@@ -3,6 +3,8 @@
 /// screenshot, --record and --stats.
 #include <gtest/gtest.h>
 
+#include "command_test_util.h"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -13,22 +15,9 @@
 namespace vdfx::app {
 namespace {
 
-struct CmdResult {
-  int code;
-  std::string output;
-};
+using CmdResult = testing::CommandResult;
 
-CmdResult run(const std::string& args) {
-  const std::string cmd = std::string(VDFX_BINARY) + " " + args + " 2>&1";
-  CmdResult r{-1, {}};
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), p)) r.output += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+CmdResult run(const std::string& args) { return testing::run_vdfx(args); }
 
 TEST(PlayerCmdGl, ReplayedDemoWritesScreenshotRecordingAndStats) {
   const std::filesystem::path dir = std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "player_cmd";
@@ -42,7 +31,7 @@ TEST(PlayerCmdGl, ReplayedDemoWritesScreenshotRecordingAndStats) {
                       "/recordings/sim_look_and_place.vdrec.jsonl --frames 4 --scale 0.05 "
                       "--window 200x100 --hidden --stats --screenshot " + png.string() +
                       " --record " + rec.string());
-  ASSERT_EQ(out.code, 0) << out.output;
+  ASSERT_EQ(out.exit_code, 0) << out.output;
   const cv::Mat m = cv::imread(png.string());
   ASSERT_FALSE(m.empty());
   EXPECT_EQ(m.cols, 200);

@@ -3,6 +3,8 @@
 /// with a message saying what, --help documents the keys.
 #include <gtest/gtest.h>
 
+#include "command_test_util.h"
+
 #include <array>
 #include <cstdio>
 #include <string>
@@ -11,23 +13,11 @@
 namespace vdfx::app {
 namespace {
 
-struct CmdResult {
-  int code;
-  std::string output;
-};
+using CmdResult = testing::CommandResult;
 
 CmdResult run(const std::string& args) {
   // DISPLAY is unset so a command that got as far as opening a window would fail differently.
-  const std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(VDFX_BINARY) + " " +
-                          args + " 2>&1";
-  CmdResult r{-1, {}};
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), p)) r.output += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return testing::run_vdfx(args, "env -u DISPLAY -u WAYLAND_DISPLAY ");
 }
 
 const std::string kDemo = std::string(VDFX_SOURCE_DIR) + "/app/demo/interior.vdfx.json";
@@ -48,7 +38,7 @@ TEST(PlayerCmd, BadInputIsExitOneWithAClearMessage) {
   };
   for (const auto& r : rows) {
     const CmdResult out = run(r.args);
-    EXPECT_EQ(out.code, 1) << r.args << "\n" << out.output;
+    EXPECT_EQ(out.exit_code, 1) << r.args << "\n" << out.output;
     EXPECT_NE(out.output.find(r.says), std::string::npos) << r.args << "\n" << out.output;
   }
 }
@@ -58,13 +48,13 @@ TEST(PlayerCmd, UsageErrorsAreExitTwo) {
                                  "play " + kStill + " --sidecar " + kDemo + " --window 12",
                                  "play " + kStill + " --sidecar " + kDemo + " --mirror sideways"}) {
     const CmdResult out = run(args);
-    EXPECT_EQ(out.code, 2) << args << "\n" << out.output;
+    EXPECT_EQ(out.exit_code, 2) << args << "\n" << out.output;
   }
 }
 
 TEST(PlayerCmd, HelpListsEveryKeyAndTheSimBindings) {
   const CmdResult out = run("play --help");
-  EXPECT_EQ(out.code, 0);
+  EXPECT_EQ(out.exit_code, 0);
   for (const char* s : {"pause / play", "per-pixel", "unaltered", "mirror: pre-distorted",
                         "mirror: through the lens", "mirror: single eye", "Escape",
                         "/user/hand/right/input/trigger/value", "turn the head", "--stats",
