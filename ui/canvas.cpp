@@ -144,8 +144,8 @@ Canvas::Canvas(cv::Mat pixels)
                                 std::to_string(image_.type()));
 }
 
-cv::Mat Canvas::to_straight_rgba() const {
-  cv::Mat out = image_.clone();
+cv::Mat unpremultiply(const cv::Mat& premultiplied) {
+  cv::Mat out = premultiplied.clone();
   out.forEach<cv::Vec4b>([](cv::Vec4b& p, const int*) {
     if (p[3] == 0) {
       p = cv::Vec4b(0, 0, 0, 0);
@@ -156,6 +156,8 @@ cv::Mat Canvas::to_straight_rgba() const {
   });
   return out;
 }
+
+cv::Mat Canvas::to_straight_rgba() const { return unpremultiply(image_); }
 
 void Canvas::clear(Rgba c) {
   float pm[4];

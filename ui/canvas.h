@@ -117,4 +117,7 @@ class ScaledImage {
 /// fits. Cuts at code point boundaries.
 std::string fit_text(const Font& font, int px, std::string_view utf8, double max_width);
 
+/// Converts a premultiplied RGBA8 image to straight alpha (fully transparent pixels become 0).
+cv::Mat unpremultiply(const cv::Mat& premultiplied);
+
 }  // namespace vdfx::ui

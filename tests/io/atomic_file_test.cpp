@@ -1,5 +1,6 @@
 /// @file
 /// @brief write_file_atomic: replaces whole files, and a failed write leaves the old file.
+#include "io_test_util.h"
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -15,12 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir(const std::string& name) {
-  const auto d = fs::path(VDFX_TEST_OUTPUT_DIR) / "io" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+using testing::temp_dir;
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

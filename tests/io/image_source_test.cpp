@@ -1,5 +1,6 @@
 /// @file
 /// @brief Still images: depth scaling, channel order, tone mapping of radiance, clear errors.
+#include "io_test_util.h"
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,12 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir(const std::string& name) {
-  const auto d = fs::path(VDFX_TEST_OUTPUT_DIR) / "io" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+using testing::temp_dir;
 
 TEST(ImageSource, Png8BitIsScaledAsStoredInRgbOrder) {
   const auto dir = temp_dir("img_png8");

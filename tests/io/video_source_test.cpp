@@ -2,6 +2,7 @@
 /// @brief Video sources: properties, frame-exact seeks, loop, pause, decode errors, truncated and
 /// missing files. Videos are generated at runtime with cv::VideoWriter; each frame carries its
 /// index as 8 black/white stripes, so a test can read back which frame it got.
+#include "io_test_util.h"
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -27,12 +28,7 @@ using namespace std::chrono_literals;
 
 constexpr int kW = 128, kH = 64;
 
-fs::path temp_dir(const std::string& name) {
-  const auto d = fs::path(VDFX_TEST_OUTPUT_DIR) / "io" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+using testing::temp_dir;
 
 cv::Mat coded_frame(int index) {
   cv::Mat m(kH, kW, CV_8UC3, cv::Scalar(0, 0, 0));

@@ -2,6 +2,8 @@
 /// @brief Golden-image comparison of golden.h.
 #include "golden.h"
 
+#include "ui/canvas.h"
+
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -12,18 +14,6 @@
 namespace vdfx::ui::test {
 
 namespace {
-cv::Mat unpremultiply(const cv::Mat& pm) {
-  cv::Mat out = pm.clone();
-  out.forEach<cv::Vec4b>([](cv::Vec4b& p, const int*) {
-    if (p[3] == 0) {
-      p = cv::Vec4b(0, 0, 0, 0);
-      return;
-    }
-    for (int k = 0; k < 3; ++k)
-      p[k] = static_cast<uchar>(std::min(255, (p[k] * 255 + p[3] / 2) / p[3]));
-  });
-  return out;
-}
 
 cv::Mat premultiply(const cv::Mat& straight) {
   cv::Mat out = straight.clone();
