@@ -86,11 +86,14 @@ InverseResult LensModel::inverse_newton(double r_d) const {
     if (residual == 0.0) break;
     (residual < 0.0 ? lo : hi) = r;
     double next = r - residual / derivative(r);
+    // A step below the rounding of r is convergence. Tested before the bracket: at the root, r
+    // may itself have just become lo or hi (the residual is rounding noise of either sign), and
+    // a Newton step that stays on r must not be mistaken for an overshoot and bisected away.
+    if (std::abs(next - r) <= 2.0 * std::numeric_limits<double>::epsilon() * r) break;
     // Newton can overshoot where f' is small (near the monotonic limit): bisect instead.
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    const bool converged = std::abs(next - r) <= 2.0 * std::numeric_limits<double>::epsilon() * r;
     r = next;
-    if (converged || hi - lo <= std::numeric_limits<double>::epsilon() * hi) break;
+    if (hi - lo <= std::numeric_limits<double>::epsilon() * hi) break;
   }
   result.r_u = r;
   return result;
