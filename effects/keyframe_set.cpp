@@ -205,9 +205,11 @@ KeyframeSet::KeyframeSet(int dimension, const InterpolationSettings& settings, d
           w.job.reset();
         }
         auto st = solve_full(job.second, dimension_, kernel_, neutral_, job.first);
-        publish(st->interpolator, job.first);
-        std::lock_guard lock(pub_mu_);
-        if (st->exact) ready_ = std::move(st);
+        // The exact state is handed over under the same lock as the publication: an edit made
+        // as soon as wait_for_version() returns must find it (and stay incremental).
+        auto interpolator = st->interpolator;
+        if (!st->exact) st.reset();
+        publish(std::move(interpolator), job.first, std::move(st));
       }
     });
   }
@@ -224,12 +226,14 @@ KeyframeSet::~KeyframeSet() {
   }
 }
 
-void KeyframeSet::publish(std::shared_ptr<const RbfInterpolator> s, std::uint64_t version) const {
+void KeyframeSet::publish(std::shared_ptr<const RbfInterpolator> s, std::uint64_t version,
+                          std::unique_ptr<State> exact_state) const {
   {
     std::lock_guard lock(pub_mu_);
     if (published_ && version < published_version_) return;  // a stale worker result
     published_ = std::move(s);
     published_version_ = version;
+    if (exact_state) ready_ = std::move(exact_state);
   }
   pub_cv_.notify_all();
 }

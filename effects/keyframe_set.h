@@ -104,7 +104,10 @@ class KeyframeSet {
   bool finish_incremental(int checked_centre);
   void flush_pending();
   void full_solve();
-  void publish(std::shared_ptr<const RbfInterpolator> s, std::uint64_t version) const;
+  /// Makes `s` the published solution; a worker also hands over its exact state (adopted by
+  /// the next edit on the caller's thread).
+  void publish(std::shared_ptr<const RbfInterpolator> s, std::uint64_t version,
+               std::unique_ptr<State> exact_state = nullptr) const;
 
   int dimension_;
   InterpolationSettings settings_;
