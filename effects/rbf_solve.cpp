@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <vector>
 
 namespace vdfx::effects {
 
@@ -40,13 +41,27 @@ void kernel_row(const RbfPoints& points, const RbfKernel& kernel, const Eigen::V
 Eigen::MatrixXd kernel_matrix(const RbfPoints& points, const RbfKernel& kernel) {
   const int m = points.size();
   Eigen::MatrixXd a(m, m);
-  Eigen::ArrayXd row(m);
-  for (int j = 0; j < m; ++j) {
-    kernel_row(points, kernel, points.unit(j), points.t[j], row);
-    a.col(j) = row.matrix();
+  if (kernel.distance == AngularDistance::Chordal) {
+    // The lower triangle only (half the square roots / powers), mirrored afterwards: exactly
+    // symmetric by construction.
+    const double tf = kernel.time_factor;
+    for (int j = 0; j < m; ++j) {
+      const int len = m - j;
+      auto col = a.col(j).tail(len).array();
+      col = (points.x.tail(len) - points.x[j]).square() +
+            (points.y.tail(len) - points.y[j]).square() +
+            (points.z.tail(len) - points.z[j]).square() +
+            ((points.t.tail(len) - points.t[j]) * tf).square();
+      kernel.apply_phi(col);
+    }
+  } else {
+    Eigen::ArrayXd row(m);
+    for (int j = 0; j < m; ++j) {
+      kernel_row(points, kernel, points.unit(j), points.t[j], row);
+      a.col(j).tail(m - j) = row.tail(m - j).matrix();
+    }
   }
-  // Exact symmetry (the rows are computed independently and could differ in the last bit).
-  a = a.selfadjointView<Eigen::Lower>();
+  a.triangularView<Eigen::StrictlyUpper>() = a.transpose();
   return a;
 }
 
@@ -68,40 +83,99 @@ Eigen::MatrixXd projected_kernel(const Eigen::MatrixXd& a, const Eigen::MatrixXd
 
 namespace {
 
+/// The Householder sequence of a QR of P in compact WY form, Q = H_0 ... H_{r-1} = I - V T V^T
+/// (Schreiber & Van Loan 1989; LAPACK's dlarft recurrence), so Q^T A Q costs one product A V
+/// and one symmetric rank-2r update instead of r rank-one sweeps per side.
+struct CompactWy {
+  Eigen::MatrixXd v;  // m x r, unit lower trapezoidal
+  Eigen::MatrixXd t;  // r x r, upper triangular
+
+  explicit CompactWy(const Eigen::HouseholderQR<Eigen::MatrixXd>& qr) {
+    const Eigen::MatrixXd& h = qr.matrixQR();
+    const Eigen::Index m = h.rows(), r = h.cols();
+    v.setZero(m, r);
+    t.setZero(r, r);
+    for (Eigen::Index k = 0; k < r; ++k) {
+      v(k, k) = 1.0;
+      v.col(k).tail(m - k - 1) = h.col(k).tail(m - k - 1);
+      const double tau = qr.hCoeffs()[k];
+      if (k > 0) {
+        const Eigen::VectorXd vtv = v.leftCols(k).transpose() * v.col(k);
+        const Eigen::VectorXd tv = t.topLeftCorner(k, k) * vtv;  // T is 0 below its diagonal
+        t.col(k).head(k) = -tau * tv;
+      }
+      t(k, k) = tau;
+    }
+  }
+
+  /// Y with Q^T A Q = A - Y V^T - V Y^T for a symmetric A.
+  Eigen::MatrixXd update_factor(const Eigen::MatrixXd& a) const {
+    const Eigen::MatrixXd w = (a * v) * t;
+    const Eigen::MatrixXd mm = t.transpose() * (v.transpose() * w);
+    return w - 0.5 * v * mm;
+  }
+};
+
 /// The factorised saddle-point system: solves [A P; P^T 0][w; c] = [f; g].
+///
+/// Only what the solve needs of B = Q^T A Q is formed: its first r rows, and the lower triangle
+/// of the null-space block K = +-B22, factorised in place (no copy of the m x m matrix). The
+/// LU and least-squares fallbacks rebuild the full block when the Cholesky factorisation fails.
 class SaddleSolver {
  public:
   SaddleSolver(const Eigen::MatrixXd& a, const Eigen::MatrixXd& p, bool positive)
       : m_(a.rows()), r_(p.cols()), qr_(p) {
-    b_ = a;
-    b_.applyOnTheLeft(qr_.householderQ().adjoint());
-    b_.applyOnTheRight(qr_.householderQ());
     const Eigen::Index n2 = m_ - r_;
+    Eigen::MatrixXd y, v;
+    if (r_ > 0) {
+      const CompactWy wy(qr_);
+      y = wy.update_factor(a);
+      v = wy.v;
+      b_top_ = a.topRows(r_) - y.topRows(r_) * v.transpose() - v.topRows(r_) * y.transpose();
+    }
     if (n2 == 0) {
       method_ = RbfSolveMethod::Polynomial;
       return;
     }
     sign_ = positive ? 1.0 : -1.0;
-    llt_.compute(sign_ * b_.bottomRightCorner(n2, n2));
-    if (llt_.info() == Eigen::Success) {
-      const double rc = llt_.rcond();
+    // Lower triangle of K = sign (A22 - Y2 V2^T - V2 Y2^T).
+    k_ = sign_ * a.bottomRightCorner(n2, n2);
+    if (r_ > 0) {
+      const auto y2 = y.bottomRows(n2), v2 = v.bottomRows(n2);
+      k_.triangularView<Eigen::Lower>() -= (sign_ * y2) * v2.transpose();
+      k_.triangularView<Eigen::Lower>() -= (sign_ * v2) * y2.transpose();
+    }
+    llt_.emplace(k_);
+    if (llt_->info() == Eigen::Success) {
+      const double rc = llt_->rcond();
       if (rc > 1e3 * std::numeric_limits<double>::epsilon()) {
         method_ = RbfSolveMethod::NullSpaceCholesky;
         condition_ = 1.0 / rc;
         return;
       }
     }
-    lu_.emplace(b_.bottomRightCorner(n2, n2));
+    llt_.reset();
+    // The factorisation overwrote k_: rebuild the whole block for the general solvers.
+    Eigen::MatrixXd b22 = a.bottomRightCorner(n2, n2);
+    if (r_ > 0) {
+      const auto y2 = y.bottomRows(n2), v2 = v.bottomRows(n2);
+      b22 -= y2 * v2.transpose() + v2 * y2.transpose();
+    }
+    k_.resize(0, 0);
+    lu_.emplace(b22);
     if (lu_->isInvertible() && lu_->rcond() > 1e2 * std::numeric_limits<double>::epsilon()) {
       method_ = RbfSolveMethod::NullSpaceLu;
       condition_ = 1.0 / lu_->rcond();
       return;
     }
     lu_.reset();
-    cod_.emplace(b_.bottomRightCorner(n2, n2));
+    cod_.emplace(b22);
     method_ = RbfSolveMethod::LeastSquares;
     condition_ = std::numeric_limits<double>::infinity();
   }
+
+  SaddleSolver(const SaddleSolver&) = delete;
+  SaddleSolver& operator=(const SaddleSolver&) = delete;
 
   RbfSolveMethod method() const { return method_; }
   double condition() const { return condition_; }
@@ -117,15 +191,16 @@ class SaddleSolver {
     Eigen::MatrixXd y(m_, d);
     y.topRows(r_) = r.transpose().solve(g);
     if (n2 > 0) {
-      const Eigen::MatrixXd rhs =
-          qf.bottomRows(n2) - b_.bottomLeftCorner(n2, r_) * y.topRows(r_);
+      Eigen::MatrixXd rhs = qf.bottomRows(n2);
+      if (r_ > 0) rhs.noalias() -= b_top_.rightCols(n2).transpose() * y.topRows(r_);
       switch (method_) {
-        case RbfSolveMethod::NullSpaceCholesky: y.bottomRows(n2) = sign_ * llt_.solve(rhs); break;
+        case RbfSolveMethod::NullSpaceCholesky: y.bottomRows(n2) = sign_ * llt_->solve(rhs); break;
         case RbfSolveMethod::NullSpaceLu: y.bottomRows(n2) = lu_->solve(rhs); break;
         default: y.bottomRows(n2) = cod_->solve(rhs); break;
       }
     }
-    c = r.solve(qf.topRows(r_) - b_.topRows(r_) * y);
+    if (r_ > 0) c = r.solve(qf.topRows(r_) - b_top_ * y);
+    else c.resize(0, d);
     w = y;
     w.applyOnTheLeft(qr_.householderQ());
   }
@@ -133,9 +208,10 @@ class SaddleSolver {
  private:
   Eigen::Index m_, r_;
   Eigen::HouseholderQR<Eigen::MatrixXd> qr_;
-  Eigen::MatrixXd b_;  // Q^T A Q
+  Eigen::MatrixXd b_top_;  // the first r rows of Q^T A Q
+  Eigen::MatrixXd k_;      // +-B22 (lower triangle), overwritten by its Cholesky factor
   double sign_ = 1.0;
-  Eigen::LLT<Eigen::MatrixXd> llt_;
+  std::optional<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower>> llt_;
   std::optional<Eigen::FullPivLU<Eigen::MatrixXd>> lu_;
   std::optional<Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>> cod_;
   RbfSolveMethod method_ = RbfSolveMethod::Empty;
@@ -200,12 +276,28 @@ RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
   // Residuals accumulated in long double: near-coincident centres make the weights large and
   // their sums cancel, so a residual summed in double would be as wrong as the solution.
   auto residuals = [&](Eigen::MatrixXd& rf, Eigen::MatrixXd& rg) {
-    using LMat = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
-    const LMat wl = s.weights.cast<long double>();
-    const LMat cl = s.coefficients.cast<long double>();
-    rf = (f.cast<long double>() - a.cast<long double>() * wl - p.cast<long double>() * cl)
-             .cast<double>();
-    rg = (-(p.cast<long double>().transpose() * wl)).cast<double>();
+    rf.resize(m, d);
+    rg.resize(r, d);
+    std::vector<long double> acc(static_cast<std::size_t>(m));
+    for (int k = 0; k < d; ++k) {
+      // Column by column through A (column-major, no long double copy of the m x m matrix).
+      for (int i = 0; i < m; ++i) acc[i] = f(i, k);
+      for (int j = 0; j < m; ++j) {
+        const long double wj = s.weights(j, k);
+        const double* col = a.col(j).data();
+        for (int i = 0; i < m; ++i) acc[i] -= col[i] * wj;
+      }
+      for (int q = 0; q < r; ++q) {
+        const long double cq = s.coefficients(q, k);
+        long double g = 0.0L;
+        for (int i = 0; i < m; ++i) {
+          acc[i] -= p(i, q) * cq;
+          g -= p(i, q) * static_cast<long double>(s.weights(i, k));
+        }
+        rg(q, k) = static_cast<double>(g);
+      }
+      for (int i = 0; i < m; ++i) rf(i, k) = static_cast<double>(acc[i]);
+    }
     return std::max(max_abs(rf), max_abs(rg));
   };
   Eigen::MatrixXd rf, rg;
