@@ -111,11 +111,11 @@ TEST_F(PerPixelGlTest, BlurAndVignetteFollowEachPixelsOwnParameters) {
   const struct {
     const char* name;
     std::function<void(StackParams&)> set;
-    double tolerance;  //!< GPU vs CPU per-pixel, measured (blur: level mixing, see docs)
+    double tolerance;  //!< GPU vs CPU per-pixel (blur: measured <= 5.6/255, level mixing)
   } cases[] = {
       {"vignette 5/10", [](StackParams& p) { p.vignette_radius_deg = 5; p.vignette_falloff_deg = 10; }, 2.0 / 255},
-      {"blur 1.5 deg", [](StackParams& p) { p.blur_sigma_deg = 1.5; }, 6.0 / 255},
-      {"blur 3 deg", [](StackParams& p) { p.blur_sigma_deg = 3.0; }, 6.0 / 255},
+      {"blur 1.5 deg", [](StackParams& p) { p.blur_sigma_deg = 1.5; }, 8.0 / 255},
+      {"blur 3 deg", [](StackParams& p) { p.blur_sigma_deg = 3.0; }, 8.0 / 255},
   };
   // Columns of the right half, away from the edge (the grid smooths it over one cell, 1.4 deg, and
   // a blur reaches 3 sigma across it).
