@@ -18,7 +18,6 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "app/frame_loop_bake.h"
 #include "app/frame_loop_stats.h"
 #include "app/glfw_input_glue.h"
 #include "effects/effect_shaders.h"
@@ -27,6 +26,7 @@
 #include "xr/compositor.h"
 #include "xr/gl_context.h"
 #include "xr/input_backend.h"
+#include "xr/param_grid.h"
 #include "xr/session.h"
 #endif
 
@@ -66,11 +66,12 @@ struct FrameLoop::Impl {
   std::unique_ptr<xr::Compositor> compositor;
   xr::MirrorMode mirror = xr::MirrorMode::PreDistorted;
 
-  // What is on screen: the decoded frame, and what was uploaded for it.
+  // What is on screen: the decoded frame, and the parameter grid baked for it (per-pixel mode).
   std::optional<io::VideoFrame> shown;
-  bool uploaded_per_pixel = false;
-  std::uint64_t uploaded_revision = 0;
   bool uploaded_any = false;
+  bool grid_valid = false;
+  std::int64_t grid_frame = -1;
+  std::uint64_t grid_revision = 0;
   int geometry_w = 0, geometry_h = 0;
 
   Impl(FrameLoopOptions opts, xr::InputBackend& in, io::VideoSource& v, FrameClient& c)
@@ -91,32 +92,33 @@ struct FrameLoop::Impl {
     cc.eye_height = std::max(8, static_cast<int>(std::lround(eye.height * o.eye_scale)));
     cc.lens = effects::LensModel(o.profile.lens);
     cc.gpu_timing = o.stats;
+    cc.blur = o.blur;
     compositor = std::make_unique<xr::Compositor>(cc);
     mirror = static_cast<xr::MirrorMode>(std::clamp(o.mirror_mode, 0, 2));
   }
 
-  /// Uploads the shown frame, baked per pixel when that mode is on. Returns the bake time (ms).
+  /// Uploads the shown frame as it is decoded.
   void upload(FrameLoopStats& stats) {
-    const bool per_pixel = client.param_mode() == ParamMode::PerPixel && !client.unaltered();
-    const std::uint64_t rev = client.params_revision();
-    cv::Mat rgb = shown->image;
-    if (per_pixel) {
-      const auto t0 = Clock::now();
-      const std::int64_t frame = shown->index;
-      const ParamGrid grid = bake_param_grid(
-          [&](const effects::Direction& d) { return client.params(d, frame); }, o.bake_width,
-          o.bake_height);
-      rgb = apply_param_grid(rgb, grid, client.active_effects() & baked_effects_mask());
-      stats.add_cpu("bake", ms_since(t0));
-    }
     const auto t0 = Clock::now();
     cv::Mat bgr;
-    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+    cv::cvtColor(shown->image, bgr, cv::COLOR_RGB2BGR);
     compositor->set_video_frame(bgr);
     stats.add_cpu("upload", ms_since(t0));
-    uploaded_per_pixel = per_pixel;
-    uploaded_revision = rev;
     uploaded_any = true;
+  }
+
+  /// Per-pixel mode: bakes the client's parameters on the grid for the shown frame and uploads
+  /// it; the effect shader reads it per pixel (all six effects).
+  void bake(std::int64_t frame, FrameLoopStats& stats) {
+    const auto t0 = Clock::now();
+    const xr::ParamGrid grid = xr::bake_param_grid(
+        [&](const effects::Direction& d) { return client.params(d, frame); }, o.bake_width,
+        o.bake_height);
+    compositor->set_param_grid(grid);
+    stats.add_cpu("bake", ms_since(t0));
+    grid_valid = true;
+    grid_frame = frame;
+    grid_revision = client.params_revision();
   }
 
   void handle_loop_key(const xr::DesktopEvent& e, bool& quit) {
@@ -219,26 +221,28 @@ struct FrameLoop::Impl {
       FrameRecord rec{t, info.video_frame, shown ? shown->index : -1, false};
       rec.late = rec.shown_frame != rec.requested_frame;
       if (rec.late) ++result.late_frames;
-      const bool per_pixel = client.param_mode() == ParamMode::PerPixel && !client.unaltered();
-      if (shown && (changed || !uploaded_any || per_pixel != uploaded_per_pixel ||
-                    (per_pixel && client.params_revision() != uploaded_revision)))
-        upload(stats);
+      if (shown && (changed || !uploaded_any)) upload(stats);
 
-      // Parameters once per frame at the head's forward direction, the same for both eyes.
-      const auto params_t0 = Clock::now();
+      // Parameters: view mode once per frame at the head's forward direction, the same for both
+      // eyes; per-pixel mode a grid, re-baked when the frame or the parameters change.
+      const std::int64_t param_frame = shown ? shown->index : info.video_frame;
+      const unsigned mask = client.unaltered() ? 0u : client.active_effects();
+      const bool per_pixel = mask && client.param_mode() == ParamMode::PerPixel;
       effects::StackParams params;
-      unsigned mask = 0;
-      if (!client.unaltered()) {
-        mask = client.active_effects();
-        if (per_pixel) mask &= ~baked_effects_mask();
-        if (mask) params = client.params(info.head_forward, shown ? shown->index : info.video_frame);
+      if (per_pixel) {
+        if (!grid_valid || grid_frame != param_frame || grid_revision != client.params_revision())
+          bake(param_frame, stats);
+      } else if (mask) {
+        const auto params_t0 = Clock::now();
+        params = client.params(info.head_forward, param_frame);
+        stats.add_cpu("params", ms_since(params_t0));
       }
-      stats.add_cpu("params", ms_since(params_t0));
 
       const std::vector<xr::QuadLayer> quads = client.quads();
       const auto views = session.locate_views(in.head, xr::ReferenceSpace::Local);
       for (int e = 0; e < 2; ++e)
-        compositor->render_eye(e, {xr::render_view(views[e]), params, mask}, quads, in.head);
+        compositor->render_eye(e, {xr::render_view(views[e]), params, mask, per_pixel}, quads,
+                               in.head);
       if (o.on_frame) o.on_frame(*compositor, n);
       compositor->draw_mirror(mirror, nullptr, fbw, fbh);
       const bool last = quit || (o.max_frames >= 0 && n + 1 >= o.max_frames) ||

@@ -9,7 +9,9 @@
 ///   window events -> input backend (push_event) and client (on_desktop_event);
 ///   input.poll(display time) -> client.update() -> VideoSource::frame_at(frame, decode_timeout):
 ///   a frame not decoded yet keeps the previous one on screen and counts as late (never blocks);
-///   params once at the head's forward direction (or the per-pixel bake) -> both eyes -> mirror.
+///   params once at the head's forward direction (per-pixel mode: a parameter grid, baked when
+///   the frame or the parameters change, that the effect shader reads per pixel) -> both eyes ->
+///   mirror.
 #pragma once
 
 #include <chrono>
@@ -22,6 +24,7 @@
 #include <vector>
 
 #include "app/frame_client.h"
+#include "xr/blur_method.h"
 #include "xr/hmd_profile.h"
 
 namespace vdfx::io {
@@ -53,6 +56,9 @@ struct FrameLoopOptions {
   std::ostream* stats_out = nullptr;     //!< default std::cout
   std::chrono::nanoseconds decode_timeout{0};  //!< how long a frame may wait for the decoder
   int bake_width = 256, bake_height = 128;     //!< per-pixel mode's parameter grid
+  /// The GPU blur (live default: the pyramid, ~10x cheaper than exact at sigma 2 deg;
+  /// docs/compositor.md has the error table).
+  xr::BlurMethod blur = xr::BlurMethod::Pyramid;
   bool keep_records = false;             //!< fill FrameLoopResult::records (tests)
   /// Called after each frame is rendered (before the mirror), with the compositor (tests read
   /// eye buffers here).

@@ -50,6 +50,11 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
   cli.add_option("--bake", o.bake, "per-pixel mode's parameter grid WxH (speed/error knob)")
       ->capture_default_str()
       ->check(size_problem);
+  cli.add_option("--blur", o.blur,
+                 "GPU blur: pyramid (halvings + small residual blur, the live default) or exact "
+                 "(full-resolution separable Gaussian, as vdfx render --gpu)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"exact", "pyramid"}));
 }
 
 LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video) {
@@ -62,6 +67,7 @@ LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path
   f.window_height = window.height;
   f.bake_width = bake.width;
   f.bake_height = bake.height;
+  f.blur = xr::blur_method_from_name(o.blur).value_or(xr::BlurMethod::Pyramid);
   f.eye_scale = o.scale;
   f.max_frames = o.frames;
   f.screenshot = o.screenshot;

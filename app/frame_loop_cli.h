@@ -30,10 +30,11 @@ struct LoopCli {
   bool no_vsync = false;
   double decode_timeout_ms = 0.0;
   std::string bake = "256x128";
+  std::string blur = "pyramid";  //!< exact | pyramid (xr::BlurMethod)
 };
 
 /// Adds --hmd, --input, --record, --stats, --scale, --frames (alias --exit-after-frames),
-/// --screenshot, --mirror, --window, --hidden, --no-vsync, --decode-timeout, --bake.
+/// --screenshot, --mirror, --window, --hidden, --no-vsync, --decode-timeout, --bake, --blur.
 void add_loop_options(CLI::App& cli, LoopCli& o);
 
 struct LoopSetup {

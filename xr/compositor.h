@@ -15,8 +15,10 @@
 #include <opencv2/core.hpp>
 
 #include "effects/effect_types.h"
+#include "xr/blur_method.h"
 #include "xr/distortion_gl.h"
 #include "xr/gpu_timer.h"
+#include "xr/param_grid.h"
 #include "xr/session.h"
 #include "xr/video_layer.h"
 
@@ -35,6 +37,7 @@ struct CompositorConfig {
   DistortionSettings distortion;
   effects::LensModel lens;
   bool gpu_timing = false;  //!< timestamp queries per stage (stage_times())
+  BlurMethod blur = BlurMethod::Exact;  //!< exact separable, or the pyramid (blur_pyramid_gl.h)
 };
 
 /// What changes per eye per frame.
@@ -42,6 +45,9 @@ struct EyeInput {
   RenderView view;
   effects::StackParams params;
   unsigned active_effects = 0;  //!< effects::shader_bit mask: only these are compiled in
+  /// Per-pixel mode: every pixel's parameters come from the grid given to
+  /// Compositor::set_param_grid, looked up along its own view ray (`params` is then unused).
+  bool per_pixel = false;
 };
 
 class Compositor {
@@ -51,6 +57,8 @@ class Compositor {
   ~Compositor();
 
   void set_video_frame(const cv::Mat& equirect);
+  /// Per-pixel mode's parameter grid (uploaded as float textures; used by eyes with per_pixel).
+  void set_param_grid(const ParamGrid& grid);
   /// Renders one eye (0 left, 1 right). Quads are placed with Session::to_local(head_in_local).
   void render_eye(int eye, const EyeInput& in, std::span<const QuadLayer> quads = {},
                   const Pose& head_in_local = {});

@@ -58,11 +58,11 @@ struct Compositor::Impl {
   std::array<RenderView, 2> views;
   std::array<int, 2> margin{0, 0};  //!< pixels of video rendered around each eye's view
   GpuTimer timer;
-  explicit Impl(TexFormat f) : stack(f) {}
+  Impl(TexFormat f, BlurMethod b) : stack(f, b) {}
 };
 
 Compositor::Compositor(CompositorConfig config)
-    : config_(std::move(config)), impl_(std::make_unique<Impl>(config_.eye_format)) {
+    : config_(std::move(config)), impl_(std::make_unique<Impl>(config_.eye_format, config_.blur)) {
   const int w = config_.eye_width, h = config_.eye_height;
   for (int e = 0; e < 2; ++e) {
     impl_->video_out[e] = GlTarget(w, h, config_.eye_format);
@@ -78,6 +78,7 @@ Compositor::~Compositor() {
 }
 
 void Compositor::set_video_frame(const cv::Mat& equirect) { impl_->video.set_frame(equirect); }
+void Compositor::set_param_grid(const ParamGrid& grid) { impl_->stack.set_param_grid(grid); }
 
 void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLayer> quads,
                             const Pose& head_in_local) {
@@ -90,7 +91,13 @@ void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLay
   // view's border. The margin only grows while blur stays on (no reallocation per frame while
   // sigma is animated) and drops back to 0 when blur is off.
   const int w = config_.eye_width, h = config_.eye_height;
-  const int need = blur_margin(in.params, in.active_effects, in.view, w, h);
+  effects::StackParams widest = in.params;  // per-pixel mode: the grid's largest sigma
+  if (in.per_pixel) {
+    if (!m.stack.has_param_grid())
+      throw GlError("Compositor::render_eye: per-pixel eye without a parameter grid (set_param_grid)");
+    widest.blur_sigma_deg = m.stack.grid_max_blur_sigma_deg();
+  }
+  const int need = blur_margin(widest, in.active_effects, in.view, w, h);
   int& margin = m.margin[eye];
   if (need == 0 || need > margin) {
     margin = need;
@@ -101,8 +108,12 @@ void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLay
   m.video.render(m.video_out[eye], with_margin(in.view, w, h, margin), config_.lod);
   if (t) m.timer.stop();
   if (t) m.timer.start(tag + "effects");
-  m.stack.apply(m.video_out[eye].texture(), m.eye_buffer[eye], in.params, in.active_effects,
-                in.view, margin);
+  if (in.per_pixel)
+    m.stack.apply_per_pixel(m.video_out[eye].texture(), m.eye_buffer[eye], in.active_effects,
+                            in.view, margin);
+  else
+    m.stack.apply(m.video_out[eye].texture(), m.eye_buffer[eye], in.params, in.active_effects,
+                  in.view, margin);
   if (t) m.timer.stop();
   // Flare and grain layers will go here (after effects, before UI).
   if (!quads.empty()) {

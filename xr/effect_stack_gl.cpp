@@ -1,7 +1,9 @@
 /// @file
-/// @brief EffectStackGl: shader variants per active set, separable blur in float textures.
+/// @brief EffectStackGl: shader variants per active set, view and per-pixel parameter modes,
+/// exact or pyramid blur in float textures.
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -13,6 +15,7 @@ namespace vdfx::xr {
 
 using effects::EffectType;
 using effects::shader_bit;
+using effects::StackShader;
 
 BlurPixels blur_pixels(double sigma_deg, const RenderView& v, int width, int height) {
   const double s = sigma_deg * effects::kDegToRad;
@@ -23,68 +26,6 @@ BlurPixels blur_pixels(double sigma_deg, const RenderView& v, int width, int hei
   b.radius_x = static_cast<int>(std::ceil(3.0 * b.sigma_x));
   b.radius_y = static_cast<int>(std::ceil(3.0 * b.sigma_y));
   return b;
-}
-
-namespace {
-
-// The paired-tap table of a 1-D Gaussian of `sigma` pixels and `radius` taps per side, weights
-// normalised in double: texel k = (offset, weight) of the pair +-offset; returns the centre weight.
-double gaussian_taps(double sigma, int radius, cv::Mat* taps) {
-  std::vector<double> w(static_cast<size_t>(radius) + 1);
-  double sum = 0.0;
-  for (int i = 0; i <= radius; ++i) {
-    w[static_cast<size_t>(i)] = std::exp(-i * i / (2.0 * sigma * sigma));
-    sum += (i == 0 ? 1.0 : 2.0) * w[static_cast<size_t>(i)];
-  }
-  for (double& x : w) x /= sum;
-  std::vector<cv::Vec2f> t;
-  for (int i = 1; i <= radius; i += 2) {
-    const double a = w[static_cast<size_t>(i)];
-    const double b = i + 1 <= radius ? w[static_cast<size_t>(i + 1)] : 0.0;
-    t.emplace_back(static_cast<float>(i + b / (a + b)), static_cast<float>(a + b));
-  }
-  if (t.empty()) t.emplace_back(0.0f, 0.0f);
-  *taps = cv::Mat(t, true).reshape(2, 1);
-  return w[0];
-}
-
-}  // namespace
-
-EffectStackGl::EffectStackGl(TexFormat scratch_format) : scratch_format_(scratch_format) {
-  blur_h_ = GlProgram::build("blur_horizontal", fullscreen_vertex_source(),
-                             effects::blur_horizontal_fragment_source());
-  glGenVertexArrays(1, &vao_);
-}
-
-EffectStackGl::~EffectStackGl() {
-  if (vao_) glDeleteVertexArrays(1, &vao_);
-}
-
-const GlProgram& EffectStackGl::program_for(unsigned mask) {
-  auto it = programs_.find(mask);
-  if (it == programs_.end())
-    it = programs_
-             .emplace(mask, GlProgram::build("effect_stack_" + std::to_string(mask),
-                                             fullscreen_vertex_source(),
-                                             effects::stack_fragment_source(mask)))
-             .first;
-  return it->second;
-}
-
-void EffectStackGl::set_gaussian(const GlProgram& p, double sigma, int radius, int unit) {
-  cv::Mat taps;
-  const double centre = gaussian_taps(sigma, radius, &taps);
-  // Upload on the tap table's own unit: unit 0 holds the source image.
-  glActiveTexture(GL_TEXTURE0 + static_cast<unsigned>(unit) + 1);
-  GlTexture& t = taps_[unit];
-  if (!t || t.width() != taps.cols) t = GlTexture(taps.cols, 1, TexFormat::RG32F);
-  t.set_sampling(false, false);
-  t.upload(taps);
-  glBindTexture(GL_TEXTURE_2D, t.id());
-  glUniform1i(p.uniform("u_taps"), unit + 1);
-  glUniform1i(p.uniform("u_tap_count"), (radius + 1) / 2);
-  glUniform1f(p.uniform("u_centre_weight"), static_cast<float>(centre));
-  glActiveTexture(GL_TEXTURE0);
 }
 
 RenderView with_margin(const RenderView& v, int width, int height, int margin) {
@@ -105,57 +46,198 @@ int blur_margin(const effects::StackParams& p, unsigned mask, const RenderView& 
   return std::max(b.radius_x, b.radius_y);
 }
 
-void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effects::StackParams& sp,
-                          unsigned mask, const RenderView& v, int margin) {
+EffectStackGl::EffectStackGl(TexFormat scratch_format, BlurMethod blur)
+    : scratch_format_(scratch_format), blur_method_(blur), pyramid_(scratch_format) {
+  blur_h_ = GlProgram::build("blur_1d", fullscreen_vertex_source(), effects::blur_1d_fragment_source());
+  glGenVertexArrays(1, &vao_);
+}
+
+EffectStackGl::~EffectStackGl() {
+  if (vao_) glDeleteVertexArrays(1, &vao_);
+}
+
+const GlProgram& EffectStackGl::program_for(const StackShader& variant) {
+  auto it = programs_.find(variant);
+  if (it == programs_.end()) {
+    const std::string name = "effect_stack_" + std::to_string(variant.mask) + "_" +
+                             std::to_string(static_cast<int>(variant.blur)) +
+                             (variant.per_pixel ? "_pixel" : "_view");
+    it = programs_
+             .emplace(variant, GlProgram::build(name, fullscreen_vertex_source(),
+                                                effects::stack_fragment_source(variant)))
+             .first;
+  }
+  return it->second;
+}
+
+void EffectStackGl::check_sizes(const GlTexture& src, const GlTarget& dst, int margin) const {
   const int w = dst.width(), h = dst.height();
   if (margin < 0 || src.width() != w + 2 * margin || src.height() != h + 2 * margin)
     throw GlError("EffectStackGl::apply: source " + std::to_string(src.width()) + "x" +
                   std::to_string(src.height()) + " is not the target " + std::to_string(w) + "x" +
                   std::to_string(h) + " plus a margin of " + std::to_string(margin));
-  glDisable(GL_BLEND);
-  glBindVertexArray(vao_);
-  glActiveTexture(GL_TEXTURE0);
-  const BlurPixels blur = blur_pixels(sp.blur_sigma_deg, v, w, h);
-  const bool blur_on = (mask & shader_bit(EffectType::Blur)) && sp.blur_sigma_deg > 0.0;
-  if (!blur_on) mask &= ~shader_bit(EffectType::Blur);
-  unsigned pass2_src = src.id();
-  if (blur_on) {
-    if (!scratch_ || scratch_.width() != src.width() || scratch_.height() != src.height())
-      scratch_ = GlTarget(src.width(), src.height(), scratch_format_);
-    scratch_.bind();
-    blur_h_.use();
-    glBindTexture(GL_TEXTURE_2D, src.id());
-    glUniform1i(blur_h_.uniform("u_src"), 0);
-    set_gaussian(blur_h_, blur.sigma_x, blur.radius_x, 0);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    pass2_src = scratch_.texture().id();
-  }
-  const GlProgram& p = program_for(mask);
-  dst.bind();
-  p.use();
-  glBindTexture(GL_TEXTURE_2D, pass2_src);
+}
+
+void EffectStackGl::set_geometry(const GlProgram& p, const RenderView& v, int w, int h,
+                                 int margin) const {
   glUniform1i(p.uniform("u_src"), 0);
   glUniform1i(p.uniform("u_margin"), margin);
-  if (blur_on) set_gaussian(p, blur.sigma_y, blur.radius_y, 1);
-  if (mask & shader_bit(EffectType::Tint)) {
-    const Eigen::Vector3f g = sp.tint_gain.cast<float>();
-    glUniform3f(p.uniform("u_tint"), g.x(), g.y(), g.z());
+  glUniform4f(p.uniform("u_tan"), static_cast<float>(v.tan_left), static_cast<float>(v.tan_right),
+              static_cast<float>(v.tan_down), static_cast<float>(v.tan_up));
+  glUniform2f(p.uniform("u_size"), static_cast<float>(w), static_cast<float>(h));
+  glUniform2f(p.uniform("u_centre_tan"), static_cast<float>(v.optical_centre_tan.x()),
+              static_cast<float>(v.optical_centre_tan.y()));
+}
+
+void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effects::StackParams& sp,
+                          unsigned mask, const RenderView& v, int margin) {
+  check_sizes(src, dst, margin);
+  const int w = dst.width(), h = dst.height();
+  glDisable(GL_BLEND);
+  const BlurPixels blur = blur_pixels(sp.blur_sigma_deg, v, w, h);
+  const bool blur_on = (mask & shader_bit(EffectType::Blur)) && sp.blur_sigma_deg > 0.0;
+  StackShader variant;
+  variant.mask = mask & ~shader_bit(EffectType::Blur);
+  unsigned pass2_src = src.id();
+  int blurred_scale = 0;
+  if (blur_on && blur_method_ == BlurMethod::Pyramid &&
+      plan_pyramid(blur.sigma_x, blur.sigma_y).halvings > 0) {
+    pyramid_.set_source(src);
+    blurred_scale = pyramid_.blur(blur.sigma_x, blur.sigma_y, BlurMethod::Pyramid, blurred_);
+    variant.blur = StackShader::Blur::Blurred;
+  } else if (blur_on) {
+    // Exact (or a sigma too small for the pyramid): horizontal pass here, vertical fused below.
+    if (!scratch_ || scratch_.width() != src.width() || scratch_.height() != src.height())
+      scratch_ = GlTarget(src.width(), src.height(), scratch_format_);
+    glBindVertexArray(vao_);
+    scratch_.bind();
+    blur_h_.use();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, src.id());
+    glUniform1i(blur_h_.uniform("u_src"), 0);
+    glUniform2f(blur_h_.uniform("u_dir"), 1.0f, 0.0f);
+    set_gaussian_uniforms(blur_h_, blur.sigma_x, blur.radius_x, 1, taps_[0]);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    pass2_src = scratch_.texture().id();
+    variant.blur = StackShader::Blur::FusedVertical;
   }
-  if (mask & shader_bit(EffectType::Exposure))
-    glUniform1f(p.uniform("u_exposure_gain"), static_cast<float>(std::exp2(sp.exposure_stops)));
-  if (mask & shader_bit(EffectType::Saturation))
-    glUniform1f(p.uniform("u_saturation"), static_cast<float>(sp.saturation));
-  if (mask & shader_bit(EffectType::Contrast))
-    glUniform1f(p.uniform("u_contrast"), static_cast<float>(sp.contrast));
-  if (mask & shader_bit(EffectType::Vignette)) {
-    glUniform2f(p.uniform("u_vignette"), static_cast<float>(sp.vignette_radius_deg * effects::kDegToRad),
-                static_cast<float>(sp.vignette_falloff_deg * effects::kDegToRad));
-    glUniform4f(p.uniform("u_tan"), static_cast<float>(v.tan_left), static_cast<float>(v.tan_right),
-                static_cast<float>(v.tan_down), static_cast<float>(v.tan_up));
-    glUniform2f(p.uniform("u_size"), static_cast<float>(w), static_cast<float>(h));
-    glUniform2f(p.uniform("u_centre_tan"), static_cast<float>(v.optical_centre_tan.x()),
-                static_cast<float>(v.optical_centre_tan.y()));
+  const GlProgram& p = program_for(variant);
+  glBindVertexArray(vao_);
+  dst.bind();
+  p.use();
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, pass2_src);
+  set_geometry(p, v, w, h, margin);
+  if (variant.blur == StackShader::Blur::FusedVertical)
+    set_gaussian_uniforms(p, blur.sigma_y, blur.radius_y, 2, taps_[1]);
+  if (variant.blur == StackShader::Blur::Blurred) {
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, blurred_.texture().id());
+    glUniform1i(p.uniform("u_blurred"), 1);
+    glUniform1f(p.uniform("u_blurred_scale"), static_cast<float>(blurred_scale));
+    glActiveTexture(GL_TEXTURE0);
   }
+  const Eigen::Vector3f g = sp.tint_gain.cast<float>();
+  glUniform3f(p.uniform("u_tint"), g.x(), g.y(), g.z());
+  glUniform1f(p.uniform("u_exposure_gain"), static_cast<float>(std::exp2(sp.exposure_stops)));
+  glUniform1f(p.uniform("u_saturation"), static_cast<float>(sp.saturation));
+  glUniform1f(p.uniform("u_contrast"), static_cast<float>(sp.contrast));
+  glUniform2f(p.uniform("u_vignette"), static_cast<float>(sp.vignette_radius_deg * effects::kDegToRad),
+              static_cast<float>(sp.vignette_falloff_deg * effects::kDegToRad));
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void EffectStackGl::set_param_grid(const ParamGrid& grid) {
+  if (grid.width < 1 || grid.height < 1 ||
+      grid.cells.size() != static_cast<std::size_t>(grid.width) * grid.height)
+    throw GlError("EffectStackGl::set_param_grid: grid " + std::to_string(grid.width) + "x" +
+                  std::to_string(grid.height) + " holds " + std::to_string(grid.cells.size()) +
+                  " cells");
+  // Mats are BGRA: channel 2 lands in GL's r, 1 in g, 0 in b, 3 in a (gl_texture.h).
+  cv::Mat m0(grid.height, grid.width, CV_32FC4), m1(grid.height, grid.width, CV_32FC4),
+      m2(grid.height, grid.width, CV_32FC4);
+  for (int j = 0; j < grid.height; ++j)
+    for (int i = 0; i < grid.width; ++i) {
+      const effects::StackParams& p = grid.at(i, j);
+      const auto f = [](double x) { return static_cast<float>(x); };
+      m0.at<cv::Vec4f>(j, i) = {f(p.tint_gain.z()), f(p.tint_gain.y()), f(p.tint_gain.x()),
+                                f(p.exposure_stops)};
+      m1.at<cv::Vec4f>(j, i) = {f(p.vignette_radius_deg * effects::kDegToRad), f(p.contrast),
+                                f(p.saturation), f(p.vignette_falloff_deg * effects::kDegToRad)};
+      m2.at<cv::Vec4f>(j, i) = {0.0f, 0.0f, f(p.blur_sigma_deg), 0.0f};
+    }
+  const cv::Mat* mats[3] = {&m0, &m1, &m2};
+  glActiveTexture(GL_TEXTURE0);
+  for (int k = 0; k < 3; ++k) {
+    GlTexture& t = grid_[k];
+    if (!t || t.width() != grid.width || t.height() != grid.height)
+      t = GlTexture(grid.width, grid.height, TexFormat::RGBA32F);
+    t.set_sampling(true, true);  // bilinear, repeating in azimuth
+    t.upload(*mats[k]);
+  }
+  grid_max_sigma_deg_ = grid.max_blur_sigma_deg();
+}
+
+void EffectStackGl::apply_per_pixel(const GlTexture& src, const GlTarget& dst, unsigned mask,
+                                    const RenderView& v, int margin) {
+  if (!has_param_grid()) throw GlError("EffectStackGl::apply_per_pixel: no parameter grid set");
+  check_sizes(src, dst, margin);
+  const int w = dst.width(), h = dst.height();
+  glDisable(GL_BLEND);
+  StackShader variant;
+  variant.mask = mask & ~shader_bit(EffectType::Blur);
+  variant.per_pixel = true;
+  const bool blur_on = (mask & shader_bit(EffectType::Blur)) && grid_max_sigma_deg_ > 0.0;
+  double tau1_deg = 0.0;
+  std::vector<int> scales;
+  if (blur_on) {
+    // Levels tau_j = tau_1 2^(j-1) from half a pixel up to the grid's largest sigma (fewer,
+    // coarser levels if that would need more than kMaxBlurLevels).
+    const BlurPixels per_deg = blur_pixels(1.0, v, w, h);
+    tau1_deg = kPerPixelFirstLevelPx / std::max(per_deg.sigma_x, per_deg.sigma_y);
+    int n = 1;
+    while (tau1_deg * std::ldexp(1.0, n - 1) < grid_max_sigma_deg_) ++n;
+    if (n > effects::kMaxBlurLevels) {
+      n = effects::kMaxBlurLevels;
+      tau1_deg = grid_max_sigma_deg_ / std::ldexp(1.0, n - 1);
+    }
+    if (levels_.size() < static_cast<std::size_t>(n)) levels_.resize(static_cast<std::size_t>(n));
+    pyramid_.set_source(src);
+    for (int j = 0; j < n; ++j) {
+      const double tau = tau1_deg * std::ldexp(1.0, j);
+      scales.push_back(pyramid_.blur(tau * per_deg.sigma_x, tau * per_deg.sigma_y, blur_method_,
+                                     levels_[static_cast<std::size_t>(j)]));
+    }
+    variant.blur = StackShader::Blur::Levels;
+    variant.levels = n;
+  }
+  const GlProgram& p = program_for(variant);
+  glBindVertexArray(vao_);
+  dst.bind();
+  p.use();
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, src.id());
+  set_geometry(p, v, w, h, margin);
+  const char* grid_names[3] = {"u_grid0", "u_grid1", "u_grid2"};
+  for (int k = 0; k < 3; ++k) {
+    glActiveTexture(GL_TEXTURE1 + static_cast<unsigned>(k));
+    glBindTexture(GL_TEXTURE_2D, grid_[k].id());
+    glUniform1i(p.uniform(grid_names[k]), 1 + k);
+  }
+  const Eigen::Matrix3f rot = v.orientation.cast<float>();
+  glUniformMatrix3fv(p.uniform("u_rot"), 1, GL_FALSE, rot.data());  // column-major, as GLSL
+  if (blur_on) {
+    glUniform1f(p.uniform("u_tau1_deg"), static_cast<float>(tau1_deg));
+    std::vector<float> fscales(scales.begin(), scales.end());
+    glUniform1fv(p.uniform("u_level_scale"), static_cast<int>(fscales.size()), fscales.data());
+    for (std::size_t j = 0; j < scales.size(); ++j) {
+      const unsigned unit = 4 + static_cast<unsigned>(j);
+      glActiveTexture(GL_TEXTURE0 + unit);
+      glBindTexture(GL_TEXTURE_2D, levels_[j].texture().id());
+      glUniform1i(p.uniform(("u_level" + std::to_string(j + 1)).c_str()), static_cast<int>(unit));
+    }
+  }
+  glActiveTexture(GL_TEXTURE0);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 

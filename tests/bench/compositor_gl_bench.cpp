@@ -1,7 +1,10 @@
 /// @file
 /// @brief Per-eye GPU time of each compositor stage at 1440 x 1600 (video layer, effect stack,
 /// pre-distortion pixel vs mesh N, through-the-lens), with a plain textured copy of the same size
-/// measured in the same run as the memory-bound floor (counter "x_copy" = time / copy time).
+/// measured in the same run as the memory-bound floor (counter "x_copy" = time / copy time), and
+/// the blur methods (exact separable vs pyramid) at sigma 0.5, 1, 2, 4 degrees, with the pyramid's
+/// time as a ratio to the exact blur measured in the same run (counter "x_exact") and its error
+/// against it (counters "max_err", "mean_err", 0..1 units).
 ///
 /// Timing: every iteration ends with glFinish, and the benchmark uses real time, so a stage's
 /// time is the wall time of its GPU work (llvmpipe runs it on the CPU threads). Needs a display
@@ -12,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -138,6 +142,46 @@ void BM_GlFullStackBlurSigmaCentiDeg(benchmark::State& s) {
   p.vignette_falloff_deg = 20;
   run(s, [p](Fixture& f) { f.stack->apply(f.a.texture(), f.b, p, effects::non_neutral_mask(p), f.eye); });
 }
+// Blur alone (no other effect), the given method; x_exact against the exact blur of the same
+// sigma timed once (median of 3) in this run.
+void BM_GlBlurMethodSigmaCentiDeg(benchmark::State& s) {
+  const auto method = static_cast<BlurMethod>(s.range(0));
+  effects::StackParams p;
+  p.blur_sigma_deg = static_cast<double>(s.range(1)) / 100.0;
+  const unsigned mask = effects::non_neutral_mask(p);
+  static std::map<long, std::pair<double, cv::Mat>> exact;  // sigma -> (median ms, image)
+  static std::unique_ptr<EffectStackGl> exact_stack, pyramid_stack;
+  Fixture& fx = fixture();
+  if (fx.ctx && !exact.count(s.range(1))) {
+    if (!exact_stack) exact_stack = std::make_unique<EffectStackGl>(TexFormat::RGBA16F, BlurMethod::Exact);
+    std::vector<double> t;
+    for (int i = 0; i < 3; ++i)
+      t.push_back(time_ms([&] { exact_stack->apply(fx.a.texture(), fx.b, p, mask, fx.eye); }));
+    std::sort(t.begin(), t.end());
+    exact[s.range(1)] = {t[1], fx.b.read_float()};
+  }
+  if (fx.ctx && !pyramid_stack)
+    pyramid_stack = std::make_unique<EffectStackGl>(TexFormat::RGBA16F, BlurMethod::Pyramid);
+  EffectStackGl* stack = method == BlurMethod::Exact ? exact_stack.get() : pyramid_stack.get();
+  run(s, [&](Fixture& f) { stack->apply(f.a.texture(), f.b, p, mask, f.eye); });
+  if (!fx.ctx) return;
+  const auto& [exact_ms, exact_img] = exact[s.range(1)];
+  cv::Mat d, rgb;
+  cv::absdiff(fx.b.read_float(), exact_img, d);
+  double mx = 0.0;
+  cv::Scalar mean = cv::mean(d);
+  for (int c = 0; c < 3; ++c) {
+    cv::extractChannel(d, rgb, c);
+    double m = 0.0;
+    cv::minMaxLoc(rgb, nullptr, &m);
+    mx = std::max(mx, m);
+  }
+  s.counters["exact_ms"] = exact_ms;
+  // run() left the mean time as x_copy * copy_ms.
+  s.counters["x_exact"] = s.counters["x_copy"] * s.counters["copy_ms"] / exact_ms;
+  s.counters["max_err"] = mx;
+  s.counters["mean_err"] = (mean[0] + mean[1] + mean[2]) / 3.0;
+}
 void BM_GlPredistortPixel(benchmark::State& s) {
   const int iters = static_cast<int>(s.range(0));
   run(s, [iters](Fixture& f) {
@@ -160,6 +204,9 @@ VDFX_GL_BENCH(BM_GlCopyFloor);
 VDFX_GL_BENCH(BM_GlVideoLayer)->Arg(0)->Arg(1)->Arg(2);  // LodMode analytic, derivatives, base
 VDFX_GL_BENCH(BM_GlColourEffects);
 VDFX_GL_BENCH(BM_GlFullStackBlurSigmaCentiDeg)->Arg(50)->Arg(100)->Arg(200);
+VDFX_GL_BENCH(BM_GlBlurMethodSigmaCentiDeg)
+    ->ArgsProduct({{0, 1}, {50, 100, 200, 400}})
+    ->ArgNames({"pyramid", "sigma_cdeg"});  // 0 exact, 1 pyramid
 VDFX_GL_BENCH(BM_GlPredistortPixel)->Arg(4)->Arg(8);
 VDFX_GL_BENCH(BM_GlPredistortMesh)->Arg(5)->Arg(9)->Arg(17)->Arg(33)->Arg(65);
 VDFX_GL_BENCH(BM_GlThroughLens);
