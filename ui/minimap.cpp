@@ -125,8 +125,9 @@ void Minimap::draw(DrawContext& ctx) const {
     c.fill_circle(p, hi ? 13.0 : 10.0, hi ? t.keyframe_highlight : t.keyframe);
     c.stroke_circle(p, hi ? 13.0 : 10.0, 3.0, Rgba::hex(0x000000, 0.8f));
     if (static_cast<int>(i) == selected_) {  // the keyframe being edited: a ring around its dot
-      c.stroke_circle(p, 22.0, 7.0, Rgba::hex(0x000000, 0.7f));
-      c.stroke_circle(p, 22.0, 4.0, t.accent);
+      // Big and two-toned so it reads at a few eye pixels over any colour of the map.
+      c.stroke_circle(p, 30.0, 12.0, Rgba::hex(0x000000, 0.8f));
+      c.stroke_circle(p, 30.0, 6.0, t.text);
     }
   }
   c.pop_clip();
