@@ -21,6 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// `vdfx edit`'s default --scale (the player keeps kDefaultEyeScale).
+constexpr double kEditDefaultEyeScale = 0.5;
+
 fs::path demo_sidecar() { return fs::path(VDFX_SOURCE_DIR) / "app" / "demo" / "interior.vdfx.json"; }
 
 // The sidecar's video path, relative to the sidecar's folder when relative.
@@ -93,6 +96,9 @@ int cmd_edit(const Args& args) {
   CLI::App cli("author view-dependent effects in the simulated headset (no VIDEO: the demo)", "vdfx edit");
   std::string video, sidecar_arg, recover = "ask";
   LoopCli loop;
+  // Panel text must be legible in the mirror: at the player's 0.25 the timeline's small text
+  // blurs into a few eye pixels per glyph; 0.5 reads (docs/editor.md).
+  loop.scale = kEditDefaultEyeScale;
   cli.add_option("VIDEO", video, "video file or still image; default: the sidecar's video");
   cli.add_option("--sidecar", sidecar_arg,
                  "effects file (.vdfx.json) to edit, created when missing; default: VIDEO's "

@@ -105,11 +105,16 @@ effects::KeyframeSet::Edit Document::add_keyframe(EffectType type, const effects
   return edit;
 }
 
-void Document::move_keyframe(EffectType type, std::size_t index, const effects::Direction& direction,
-                             std::int64_t frame) {
+effects::KeyframeSet::Edit Document::move_keyframe(EffectType type, std::size_t index,
+                                                   const effects::Direction& direction, std::int64_t frame) {
+  const auto& ks = sets_[idx(type)]->keyframes();
+  if (index < ks.size() && ks[index].frame == frame && ks[index].direction.azimuth_deg == direction.azimuth_deg &&
+      ks[index].direction.altitude_deg == direction.altitude_deg)
+    return {index, std::nullopt, true};
   auto before = snapshot(type);
-  sets_[idx(type)]->move(index, direction, frame);
-  record("move keyframe", type, std::move(before));
+  const auto edit = sets_[idx(type)]->move(index, direction, frame);
+  record(edit.replaced ? "move keyframe (replaced one)" : "move keyframe", type, std::move(before));
+  return edit;
 }
 
 void Document::remove_keyframe(EffectType type, std::size_t index) {
@@ -119,8 +124,10 @@ void Document::remove_keyframe(EffectType type, std::size_t index) {
 }
 
 void Document::set_keyframe_params(EffectType type, std::size_t index, std::vector<double> params) {
+  params = clamp_params(type, std::move(params));
+  if (index < keyframes(type).size() && keyframes(type)[index].params == params) return;
   auto before = snapshot(type);
-  sets_[idx(type)]->set_params(index, clamp_params(type, std::move(params)));
+  sets_[idx(type)]->set_params(index, std::move(params));
   record("keyframe parameters", type, std::move(before));
 }
 

@@ -55,9 +55,13 @@ class Document {
   // ---- edits: each is one undo step, or part of the open group
   /// Adds (or, within 0.5 deg at the same frame, replaces) a keyframe. Returns its index.
   effects::KeyframeSet::Edit add_keyframe(effects::EffectType type, const effects::Keyframe& keyframe);
-  void move_keyframe(effects::EffectType type, std::size_t index, const effects::Direction& direction,
-                     std::int64_t frame);
+  /// Moves a keyframe; one it lands on (within 0.5 deg at the same frame) is removed, like a
+  /// placement replaces it. Returns where the moved keyframe now is and what it replaced. Moving
+  /// a keyframe to where it is already is no edit.
+  effects::KeyframeSet::Edit move_keyframe(effects::EffectType type, std::size_t index,
+                                           const effects::Direction& direction, std::int64_t frame);
   void remove_keyframe(effects::EffectType type, std::size_t index);
+  /// A keyframe's values (clamped; tint normalised); equal values are no edit.
   void set_keyframe_params(effects::EffectType type, std::size_t index, std::vector<double> params);
   /// The tool's values (clamped to the effect's ranges; tint normalised).
   void set_params(effects::EffectType type, std::vector<double> params);

@@ -89,12 +89,25 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
     auto ev = right_ptr_.update(reach, pointer_input(input.right), dt);
     events.insert(events.end(), ev.begin(), ev.end());
   }
+  validate_selection();  // the document may have been edited from outside (tests, tools)
   for (const auto& e : events) handle(e);
 
-  // Placement: a right-trigger press that did not land on a panel previews; release places.
+  // Grab: right squeeze selects the nearest keyframe and holds it; release commits the move.
+  const bool squeeze = input.right.tracked && input.right.squeeze >= 0.5;
+  if (squeeze && !squeeze_was_down_) grab();
+  if (!squeeze && grabbing_) grab_release();
+  squeeze_was_down_ = squeeze;
+  const bool stick_click = input.right.tracked && input.right.thumbstick_click;
+  if (stick_click && !stick_click_was_down_) deselect();
+  stick_click_was_down_ = stick_click;
+
+  // Placement: a right-trigger press that did not land on a panel previews; release places. It
+  // leaves a selection (the widget goes back to the chosen values that will be placed).
   const bool down = right_ptr_.trigger_down();
-  if (down && !right_was_down_ && !right_ptr_.hit() && right_ptr_.pressed_widget().empty())
+  if (down && !right_was_down_ && !grabbing_ && !right_ptr_.hit() && right_ptr_.pressed_widget().empty()) {
+    deselect();
     previewing_ = true;
+  }
   if (!down && previewing_) {
     previewing_ = false;
     place_keyframe();
@@ -120,22 +133,32 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
 effects::StackParams Editor::params_for_view(const Direction& direction, std::int64_t frame) const {
   if (unaltered_) return {};
   effects::StackParams sp = doc_.interpolator().evaluate(direction, frame);
-  if (!previewing_) return sp;
+  if (!previewing_ && !grabbing_) return sp;
   const auto& chosen = doc_.params(effect_);
   // At the view centre the preview keyframe's values are exact; elsewhere interpolate with it.
-  if (frame == frame_ && angle_deg(direction, view_) < 1e-9) {
+  if (previewing_ && frame == frame_ && angle_deg(direction, view_) < 1e-9) {
     sp.set(effect_, chosen);
     return sp;
   }
+  const auto held = selected_preview();
+  if (grabbing_) {  // a grab that has not moved yet changes nothing
+    if (!held) return sp;
+    const auto& k = doc_.keyframes(effect_)[*selected_];
+    if (held->frame == k.frame && held->direction.azimuth_deg == k.direction.azimuth_deg &&
+        held->direction.altitude_deg == k.direction.altitude_deg)
+      return sp;
+  }
   std::vector<double> key = {view_.azimuth_deg, view_.altitude_deg, static_cast<double>(frame_),
-                             static_cast<double>(doc_.revision()), static_cast<double>(effect_)};
-  key.insert(key.end(), chosen.begin(), chosen.end());
+                             static_cast<double>(doc_.revision()), static_cast<double>(effect_),
+                             grabbing_ ? 1.0 : 0.0};
+  if (grabbing_) {
+    key.insert(key.end(), {held->direction.azimuth_deg, held->direction.altitude_deg,
+                           static_cast<double>(held->frame), static_cast<double>(*selected_)});
+  } else {
+    key.insert(key.end(), chosen.begin(), chosen.end());
+  }
   if (!preview_rbf_ || key != preview_key_) {
-    std::vector<effects::Keyframe> ks = doc_.keyframes(effect_);
-    std::erase_if(ks, [&](const effects::Keyframe& k) {
-      return k.frame == frame_ && angle_deg(k.direction, view_) <= effects::kReplaceAngleDeg;
-    });
-    ks.push_back({view_, frame_, chosen});
+    const std::vector<effects::Keyframe> ks = *preview_keyframes();
     const auto& spec = effects::effect_spec(effect_);
     preview_rbf_ = std::make_shared<const effects::RbfInterpolator>(
         ks, spec.dimension(), doc_.interpolation(effect_), doc_.video().fps, spec.neutral());
@@ -146,10 +169,63 @@ effects::StackParams Editor::params_for_view(const Direction& direction, std::in
   return sp;
 }
 
+std::optional<std::vector<effects::Keyframe>> Editor::preview_keyframes() const {
+  std::vector<effects::Keyframe> ks = doc_.keyframes(effect_);
+  // The new or moved keyframe replaces one within 0.5 deg at its frame, as the edit will.
+  auto drop_coincident = [&](const effects::Keyframe& at, std::optional<std::size_t> keep) {
+    std::vector<effects::Keyframe> out;
+    for (std::size_t i = 0; i < ks.size(); ++i)
+      if ((keep && i == *keep) || ks[i].frame != at.frame ||
+          angle_deg(ks[i].direction, at.direction) > effects::kReplaceAngleDeg)
+        out.push_back(ks[i]);
+    ks = std::move(out);
+  };
+  if (previewing_) {
+    const effects::Keyframe k{view_, frame_, doc_.params(effect_)};
+    drop_coincident(k, std::nullopt);
+    ks.push_back(k);
+    return ks;
+  }
+  if (grabbing_ && selected_ && *selected_ < ks.size()) {
+    ks[*selected_] = *selected_preview();
+    drop_coincident(ks[*selected_], selected_);
+    return ks;
+  }
+  return std::nullopt;
+}
+
+std::optional<effects::Keyframe> Editor::selected_preview() const {
+  const auto& ks = doc_.keyframes(effect_);
+  if (!selected_ || *selected_ >= ks.size()) return std::nullopt;
+  effects::Keyframe k = ks[*selected_];
+  if (!grabbing_) return k;
+  // The keyframe keeps the offset from the view centre (in azimuth and altitude) and from the
+  // playhead (in frames) that it had when grabbed, so grabbing alone moves nothing and a
+  // keyframe grabbed while looking at it stays at the view centre.
+  k.direction.azimuth_deg = effects::wrap_azimuth_deg(
+      grab_key0_.direction.azimuth_deg + (view_.azimuth_deg - grab_view0_.azimuth_deg));
+  k.direction.altitude_deg =
+      std::clamp(grab_key0_.direction.altitude_deg + (view_.altitude_deg - grab_view0_.altitude_deg), -90.0, 90.0);
+  k.frame = std::clamp<std::int64_t>(grab_key0_.frame + (frame_ - grab_frame0_), 0, doc_.video().frames - 1);
+  return k;
+}
+
+const std::vector<double>& Editor::widget_values() const {
+  const auto& ks = doc_.keyframes(effect_);
+  return selected_ && *selected_ < ks.size() ? ks[*selected_].params : doc_.params(effect_);
+}
+
+void Editor::validate_selection() {
+  if (selected_ && *selected_ >= doc_.keyframes(effect_).size()) {
+    selected_.reset();
+    grabbing_ = false;
+  }
+}
+
 std::vector<ui::Panel*> Editor::panels() { return panels_.all(); }
 
 std::string Editor::status_text() const {
-  const auto& chosen = doc_.params(effect_);
+  const auto& chosen = widget_values();
   std::string s = title_case(effects::effect_name(effect_)) + " ";
   switch (effect_) {
     case EffectType::Tint: s += fmt("gain %.2f", chosen[0]) + fmt(" %.2f", chosen[1]) + fmt(" %.2f", chosen[2]); break;
@@ -162,6 +238,13 @@ std::string Editor::status_text() const {
   s += " | " + std::to_string(doc_.keyframes(effect_).size()) + " keyframes";
   if (playing_) s += " | playing";
   if (previewing_) s += " | PREVIEW: release to place";
+  if (const auto k = selected_preview()) {
+    const std::string where = fmt("az %.0f", k->direction.azimuth_deg) + fmt(" alt %.0f", k->direction.altitude_deg) +
+                              " frame " + std::to_string(k->frame);
+    const std::string which = std::to_string(*selected_ + 1) + "/" + std::to_string(doc_.keyframes(effect_).size());
+    s += grabbing_ ? " | GRAB keyframe " + which + " -> " + where + ": release to move"
+                   : " | SELECTED keyframe " + which + " (" + where + "): widget edits it";
+  }
   if (unaltered_) s += " | UNALTERED";
   if (look_target_) {
     const double daz = effects::wrap_azimuth_deg(look_target_->azimuth_deg - view_.azimuth_deg);
@@ -176,6 +259,10 @@ std::string Editor::status_text() const {
 bool Editor::finish() { return autosave_ ? autosave_->finish(doc_.sidecar()) : true; }
 
 void Editor::select_effect(EffectType type) {
+  if (type != effect_) {
+    selected_.reset();
+    grabbing_ = false;
+  }
   effect_ = type;
   panels_.show_effect(type);
   previewing_ = false;
@@ -210,6 +297,14 @@ std::optional<Direction> Editor::jump_to_keyframe(int step) {
 }
 
 bool Editor::delete_nearest() {
+  if (selected_) {
+    const std::size_t i = *selected_;
+    selected_.reset();
+    grabbing_ = false;
+    doc_.remove_keyframe(effect_, i);
+    message_ = "deleted the selected keyframe";
+    return true;
+  }
   const auto& ks = doc_.keyframes(effect_);
   const auto i = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
   if (!i) {
@@ -226,14 +321,69 @@ void Editor::place_keyframe() {
   message_ = edit.replaced ? "replaced a keyframe" : "placed a keyframe";
 }
 
+bool Editor::select_nearest() {
+  const auto& ks = doc_.keyframes(effect_);
+  const auto i = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
+  if (!i) {
+    message_ = "no keyframe to select";
+    return false;
+  }
+  selected_ = *i;
+  grabbing_ = false;
+  previewing_ = false;
+  message_ = "selected keyframe " + std::to_string(*i + 1);
+  return true;
+}
+
+void Editor::deselect() {
+  if (!selected_) return;
+  selected_.reset();
+  grabbing_ = false;  // a grab in progress is cancelled, not committed
+  message_ = "deselected";
+}
+
+bool Editor::grab() {
+  if (!select_nearest()) return false;
+  grabbing_ = true;
+  grab_view0_ = view_;
+  grab_frame0_ = frame_;
+  grab_key0_ = doc_.keyframes(effect_)[*selected_];
+  message_ = "holding keyframe " + std::to_string(*selected_ + 1);
+  return true;
+}
+
+void Editor::grab_release() {
+  if (!grabbing_) return;
+  const auto k = selected_preview();
+  grabbing_ = false;
+  if (!k) return;
+  const auto& old = doc_.keyframes(effect_)[*selected_];
+  if (k->frame == old.frame && k->direction.azimuth_deg == old.direction.azimuth_deg &&
+      k->direction.altitude_deg == old.direction.altitude_deg) {
+    message_ = "selected keyframe " + std::to_string(*selected_ + 1);
+    return;
+  }
+  const auto edit = doc_.move_keyframe(effect_, *selected_, k->direction, k->frame);
+  selected_ = edit.index;
+  message_ = edit.replaced ? "moved a keyframe onto another (replaced it)" : "moved a keyframe";
+}
+
+void Editor::set_selected_params(std::vector<double> params) {
+  if (selected_) doc_.set_keyframe_params(effect_, *selected_, std::move(params));
+}
+
 bool Editor::undo() {
+  grabbing_ = false;  // undo during a grab cancels it
   const bool ok = doc_.undo();
+  validate_selection();
   message_ = ok ? "undone" : "nothing to undo";
   return ok;
 }
 
 bool Editor::redo() {
+  grabbing_ = false;
   const bool ok = doc_.redo();
+  validate_selection();
   message_ = ok ? "redone" : "nothing to redo";
   return ok;
 }
@@ -264,6 +414,8 @@ void Editor::handle(const ui::Event& e) {
         auto s = doc_.interpolation(effect_);
         (e.widget == "exponent" ? s.exponent : s.time_scale) = e.new_value.x;
         doc_.set_interpolation(effect_, s);
+      } else if (selected_) {
+        set_selected_params(widget_params(e));
       } else {
         set_chosen_params(widget_params(e));
       }
@@ -273,6 +425,8 @@ void Editor::handle(const ui::Event& e) {
       redo();
     } else if (clicked && e.widget == "delete_nearest") {
       delete_nearest();
+    } else if (clicked && e.widget == "deselect") {
+      deselect();
     }
   } else if (e.panel == kTimelinePanelId) {
     if (clicked && e.widget == "play") set_playing(!playing_);
@@ -288,7 +442,7 @@ void Editor::sync_widgets() {
   // Widgets show the document; a widget being dragged already shows its own value (setters
   // compare, so re-setting equal values costs nothing), and the wheel is left alone while held
   // because tint normalisation would nudge it.
-  const auto& chosen = doc_.params(effect_);
+  const auto& chosen = widget_values();
   ui::Widget* w = panels_.effect_widgets[static_cast<std::size_t>(effect_)];
   if (!w->pressed()) {
     if (auto* s = dynamic_cast<ui::Slider1D*>(w)) s->set_value(chosen[0]);
@@ -303,7 +457,15 @@ void Editor::sync_widgets() {
   if (!panels_.time_scale->pressed()) panels_.time_scale->set_value(s.time_scale);
   panels_.undo->set_enabled(doc_.undo_stack().can_undo());
   panels_.redo->set_enabled(doc_.undo_stack().can_redo());
-  panels_.title->set_text("Effects \u2014 " + title_case(effects::effect_name(effect_)));
+  const std::string name = title_case(effects::effect_name(effect_));
+  if (selected_) {
+    const std::string which = std::to_string(*selected_ + 1) + " of " + std::to_string(doc_.keyframes(effect_).size());
+    panels_.title->set_text(name + (grabbing_ ? " \u2014 moving keyframe " : " \u2014 keyframe ") + which);
+  } else {
+    panels_.title->set_text("Effects \u2014 " + name);
+  }
+  panels_.delete_nearest->set_label(selected_ ? "Delete selected" : "Delete nearest");
+  panels_.deselect->set_enabled(selected_.has_value());
   panels_.play->set_icon(playing_ ? ui::Icon::Pause : ui::Icon::Play);
   panels_.strip->set_playhead(static_cast<int>(frame_));
   const double fps = doc_.video().fps;
@@ -315,12 +477,18 @@ void Editor::sync_widgets() {
 void Editor::refresh_visualizations() {
   const auto& ks = doc_.keyframes(effect_);
   const int eff = static_cast<int>(effect_);
+  const auto held = selected_preview();  // the selected keyframe, where a grab puts it now
+  const std::int64_t held_frame = held ? held->frame : -1;
   // Markers follow the view: recomputed when it moved by a degree, or the keyframes changed.
-  if (marker_revision_ != doc_.revision() || marker_effect_ != eff || angle_deg(marker_view_, view_) > 1.0) {
+  if (marker_revision_ != doc_.revision() || marker_effect_ != eff || angle_deg(marker_view_, view_) > 1.0 ||
+      marker_selected_ != held_frame) {
     near_ = keyframes_near_view(ks, view_, options_.marker_cone_deg);
     std::vector<int> frames, highlighted;
-    for (const auto& k : ks) frames.push_back(static_cast<int>(k.frame));
+    for (std::size_t i = 0; i < ks.size(); ++i)
+      frames.push_back(static_cast<int>(held && i == *selected_ ? held->frame : ks[i].frame));
     for (const auto i : near_) highlighted.push_back(static_cast<int>(ks[i].frame));
+    if (held) highlighted.push_back(static_cast<int>(held->frame));
+    marker_selected_ = held_frame;
     panels_.strip->set_keyframes(frames);
     panels_.strip->set_highlighted(highlighted);
     marker_revision_ = doc_.revision();
@@ -354,12 +522,17 @@ void Editor::refresh_visualizations() {
   if (!(minimap_key_ == mk)) {
     minimap_ = effect_minimap(rbf.get(), effect_, frame_, options_.minimap_width, options_.minimap_height);
     panels_.minimap->set_field(minimap_, lo, hi);
-    std::vector<Direction> dirs;
-    for (const auto& k : ks) dirs.push_back(k.direction);
-    const auto nearest = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
-    panels_.minimap->set_keyframes(dirs, nearest ? static_cast<int>(*nearest) : -1);
+    nearest_ = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
     minimap_key_ = mk;
     ++minimap_count_;
+  }
+  {
+    // Keyframe dots: the selected one ringed (and carried along while grabbed). Setters compare,
+    // so an unchanged set costs no redraw.
+    std::vector<Direction> dirs;
+    for (std::size_t i = 0; i < ks.size(); ++i) dirs.push_back(held && i == *selected_ ? held->direction : ks[i].direction);
+    panels_.minimap->set_keyframes(std::move(dirs), nearest_ ? static_cast<int>(*nearest_) : -1,
+                                   selected_ ? static_cast<int>(*selected_) : -1);
   }
   panels_.minimap->set_view(view_, options_.view_hfov_deg, options_.view_vfov_deg);
 }

@@ -9,8 +9,13 @@
 ///
 /// Bindings (docs/editor.md): right trigger on nothing = preview, release = place a keyframe at
 /// the view centre and the current frame; trigger on a panel = UI. Right B held = unaltered film.
-/// Right A = delete the keyframe nearest the view. Left X / Y = undo / redo. Each hand's aim ray
-/// drives the panels not attached to that hand (ui::Pointer).
+/// Right A = delete the selected keyframe, else the one nearest the view. Left X / Y = undo /
+/// redo. Right squeeze = grab: selects the keyframe nearest the view; while held it follows the
+/// view (keeping its offset from the view centre) and the playhead (keeping its offset in
+/// frames); release commits one move. A selected keyframe's values show in the effect widget,
+/// which then edits them. Right thumbstick click (or the Deselect button, or a trigger press on
+/// nothing, which then previews a new keyframe) deselects. Each hand's aim ray drives the panels
+/// not attached to that hand (ui::Pointer).
 #pragma once
 
 #include <cstdint>
@@ -64,6 +69,13 @@ class Editor {
   std::string status_text() const;
   bool unaltered() const { return unaltered_; }
   bool previewing() const { return previewing_; }
+  /// The current effect's selected keyframe (index into its keyframes), if any.
+  const std::optional<std::size_t>& selected_keyframe() const { return selected_; }
+  /// Whether the selected keyframe is held by the grab (right squeeze).
+  bool grabbing() const { return grabbing_; }
+  /// While grabbing: where the grabbed keyframe would land now (its values included), else the
+  /// selected keyframe as it is; nullopt without a selection.
+  std::optional<effects::Keyframe> selected_preview() const;
   bool playing() const { return playing_; }
   std::int64_t frame() const { return frame_; }
   const effects::Direction& view_direction() const { return view_; }
@@ -86,6 +98,17 @@ class Editor {
   /// Places the chosen values at the view centre and the current frame (replaces a keyframe
   /// within 0.5 deg on the same frame).
   void place_keyframe();
+  /// Selects the current effect's keyframe nearest the view (RBF distance); false when none.
+  bool select_nearest();
+  void deselect();
+  /// Selects the nearest keyframe and holds it: until grab_release() it follows the view and
+  /// the playhead by how far they moved since the grab began. False when there is none.
+  bool grab();
+  /// Commits the grab as one undoable move (none when it did not move); the keyframe stays
+  /// selected. Landing within 0.5 deg of another keyframe at the same frame replaces that one.
+  void grab_release();
+  /// The selected keyframe's values (one undo step unless a group is open).
+  void set_selected_params(std::vector<double> params);
   bool undo();
   bool redo();
 
@@ -113,6 +136,11 @@ class Editor {
   void sync_widgets();
   void refresh_visualizations();
   std::vector<double> widget_params(const ui::Event& e) const;
+  /// The keyframes a preview interpolant uses (placement or grab), or nullopt when neither.
+  std::optional<std::vector<effects::Keyframe>> preview_keyframes() const;
+  /// The values the effect widget shows and edits: the selected keyframe's, else the chosen.
+  const std::vector<double>& widget_values() const;
+  void validate_selection();
 
   Document doc_;
   EditorOptions options_;
@@ -128,6 +156,13 @@ class Editor {
   effects::EffectType effect_ = effects::EffectType::Exposure;
   bool previewing_ = false, unaltered_ = false, playing_ = false;
   bool right_was_down_ = false, a_was_down_ = false, x_was_down_ = false, y_was_down_ = false;
+  bool squeeze_was_down_ = false, stick_click_was_down_ = false;
+  // selection and grab
+  std::optional<std::size_t> selected_;
+  bool grabbing_ = false;
+  effects::Direction grab_view0_{};  //!< the view when the grab began
+  std::int64_t grab_frame0_ = 0;     //!< the playhead then
+  effects::Keyframe grab_key0_;      //!< the keyframe's place then
   std::int64_t play_t0_ = 0, play_f0_ = 0, now_ = 0;
   std::optional<effects::Direction> look_target_;
   std::string message_;
@@ -143,6 +178,8 @@ class Editor {
   effects::Direction marker_view_{}, track_view_{};
   std::uint64_t marker_revision_ = ~0ull;
   int marker_effect_ = -1;
+  std::int64_t marker_selected_ = -1;  //!< the selected keyframe's (held) frame at the last marker update
+  std::optional<std::size_t> nearest_;  //!< nearest keyframe at the last minimap update
   cv::Mat minimap_;
   std::vector<double> track_;
   std::vector<std::int64_t> track_frames_;

@@ -55,6 +55,13 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
     const auto& chosen = doc.params(e);
     key.insert(key.end(), chosen.begin(), chosen.end());
   }
+  if (editor_.grabbing()) {
+    // The held keyframe follows the view and the playhead before the move is committed.
+    key.push_back(2.0);
+    if (const auto k = editor_.selected_preview())
+      key.insert(key.end(), {k->direction.azimuth_deg, k->direction.altitude_deg, static_cast<double>(k->frame),
+                             static_cast<double>(*editor_.selected_keyframe())});
+  }
   active_ = mask;
   if (key != revision_key_) {
     revision_key_ = std::move(key);
@@ -125,12 +132,16 @@ std::string EditorClient::controls_text() {
          "                            release places a keyframe there at the current frame\n"
          "  right trigger (on a panel) use the panel (menus, sliders, buttons, timeline)\n"
          "  left trigger + left aim   use the panels not held by the left hand\n"
-         "  right a                   delete the current effect's keyframe nearest the view\n"
+         "  right a                   delete the selected keyframe, else the one nearest the view\n"
+         "  right squeeze (held)      grab the keyframe nearest the view and select it: it follows\n"
+         "                            the view and the playhead while held; release moves it there\n"
+         "                            (one undo step); while selected the effect widget edits its values\n"
+         "  right thumbstick click    deselect (so does the Deselect button or a trigger placement)\n"
          "  right b (held)            unaltered film (no effects) while held\n"
          "  left x / left y           undo / redo\n"
          "  thumbstick                adjust the widget that hand's pointer focused last\n"
-         "Panels: effects (effect menu, the effect's widget, undo / redo, delete nearest, exponent\n"
-         "and time scale, autosave status) and timeline (play, previous / next keyframe, strip,\n"
+         "Panels: effects (effect menu, the effect's widget, undo / redo, delete, deselect,\n"
+         "exponent and time scale, autosave status) and timeline (play, previous / next keyframe, strip,\n"
          "track plot, minimap, lock in world). --input sim: both panels in front of the head, the\n"
          "mouse-driven right aim ray reaches both; a headset: on the left and right grips.\n";
 }

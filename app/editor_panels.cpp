@@ -80,8 +80,12 @@ EditorPanels::EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_
     undo->set_rect(split_cols(row, 2, 0, t.gap));
     redo = &p.add<Button>("redo", "Redo \u2192");
     redo->set_rect(split_cols(row, 2, 1, t.gap));
-    delete_nearest = &p.add<Button>("delete_nearest", "Delete nearest keyframe");
-    delete_nearest->set_rect(col.next(t.row_height));
+    const Rect keys = col.next(t.row_height);
+    delete_nearest = &p.add<Button>("delete_nearest", "Delete nearest");
+    delete_nearest->set_rect(split_cols(keys, 2, 0, t.gap));
+    deselect = &p.add<Button>("deselect", "Deselect");
+    deselect->set_rect(split_cols(keys, 2, 1, t.gap));
+    deselect->set_enabled(false);
     exponent = &p.add<Slider1D>("exponent", "Exponent \u03b1", Axis{0.1, 3.9, 0.1, "%.1f", "", ""}, 1.0, 1.0);
     exponent->set_rect(col.next(130));
     time_scale = &p.add<Slider1D>("time_scale", "Time scale c", Axis{0.1, 10.0, 0.1, "%.1f", "", ""}, 1.0, 1.0);

@@ -4,7 +4,8 @@
 ///
 /// Effect panel (non-dominant, left hand): title, effect menu (all six effects), the current
 /// effect's widget (tint: colour wheel; vignette: 2-D pad radius x falloff; blur, exposure,
-/// saturation, contrast: a slider with the contract's range), undo / redo, delete nearest, and the
+/// saturation, contrast: a slider with the contract's range), undo / redo, delete (the selected
+/// keyframe, else the nearest) and deselect, and the
 /// system menu: the current effect's exponent and time scale, autosave status.
 /// Timeline panel (dominant, right hand): play/pause, previous / next keyframe, time, timeline
 /// strip with keyframe markers, toggles for the effect track plot, the minimap and lock in world,
@@ -78,7 +79,8 @@ class EditorPanels {
   std::array<ui::Widget*, effects::kEffectCount> effect_widgets{};
   ui::Button* undo = nullptr;
   ui::Button* redo = nullptr;
-  ui::Button* delete_nearest = nullptr;
+  ui::Button* delete_nearest = nullptr;  //!< deletes the selected keyframe, else the nearest
+  ui::Button* deselect = nullptr;        //!< leaves the selected keyframe (right thumbstick click too)
   ui::Slider1D* exponent = nullptr;
   ui::Slider1D* time_scale = nullptr;
   ui::Label* status = nullptr;

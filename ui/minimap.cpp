@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace vdfx::ui {
@@ -21,10 +22,14 @@ Minimap::Minimap(std::string id, std::string title)
     : Widget(std::move(id)), title_(std::move(title)) {}
 
 void Minimap::set_field(const cv::Mat& field, double lo, double hi) {
-  cv::Mat u8;
+  cv::Mat u8, bgr;
   const double scale = hi > lo ? 255.0 / (hi - lo) : 0.0;
   field.convertTo(u8, CV_8U, scale, -lo * scale);
-  cv::applyColorMap(u8, image_, cv::COLORMAP_VIRIDIS);
+  cv::applyColorMap(u8, bgr, cv::COLORMAP_VIRIDIS);
+  if (!image_.empty() && image_.size() == bgr.size() && image_.type() == bgr.type() &&
+      cv::norm(image_, bgr, cv::NORM_INF) == 0.0)
+    return;
+  image_ = bgr;
   scaled_ = {};
   touch();
 }
@@ -35,13 +40,23 @@ void Minimap::set_image(const cv::Mat& bgr) {
   touch();
 }
 
-void Minimap::set_keyframes(std::vector<effects::Direction> dirs, int highlighted) {
+void Minimap::set_keyframes(std::vector<effects::Direction> dirs, int highlighted, int selected) {
+  const auto same = [](const effects::Direction& a, const effects::Direction& b) {
+    return a.azimuth_deg == b.azimuth_deg && a.altitude_deg == b.altitude_deg;
+  };
+  if (highlighted == highlighted_ && selected == selected_ &&
+      std::equal(dirs.begin(), dirs.end(), keyframes_.begin(), keyframes_.end(), same))
+    return;
   keyframes_ = std::move(dirs);
   highlighted_ = highlighted;
+  selected_ = selected;
   touch();
 }
 
 void Minimap::set_view(effects::Direction forward, double hfov_deg, double vfov_deg) {
+  if (forward.azimuth_deg == view_.azimuth_deg && forward.altitude_deg == view_.altitude_deg &&
+      hfov_deg == hfov_ && vfov_deg == vfov_)
+    return;
   view_ = forward;
   hfov_ = hfov_deg;
   vfov_ = vfov_deg;
@@ -109,6 +124,11 @@ void Minimap::draw(DrawContext& ctx) const {
     const bool hi = static_cast<int>(i) == highlighted_;
     c.fill_circle(p, hi ? 13.0 : 10.0, hi ? t.keyframe_highlight : t.keyframe);
     c.stroke_circle(p, hi ? 13.0 : 10.0, 3.0, Rgba::hex(0x000000, 0.8f));
+    if (static_cast<int>(i) == selected_) {  // the keyframe being edited: a ring around its dot
+      // Big and two-toned so it reads at a few eye pixels over any colour of the map.
+      c.stroke_circle(p, 30.0, 12.0, Rgba::hex(0x000000, 0.8f));
+      c.stroke_circle(p, 30.0, 6.0, t.text);
+    }
   }
   c.pop_clip();
   c.stroke_rounded_rect(a.inset(-2.0), 2.0, 2.0, t.track);

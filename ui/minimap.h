@@ -18,12 +18,18 @@ class Minimap : public Widget {
  public:
   Minimap(std::string id, std::string title);
   /// A scalar field (CV_32FC1, equirect, row 0 = altitude +90) shown through the viridis colour
-  /// map with lo..hi mapped to its ends.
+  /// map with lo..hi mapped to its ends. A field that maps to the image already shown changes
+  /// nothing (playback of a frame-independent field redraws no map).
   void set_field(const cv::Mat& field, double lo, double hi);
   /// A ready-made colour image (BGR, equirect) instead of a field.
   void set_image(const cv::Mat& bgr);
-  void set_keyframes(std::vector<effects::Direction> dirs, int highlighted = -1);
-  /// The viewer's forward direction and field of view (degrees, full angles).
+  /// Keyframe dots; `highlighted` drawn larger (the nearest), `selected` ringed (the one being
+  /// edited). Setting what is already shown changes nothing (no re-render).
+  void set_keyframes(std::vector<effects::Direction> dirs, int highlighted = -1, int selected = -1);
+  int selected() const { return selected_; }
+  const std::vector<effects::Direction>& keyframes() const { return keyframes_; }
+  /// The viewer's forward direction and field of view (degrees, full angles); unchanged values
+  /// change nothing.
   void set_view(effects::Direction forward, double hfov_deg, double vfov_deg);
   bool interactive() const override { return false; }
   void draw(DrawContext& ctx) const override;
@@ -40,6 +46,7 @@ class Minimap : public Widget {
   mutable ScaledImage scaled_;  //!< image_ scaled to map_area()
   std::vector<effects::Direction> keyframes_;
   int highlighted_ = -1;
+  int selected_ = -1;
   effects::Direction view_{};
   double hfov_ = 90.0, vfov_ = 90.0;
 };

@@ -21,7 +21,24 @@ Plot::Plot(std::string id, std::string title, double y_min, double y_max, const 
 void Plot::set_values(std::vector<double> values) { set(values_, values); }
 void Plot::set_range(double lo, double hi) { set(y_min_, lo), set(y_max_, hi); }
 void Plot::set_keyframes(std::vector<int> frames) { set(keyframes_, frames); }
-void Plot::set_playhead(int frame) { set(playhead_, frame); }
+void Plot::set_playhead(int frame) {
+  if (frame == playhead_) return;
+  const int old = playhead_;
+  playhead_ = frame;
+  // Outside the sampled frames the playhead draws nothing: no damage there.
+  for (const Rect& r : {playhead_area(old), playhead_area(frame)})
+    if (!r.empty()) touch(r);
+}
+
+Rect Plot::playhead_area(int frame) const {
+  const int n = static_cast<int>(values_.size());
+  if (frame < 0 || frame >= n) return {};
+  // The 3 px line and a keyframe dot (10 px + outline) that turns highlighted under it.
+  constexpr double kHalf = 16.0;
+  const Rect a = plot_area();
+  const double x = n > 1 ? a.x + a.w * frame / (n - 1) : a.x;
+  return {x - kHalf, a.y - kHalf, 2 * kHalf, a.h + 2 * kHalf};
+}
 
 Rect Plot::plot_area() const {
   const Rect r = rect();

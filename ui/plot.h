@@ -17,11 +17,15 @@ class Plot : public Widget {
   void set_values(std::vector<double> values);
   void set_range(double y_min, double y_max);
   void set_keyframes(std::vector<int> frames);
+  /// Moves the playhead; only its old and new columns (line and a keyframe dot under it) are
+  /// damaged.
   void set_playhead(int frame);
   bool interactive() const override { return false; }
   void draw(DrawContext& ctx) const override;
   /// The plotting area inside the axes.
   Rect plot_area() const;
+  /// The pixels the playhead draws at a frame (empty when it draws none there).
+  Rect playhead_area(int frame) const;
 
  private:
   std::string title_;

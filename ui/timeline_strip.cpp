@@ -36,7 +36,38 @@ void TimelineStrip::set_frame_count(int n) {
   set_playhead(playhead_);
 }
 
-void TimelineStrip::set_playhead(int frame) { set(playhead_, std::clamp(frame, 0, frame_count_ - 1)); }
+void TimelineStrip::set_playhead(int frame) {
+  const int f = std::clamp(frame, 0, frame_count_ - 1);
+  if (f == playhead_) return;
+  const int old = playhead_;
+  playhead_ = f;
+  if (!label_font_) {
+    touch();
+    return;
+  }
+  touch(playhead_area(old));
+  touch(playhead_area(f));
+}
+
+Rect TimelineStrip::frame_label_rect(int frame) const {
+  const std::string ftxt = "frame " + std::to_string(frame);
+  const double fw = label_font_->measure(ftxt, label_size_) + 8;
+  const Rect lab{rect().x, track().bottom() + kMarkerBand, rect().w, kLabelBand};
+  const double fx = std::clamp(x_of(frame) - 0.5 * fw, lab.x + kSide + 60, lab.right() - kSide - 110 - fw);
+  return {fx, lab.y, fw, lab.h};
+}
+
+Rect TimelineStrip::playhead_area(int frame) const {
+  // A column over the line, its handle and the larger diamond of a keyframe at the playhead
+  // (20 px + outline), plus the label; a few pixels more for anti-aliasing and glyph overhang.
+  constexpr double kHalf = 28.0, kAa = 4.0;
+  const Rect r = rect();
+  const double px = x_of(frame);
+  const Rect col{px - kHalf, r.y - kAa, 2 * kHalf, r.h + 2 * kAa};
+  const Rect lab = frame_label_rect(frame).inset(-kAa - 2.0);
+  const double x0 = std::min(col.x, lab.x), y0 = std::min(col.y, lab.y);
+  return {x0, y0, std::max(col.right(), lab.right()) - x0, std::max(col.bottom(), lab.bottom()) - y0};
+}
 
 void TimelineStrip::set_thumbnails(std::vector<cv::Mat> images) {
   thumbs_ = std::move(images);
@@ -116,10 +147,10 @@ void TimelineStrip::draw(DrawContext& ctx) const {
   // Playhead: a line over the thumbnails with a handle on top.
   const glm::dvec2 head[3] = {{px - 16, tr.y}, {px + 16, tr.y}, {px, tr.y + 22}};
   c.fill_convex(head, t.playhead);
-  const std::string ftxt = "frame " + std::to_string(playhead_);
-  const double fw = ctx.fonts.regular->measure(ftxt, t.font_small) + 8;
-  const double fx = std::clamp(px - 0.5 * fw, lab.x + kSide + 60, lab.right() - kSide - 110 - fw);
-  c.text(*ctx.fonts.regular, t.font_small, ftxt, {fx, lab.y, fw, lab.h}, Align::Centre, t.text);
+  label_font_ = ctx.fonts.regular.get();
+  label_size_ = t.font_small;
+  c.text(*ctx.fonts.regular, t.font_small, "frame " + std::to_string(playhead_), frame_label_rect(playhead_),
+         Align::Centre, t.text);
 }
 
 }  // namespace vdfx::ui

@@ -18,6 +18,9 @@ class TimelineStrip : public Widget {
   int frame_count() const { return frame_count_; }
   void set_frame_count(int n);
   int playhead() const { return playhead_; }
+  /// Moves the playhead. Only what the playhead draws is damaged (its line and handle, a
+  /// keyframe diamond under it, its frame label, at the old and the new frame), so playback
+  /// redraws two narrow columns rather than the strip.
   void set_playhead(int frame);
   /// Thumbnails in time order, shown side by side across the strip (BGR or BGRA cv::Mat,
   /// centre-cropped to their cell). Replacing them always re-renders.
@@ -45,12 +48,20 @@ class TimelineStrip : public Widget {
 
  private:
   Rect track() const;
+  /// The pixels the playhead draws at a frame (see set_playhead), or an empty rect when that
+  /// cannot be known yet (nothing drawn so far).
+  Rect playhead_area(int frame) const;
+  /// The playhead's frame label box at a frame (needs the font of the last draw).
+  Rect frame_label_rect(int frame) const;
   int frame_count_;
   int playhead_ = 0;
   std::vector<cv::Mat> thumbs_;
   mutable std::vector<ScaledImage> scaled_;  //!< thumbs_ scaled to their cells, per thumbnail
   std::vector<int> keyframes_, highlighted_;
   double pending_ = 0.0;
+  //! The label font and size of the last draw, so a playhead move can bound its new label.
+  mutable const Font* label_font_ = nullptr;
+  mutable int label_size_ = 0;
 };
 
 }  // namespace vdfx::ui

@@ -22,7 +22,8 @@ using testing::run_vdfx;
 const std::string kSrc = VDFX_SOURCE_DIR;
 const std::string kSunrise = "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
 const std::string kRecording = kSrc + "/recordings/editor_place_exposure.vdrec.jsonl";
-// Small and fast: the left eye at 1/4 of 1440x1600, shown as it is (no lens).
+// Small and fast: the left eye at 1/4 of 1440x1600 (below vdfx edit's default 0.5: at this
+// window size the two look the same, and 0.25 renders 4x fewer pixels), shown as it is (no lens).
 const std::string kMirror = " --hidden --scale 0.25 --window 360x400 --mirror eye";
 
 // Golden comparison in the style of tests/ui/golden.h (BGR here): max and mean tolerances on

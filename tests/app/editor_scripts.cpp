@@ -146,6 +146,15 @@ class Session {
     key_up(k);
     frames(3);
   }
+  // Press and hold a key across other actions (a grab), then let go.
+  void hold(xr::Key k) {
+    key_down(k);
+    frames(2);
+  }
+  void release(xr::Key k) {
+    key_up(k);
+    frames(3);
+  }
 
  private:
   void key_down(xr::Key k) { rec_->push_event(xr::KeyEvent{k, true}); }
@@ -221,6 +230,29 @@ void editor_all_widgets(const std::filesystem::path& file) {
   s.frames(5);
 }
 
+void editor_move_keyframe(const std::filesystem::path& file) {
+  Session s(file,
+            "editor: two exposure keyframes; grab (G) the one at az 40, carry it 15 right, 10 up and 30 frames "
+            "later, set its value to +2.5; deselect (L); chosen value 0.5 (see recordings/README.md)",
+            std::nullopt);
+  const int n = kClipFrames;
+  s.frames(5);
+  s.click(slider_cursor("exposure", 1.0));  // A: +1 at (-20, 0) frame 0
+  s.look(-20.0, 0.0);
+  s.place();
+  s.click(slider_cursor("exposure", -1.0));  // B: -1 at (40, 0) frame 0
+  s.look(60.0, 0.0);
+  s.place();
+  s.hold(xr::Key::G);  // right squeeze: grab B (nearest the view), hold it
+  s.look(15.0, 10.0);      // it follows the view ...
+  s.drag(strip_cursor(0, n), strip_cursor(30, n));  // ... and the playhead
+  s.release(xr::Key::G);  // release: one move to (55, 10) frame 30; B stays selected
+  s.click(slider_cursor("exposure", 2.5));  // edits B's value, not the chosen one
+  s.key(xr::Key::L);                        // right thumbstick click: deselect
+  s.click(slider_cursor("exposure", 0.5));  // the chosen value again
+  s.frames(5);
+}
+
 void demo(const std::filesystem::path& file) {
   Session s(file, "demo on sunrise.exr: calm the sun, lift the shadows, warm the sunrise, focus with a vignette",
             "/usr/share/blender/datafiles/studiolights/world/sunrise.exr");
@@ -268,6 +300,7 @@ const std::vector<EditorScript>& editor_scripts() {
   static const std::vector<EditorScript> scripts = {
       {"editor_place_exposure.vdrec.jsonl", editor_place_exposure},
       {"editor_all_widgets.vdrec.jsonl", editor_all_widgets},
+      {"editor_move_keyframe.vdrec.jsonl", editor_move_keyframe},
       {"demo.vdrec.jsonl", demo},
   };
   return scripts;

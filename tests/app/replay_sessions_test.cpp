@@ -111,6 +111,27 @@ TEST(ReplaySessions, AllWidgetsSessionGivesEveryEffect) {
   EXPECT_EQ(slurp(o.sidecar_out), first);
 }
 
+TEST(ReplaySessions, MoveKeyframeSessionMovesRetimesAndReEditsIt) {
+  const auto dir = test::temp_dir("replay_move");
+  ReplayOptions o;
+  o.recording = kRecordings / "editor_move_keyframe.vdrec.jsonl";
+  o.video = clip(dir);
+  o.sidecar_out = dir / "out.vdfx.json";
+  const io::Sidecar s = run_replay(o).sidecar;
+  ASSERT_EQ(s.video.frames, test::kClipFrames);
+  ASSERT_EQ(s.effects.size(), 1u);
+  const auto& exposure = track(s, EffectType::Exposure);
+  EXPECT_FALSE(exposure.interpolation.has_value());
+  ASSERT_EQ(exposure.keyframes.size(), 2u);
+  expect_key(exposure.keyframes[0], -20.0, 0.0, 0, {1.0});    // A untouched
+  expect_key(exposure.keyframes[1], 55.0, 10.0, 30, {2.5});   // B moved, retimed, re-valued
+  // The 0.5 set after deselecting went to the tool's chosen value: both keyframes kept theirs
+  // (above). Deterministic:
+  const std::string first = slurp(o.sidecar_out);
+  run_replay(o);
+  EXPECT_EQ(slurp(o.sidecar_out), first);
+}
+
 TEST(ReplaySessions, SidecarInIsTheStartingPoint) {
   const auto dir = test::temp_dir("replay_in");
   io::Sidecar start = test::empty_sidecar(1);

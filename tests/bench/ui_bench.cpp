@@ -1,6 +1,7 @@
 /// @file
 /// @brief CPU canvas and panel rendering: full renders of the two demo panels, a hover-change
-/// re-render, one text draw, one rounded-rect fill, and the memory-bound peers (a plain copy and
+/// re-render, a playback step of the demo and of the editor's timeline panel (against a full
+/// redraw of the same panel), one text draw, one rounded-rect fill, and the memory-bound peers (a plain copy and
 /// a memset of the same 1000 x 1000 RGBA image), all measured in the same run.
 ///
 /// Report CPU-time medians (--benchmark_repetitions=N --benchmark_report_aggregates_only=true):
@@ -11,6 +12,7 @@
 
 #include <cstring>
 
+#include "app/editor.h"
 #include "ui/button.h"
 #include "ui/canvas.h"
 #include "ui/demo_panels.h"
@@ -97,6 +99,41 @@ void BM_TimelinePlayheadStep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_TimelinePlayheadStep)->Unit(benchmark::kMillisecond);
+
+/// The editor's own timeline panel while playing, head still, nothing else changing: each
+/// iteration steps the editor one video frame (not timed) and times the panel's re-render.
+/// Arg 0: the full-redraw peer (mark_dirty() first: every pixel drawn, the cost before damage
+/// tracking followed the playhead); arg 1: the partial redraw the editor does now. The current
+/// effect has no keyframes, so the minimap's field does not change with the frame (with
+/// keyframes it does, and the minimap is redrawn as its content changes).
+void BM_EditorTimelinePlaying(benchmark::State& state) {
+  vdfx::io::Sidecar sc;
+  sc.video = {"clip.mp4", 30.0, 900, 3840, 1920};
+  vdfx::app::Editor ed(sc, vdfx::app::DocumentOptions{{.async = false}}, vdfx::app::EditorOptions{});
+  ed.select_effect(vdfx::effects::EffectType::Contrast);
+  ed.document().add_keyframe(vdfx::effects::EffectType::Exposure, {{30.0, 0.0}, 100, {1.0}});
+  vdfx::xr::InputState in = vdfx::xr::neutral_input_state(0);
+  in.head_tracked = true;
+  std::int64_t t = 0;
+  ed.update(in, t);
+  ed.set_playing(true);
+  Panel& p = *ed.ui().timeline;
+  p.texture();
+  const bool full = state.range(0) == 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    t += 33'333'334;
+    in.t_ns = t;
+    ed.update(in, t);
+    if (full) p.mark_dirty();
+    state.ResumeTiming();
+    p.render_if_dirty();
+    benchmark::DoNotOptimize(p.texture().data);
+  }
+  state.counters["full_renders"] = p.full_render_count();
+  state.SetLabel(full ? "full redraw (peer)" : "partial: playhead columns, labels");
+}
+BENCHMARK(BM_EditorTimelinePlaying)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_TextDraw(benchmark::State& state) {
   Canvas c(1000, 100);

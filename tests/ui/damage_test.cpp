@@ -38,6 +38,12 @@ struct DamageCase {
 
 void hover(Panel& p, const char* id, bool on) { p.find(id)->set_hovered(on); }
 
+/// What the editor does every video frame while playing: the strip and the plot follow.
+void playhead(Panel& p, int frame) {
+  p.find_as<TimelineStrip>("strip")->set_playhead(frame);
+  p.find_as<Plot>("exposure_plot")->set_playhead(frame);
+}
+
 const DamageCase kDamageCases[] = {
     {"HoverButton", make_effect_panel, {[](Panel& p) { hover(p, "undo", true); }}},
     {"HoverMovesToNeighbour",
@@ -88,6 +94,16 @@ const DamageCase kDamageCases[] = {
         for (int i = 0; i < 8; ++i) thumbs.push_back(synthetic_frame(i + 5, 320, 180));
         p.find_as<TimelineStrip>("strip")->set_thumbnails(std::move(thumbs));
       }}},
+    {"PlaybackStepsOverKeyframesAndTheEnds",  // diamonds and dots at the playhead grow and shrink
+     make_timeline_panel,
+     {[](Panel& p) { playhead(p, 121); }, [](Panel& p) { playhead(p, 199); }, [](Panel& p) { playhead(p, 200); },
+      [](Panel& p) { playhead(p, 201); }, [](Panel& p) { playhead(p, 0); }, [](Panel& p) { playhead(p, 1); },
+      [](Panel& p) { playhead(p, 239); }, [](Panel& p) { playhead(p, 9); }, [](Panel& p) { playhead(p, 10); },
+      [](Panel& p) { playhead(p, 99); }, [](Panel& p) { playhead(p, 100); }, [](Panel& p) { playhead(p, 48); }}},
+    {"PlaybackWhileStripFocusedAndPressed",
+     make_timeline_panel,
+     {[](Panel& p) { p.find("strip")->set_focused(true), p.find("strip")->set_pressed(true); },
+      [](Panel& p) { playhead(p, 121); }, [](Panel& p) { playhead(p, 122); }}},
     {"PlotPlayhead",
      make_timeline_panel,
      {[](Panel& p) { p.find_as<Plot>("exposure_plot")->set_playhead(200); },
@@ -145,6 +161,38 @@ TEST(Damage, MenuHoverRowChangeDirtiesOnlyTheTwoRows) {
   EXPECT_GE(rects[0].h, 2 * row);
   EXPECT_LT(rects[0].h, 0.5 * r.h);
   EXPECT_GE(rects[0].y, r.y);
+}
+
+TEST(Damage, PlaybackStepDirtiesOnlyThePlayheadColumns) {
+  auto p = make_timeline_panel();
+  p->texture();
+  const auto& strip = *p->find_as<TimelineStrip>("strip");
+  const auto& plot = *p->find_as<Plot>("exposure_plot");
+  for (const int f : {121, 122, 199, 200, 201}) {  // 200 holds a keyframe
+    if (f == 199) {  // jump there first: a jump may damage the span between
+      playhead(*p, 198);
+      p->render_if_dirty();
+    }
+    playhead(*p, f);
+    const auto rects = p->dirty_rects();
+    ASSERT_EQ(rects.size(), 2u) << f;  // one box on the strip, one on the plot
+    double area = 0.0;
+    for (const Rect& r : rects) {
+      area += r.w * r.h;
+      EXPECT_LT(r.w, 200.0) << f << ": " << r.x << "," << r.y << " " << r.w << "x" << r.h;  // a column (label included), not the widget's width
+    }
+    // They sit over the new playhead on each widget.
+    const Rect a = plot.plot_area();
+    const double plot_x = a.x + a.w * f / 239.0;
+    const glm::dvec2 on_strip{strip.x_of(f), strip.rect().centre().y}, on_plot{plot_x, a.centre().y};
+    EXPECT_TRUE(rects[0].contains(on_strip) || rects[1].contains(on_strip)) << f;
+    EXPECT_TRUE(rects[0].contains(on_plot) || rects[1].contains(on_plot)) << f;
+    EXPECT_LT(area, 0.05 * 2000 * 1200) << f;  // a full redraw is all of it
+    EXPECT_TRUE(rects[0].intersect(p->find("exposure_map")->rect()).empty());
+    EXPECT_TRUE(rects[1].intersect(p->find("exposure_map")->rect()).empty());
+    p->render_if_dirty();
+  }
+  EXPECT_EQ(p->full_render_count(), 1);
 }
 
 TEST(Damage, TwoWidgetsFarApartGiveTwoRectangles) {
