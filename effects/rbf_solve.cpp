@@ -10,6 +10,8 @@
 #include <optional>
 #include <vector>
 
+#include "effects/rbf_exact_residual.h"
+
 namespace vdfx::effects {
 
 std::string_view to_string(RbfSolveMethod m) {
@@ -273,35 +275,12 @@ RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
   solver.solve(f, g0, s.weights, s.coefficients);
 
   const double scale = max_abs(f);
-  // Residuals accumulated in long double: near-coincident centres make the weights large and
-  // their sums cancel, so a residual summed in double would be as wrong as the solution.
+  // Refinement residuals in twice double precision (rbf_exact_residual.h).
   auto residuals = [&](Eigen::MatrixXd& rf, Eigen::MatrixXd& rg) {
-    rf.resize(m, d);
-    rg.resize(r, d);
-    std::vector<long double> acc(static_cast<std::size_t>(m));
-    for (int k = 0; k < d; ++k) {
-      // Column by column through A (column-major, no long double copy of the m x m matrix).
-      for (int i = 0; i < m; ++i) acc[i] = f(i, k);
-      for (int j = 0; j < m; ++j) {
-        const long double wj = s.weights(j, k);
-        const double* col = a.col(j).data();
-        for (int i = 0; i < m; ++i) acc[i] -= col[i] * wj;
-      }
-      for (int q = 0; q < r; ++q) {
-        const long double cq = s.coefficients(q, k);
-        long double g = 0.0L;
-        for (int i = 0; i < m; ++i) {
-          acc[i] -= p(i, q) * cq;
-          g -= p(i, q) * static_cast<long double>(s.weights(i, k));
-        }
-        rg(q, k) = static_cast<double>(g);
-      }
-      for (int i = 0; i < m; ++i) rf(i, k) = static_cast<double>(acc[i]);
-    }
-    return std::max(max_abs(rf), max_abs(rg));
+    return saddle_residual_dot2(a, p, f, g0, s.weights, s.coefficients, rf, rg);
   };
   Eigen::MatrixXd rf, rg;
-  // The double residual decides whether refinement is worth an O(m^2) long double pass.
+  // The double residual decides whether refinement is worth an exact-residual pass.
   rf = f - a * s.weights - p * s.coefficients;
   rg = -p.transpose() * s.weights;
   double res = std::max(max_abs(rf), max_abs(rg));

@@ -1,0 +1,57 @@
+/// @file
+/// @brief Dot2 residual of the saddle-point system (see rbf_exact_residual.h).
+///
+/// Compiled with -ffp-contract=off (effects/CMakeLists.txt): the error-free transformations
+/// below are exact only if the compiler keeps every product and sum separately rounded.
+#include "effects/rbf_exact_residual.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace vdfx::effects {
+namespace {
+
+/// Accumulates s + c += x * y for whole columns: (s, c) is a running (sum, error) pair per row.
+void axpy_dot2(const double* x, double y, double* s, double* c, Eigen::Index n) {
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double p = x[i] * y;
+    const double e = std::fma(x[i], y, -p);  // p + e == x y exactly
+    const double t = s[i] + p;
+    const double z = t - s[i];
+    const double q = (s[i] - (t - z)) + (p - z);  // t + q == s + p exactly
+    s[i] = t;
+    c[i] += q + e;
+  }
+}
+
+}  // namespace
+
+double saddle_residual_dot2(const Eigen::MatrixXd& a, const Eigen::MatrixXd& p,
+                            const Eigen::MatrixXd& f, const Eigen::MatrixXd& g,
+                            const Eigen::MatrixXd& w, const Eigen::MatrixXd& c, Eigen::MatrixXd& rf,
+                            Eigen::MatrixXd& rg) {
+  const Eigen::Index m = a.rows(), r = p.cols(), d = f.cols();
+  rf.resize(m, d);
+  rg.resize(r, d);
+  std::vector<double> sum(static_cast<std::size_t>(m)), err(static_cast<std::size_t>(m));
+  for (Eigen::Index k = 0; k < d; ++k) {
+    std::copy_n(f.col(k).data(), m, sum.begin());
+    std::fill(err.begin(), err.end(), 0.0);
+    // Column by column through A and P: contiguous, vectorisable sweeps.
+    for (Eigen::Index j = 0; j < m; ++j) axpy_dot2(a.col(j).data(), -w(j, k), sum.data(), err.data(), m);
+    for (Eigen::Index q = 0; q < r; ++q) axpy_dot2(p.col(q).data(), -c(q, k), sum.data(), err.data(), m);
+    for (Eigen::Index i = 0; i < m; ++i) rf(i, k) = sum[i] + err[i];
+    for (Eigen::Index q = 0; q < r; ++q) {
+      // g - P^T w: each row of P^T against w, as one (sum, error) pair.
+      double s = g(q, k), e = 0.0;
+      for (Eigen::Index i = 0; i < m; ++i) axpy_dot2(&p(i, q), -w(i, k), &s, &e, 1);
+      rg(q, k) = s + e;
+    }
+  }
+  const double worst_f = rf.size() ? rf.cwiseAbs().maxCoeff() : 0.0;
+  const double worst_g = rg.size() ? rg.cwiseAbs().maxCoeff() : 0.0;
+  return std::max(worst_f, worst_g);
+}
+
+}  // namespace vdfx::effects
