@@ -118,6 +118,28 @@ struct CompactWy {
   }
 };
 
+/// The lower triangle of K = sign (A22 - Y2 V2^T - V2 Y2^T), the null-space block of Q^T A Q
+/// (22: rows and columns r..m-1), in one pass over A's lower triangle: 2r fused multiply-adds
+/// per entry, where two general rank-r triangular products would each sweep the matrix again.
+/// The strict upper triangle is left unset (only the lower one is factorised).
+Eigen::MatrixXd projected_lower(const Eigen::MatrixXd& a, const Eigen::MatrixXd& y,
+                                const Eigen::MatrixXd& v, double sign) {
+  const Eigen::Index m = a.rows(), r = y.cols(), n2 = m - r;
+  Eigen::MatrixXd k(n2, n2);
+  // Row-major copies of the r-column factors' rows would not vectorise down a column; the
+  // columns of Y2 and V2 are contiguous, so each entry's update runs down column j of K.
+  for (Eigen::Index j = 0; j < n2; ++j) {
+    const Eigen::Index len = n2 - j;
+    auto kc = k.col(j).tail(len);
+    kc = a.col(r + j).tail(len);
+    for (Eigen::Index q = 0; q < r; ++q) {
+      kc -= v(r + j, q) * y.col(q).tail(len) + y(r + j, q) * v.col(q).tail(len);
+    }
+    if (sign < 0.0) kc = -kc;
+  }
+  return k;
+}
+
 /// The factorised saddle-point system: solves [A P; P^T 0][w; c] = [f; g].
 ///
 /// Only what the solve needs of B = Q^T A Q is formed: its first r rows, and the lower triangle
@@ -140,13 +162,7 @@ class SaddleSolver {
       return;
     }
     sign_ = positive ? 1.0 : -1.0;
-    // Lower triangle of K = sign (A22 - Y2 V2^T - V2 Y2^T).
-    k_ = sign_ * a.bottomRightCorner(n2, n2);
-    if (r_ > 0) {
-      const auto y2 = y.bottomRows(n2), v2 = v.bottomRows(n2);
-      k_.triangularView<Eigen::Lower>() -= (sign_ * y2) * v2.transpose();
-      k_.triangularView<Eigen::Lower>() -= (sign_ * v2) * y2.transpose();
-    }
+    k_ = projected_lower(a, y, v, sign_);
     llt_.emplace(k_);
     if (llt_->info() == Eigen::Success) {
       const double rc = llt_->rcond();
