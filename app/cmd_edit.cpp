@@ -145,8 +145,11 @@ int cmd_edit(const Args& args) {
   eo.layout = layout_for(loop.input);
   if (!demo) eo.autosave_path = sidecar_path;
   DocumentOptions dopts;
-  // Replays are exact: every solve finishes before the frame that shows it.
-  if (loop.input.rfind("replay:", 0) == 0) dopts.keyframes.async = false;
+  // Replays are exact: every solve and minimap finishes before the frame that shows it. Live,
+  // the minimap is computed on a worker so that playing a large set never stalls a frame.
+  const bool replay = loop.input.rfind("replay:", 0) == 0;
+  if (replay) dopts.keyframes.async = false;
+  eo.async_visualizations = !replay;
   Editor editor(std::move(sidecar), dopts, eo);
   EditorClient client(editor, create_gl_panel_textures());
   FrameLoop frame_loop(setup.options, *setup.input, *setup.video, client);

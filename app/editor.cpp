@@ -38,8 +38,10 @@ Editor::Editor(io::Sidecar sidecar, DocumentOptions document_options, EditorOpti
       options_(options),
       panels_(fonts_or_default(options.fonts), doc_.video().frames, options.layout),
       fps_(io::fps_to_rational(doc_.video().fps)),
-      input_(xr::neutral_input_state(0)) {
+      input_(xr::neutral_input_state(0)),
+      preview_(document_options.keyframes) {
   track_frames_ = track_sample_frames(doc_.video().frames, options_.track_samples);
+  if (options_.async_visualizations) minimap_worker_ = std::make_unique<MinimapWorker>();
   if (options_.autosave_path) {
     autosave_ = std::make_unique<Autosave>(*options_.autosave_path);
     doc_.set_change_listener([this] { autosave_->save(doc_.sidecar()); });
@@ -126,6 +128,7 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
   y_was_down_ = y;
 
   if (look_target_ && angle_deg(*look_target_, view_) < 5.0) look_target_.reset();
+  if (!previewing_ && !grabbing_) preview_.reset();
   sync_widgets();
   refresh_visualizations();
 }
@@ -140,56 +143,38 @@ effects::StackParams Editor::params_for_view(const Direction& direction, std::in
     sp.set(effect_, chosen);
     return sp;
   }
-  const auto held = selected_preview();
   if (grabbing_) {  // a grab that has not moved yet changes nothing
+    const auto held = selected_preview();
     if (!held) return sp;
     const auto& k = doc_.keyframes(effect_)[*selected_];
-    if (held->frame == k.frame && held->direction.azimuth_deg == k.direction.azimuth_deg &&
-        held->direction.altitude_deg == k.direction.altitude_deg)
-      return sp;
+    if (held->frame == k.frame && held->direction == k.direction) return sp;
   }
-  std::vector<double> key = {view_.azimuth_deg, view_.altitude_deg, static_cast<double>(frame_),
-                             static_cast<double>(doc_.revision()), static_cast<double>(effect_),
-                             grabbing_ ? 1.0 : 0.0};
-  if (grabbing_) {
-    key.insert(key.end(), {held->direction.azimuth_deg, held->direction.altitude_deg,
-                           static_cast<double>(held->frame), static_cast<double>(*selected_)});
-  } else {
-    key.insert(key.end(), chosen.begin(), chosen.end());
-  }
-  if (!preview_rbf_ || key != preview_key_) {
-    const std::vector<effects::Keyframe> ks = *preview_keyframes();
-    const auto& spec = effects::effect_spec(effect_);
-    preview_rbf_ = std::make_shared<const effects::RbfInterpolator>(
-        ks, spec.dimension(), doc_.interpolation(effect_), doc_.video().fps, spec.neutral());
-    preview_key_ = key;
-  }
-  const Eigen::VectorXd v = preview_rbf_->evaluate(direction, frame);
+  const auto target = preview_target();
+  if (!target) return sp;
+  const auto rbf = preview_.update(*target);
+  const Eigen::VectorXd v = rbf->evaluate(direction, frame);
   sp.set(effect_, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
   return sp;
 }
 
-std::optional<std::vector<effects::Keyframe>> Editor::preview_keyframes() const {
-  std::vector<effects::Keyframe> ks = doc_.keyframes(effect_);
-  // The new or moved keyframe replaces one within 0.5 deg at its frame, as the edit will.
-  auto drop_coincident = [&](const effects::Keyframe& at, std::optional<std::size_t> keep) {
-    std::vector<effects::Keyframe> out;
-    for (std::size_t i = 0; i < ks.size(); ++i)
-      if ((keep && i == *keep) || ks[i].frame != at.frame ||
-          angle_deg(ks[i].direction, at.direction) > effects::kReplaceAngleDeg)
-        out.push_back(ks[i]);
-    ks = std::move(out);
-  };
+std::optional<PreviewTarget> Editor::preview_target() const {
+  PreviewTarget t;
+  t.keyframes = &doc_.keyframes(effect_);
+  t.revision = doc_.revision();
+  t.effect = static_cast<int>(effect_);
+  const auto& spec = effects::effect_spec(effect_);
+  t.dimension = spec.dimension();
+  t.neutral = spec.neutral();
+  t.settings = doc_.interpolation(effect_);
+  t.fps = doc_.video().fps;
   if (previewing_) {
-    const effects::Keyframe k{view_, frame_, doc_.params(effect_)};
-    drop_coincident(k, std::nullopt);
-    ks.push_back(k);
-    return ks;
+    t.key = {view_, frame_, doc_.params(effect_)};
+    return t;
   }
-  if (grabbing_ && selected_ && *selected_ < ks.size()) {
-    ks[*selected_] = *selected_preview();
-    drop_coincident(ks[*selected_], selected_);
-    return ks;
+  if (grabbing_ && selected_ && *selected_ < t.keyframes->size()) {
+    t.moved = selected_;
+    t.key = *selected_preview();
+    return t;
   }
   return std::nullopt;
 }
@@ -497,7 +482,7 @@ void Editor::refresh_visualizations() {
     ++marker_count_;
   }
   const auto rbf = doc_.keyframe_set(effect_).solution();
-  const VisKey base{doc_.revision(), doc_.keyframe_set(effect_).solution_version(), eff, -1};
+  const MinimapKey base{doc_.revision(), doc_.keyframe_set(effect_).solution_version(), eff, -1};
   const auto [lo, hi] = display_range(effect_);
   if (!(track_key_ == base) || angle_deg(track_view_, view_) > 1.0) {
     track_ = effect_track(rbf.get(), effect_, view_, track_frames_);
@@ -517,15 +502,20 @@ void Editor::refresh_visualizations() {
     panels_.plot->set_playhead(static_cast<int>(std::min<std::ptrdiff_t>(it - track_frames_.begin(),
                                                                           static_cast<std::ptrdiff_t>(track_frames_.size()) - 1)));
   }
-  VisKey mk = base;
+  MinimapKey mk = base;
   mk.frame = frame_;
-  if (!(minimap_key_ == mk)) {
-    minimap_ = effect_minimap(rbf.get(), effect_, frame_, options_.minimap_width, options_.minimap_height);
-    panels_.minimap->set_field(minimap_, lo, hi);
+  if (!(minimap_requested_ == mk)) {
     nearest_ = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
-    minimap_key_ = mk;
-    ++minimap_count_;
+    minimap_requested_ = mk;
+    if (minimap_worker_)
+      minimap_worker_->request({mk, rbf, effect_, frame_, options_.minimap_width, options_.minimap_height});
+    else
+      show_minimap(mk, effect_minimap(rbf.get(), effect_, frame_, options_.minimap_width, options_.minimap_height));
   }
+  // A field finished for an earlier frame or edit is shown until the current one is ready (a
+  // frame or two while playing large sets); one for another effect is dropped.
+  if (minimap_worker_)
+    if (auto r = minimap_worker_->take(); r && r->key.effect == eff) show_minimap(r->key, std::move(r->field));
   {
     // Keyframe dots: the selected one ringed (and carried along while grabbed). Setters compare,
     // so an unchanged set costs no redraw.
@@ -535,6 +525,21 @@ void Editor::refresh_visualizations() {
                                    selected_ ? static_cast<int>(*selected_) : -1);
   }
   panels_.minimap->set_view(view_, options_.view_hfov_deg, options_.view_vfov_deg);
+}
+
+void Editor::show_minimap(const MinimapKey& key, cv::Mat field) {
+  const auto [lo, hi] = display_range(effect_);
+  minimap_ = std::move(field);
+  panels_.minimap->set_field(minimap_, lo, hi);
+  minimap_key_ = key;
+  ++minimap_count_;
+}
+
+bool Editor::wait_for_visualizations(std::chrono::milliseconds timeout) {
+  if (minimap_worker_ && minimap_worker_->wait_idle(timeout))
+    if (auto r = minimap_worker_->take(); r && r->key.effect == static_cast<int>(effect_))
+      show_minimap(r->key, std::move(r->field));
+  return minimap_current();
 }
 
 }  // namespace vdfx::app

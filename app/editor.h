@@ -18,6 +18,7 @@
 /// not attached to that hand (ui::Pointer).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -29,6 +30,8 @@
 #include "app/autosave.h"
 #include "app/document.h"
 #include "app/editor_panels.h"
+#include "app/editor_preview.h"
+#include "app/minimap_worker.h"
 #include "effects/effect_types.h"
 #include "io/frame_time.h"
 #include "ui/interaction.h"
@@ -46,6 +49,10 @@ struct EditorOptions {
   bool loop = true;                          //!< playback wraps at the end
   double view_hfov_deg = 90.0;               //!< the view footprint drawn on the minimap
   double view_vfov_deg = 90.0;
+  //! true (`vdfx edit`): the minimap is computed on a worker (MinimapWorker) and shown a frame
+  //! or two late; the frame thread never waits for it. false (replay, tests): computed in
+  //! update(), so every run shows the same pictures.
+  bool async_visualizations = false;
   //! Autosave every change to this sidecar path (+ a recovery copy, removed by finish()).
   std::optional<std::filesystem::path> autosave_path;
 };
@@ -127,17 +134,25 @@ class Editor {
   const std::vector<std::int64_t>& track_frames() const { return track_frames_; }
   /// Indices of the current effect's keyframes within marker_cone_deg of the view.
   const std::vector<std::size_t>& near_keyframes() const { return near_; }
-  /// How often each visualization was recomputed (they follow changes, not frames).
+  /// How often each visualization was recomputed (they follow changes, not frames); with
+  /// async_visualizations, the minimap fields taken over from the worker.
   int minimap_computations() const { return minimap_count_; }
+  /// Whether the minimap shown is the one for the current keyframes, effect and frame (always
+  /// after update() without async_visualizations).
+  bool minimap_current() const { return minimap_key_ == minimap_requested_; }
+  /// Waits for the minimap worker to finish and shows its field (frame thread; tests, replays).
+  /// Returns minimap_current(). Immediate without async_visualizations.
+  bool wait_for_visualizations(std::chrono::milliseconds timeout);
   int marker_computations() const { return marker_count_; }
 
  private:
   void handle(const ui::Event& e);
   void sync_widgets();
   void refresh_visualizations();
+  void show_minimap(const MinimapKey& key, cv::Mat field);
   std::vector<double> widget_params(const ui::Event& e) const;
-  /// The keyframes a preview interpolant uses (placement or grab), or nullopt when neither.
-  std::optional<std::vector<effects::Keyframe>> preview_keyframes() const;
+  /// What the preview interpolates now (placement or grab); nullopt when neither.
+  std::optional<PreviewTarget> preview_target() const;
   /// The values the effect widget shows and edits: the selected keyframe's, else the chosen.
   const std::vector<double>& widget_values() const;
   void validate_selection();
@@ -168,13 +183,9 @@ class Editor {
   std::string message_;
 
   // visualization caches
-  struct VisKey {
-    std::uint64_t revision = ~0ull, solutions = 0;
-    int effect = -1;
-    std::int64_t frame = -1;
-    bool operator==(const VisKey&) const = default;
-  };
-  VisKey minimap_key_, track_key_;
+  MinimapKey minimap_key_;        //!< what the minimap shown was computed for
+  MinimapKey minimap_requested_;  //!< what it should show now
+  MinimapKey track_key_;
   effects::Direction marker_view_{}, track_view_{};
   std::uint64_t marker_revision_ = ~0ull;
   int marker_effect_ = -1;
@@ -185,9 +196,10 @@ class Editor {
   std::vector<std::int64_t> track_frames_;
   std::vector<std::size_t> near_;
   int minimap_count_ = 0, marker_count_ = 0;
-  // preview interpolant for directions other than the view centre
-  mutable std::shared_ptr<const effects::RbfInterpolator> preview_rbf_;
-  mutable std::vector<double> preview_key_;
+  std::unique_ptr<MinimapWorker> minimap_worker_;  //!< with async_visualizations
+  // preview interpolant for directions other than the view centre: seeded once per preview,
+  // then one O(N^2) move per frame in which the preview keyframe moved
+  mutable PreviewInterpolant preview_;
 };
 
 }  // namespace vdfx::app

@@ -62,12 +62,14 @@ effects::Direction minimap_cell_direction(int x, int y, int width, int height) {
 }
 
 cv::Mat effect_minimap(const effects::RbfInterpolator* rbf, EffectType type, std::int64_t frame,
-                       int width, int height) {
+                       int width, int height, const std::atomic<bool>* cancel) {
   cv::Mat field(height, width, CV_32FC1);
-  for (int y = 0; y < height; ++y)
+  for (int y = 0; y < height; ++y) {
+    if (cancel && cancel->load(std::memory_order_relaxed)) return {};
     for (int x = 0; x < width; ++x)
       field.at<float>(y, x) = static_cast<float>(
           value_at(rbf, type, effects::to_unit(minimap_cell_direction(x, y, width, height)), frame));
+  }
   return field;
 }
 

@@ -4,6 +4,7 @@
 /// lie near the view, and the keyframe nearest the view. Pure functions of the interpolant.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -32,9 +33,11 @@ std::vector<double> effect_track(const effects::RbfInterpolator* rbf, effects::E
                                  std::span<const std::int64_t> frames);
 
 /// display_value over an equirect grid (CV_32FC1, width x height, row 0 at the top); cell (x, y)
-/// is the direction at uv ((x + 0.5) / width, (y + 0.5) / height).
+/// is the direction at uv ((x + 0.5) / width, (y + 0.5) / height). `cancel` (optional) is
+/// polled between rows: once true, an empty Mat is returned (MinimapWorker's shutdown).
 cv::Mat effect_minimap(const effects::RbfInterpolator* rbf, effects::EffectType type,
-                       std::int64_t frame, int width, int height);
+                       std::int64_t frame, int width, int height,
+                       const std::atomic<bool>* cancel = nullptr);
 effects::Direction minimap_cell_direction(int x, int y, int width, int height);
 
 /// Indices of the keyframes within `cone_deg` of the view direction (any frame).

@@ -4,11 +4,20 @@
 /// 100 and 1000 keyframes of one exposure effect on a 900-frame 30 fps clip. Peer in the same
 /// run: one RBF evaluation (the unit both are made of).
 ///
+/// The live preview (trigger placement or grab), per frame in which the preview keyframe moved:
+/// the old path (a fresh RbfInterpolator of all keyframes, O(N^3)) against PreviewInterpolant
+/// (one O(N^2) KeyframeSet::move), each followed by one evaluation away from the view.
+/// The frame thread while playing (a new frame every update) at N = 1000: the minimap computed
+/// in update() (async 0) against handed to MinimapWorker (async 1); CPU time is the frame
+/// thread's only.
+///
 /// Report CPU-time medians (--benchmark_repetitions=N --benchmark_report_aggregates_only=true).
 #include <benchmark/benchmark.h>
 
 #include <random>
 
+#include "app/editor.h"
+#include "app/editor_preview.h"
 #include "app/visualizations.h"
 #include "effects/rbf_interpolator.h"
 
@@ -21,7 +30,7 @@ using vdfx::effects::Keyframe;
 constexpr std::int64_t kFrames = 900;
 
 /// N exposure keyframes at uniformly random directions and frames (seeded: the same every run).
-vdfx::effects::RbfInterpolator make_rbf(int n) {
+std::vector<Keyframe> make_keyframes(int n) {
   std::mt19937_64 rng(20240501u + static_cast<unsigned>(n));
   std::uniform_real_distribution<double> u(-1.0, 1.0), stops(-3.0, 3.0);
   std::uniform_int_distribution<std::int64_t> frame(0, kFrames - 1);
@@ -30,8 +39,70 @@ vdfx::effects::RbfInterpolator make_rbf(int n) {
     const double az = 180.0 * u(rng), alt = std::asin(u(rng)) * 180.0 / 3.14159265358979323846;
     ks.push_back({{az, alt}, frame(rng), {stops(rng)}});
   }
-  return vdfx::effects::RbfInterpolator(ks, 1, {}, 30.0);
+  return ks;
 }
+
+vdfx::effects::RbfInterpolator make_rbf(int n) { return vdfx::effects::RbfInterpolator(make_keyframes(n), 1, {}, 30.0); }
+
+/// The preview keyframe at step i: the head turning by 1.5 deg a frame.
+Keyframe preview_key(int i) { return {{-60.0 + 1.5 * (i % 80), 5.0}, 450, {2.0}}; }
+
+/// Old path, the peer: a fresh interpolant of the keyframes and the preview keyframe.
+void BM_EditorPreviewFresh(benchmark::State& state) {
+  const auto ks = make_keyframes(static_cast<int>(state.range(0)));
+  vdfx::app::PreviewTarget t;
+  t.keyframes = &ks;
+  t.neutral = {0.0};
+  int i = 0;
+  for (auto _ : state) {
+    t.key = preview_key(i++);
+    const vdfx::effects::RbfInterpolator rbf(vdfx::app::preview_keyframe_list(t), 1, {}, 30.0, {0.0});
+    auto v = rbf.evaluate(Direction{100.0, 10.0}, 450);
+    benchmark::DoNotOptimize(v.data());
+  }
+}
+BENCHMARK(BM_EditorPreviewFresh)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+/// New path: seeded once (untimed), then one incremental move per frame.
+void BM_EditorPreviewIncremental(benchmark::State& state) {
+  const auto ks = make_keyframes(static_cast<int>(state.range(0)));
+  vdfx::app::PreviewTarget t;
+  t.keyframes = &ks;
+  t.neutral = {0.0};
+  t.key = preview_key(0);
+  vdfx::app::PreviewInterpolant p({.async = false});
+  p.update(t);
+  int i = 1;
+  for (auto _ : state) {
+    t.key = preview_key(i++);
+    auto v = p.update(t)->evaluate(Direction{100.0, 10.0}, 450);
+    benchmark::DoNotOptimize(v.data());
+  }
+  state.counters["seeds"] = static_cast<double>(p.seeds());
+}
+BENCHMARK(BM_EditorPreviewIncremental)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+/// Editor::update while playing (head still): the frame thread's cost.
+void BM_EditorPlayingFrame(benchmark::State& state) {
+  vdfx::io::Sidecar sc;
+  sc.video = {"clip.mp4", 30.0, kFrames, 3840, 1920};
+  sc.effects.push_back({EffectType::Exposure, std::nullopt, make_keyframes(static_cast<int>(state.range(0)))});
+  vdfx::app::EditorOptions eo;
+  eo.async_visualizations = state.range(1) != 0;
+  vdfx::app::Editor ed(sc, vdfx::app::DocumentOptions{{.async = false}}, eo);
+  vdfx::xr::InputState in = vdfx::xr::neutral_input_state(0);
+  in.head_tracked = true;
+  std::int64_t t = 0;
+  ed.update(in, t);
+  ed.set_playing(true);
+  for (auto _ : state) {
+    t += 33'333'334;  // one video frame at 30 fps
+    ed.update(in, t);
+    benchmark::DoNotOptimize(ed.minimap_field().data);
+  }
+  state.counters["minimaps_shown"] = ed.minimap_computations();
+}
+BENCHMARK(BM_EditorPlayingFrame)->Args({1000, 0})->Args({1000, 1})->Unit(benchmark::kMillisecond);
 
 void BM_EditorMinimap128x64(benchmark::State& state) {
   const auto rbf = make_rbf(static_cast<int>(state.range(0)));
