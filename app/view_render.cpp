@@ -13,6 +13,7 @@
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
 #include "xr/gl_context.h"
+#include "xr/param_grid.h"
 #include "xr/render_view.h"
 
 namespace vdfx::app {
@@ -142,10 +143,22 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
     auto context = xr::GlContext::create({});
     cv::Mat bgr_in;
     cv::cvtColor(equirect, bgr_in, cv::COLOR_RGB2BGR);
-    const effects::LensModel lens = eye ? eye->lens.lens : effects::LensModel{};
-    const cv::Mat bgr = xr::render_view_gpu(bgr_in, view, w, h, view_params,
-                                            effects::non_neutral_mask(view_params), r.distortion,
-                                            lens);
+    xr::GpuViewOptions options;
+    options.distortion = r.distortion;
+    if (eye) options.lens = eye->lens.lens;
+    options.blur = r.blur;
+    unsigned mask = effects::non_neutral_mask(view_params);
+    std::optional<xr::ParamGrid> grid;
+    if (r.mode == effects::RenderMode::Pixel) {
+      // Per-pixel mode: the parameters baked on an equirect grid, read along each pixel's ray;
+      // an effect neutral in every cell is not compiled in.
+      grid = xr::bake_param_grid([&](const effects::Direction& d) { return stack.evaluate(d, r.frame); },
+                                 r.bake_width, r.bake_height);
+      mask = 0;
+      for (const effects::StackParams& p : grid->cells) mask |= effects::non_neutral_mask(p);
+      options.param_grid = &*grid;
+    }
+    const cv::Mat bgr = xr::render_view_gpu(bgr_in, view, w, h, view_params, mask, options);
     cv::Mat rgb;
     cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
     return rgb;
