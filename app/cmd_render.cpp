@@ -3,6 +3,7 @@
 /// CPU reference path or (--gpu) through the GL compositor, optionally as one HMD eye with lens
 /// pre-distortion.
 #include <iostream>
+#include <optional>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -11,6 +12,7 @@
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/sidecar.h"
+#include "xr/blur_method.h"
 #include "xr/hmd_profile.h"
 
 namespace vdfx::app {
@@ -20,7 +22,8 @@ int cmd_render(const Args& args) {
                "sidecar's view-dependent effects to an 8-bit sRGB PNG.",
                "vdfx render"};
   std::string input, sidecar_path, view_text, size_text, mode_text = "view", out_path;
-  std::string hmd_name, eye_text = "left", distort_text = "none";
+  std::string hmd_name, eye_text = "left", distort_text = "none", blur_text = "exact";
+  std::string bake_text = "1024x512";
   std::int64_t frame = 0;
   double fov = 0.0;
   bool gpu = false, no_lca = false;
@@ -36,6 +39,13 @@ int cmd_render(const Args& args) {
                  "pixel: at each pixel's own direction (the static per-pixel baseline)")
       ->check(CLI::IsMember({"view", "pixel"}));
   cli.add_flag("--gpu", gpu, "render through the OpenGL compositor (offscreen)");
+  cli.add_option("--blur", blur_text,
+                 "with --gpu: exact (full-resolution separable Gaussian, the contract's kernel) or\n"
+                 "pyramid (halvings + a small residual blur; faster, small error)")
+      ->capture_default_str();
+  cli.add_option("--bake", bake_text,
+                 "with --gpu --mode pixel: the parameter grid WxH the GPU reads per pixel")
+      ->capture_default_str();
   cli.add_option("--hmd", hmd_name, "render one eye of this headset profile (vdfx hmd list)");
   cli.add_option("--eye", eye_text, "with --hmd: left or right")
       ->check(CLI::IsMember({"left", "right"}));
@@ -74,8 +84,20 @@ int cmd_render(const Args& args) {
     } else if (fov > 0.0) {
       throw CLI::ValidationError("--fov", "the eye's field of view comes from --hmd; drop --fov");
     }
-    if (gpu && request.mode == effects::RenderMode::Pixel)
-      throw CLI::ValidationError("--mode", "pixel mode is rendered on the CPU; drop --gpu");
+    const std::optional<xr::BlurMethod> blur = xr::blur_method_from_name(blur_text);
+    if (!blur)
+      throw CLI::ValidationError("--blur", "'" + blur_text + "': expected exact or pyramid");
+    request.blur = *blur;
+    if (!gpu && request.blur != xr::BlurMethod::Exact)
+      throw CLI::ValidationError("--blur", "the CPU reference blur is exact; pyramid needs --gpu");
+    ImageSize bake;
+    try {
+      bake = parse_size(bake_text);
+    } catch (const CLI::ValidationError&) {
+      throw CLI::ValidationError("--bake", "'" + bake_text + "': expected WxH, whole numbers 1..16384");
+    }
+    request.bake_width = bake.width;
+    request.bake_height = bake.height;
   } catch (const CLI::ValidationError& e) {
     std::cerr << "vdfx render: " << e.what() << "\n";
     return kExitUsage;

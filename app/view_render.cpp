@@ -13,6 +13,7 @@
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
 #include "xr/gl_context.h"
+#include "xr/param_grid.h"
 #include "xr/render_view.h"
 
 namespace vdfx::app {
@@ -102,9 +103,9 @@ cv::Mat predistort_cpu(const cv::Mat& eye_rgb, const effects::EyeLens& eye,
 
 namespace {
 
+// One HMD eye: its view (the CPU path takes RenderView::camera(), the same rays) and lens.
 struct EyeSetup {
-  effects::ViewCamera cpu_camera;
-  xr::RenderView gpu_view;
+  xr::RenderView view;
   effects::EyeLens lens;
 };
 
@@ -114,14 +115,16 @@ EyeSetup eye_setup(const RenderRequest& r) {
   const int w = r.width > 0 ? r.width : ep.width;
   const int h = r.height > 0 ? r.height : ep.height;
   const effects::TanRect t = ep.fov.tangents();
-  const double left = std::atan(t.left), right = std::atan(t.right);
-  const double up = std::atan(t.up), down = std::atan(t.down);
   effects::EyeLens lens = profile.eye_lens(r.eye);
   lens.width = w;
   lens.height = h;
-  return {effects::ViewCamera::from_fov_angles({r.look, r.roll_deg}, {left, right, up, down}, w, h),
-          xr::RenderView::from_angles(xr::view_rotation(r.look, r.roll_deg), left, right, down, up),
-          lens};
+  xr::RenderView view;
+  view.orientation = xr::view_rotation(r.look, r.roll_deg);
+  view.tan_left = t.left;
+  view.tan_right = t.right;
+  view.tan_down = t.down;
+  view.tan_up = t.up;
+  return {view, lens};
 }
 
 }  // namespace
@@ -134,27 +137,36 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
 
   std::optional<EyeSetup> eye;
   if (r.hmd) eye = eye_setup(r);
+  const int w = eye ? eye->lens.width : r.width, h = eye ? eye->lens.height : r.height;
+  const xr::RenderView view =
+      eye ? eye->view : xr::RenderView::look_at(r.look, r.roll_deg, r.hfov_deg, w, h);
 
   if (r.gpu) {
-    const int w = eye ? eye->lens.width : r.width, h = eye ? eye->lens.height : r.height;
-    const xr::RenderView view =
-        eye ? eye->gpu_view : xr::RenderView::look_at(r.look, r.roll_deg, r.hfov_deg, w, h);
     auto context = xr::GlContext::create({});
     cv::Mat bgr_in;
     cv::cvtColor(equirect, bgr_in, cv::COLOR_RGB2BGR);
-    const effects::LensModel lens = eye ? eye->lens.lens : effects::LensModel{};
-    const cv::Mat bgr = xr::render_view_gpu(bgr_in, view, w, h, view_params,
-                                            effects::non_neutral_mask(view_params), r.distortion,
-                                            lens);
+    xr::GpuViewOptions options;
+    options.distortion = r.distortion;
+    if (eye) options.lens = eye->lens.lens;
+    options.blur = r.blur;
+    unsigned mask = effects::non_neutral_mask(view_params);
+    std::optional<xr::ParamGrid> grid;
+    if (r.mode == effects::RenderMode::Pixel) {
+      // Per-pixel mode: the parameters baked on an equirect grid, read along each pixel's ray;
+      // an effect neutral in every cell is not compiled in.
+      grid = xr::bake_param_grid([&](const effects::Direction& d) { return stack.evaluate(d, r.frame); },
+                                 r.bake_width, r.bake_height);
+      mask = 0;
+      for (const effects::StackParams& p : grid->cells) mask |= effects::non_neutral_mask(p);
+      options.param_grid = &*grid;
+    }
+    const cv::Mat bgr = xr::render_view_gpu(bgr_in, view, w, h, view_params, mask, options);
     cv::Mat rgb;
     cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
     return rgb;
   }
 
-  const effects::ViewCamera camera =
-      eye ? eye->cpu_camera
-          : effects::ViewCamera::from_horizontal_fov({r.look, r.roll_deg}, r.hfov_deg, r.width,
-                                                     r.height);
+  const effects::ViewCamera camera = view.camera(w, h);
   const effects::EquirectSampler sampler(equirect);
   cv::Mat rendered;
   if (r.mode == effects::RenderMode::View) {

@@ -11,6 +11,7 @@
 #include "effects/lens_model.h"
 #include "effects/view_renderer.h"
 #include "io/sidecar.h"
+#include "xr/blur_method.h"
 #include "xr/distortion_gl.h"
 #include "xr/hmd_profile.h"
 
@@ -25,6 +26,8 @@ struct RenderRequest {
   std::int64_t frame = 0;
   effects::RenderMode mode = effects::RenderMode::View;
   bool gpu = false;
+  xr::BlurMethod blur = xr::BlurMethod::Exact;  //!< --gpu only (the CPU blur is the exact gather)
+  int bake_width = 1024, bake_height = 512;    //!< --gpu --mode pixel: the parameter grid
   std::optional<xr::HmdProfile> hmd;
   xr::Eye eye = xr::Eye::Left;
   xr::DistortionSettings distortion{xr::DistortionMethod::None};

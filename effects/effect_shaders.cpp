@@ -105,6 +105,7 @@ uniform sampler2D u_blurred;
 uniform float u_blurred_scale;
 #elif BLUR_MODE == 3
 uniform float u_tau1_deg;
+uniform float u_level_log2r;  // log2 of the ratio between successive level sigmas
 )";
   if (v.blur == B::Levels) s += level_function(v.levels);
   s += "#define LEVELS " + std::to_string(v.blur == B::Levels ? v.levels : 0) + "\n";
@@ -157,15 +158,16 @@ void main() {
   vec3 c = textureLod(u_blurred, pc / (u_blurred_scale * vec2(textureSize(u_blurred, 0))), 0.0).rgb;
 #elif BLUR_MODE == 3
   // Mix the two levels around this pixel's sigma s with weights that give the mixture the
-  // variance s^2 (levels tau_j and 2 tau_j: w = (s^2 - tau_j^2) / (3 tau_j^2)).
+  // variance s^2 (levels tau_j and r tau_j: w = (s^2 - tau_j^2) / ((r^2 - 1) tau_j^2)).
   float s = textureLod(u_grid2, uv, 0.0).r;
   vec3 c = texelFetch(u_src, ivec2(pc), 0).rgb;
-  if (s >= u_tau1_deg * exp2(float(LEVELS - 1))) {
+  if (s >= u_tau1_deg * exp2(float(LEVELS - 1) * u_level_log2r)) {
     c = blur_level(LEVELS, pc);
   } else if (s >= u_tau1_deg) {
-    int j = 1 + int(floor(log2(s / u_tau1_deg)));
-    float tj = u_tau1_deg * exp2(float(j - 1));
-    float w = clamp((s * s - tj * tj) / (3.0 * tj * tj), 0.0, 1.0);
+    int j = min(1 + int(floor(log2(s / u_tau1_deg) / u_level_log2r)), LEVELS - 1);
+    float tj = u_tau1_deg * exp2(float(j - 1) * u_level_log2r);
+    float r2 = exp2(2.0 * u_level_log2r);
+    float w = clamp((s * s - tj * tj) / ((r2 - 1.0) * tj * tj), 0.0, 1.0);
     c = mix(blur_level(j, pc), blur_level(j + 1, pc), w);
   } else if (s > 0.0) {
     c = mix(c, blur_level(1, pc), (s * s) / (u_tau1_deg * u_tau1_deg));

@@ -7,9 +7,9 @@
 ///  - FusedVertical (exact separable blur): pass 1 is a horizontal Gaussian (blur_1d), the stack
 ///    pass does the vertical half itself;
 ///  - Blurred: the blur ran before (pyramid) into a smaller image read bilinearly;
-///  - Levels (per-pixel blur): a stack of images blurred with sigmas tau_j = tau_1 2^(j-1), each
-///    pixel mixes the two levels around its own sigma, linearly in log2 sigma (below tau_1
-///    linearly between the unblurred source and level 1).
+///  - Levels (per-pixel blur): a stack of images blurred with sigmas tau_j = tau_1 r^(j-1), each
+///    pixel mixes the two levels around its own sigma with the weight that matches its variance
+///    (below tau_1 the unblurred source and level 1).
 /// With per_pixel the parameters come from the baked grid (float textures) looked up along each
 /// pixel's own view ray, bilinear, wrapping in azimuth; otherwise from uniforms (view mode).
 /// Only the active effects are compiled in: the source is generated from a bit mask
@@ -59,9 +59,9 @@ std::string downsample_fragment_source();
 /// source has this many extra pixels on every side: the target reads the source's interior, so a
 /// blur sees real image beyond the view's border); FusedVertical: u_taps, u_tap_count,
 /// u_centre_weight (as blur_1d, vertical); Blurred: u_blurred, u_blurred_scale (source pixels per
-/// texel of u_blurred); Levels: u_level1..u_levelN, u_level_scale[N], u_tau1_deg; view mode:
-/// u_tint (vec3 gain), u_exposure_gain (2^stops), u_saturation, u_contrast, u_vignette (radius,
-/// falloff in radians); per_pixel: u_grid0 (tint r, g, b, stops), u_grid1 (saturation, contrast,
+/// texel of u_blurred); Levels: u_level1..u_levelN, u_level_scale[N], u_tau1_deg,
+/// u_level_log2r (log2 of the level ratio r); view mode: u_tint (vec3 gain), u_exposure_gain
+/// (2^stops), u_saturation, u_contrast, u_vignette (radius, falloff in radians); per_pixel: u_grid0 (tint r, g, b, stops), u_grid1 (saturation, contrast,
 /// vignette radius and falloff in radians), u_grid2 (blur sigma in degrees), u_rot (eye ->
 /// world); geometry: u_tan (left, right, down, up tangents), u_size (pixels), u_centre_tan
 /// (optical centre).

@@ -28,6 +28,8 @@
 #include <array>
 #include <optional>
 
+#include "effects/view_camera.h"  // TanRect
+
 namespace vdfx::effects {
 
 struct LensParams {
@@ -93,15 +95,6 @@ class LensModel {
   LensParams params_;
   double r_u_max_;
   double r_d_max_;
-};
-
-/// Tangent extents of one eye's image, OpenXR sign convention: left and down are normally
-/// negative (tan(angleLeft) < 0 < tan(angleRight)).
-struct TanRect {
-  double left = -1.0;
-  double right = 1.0;
-  double up = 1.0;
-  double down = -1.0;
 };
 
 /// One eye's panel viewport and lens. The panel viewport and the rendered eye image share one

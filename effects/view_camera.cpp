@@ -36,19 +36,30 @@ ViewCamera ViewCamera::from_horizontal_fov(const ViewPose& pose, double hfov_deg
   return ViewCamera(pose_rotation(pose), f, f, 0.5 * width, 0.5 * height, width, height);
 }
 
+TanRect FovAngles::tangents() const {
+  const double half = 0.5 * kPi;
+  const bool inside = std::abs(angle_left) < half && std::abs(angle_right) < half &&
+                      std::abs(angle_up) < half && std::abs(angle_down) < half;
+  if (!inside || !(angle_right > angle_left) || !(angle_up > angle_down))
+    throw std::invalid_argument(
+        "FovAngles: need -pi/2 < left < right < pi/2 and -pi/2 < down < up < pi/2");
+  return {std::tan(angle_left), std::tan(angle_right), std::tan(angle_up), std::tan(angle_down)};
+}
+
 ViewCamera ViewCamera::from_fov_angles(const ViewPose& pose, const FovAngles& fov, int width,
                                        int height) {
   check_size(width, height, "ViewCamera::from_fov_angles");
-  const double l = std::tan(fov.angle_left), r = std::tan(fov.angle_right);
-  const double u = std::tan(fov.angle_up), d = std::tan(fov.angle_down);
-  const double half = 0.5 * kPi;
-  const bool inside = std::abs(fov.angle_left) < half && std::abs(fov.angle_right) < half &&
-                      std::abs(fov.angle_up) < half && std::abs(fov.angle_down) < half;
-  if (!inside || !(r > l) || !(u > d))
-    throw std::invalid_argument(
-        "ViewCamera::from_fov_angles: need -pi/2 < left < right < pi/2 and -pi/2 < down < up < pi/2");
-  const double fx = width / (r - l), fy = height / (u - d);
-  return ViewCamera(pose_rotation(pose), fx, fy, -l * fx, u * fy, width, height);
+  return from_tangents(pose_rotation(pose), fov.tangents(), width, height);
+}
+
+ViewCamera ViewCamera::from_tangents(const Eigen::Matrix3d& camera_to_world, const TanRect& fov,
+                                     int width, int height) {
+  check_size(width, height, "ViewCamera::from_tangents");
+  if (!(fov.right > fov.left) || !(fov.up > fov.down) || !std::isfinite(fov.right - fov.left) ||
+      !std::isfinite(fov.up - fov.down))
+    throw std::invalid_argument("ViewCamera::from_tangents: need left < right and down < up, finite");
+  const double fx = width / (fov.right - fov.left), fy = height / (fov.up - fov.down);
+  return ViewCamera(camera_to_world, fx, fy, -fov.left * fx, fov.up * fy, width, height);
 }
 
 ViewCamera::ViewCamera(const Eigen::Matrix3d& camera_to_world, double fx, double fy, double cx,
@@ -61,15 +72,15 @@ ViewCamera::ViewCamera(const Eigen::Matrix3d& camera_to_world, double fx, double
 }
 
 Eigen::Vector3d ViewCamera::ray(double x, double y) const {
-  const Eigen::Vector3d cam((x - cx_) / fx_, -(y - cy_) / fy_, -1.0);
-  return (rotation_ * cam).normalized();
+  const Eigen::Vector2d t = tangent(x, y);
+  return (rotation_ * Eigen::Vector3d(t.x(), t.y(), -1.0)).normalized();
 }
 
 std::optional<Eigen::Vector2d> ViewCamera::project(const Eigen::Vector3d& world_dir) const {
   const Eigen::Vector3d cam = rotation_.transpose() * world_dir;
   if (!(cam.z() < 0.0)) return std::nullopt;
   const double depth = -cam.z();
-  return Eigen::Vector2d(cx_ + fx_ * cam.x() / depth, cy_ - fy_ * cam.y() / depth);
+  return pixel_of_tangent({cam.x() / depth, cam.y() / depth});
 }
 
 ViewCamera ViewCamera::with_margin(int margin) const {

@@ -15,14 +15,27 @@
 
 namespace vdfx::effects {
 
-/// OpenXR-style field of view of one eye, in radians: angle_left and angle_down are normally
-/// negative, angle_right and angle_up positive (XrFovf). Asymmetric values put the optical centre
-/// (principal point) off the image centre.
+/// Field of view of one eye (or view) as tangent extents of its image plane at distance 1, OpenXR
+/// sign convention: left and down are normally negative (tan(angleLeft) < 0 < tan(angleRight)).
+/// The one FOV description of the project: the camera, the lens model (EyeLens) and the GPU
+/// view (xr::RenderView) all use it; OpenXR-style angles convert with FovAngles::tangents().
+struct TanRect {
+  double left = -1.0;
+  double right = 1.0;
+  double up = 1.0;
+  double down = -1.0;
+};
+
+/// OpenXR-style field of view (XrFovf), in radians: angle_left and angle_down are normally
+/// negative, angle_right and angle_up positive. The form headsets and OpenXR report; all geometry
+/// works on TanRect, and tangents() is the one conversion between the two.
 struct FovAngles {
   double angle_left = -0.785398163397448;
   double angle_right = 0.785398163397448;
   double angle_up = 0.785398163397448;
   double angle_down = -0.785398163397448;
+  /// Throws std::invalid_argument unless -pi/2 < left < right < pi/2 and -pi/2 < down < up < pi/2.
+  TanRect tangents() const;
 };
 
 /// Where the camera looks: the optical axis points at `look`; positive roll turns the image
@@ -38,14 +51,28 @@ class ViewCamera {
   /// at the image centre. Throws std::invalid_argument on a bad size or fov.
   static ViewCamera from_horizontal_fov(const ViewPose& pose, double hfov_deg, int width,
                                         int height);
-  /// Asymmetric eye camera from OpenXR angles; the pixels may be non-square when the angles'
-  /// aspect differs from width / height.
+  /// Asymmetric eye camera from OpenXR angles: from_tangents(pose_rotation(pose), fov.tangents()).
   static ViewCamera from_fov_angles(const ViewPose& pose, const FovAngles& fov, int width,
                                     int height);
+  /// Asymmetric eye camera: tangent extents spread linearly over width x height pixels, so the
+  /// optical centre (tangent 0, 0) may sit off the image centre and the pixels may be non-square.
+  /// Throws std::invalid_argument on a bad size or an empty rectangle.
+  static ViewCamera from_tangents(const Eigen::Matrix3d& camera_to_world, const TanRect& fov,
+                                  int width, int height);
   /// General form: camera-to-world rotation, focal lengths and principal point in pixels.
   ViewCamera(const Eigen::Matrix3d& camera_to_world, double fx, double fy, double cx, double cy,
              int width, int height);
 
+  /// Tangents (x right, y up) of the camera-space ray through continuous pixel coordinates (x, y):
+  /// the ray is (tx, ty, -1). The single pixel <-> ray mapping of the project (xr::RenderView
+  /// delegates here).
+  Eigen::Vector2d tangent(double x, double y) const {
+    return {(x - cx_) / fx_, -(y - cy_) / fy_};
+  }
+  /// Continuous pixel coordinates of camera-space tangents (the inverse of tangent()).
+  Eigen::Vector2d pixel_of_tangent(const Eigen::Vector2d& t) const {
+    return {cx_ + fx_ * t.x(), cy_ - fy_ * t.y()};
+  }
   /// Unit world ray through continuous pixel coordinates (x, y).
   Eigen::Vector3d ray(double x, double y) const;
   /// Unit world ray through the centre of pixel (i, j) = column i, row j.

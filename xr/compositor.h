@@ -38,6 +38,8 @@ struct CompositorConfig {
   effects::LensModel lens;
   bool gpu_timing = false;  //!< timestamp queries per stage (stage_times())
   BlurMethod blur = BlurMethod::Exact;  //!< exact separable, or the pyramid (blur_pyramid_gl.h)
+  /// Per-pixel mode: ratio between successive blur level sigmas (blur_method.h).
+  double blur_level_ratio = kHalfOctaveLevels;
 };
 
 /// What changes per eye per frame.
@@ -81,12 +83,22 @@ class Compositor {
   std::unique_ptr<Impl> impl_;
 };
 
+/// Options of render_view_gpu beyond the view and its parameters.
+struct GpuViewOptions {
+  DistortionSettings distortion{DistortionMethod::None};  //!< None: the undistorted eye image
+  effects::LensModel lens;                                //!< with distortion
+  BlurMethod blur = BlurMethod::Exact;
+  double blur_level_ratio = kHalfOctaveLevels;  //!< per-pixel mode (blur_method.h)
+  /// Per-pixel mode when set: every pixel's parameters from this grid along its own ray (the
+  /// `params` argument is then unused; `active_effects` still selects the compiled effects).
+  const ParamGrid* param_grid = nullptr;
+};
+
 /// One offscreen view for `vdfx render --gpu` (and tests): video layer -> effects ->
-/// optional pre-distortion (settings.method None: undistorted), read back as 8-bit BGR, clamped
-/// only at the end. Needs a current GL context.
+/// optional pre-distortion, read back as 8-bit BGR, clamped only at the end. Needs a current GL
+/// context.
 cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int width, int height,
                         const effects::StackParams& params, unsigned active_effects,
-                        const DistortionSettings& distortion = {DistortionMethod::None},
-                        const effects::LensModel& lens = {});
+                        const GpuViewOptions& options = {});
 
 }  // namespace vdfx::xr

@@ -58,11 +58,14 @@ struct Compositor::Impl {
   std::array<RenderView, 2> views;
   std::array<int, 2> margin{0, 0};  //!< pixels of video rendered around each eye's view
   GpuTimer timer;
-  Impl(TexFormat f, BlurMethod b) : stack(f, b) {}
+  Impl(TexFormat f, BlurMethod b, double level_ratio) : stack(f, b) {
+    stack.set_level_ratio(level_ratio);
+  }
 };
 
 Compositor::Compositor(CompositorConfig config)
-    : config_(std::move(config)), impl_(std::make_unique<Impl>(config_.eye_format, config_.blur)) {
+    : config_(std::move(config)), impl_(std::make_unique<Impl>(config_.eye_format, config_.blur,
+                                                            config_.blur_level_ratio)) {
   const int w = config_.eye_width, h = config_.eye_height;
   for (int e = 0; e < 2; ++e) {
     impl_->video_out[e] = GlTarget(w, h, config_.eye_format);
@@ -191,16 +194,19 @@ std::vector<StageTime> Compositor::stage_times() { return impl_->timer.collect()
 
 cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int width, int height,
                         const effects::StackParams& params, unsigned active_effects,
-                        const DistortionSettings& distortion, const effects::LensModel& lens) {
+                        const GpuViewOptions& o) {
   CompositorConfig c;
   c.eye_width = width;
   c.eye_height = height;
   c.eye_format = TexFormat::RGBA32F;
-  c.distortion = distortion;
-  c.lens = lens;  // copied: LensModel is a value
+  c.distortion = o.distortion;
+  c.lens = o.lens;  // copied: LensModel is a value
+  c.blur = o.blur;
+  c.blur_level_ratio = o.blur_level_ratio;
   Compositor comp(c);
   comp.set_video_frame(equirect);
-  comp.render_eye(0, {view, params, active_effects});
+  if (o.param_grid) comp.set_param_grid(*o.param_grid);
+  comp.render_eye(0, {view, params, active_effects, o.param_grid != nullptr});
   return to_bgr8(comp.read_panel(0));
 }
 

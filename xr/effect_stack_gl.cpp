@@ -147,6 +147,12 @@ void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effec
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void EffectStackGl::set_level_ratio(double r) {
+  if (!(r > 1.0 && r <= 16.0))
+    throw GlError("EffectStackGl::set_level_ratio: ratio must be in (1, 16], got " + std::to_string(r));
+  level_ratio_ = r;
+}
+
 void EffectStackGl::set_param_grid(const ParamGrid& grid) {
   if (grid.width < 1 || grid.height < 1 ||
       grid.cells.size() != static_cast<std::size_t>(grid.width) * grid.height)
@@ -188,23 +194,25 @@ void EffectStackGl::apply_per_pixel(const GlTexture& src, const GlTarget& dst, u
   variant.mask = mask & ~shader_bit(EffectType::Blur);
   variant.per_pixel = true;
   const bool blur_on = (mask & shader_bit(EffectType::Blur)) && grid_max_sigma_deg_ > 0.0;
-  double tau1_deg = 0.0;
+  double tau1_deg = 0.0, ratio = level_ratio_;
   std::vector<int> scales;
+  level_sigmas_px_.clear();
   if (blur_on) {
-    // Levels tau_j = tau_1 2^(j-1) from half a pixel up to the grid's largest sigma (fewer,
-    // coarser levels if that would need more than kMaxBlurLevels).
+    // Levels tau_j = tau_1 r^(j-1) from half a pixel up to the grid's largest sigma. Where that
+    // would need more than kMaxBlurLevels, the levels spread wider (r grows) rather than start
+    // higher: a coarser tau_1 would mix the unblurred image into every small sigma.
     const BlurPixels per_deg = blur_pixels(1.0, v, w, h);
-    tau1_deg = kPerPixelFirstLevelPx / std::max(per_deg.sigma_x, per_deg.sigma_y);
+    const double per_deg_px = std::max(per_deg.sigma_x, per_deg.sigma_y);
+    tau1_deg = kPerPixelFirstLevelPx / per_deg_px;
     int n = 1;
-    while (tau1_deg * std::ldexp(1.0, n - 1) < grid_max_sigma_deg_) ++n;
-    if (n > effects::kMaxBlurLevels) {
-      n = effects::kMaxBlurLevels;
-      tau1_deg = grid_max_sigma_deg_ / std::ldexp(1.0, n - 1);
-    }
+    while (n < effects::kMaxBlurLevels && tau1_deg * std::pow(ratio, n - 1) < grid_max_sigma_deg_) ++n;
+    if (tau1_deg * std::pow(ratio, n - 1) < grid_max_sigma_deg_)
+      ratio = std::pow(grid_max_sigma_deg_ / tau1_deg, 1.0 / (n - 1));
     if (levels_.size() < static_cast<std::size_t>(n)) levels_.resize(static_cast<std::size_t>(n));
     pyramid_.set_source(src);
     for (int j = 0; j < n; ++j) {
-      const double tau = tau1_deg * std::ldexp(1.0, j);
+      const double tau = tau1_deg * std::pow(ratio, j);
+      level_sigmas_px_.push_back(tau * per_deg_px);
       scales.push_back(pyramid_.blur(tau * per_deg.sigma_x, tau * per_deg.sigma_y, blur_method_,
                                      levels_[static_cast<std::size_t>(j)]));
     }
@@ -228,6 +236,7 @@ void EffectStackGl::apply_per_pixel(const GlTexture& src, const GlTarget& dst, u
   glUniformMatrix3fv(p.uniform("u_rot"), 1, GL_FALSE, rot.data());  // column-major, as GLSL
   if (blur_on) {
     glUniform1f(p.uniform("u_tau1_deg"), static_cast<float>(tau1_deg));
+    glUniform1f(p.uniform("u_level_log2r"), static_cast<float>(std::log2(ratio)));
     std::vector<float> fscales(scales.begin(), scales.end());
     glUniform1fv(p.uniform("u_level_scale"), static_cast<int>(fscales.size()), fscales.data());
     for (std::size_t j = 0; j < scales.size(); ++j) {

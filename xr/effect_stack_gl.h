@@ -14,7 +14,7 @@
 /// mode); apply_per_pixel() reads every pixel's parameters from the grid set by set_param_grid()
 /// along that pixel's own view ray (per-pixel mode), for all six effects: the colour effects and
 /// the vignette's radius and falloff (the angle still measured from the optical centre), and a
-/// per-pixel blur that mixes a stack of uniformly blurred levels (sigmas tau_1 2^j, built with
+/// per-pixel blur that mixes a stack of uniformly blurred levels (sigmas tau_1 r^j, built with
 /// the chosen BlurMethod) by each pixel's own sigma (effect_shaders.h).
 #pragma once
 
@@ -59,6 +59,12 @@ class EffectStackGl {
 
   void set_blur_method(BlurMethod m) { blur_method_ = m; }
   BlurMethod blur_method() const { return blur_method_; }
+  /// Per-pixel mode: ratio r > 1 between successive blur level sigmas (kOctaveLevels,
+  /// kHalfOctaveLevels); throws GlError otherwise.
+  void set_level_ratio(double r);
+  double level_ratio() const { return level_ratio_; }
+  /// Level sigmas (pixels at the optical centre, the larger axis) of the last apply_per_pixel.
+  const std::vector<double>& level_sigmas_px() const { return level_sigmas_px_; }
 
   /// View mode: runs the effects of `mask` (bits: effects::shader_bit) with parameters `p` from
   /// `src` into `dst`. `src` is `dst` plus `margin` pixels on every side (rendered with
@@ -86,6 +92,8 @@ class EffectStackGl {
   void set_geometry(const GlProgram& p, const RenderView& v, int w, int h, int margin) const;
   TexFormat scratch_format_;
   BlurMethod blur_method_;
+  double level_ratio_ = kHalfOctaveLevels;
+  std::vector<double> level_sigmas_px_;
   GlProgram blur_h_;
   std::map<effects::StackShader, GlProgram> programs_;
   GlTarget scratch_;

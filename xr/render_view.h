@@ -8,12 +8,15 @@
 ///   tx = tan_left + (i + 0.5) / W * (tan_right - tan_left),
 ///   ty = tan_up   - (j + 0.5) / H * (tan_up - tan_down),
 /// where tan_left = tan(angleLeft) < 0 and tan_down = tan(angleDown) < 0 as in XrFovf.
+/// The mapping itself lives in effects::ViewCamera (camera()): the CPU reference and the GPU
+/// passes share one definition.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include "effects/coords.h"
+#include "effects/view_camera.h"
 
 namespace vdfx::xr {
 
@@ -25,7 +28,8 @@ struct RenderView {
   /// The vignette is centred here and the lens distortion is radial about it.
   Eigen::Vector2d optical_centre_tan = Eigen::Vector2d::Zero();
 
-  /// From OpenXR-style angles in radians (left and down negative).
+  /// From OpenXR-style angles in radians (left and down negative; effects::FovAngles::tangents(),
+  /// which throws std::invalid_argument on an empty or out-of-range FOV).
   static RenderView from_angles(const Eigen::Matrix3d& orientation, double angle_left,
                                 double angle_right, double angle_down, double angle_up);
 
@@ -33,6 +37,10 @@ struct RenderView {
   /// image clockwise as the viewer sees it), horizontal FOV in degrees, square pixels.
   static RenderView look_at(const effects::Direction& d, double roll_deg, double hfov_deg,
                             int width, int height);
+
+  effects::TanRect tangents() const { return {tan_left, tan_right, tan_up, tan_down}; }
+  /// This view as the CPU reference's camera over width x height pixels (same rays).
+  effects::ViewCamera camera(int width, int height) const;
 
   /// Tangent coordinates of a (fractional) pixel position, e.g. (i + 0.5, j + 0.5).
   Eigen::Vector2d tangent_at(double px, double py, int width, int height) const;
@@ -42,7 +50,8 @@ struct RenderView {
   Eigen::Vector3d world_ray(double px, double py, int width, int height) const;
 };
 
-/// Rotation of the contract's view camera: yaw by azimuth, pitch by altitude, roll about forward.
+/// Rotation of the contract's view camera: yaw by azimuth, pitch by altitude, roll about forward
+/// (effects::pose_rotation).
 Eigen::Matrix3d view_rotation(const effects::Direction& d, double roll_deg);
 
 }  // namespace vdfx::xr

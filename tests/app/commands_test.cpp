@@ -123,6 +123,28 @@ TEST(Commands, RenderHmdEyeWithCpuPredistortion) {
   EXPECT_EQ(bad_hmd.exit_code, 1) << bad_hmd.output;
 }
 
+TEST(Commands, RenderBlurAndBakeOptionsAreChecked) {
+  const auto dir = test_dir();
+  write_test_panorama(dir);
+  write_text(dir / "s.vdfx.json", exposure_sidecar());
+  const std::string base = "render " + (dir / "pano.png").string() + " --sidecar " +
+                           (dir / "s.vdfx.json").string() + " --view 0,0 --fov 90 --size 8x8 --out " +
+                           (dir / "x.png").string() + " ";
+  const struct {
+    const char* args;
+    const char* message;  //!< must appear in the output
+  } cases[] = {{"--gpu --blur gaussian", "--blur: 'gaussian': expected exact or pyramid"},
+               {"--blur pyramid", "pyramid needs --gpu"},
+               {"--gpu --mode pixel --bake 0x8", "--bake: '0x8'"}};
+  for (const auto& c : cases) {
+    // Rejected before any GL context opens, so no display is needed.
+    const CommandResult r = run_vdfx(base + c.args, "env -u DISPLAY ");
+    EXPECT_EQ(r.exit_code, 2) << c.args << ": " << r.output;
+    EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << ": " << r.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
 TEST(Commands, RenderBadInputSaysWhere) {
   const auto dir = test_dir();
   write_test_panorama(dir);

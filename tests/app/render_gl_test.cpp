@@ -60,5 +60,63 @@ TEST(RenderGpu, HmdEyeWithPredistortionMatchesCpu) {
   }
 }
 
+// Exposure from the base sidecar plus a blur that grows from 0 at azimuth -40 to 4 deg at +40: both
+// vary across a 90-degree view at azimuth 0, so view and pixel mode differ visibly.
+std::string graded_blur_sidecar() {
+  return exposure_sidecar(R"(,
+    {"type": "blur", "keyframes": [
+      {"azimuth_deg": 40.0, "altitude_deg": 0.0, "frame": 0, "params": {"sigma_deg": 4.0}},
+      {"azimuth_deg": -40.0, "altitude_deg": 0.0, "frame": 0, "params": {"sigma_deg": 0.0}}]})");
+}
+
+TEST(RenderGpu, PixelModeMatchesCpuPixelMode) {
+  const auto dir = test_dir();
+  write_test_panorama(dir);
+  write_text(dir / "s.vdfx.json", graded_blur_sidecar());
+  const std::string common = "--view 0,0 --frame 0 --fov 90 --size 160x120 ";
+  const cv::Mat cpu = render(dir, common + "--mode pixel", "cpu.png");
+  const cv::Mat gpu = render(dir, common + "--mode pixel --gpu", "gpu.png");
+  const cv::Mat coarse = render(dir, common + "--mode pixel --gpu --bake 16x8", "coarse.png");
+  const cv::Mat view = render(dir, common + "--gpu", "view.png");
+  ASSERT_EQ(cpu.size(), gpu.size());
+  cv::Mat d;
+  cv::absdiff(cpu, gpu, d);
+  const double err = max_abs_diff(cpu, gpu), mean = cv::mean(d.reshape(1))[0];
+  const double coarse_err = max_abs_diff(cpu, coarse), view_err = max_abs_diff(cpu, view);
+  std::cout << "render --gpu --mode pixel vs CPU --mode pixel: max " << err << "/255, mean " << mean
+            << "/255; --bake 16x8: max " << coarse_err << "/255; GPU view mode: max " << view_err
+            << "/255\n";
+  // 8-bit outputs of two float pipelines: rounding (1) plus the level mix of the per-pixel blur.
+  EXPECT_LE(err, 3.0);
+  EXPECT_LT(mean, 0.5);
+  EXPECT_GT(view_err, err + 10.0) << "view mode must differ from the per-pixel reference";
+  EXPECT_GT(coarse_err, err) << "a 16x8 grid must err more than the default";
+}
+
+TEST(RenderGpu, PyramidBlurIsCloseToExact) {
+  const auto dir = test_dir();
+  write_test_panorama(dir);
+  write_text(dir / "s.vdfx.json", graded_blur_sidecar());
+  for (const char* mode : {"view", "pixel"}) {
+    const std::string common =
+        std::string("--view 25,0 --fov 60 --size 240x180 --gpu --bake 256x128 --mode ") + mode;
+    const cv::Mat exact = render(dir, common, "exact.png");
+    const cv::Mat pyramid = render(dir, common + " --blur pyramid", "pyramid.png");
+    ASSERT_EQ(exact.size(), pyramid.size());
+    cv::Mat d;
+    cv::absdiff(exact, pyramid, d);
+    const double mean = cv::mean(d.reshape(1))[0], mx = max_abs_diff(exact, pyramid);
+    std::cout << "--mode " << mode << ": --blur pyramid vs exact: max " << mx << "/255, mean "
+              << mean << "/255\n";
+    if (std::string(mode) == "view") {  // exact is the default
+      EXPECT_EQ(max_abs_diff(exact, render(dir, common + " --blur exact", "named.png")), 0.0);
+    }
+    // Measured: max 1/255, mean 0.05/255 (an 8-bit rounding step here and there).
+    EXPECT_GT(mean, 0.0) << mode << ": the pyramid must actually run";
+    EXPECT_LT(mean, 0.5) << mode;
+    EXPECT_LE(mx, 4.0) << mode;
+  }
+}
+
 }  // namespace
 }  // namespace vdfx::app::testing
