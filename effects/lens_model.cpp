@@ -136,18 +136,14 @@ std::optional<Eigen::Vector2d> LensModel::source_for_panel(const Eigen::Vector2d
 }
 
 Eigen::Vector2d EyeLens::pixel_to_tan(const Eigen::Vector2d& px) const {
-  return {fov.left + px.x() / width * (fov.right - fov.left),
-          fov.up - px.y() / height * (fov.up - fov.down)};
+  return fov.tangent_at(px, width, height);
 }
 
 Eigen::Vector2d EyeLens::tan_to_pixel(const Eigen::Vector2d& t) const {
-  return {(t.x() - fov.left) / (fov.right - fov.left) * width,
-          (fov.up - t.y()) / (fov.up - fov.down) * height};
+  return fov.pixel_at(t, width, height);
 }
 
-Eigen::Vector2d EyeLens::tan_to_uv(const Eigen::Vector2d& t) const {
-  return {(t.x() - fov.left) / (fov.right - fov.left), (fov.up - t.y()) / (fov.up - fov.down)};
-}
+Eigen::Vector2d EyeLens::tan_to_uv(const Eigen::Vector2d& t) const { return fov.uv_of(t); }
 
 ChannelSamples panel_source_uv(const EyeLens& eye, const Eigen::Vector2d& px, bool lca_correction,
                                InverseMethod method) {

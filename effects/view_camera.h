@@ -24,6 +24,20 @@ struct TanRect {
   double right = 1.0;
   double up = 1.0;
   double down = -1.0;
+
+  /// Normalised image position (u right, v down, both in [0, 1] across the rect) of tangents t.
+  Eigen::Vector2d uv_of(const Eigen::Vector2d& t) const {
+    return {(t.x() - left) / (right - left), (up - t.y()) / (up - down)};
+  }
+  /// Tangents at continuous pixel position px of a width x height image spanning the rect.
+  Eigen::Vector2d tangent_at(const Eigen::Vector2d& px, int width, int height) const {
+    return {left + px.x() / width * (right - left), up - px.y() / height * (up - down)};
+  }
+  /// Continuous pixel position of tangents t (inverse of tangent_at).
+  Eigen::Vector2d pixel_at(const Eigen::Vector2d& t, int width, int height) const {
+    const Eigen::Vector2d uv = uv_of(t);
+    return {uv.x() * width, uv.y() * height};
+  }
 };
 
 /// OpenXR-style field of view (XrFovf), in radians: angle_left and angle_down are normally
