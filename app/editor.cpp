@@ -167,6 +167,7 @@ std::optional<PreviewTarget> Editor::preview_target() const {
   t.neutral = spec.neutral();
   t.settings = doc_.interpolation(effect_);
   t.fps = doc_.video().fps;
+  t.source = &doc_.keyframe_set(effect_);
   if (previewing_) {
     t.key = {view_, frame_, doc_.params(effect_)};
     return t;

@@ -127,6 +127,8 @@ class Editor {
   Document& document() { return doc_; }
   const Document& document() const { return doc_; }
   EditorPanels& ui() { return panels_; }
+  /// The live preview's interpolant (its seed and move counters: tests, benchmarks).
+  const PreviewInterpolant& preview() const { return preview_; }
 
   // ---- visualization data (kept up to date by update)
   const cv::Mat& minimap_field() const { return minimap_; }
