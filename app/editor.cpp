@@ -279,6 +279,9 @@ std::optional<Direction> Editor::jump_to_keyframe(int step) {
   seek(ks[*i].frame);
   look_target_ = ks[*i].direction;
   message_.clear();
+  // The keyframe jumped to becomes the selection (its values in the widget, ready to grab); a
+  // grab in progress keeps its keyframe, which follows the playhead instead.
+  if (!grabbing_) select_keyframe(*i);
   return look_target_;
 }
 
@@ -321,6 +324,14 @@ bool Editor::select_nearest() {
   return true;
 }
 
+bool Editor::select_keyframe(std::size_t index) {
+  if (grabbing_ || index >= doc_.keyframes(effect_).size()) return false;
+  selected_ = index;
+  previewing_ = false;
+  message_ = "selected keyframe " + std::to_string(index + 1);
+  return true;
+}
+
 void Editor::deselect() {
   if (!selected_) return;
   selected_.reset();
@@ -329,7 +340,9 @@ void Editor::deselect() {
 }
 
 bool Editor::grab() {
-  if (!select_nearest()) return false;
+  validate_selection();
+  if (!selected_ && !select_nearest()) return false;
+  previewing_ = false;
   grabbing_ = true;
   grab_view0_ = view_;
   grab_frame0_ = frame_;
@@ -415,7 +428,9 @@ void Editor::handle(const ui::Event& e) {
       deselect();
     }
   } else if (e.panel == kTimelinePanelId) {
-    if (clicked && e.widget == "play") set_playing(!playing_);
+    if (e.widget == "minimap" && changed) {
+      if (e.new_value.x >= 0.0) select_keyframe(static_cast<std::size_t>(e.new_value.x));
+    } else if (clicked && e.widget == "play") set_playing(!playing_);
     else if (clicked && e.widget == "prev_key") jump_to_keyframe(-1);
     else if (clicked && e.widget == "next_key") jump_to_keyframe(+1);
     else if (e.widget == "strip" && drag_begin) set_playing(false);
