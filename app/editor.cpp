@@ -520,13 +520,25 @@ void Editor::refresh_visualizations() {
   }
   MinimapKey mk = base;
   mk.frame = frame_;
+  auto map_rbf = rbf;
+  if (grabbing_ && held && !(held->direction == ks[*selected_].direction && held->frame == ks[*selected_].frame)) {
+    // A held keyframe away from its place: the field is the live preview's interpolant (the same
+    // one params_for_view answers with; at most one incremental move here).
+    if (!(held->direction == held_key_.direction && held->frame == held_key_.frame) || held_serial_ == 0) {
+      held_key_ = *held;
+      ++held_serial_;
+    }
+    mk.preview = held_serial_;
+    if (!(minimap_requested_ == mk))
+      if (const auto target = preview_target()) map_rbf = preview_.update(*target);
+  }
   if (!(minimap_requested_ == mk)) {
     nearest_ = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
     minimap_requested_ = mk;
     if (minimap_worker_)
-      minimap_worker_->request({mk, rbf, effect_, frame_, options_.minimap_width, options_.minimap_height});
+      minimap_worker_->request({mk, map_rbf, effect_, frame_, options_.minimap_width, options_.minimap_height});
     else
-      show_minimap(mk, effect_minimap(rbf.get(), effect_, frame_, options_.minimap_width, options_.minimap_height));
+      show_minimap(mk, effect_minimap(map_rbf.get(), effect_, frame_, options_.minimap_width, options_.minimap_height));
   }
   // A field finished for an earlier frame or edit is shown until the current one is ready (a
   // frame or two while playing large sets); one for another effect is dropped.

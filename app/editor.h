@@ -199,6 +199,8 @@ class Editor {
   int marker_effect_ = -1;
   std::int64_t marker_selected_ = -1;  //!< the selected keyframe's (held) frame at the last marker update
   std::optional<std::size_t> nearest_;  //!< nearest keyframe at the last minimap update
+  effects::Keyframe held_key_;          //!< the held keyframe's place at the last minimap update
+  std::uint64_t held_serial_ = 0;       //!< grows when it changes (MinimapKey::preview)
   cv::Mat minimap_;
   std::vector<double> track_;
   std::vector<std::int64_t> track_frames_;
