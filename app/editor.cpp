@@ -167,6 +167,7 @@ std::optional<PreviewTarget> Editor::preview_target() const {
   t.neutral = spec.neutral();
   t.settings = doc_.interpolation(effect_);
   t.fps = doc_.video().fps;
+  t.source = &doc_.keyframe_set(effect_);
   if (previewing_) {
     t.key = {view_, frame_, doc_.params(effect_)};
     return t;
@@ -278,6 +279,9 @@ std::optional<Direction> Editor::jump_to_keyframe(int step) {
   seek(ks[*i].frame);
   look_target_ = ks[*i].direction;
   message_.clear();
+  // The keyframe jumped to becomes the selection (its values in the widget, ready to grab); a
+  // grab in progress keeps its keyframe, which follows the playhead instead.
+  if (!grabbing_) select_keyframe(*i);
   return look_target_;
 }
 
@@ -320,6 +324,14 @@ bool Editor::select_nearest() {
   return true;
 }
 
+bool Editor::select_keyframe(std::size_t index) {
+  if (grabbing_ || index >= doc_.keyframes(effect_).size()) return false;
+  selected_ = index;
+  previewing_ = false;
+  message_ = "selected keyframe " + std::to_string(index + 1);
+  return true;
+}
+
 void Editor::deselect() {
   if (!selected_) return;
   selected_.reset();
@@ -328,7 +340,9 @@ void Editor::deselect() {
 }
 
 bool Editor::grab() {
-  if (!select_nearest()) return false;
+  validate_selection();
+  if (!selected_ && !select_nearest()) return false;
+  previewing_ = false;
   grabbing_ = true;
   grab_view0_ = view_;
   grab_frame0_ = frame_;
@@ -414,7 +428,9 @@ void Editor::handle(const ui::Event& e) {
       deselect();
     }
   } else if (e.panel == kTimelinePanelId) {
-    if (clicked && e.widget == "play") set_playing(!playing_);
+    if (e.widget == "minimap" && changed) {
+      if (e.new_value.x >= 0.0) select_keyframe(static_cast<std::size_t>(e.new_value.x));
+    } else if (clicked && e.widget == "play") set_playing(!playing_);
     else if (clicked && e.widget == "prev_key") jump_to_keyframe(-1);
     else if (clicked && e.widget == "next_key") jump_to_keyframe(+1);
     else if (e.widget == "strip" && drag_begin) set_playing(false);
@@ -504,13 +520,25 @@ void Editor::refresh_visualizations() {
   }
   MinimapKey mk = base;
   mk.frame = frame_;
+  auto map_rbf = rbf;
+  if (grabbing_ && held && !(held->direction == ks[*selected_].direction && held->frame == ks[*selected_].frame)) {
+    // A held keyframe away from its place: the field is the live preview's interpolant (the same
+    // one params_for_view answers with; at most one incremental move here).
+    if (!(held->direction == held_key_.direction && held->frame == held_key_.frame) || held_serial_ == 0) {
+      held_key_ = *held;
+      ++held_serial_;
+    }
+    mk.preview = held_serial_;
+    if (!(minimap_requested_ == mk))
+      if (const auto target = preview_target()) map_rbf = preview_.update(*target);
+  }
   if (!(minimap_requested_ == mk)) {
     nearest_ = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
     minimap_requested_ = mk;
     if (minimap_worker_)
-      minimap_worker_->request({mk, rbf, effect_, frame_, options_.minimap_width, options_.minimap_height});
+      minimap_worker_->request({mk, map_rbf, effect_, frame_, options_.minimap_width, options_.minimap_height});
     else
-      show_minimap(mk, effect_minimap(rbf.get(), effect_, frame_, options_.minimap_width, options_.minimap_height));
+      show_minimap(mk, effect_minimap(map_rbf.get(), effect_, frame_, options_.minimap_width, options_.minimap_height));
   }
   // A field finished for an earlier frame or edit is shown until the current one is ready (a
   // frame or two while playing large sets); one for another effect is dropped.

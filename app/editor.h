@@ -10,9 +10,10 @@
 /// Bindings (docs/editor.md): right trigger on nothing = preview, release = place a keyframe at
 /// the view centre and the current frame; trigger on a panel = UI. Right B held = unaltered film.
 /// Right A = delete the selected keyframe, else the one nearest the view. Left X / Y = undo /
-/// redo. Right squeeze = grab: selects the keyframe nearest the view; while held it follows the
-/// view (keeping its offset from the view centre) and the playhead (keeping its offset in
-/// frames); release commits one move. A selected keyframe's values show in the effect widget,
+/// redo. A press on a keyframe's minimap dot, or the previous / next keyframe buttons, select
+/// that keyframe. Right squeeze = grab: holds the selected keyframe (without a selection, selects
+/// the one nearest the view); while held it follows the view (keeping its offset from the view
+/// centre) and the playhead (keeping its offset in frames); release commits one move. A selected keyframe's values show in the effect widget,
 /// which then edits them. Right thumbstick click (or the Deselect button, or a trigger press on
 /// nothing, which then previews a new keyframe) deselects. Each hand's aim ray drives the panels
 /// not attached to that hand (ui::Pointer).
@@ -98,7 +99,8 @@ class Editor {
   void set_chosen_params(std::vector<double> params);
   void set_playing(bool on);
   void seek(std::int64_t frame);
-  /// Jumps to the previous (-1) / next (+1) keyframe's frame; returns its direction.
+  /// Jumps to the previous (-1) / next (+1) keyframe's frame and selects that keyframe (not
+  /// while grabbing); returns its direction.
   std::optional<effects::Direction> jump_to_keyframe(int step);
   /// Deletes the current effect's keyframe nearest the view (RBF distance); false when none.
   bool delete_nearest();
@@ -107,9 +109,13 @@ class Editor {
   void place_keyframe();
   /// Selects the current effect's keyframe nearest the view (RBF distance); false when none.
   bool select_nearest();
+  /// Selects the current effect's keyframe `index` (the minimap dot pressed, the keyframe
+  /// jumped to); false when there is none such or a grab is in progress.
+  bool select_keyframe(std::size_t index);
   void deselect();
-  /// Selects the nearest keyframe and holds it: until grab_release() it follows the view and
-  /// the playhead by how far they moved since the grab began. False when there is none.
+  /// Holds the selected keyframe (without a selection, selects the nearest first): until
+  /// grab_release() it follows the view and the playhead by how far they moved since the grab
+  /// began. False when there is none.
   bool grab();
   /// Commits the grab as one undoable move (none when it did not move); the keyframe stays
   /// selected. Landing within 0.5 deg of another keyframe at the same frame replaces that one.
@@ -127,6 +133,8 @@ class Editor {
   Document& document() { return doc_; }
   const Document& document() const { return doc_; }
   EditorPanels& ui() { return panels_; }
+  /// The live preview's interpolant (its seed and move counters: tests, benchmarks).
+  const PreviewInterpolant& preview() const { return preview_; }
 
   // ---- visualization data (kept up to date by update)
   const cv::Mat& minimap_field() const { return minimap_; }
@@ -191,6 +199,8 @@ class Editor {
   int marker_effect_ = -1;
   std::int64_t marker_selected_ = -1;  //!< the selected keyframe's (held) frame at the last marker update
   std::optional<std::size_t> nearest_;  //!< nearest keyframe at the last minimap update
+  effects::Keyframe held_key_;          //!< the held keyframe's place at the last minimap update
+  std::uint64_t held_serial_ = 0;       //!< grows when it changes (MinimapKey::preview)
   cv::Mat minimap_;
   std::vector<double> track_;
   std::vector<std::int64_t> track_frames_;

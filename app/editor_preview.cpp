@@ -90,9 +90,13 @@ void PreviewInterpolant::reset() {
 }
 
 void PreviewInterpolant::seed(const PreviewTarget& t, std::vector<std::size_t> dropped) {
-  auto list = list_without(t, dropped, index_);
   set_.reset();  // its worker (if any) stops before the new one starts
-  set_ = std::make_unique<effects::KeyframeSet>(t.dimension, t.settings, t.fps, std::move(list), options_, t.neutral);
+  if (!seed_by_clone(t, dropped)) {
+    auto list = list_without(t, dropped, index_);
+    set_.reset();
+    set_ = std::make_unique<effects::KeyframeSet>(t.dimension, t.settings, t.fps, std::move(list), options_, t.neutral);
+    ++full_seeds_;
+  }
   base_ = *t.keyframes;
   revision_ = t.revision;
   moved_ = t.moved;
@@ -104,6 +108,34 @@ void PreviewInterpolant::seed(const PreviewTarget& t, std::vector<std::size_t> d
   dropped_ = std::move(dropped);
   current_ = t.key;
   ++seeds_;
+}
+
+bool PreviewInterpolant::seed_by_clone(const PreviewTarget& t, const std::vector<std::size_t>& dropped) {
+  if (!t.source || &t.source->keyframes() != t.keyframes || t.source->dimension() != t.dimension) return false;
+  set_ = t.source->clone(options_);
+  // The keyframes the preview keyframe replaces go first (from the back, so indices hold); the
+  // list keeps its order, as list_without() builds it.
+  std::size_t index = t.moved ? *t.moved : 0;
+  for (auto it = dropped.rbegin(); it != dropped.rend(); ++it) {
+    set_->remove(*it);
+    if (t.moved && *it < *t.moved) --index;
+  }
+  if (t.moved && *t.moved < t.keyframes->size()) {
+    const auto& k = set_->keyframes()[index];
+    if (!(k.direction == t.key.direction) || k.frame != t.key.frame) {
+      const auto e = set_->move(index, t.key.direction, t.key.frame);
+      if (e.replaced) return false;  // a boundary case of the replace rule: solve the list
+      index = e.index;
+    }
+    if (set_->keyframes()[index].params != t.key.params) set_->set_params(index, t.key.params);
+  } else {
+    const auto e = set_->add(t.key);
+    if (e.replaced) return false;
+    index = e.index;
+  }
+  index_ = index;
+  if (!set_->stats().cloned_exact) ++full_seeds_;  // the clone itself solved
+  return true;
 }
 
 }  // namespace vdfx::app

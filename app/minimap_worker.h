@@ -29,11 +29,13 @@
 namespace vdfx::app {
 
 /// What a minimap field was computed for: the document revision, the solution version, the
-/// effect and the frame.
+/// effect and the frame, and (while a keyframe is held away from its place) which placement of
+/// the held keyframe: the field is then the live preview's interpolant.
 struct MinimapKey {
   std::uint64_t revision = ~0ull, solutions = 0;
   int effect = -1;
   std::int64_t frame = -1;
+  std::uint64_t preview = 0;  //!< 0: the document's solution; else a serial of the held placement
   bool operator==(const MinimapKey&) const = default;
 };
 

@@ -191,28 +191,68 @@ KeyframeSet::KeyframeSet(int dimension, const InterpolationSettings& settings, d
   publish(st->interpolator, 0);
   if (!st->exact) st.reset();
   state_ = std::move(st);
-  if (options_.async) {
-    worker_ = std::make_unique<Worker>();
-    worker_->thread = std::thread([this] {
-      Worker& w = *worker_;
-      for (;;) {
-        std::pair<std::uint64_t, std::vector<Keyframe>> job;
-        {
-          std::unique_lock lock(w.mu);
-          w.cv.wait(lock, [&] { return w.stop || w.job.has_value(); });
-          if (w.stop) return;
-          job = std::move(*w.job);
-          w.job.reset();
-        }
-        auto st = solve_full(job.second, dimension_, kernel_, neutral_, job.first);
-        // The exact state is handed over under the same lock as the publication: an edit made
-        // as soon as wait_for_version() returns must find it (and stay incremental).
-        auto interpolator = st->interpolator;
-        if (!st->exact) st.reset();
-        publish(std::move(interpolator), job.first, std::move(st));
+  if (options_.async) start_worker();
+}
+
+void KeyframeSet::start_worker() {
+  worker_ = std::make_unique<Worker>();
+  worker_->thread = std::thread([this] {
+    Worker& w = *worker_;
+    for (;;) {
+      std::pair<std::uint64_t, std::vector<Keyframe>> job;
+      {
+        std::unique_lock lock(w.mu);
+        w.cv.wait(lock, [&] { return w.stop || w.job.has_value(); });
+        if (w.stop) return;
+        job = std::move(*w.job);
+        w.job.reset();
       }
-    });
+      auto st = solve_full(job.second, dimension_, kernel_, neutral_, job.first);
+      // The exact state is handed over under the same lock as the publication: an edit made
+      // as soon as wait_for_version() returns must find it (and stay incremental).
+      auto interpolator = st->interpolator;
+      if (!st->exact) st.reset();
+      publish(std::move(interpolator), job.first, std::move(st));
+    }
+  });
+}
+
+KeyframeSet::KeyframeSet(CloneTag, const KeyframeSet& source, KeyframeSetOptions options)
+    : dimension_(source.dimension_),
+      settings_(source.settings_),
+      fps_(source.fps_),
+      kernel_(source.kernel_),
+      options_(options),
+      neutral_(source.neutral_),
+      keyframes_(source.keyframes_),
+      version_(source.version_) {}
+
+std::unique_ptr<KeyframeSet> KeyframeSet::clone(KeyframeSetOptions options) const {
+  std::unique_ptr<KeyframeSet> c(new KeyframeSet(CloneTag{}, *this, options));
+  std::unique_ptr<State> st;
+  {
+    // The exact state of the latest edit: ours, or one the worker published with it and no edit
+    // has adopted yet (ready_ is only read under the publication lock).
+    std::lock_guard lock(pub_mu_);
+    const State* exact = nullptr;
+    if (state_ && state_->version == version_) exact = state_.get();
+    else if (ready_ && ready_->version == version_) exact = ready_.get();
+    if (exact && published_version_ == version_) st = std::make_unique<State>(*exact);
   }
+  if (st) {
+    if (st->pending_u.size()) {  // never left between edits; applied for safety
+      lower_update_and_product(st->inverse, st->pending_u, st->pending_alpha, st->n(), nullptr,
+                               nullptr);
+      st->pending_u.resize(0);
+    }
+    c->stats_.cloned_exact = true;
+  } else {
+    st = solve_full(keyframes_, dimension_, kernel_, neutral_, version_);
+  }
+  c->publish(st->interpolator, version_);
+  if (st->exact) c->state_ = std::move(st);
+  if (c->options_.async) c->start_worker();
+  return c;
 }
 
 KeyframeSet::~KeyframeSet() {

@@ -50,6 +50,8 @@ struct KeyframeSetStats {
   std::uint64_t refinements = 0;        //!< of those, the ones that ran a refinement step
   std::uint64_t storage_growths = 0;    //!< reallocations of the incremental matrices by edits
   int capacity = 0;  //!< slots (terms + centres) the current matrices hold without reallocating
+  //! Built by clone() from a copy of an exact incremental state (no solve ran).
+  bool cloned_exact = false;
 };
 
 class KeyframeSet {
@@ -67,6 +69,18 @@ class KeyframeSet {
               std::vector<double> neutral = {});
   ~KeyframeSet();
   KeyframeSet(const KeyframeSet&) = delete;
+
+  /// A new, independent set with the same keyframes, settings, neutral values, version numbers
+  /// and solution, with its own `options` (and its own worker when options.async). When this set
+  /// has its exact incremental state for its latest edit (also one a worker solved and has not
+  /// handed over yet), the clone copies it: keyframes, centres, the saddle matrix and its inverse
+  /// and the weights, O(N^2) memory traffic and no solve (stats().cloned_exact); the published
+  /// interpolator, immutable, is shared. Otherwise (keyframes merged into one centre, an
+  /// asynchronous re-solve still running, a set that fell back to a full solve and has no
+  /// incremental state) it runs one full O(N^3) solve of the keyframes, synchronously. Either
+  /// way the clone then edits exactly like a set solved from scratch. Editor thread only (the
+  /// thread that edits this set).
+  std::unique_ptr<KeyframeSet> clone(KeyframeSetOptions options) const;
   KeyframeSet& operator=(const KeyframeSet&) = delete;
 
   /// Adds a keyframe; one within kReplaceAngleDeg at the same frame is replaced in place.
@@ -92,6 +106,11 @@ class KeyframeSet {
  private:
   struct State;   // incremental state: centres, basis, inverse, solution
   struct Worker;  // the asynchronous full solver
+  struct CloneTag {};
+
+  /// clone(): copies everything but the state, solves nothing, starts no worker.
+  KeyframeSet(CloneTag, const KeyframeSet& source, KeyframeSetOptions options);
+  void start_worker();
 
   static std::unique_ptr<State> solve_full(const std::vector<Keyframe>& keyframes, int dimension,
                                            const RbfKernel& kernel, const Eigen::VectorXd& neutral,

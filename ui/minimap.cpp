@@ -7,6 +7,7 @@
 #include "ui/theme.h"
 
 #include <Eigen/Geometry>
+#include <glm/geometric.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -61,6 +62,23 @@ void Minimap::set_view(effects::Direction forward, double hfov_deg, double vfov_
   hfov_ = hfov_deg;
   vfov_ = vfov_deg;
   touch();
+}
+
+int Minimap::keyframe_at(glm::dvec2 p) const {
+  const Rect a = map_area().inset(-kPickRadius);
+  if (!a.contains(p)) return -1;
+  int best = -1;
+  double best_d = kPickRadius;
+  for (std::size_t i = 0; i < keyframes_.size(); ++i) {
+    const double d = glm::length(to_pixel(keyframes_[i]) - p);
+    if (d <= best_d) best = static_cast<int>(i), best_d = d;
+  }
+  return best;
+}
+
+void Minimap::click(glm::dvec2 p) {
+  picked_ = keyframe_at(p);
+  ++clicks_;
 }
 
 Rect Minimap::map_area() const {

@@ -1,6 +1,11 @@
 /// @file
 /// @brief Minimap: an equirect image of one parameter over the sphere, keyframe dots and the
-/// outline of the current view's footprint.
+/// outline of the current view's footprint. A press on a dot picks that keyframe.
+///
+/// Picking: while it shows keyframes the widget is interactive; a click (trigger pressed and
+/// released on it) at a panel pixel within kPickRadius of a dot picks the nearest such dot.
+/// value() is (picked index or -1, clicks so far), so every click reports a ValueChanged whose
+/// new_value.x is the keyframe picked (-1: none under the ray), even the same one twice.
 #pragma once
 
 #include "effects/coords.h"
@@ -31,7 +36,14 @@ class Minimap : public Widget {
   /// The viewer's forward direction and field of view (degrees, full angles); unchanged values
   /// change nothing.
   void set_view(effects::Direction forward, double hfov_deg, double vfov_deg);
-  bool interactive() const override { return false; }
+  bool interactive() const override { return enabled() && !keyframes_.empty(); }
+  glm::dvec2 value() const override { return {static_cast<double>(picked_), static_cast<double>(clicks_)}; }
+  void click(glm::dvec2 p) override;
+  /// The keyframe whose dot is nearest panel pixel p within kPickRadius (inside the map), or -1.
+  int keyframe_at(glm::dvec2 p) const;
+  /// Panel pixels around a dot's centre that pick it (a dot is 10-13 px; a ray held in a hand
+  /// wobbles by more).
+  static constexpr double kPickRadius = 28.0;
   void draw(DrawContext& ctx) const override;
   /// The equirect image's rectangle (2:1) inside the widget.
   Rect map_area() const;
@@ -47,6 +59,8 @@ class Minimap : public Widget {
   std::vector<effects::Direction> keyframes_;
   int highlighted_ = -1;
   int selected_ = -1;
+  int picked_ = -1;   //!< the last click's keyframe
+  int clicks_ = 0;
   effects::Direction view_{};
   double hfov_ = 90.0, vfov_ = 90.0;
 };

@@ -46,6 +46,7 @@ double max_difference(const effects::RbfInterpolator& rbf, const PreviewTarget& 
 struct PathCase {
   const char* name;
   bool grab;
+  bool source;  //!< seed from a solved KeyframeSet of the keyframes (as the editor does)
 };
 
 class PreviewPath : public ::testing::TestWithParam<PathCase> {};
@@ -61,6 +62,8 @@ TEST_P(PreviewPath, EveryStepEqualsAFreshSolveWithOneSeed) {
     t.moved = 17;
     key.params = ks[17].params;
   }
+  const effects::KeyframeSet solved(1, {}, 30.0, ks, {.async = false}, {0.0});
+  if (GetParam().source) t.source = &solved, t.keyframes = &solved.keyframes();
   PreviewInterpolant p({.async = false});
   for (int step = 0; step < 12; ++step) {
     key.direction = {effects::wrap_azimuth_deg(10.0 + 3.7 * step), 5.0 + 1.3 * step};
@@ -71,6 +74,7 @@ TEST_P(PreviewPath, EveryStepEqualsAFreshSolveWithOneSeed) {
     EXPECT_LT(max_difference(*rbf, t), 1e-9) << "step " << step;
   }
   EXPECT_EQ(p.seeds(), 1u);
+  EXPECT_EQ(p.full_seeds(), GetParam().source ? 0u : 1u) << "a solved source is cloned, not re-solved";
   EXPECT_EQ(p.moves(), 11u);
   // The values change (the widget while previewing): no new seed.
   t.key.params = {-1.5};
@@ -78,14 +82,20 @@ TEST_P(PreviewPath, EveryStepEqualsAFreshSolveWithOneSeed) {
   EXPECT_EQ(p.seeds(), 1u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Editor, PreviewPath, ::testing::Values(PathCase{"placement", false}, PathCase{"grab", true}),
+INSTANTIATE_TEST_SUITE_P(Editor, PreviewPath, ::testing::Values(PathCase{"placement", false, false}, PathCase{"grab", true, false},
+                                                           PathCase{"placement_from_source", false, true},
+                                                           PathCase{"grab_from_source", true, true}),
                          [](const auto& info) { return std::string(info.param.name); });
 
-TEST(PreviewInterpolant, LandingOnAKeyframeLeavesItOutAndMovingOffBringsItBack) {
+class PreviewLanding : public ::testing::TestWithParam<bool> {};
+
+TEST_P(PreviewLanding, LandingOnAKeyframeLeavesItOutAndMovingOffBringsItBack) {
   std::vector<Keyframe> ks = random_keyframes(40, 3u);
   ks.push_back({{50.0, 0.0}, 20, {3.0}});
+  const effects::KeyframeSet solved(1, {}, 30.0, ks, {.async = false}, {0.0});
   PreviewTarget t;
-  t.keyframes = &ks;
+  if (GetParam()) t.source = &solved;  // the seeds clone it and remove the replaced keyframe
+  t.keyframes = GetParam() ? &solved.keyframes() : &ks;
   t.neutral = {0.0};
   t.key = {{45.0, 0.0}, 20, {-2.0}};
   PreviewInterpolant p({.async = false});
@@ -99,7 +109,11 @@ TEST(PreviewInterpolant, LandingOnAKeyframeLeavesItOutAndMovingOffBringsItBack) 
   const auto rbf = p.update(t);
   EXPECT_LT(max_difference(*rbf, t), 1e-9);
   EXPECT_NEAR(rbf->evaluate(Direction{50.0, 0.0}, 20)[0], 3.0, 1e-9);  // back
+  EXPECT_EQ(p.full_seeds(), GetParam() ? 0u : p.seeds());
 }
+
+INSTANTIATE_TEST_SUITE_P(Editor, PreviewLanding, ::testing::Values(false, true),
+                         [](const auto& info) { return std::string(info.param ? "from_source" : "solved"); });
 
 TEST(PreviewInterpolant, DocumentEditsReseedAndOtherRevisionsDoNot) {
   std::vector<Keyframe> ks = random_keyframes(30, 5u);
@@ -160,6 +174,9 @@ TEST(EditorPreview, HeadTurnsWhilePlacingAndGrabbingMatchAFreshSolve) {
     ASSERT_TRUE(ed.grabbing());
     expect_fresh(ed.document().keyframes(EffectType::Exposure), *ed.selected_preview(), ed.selected_keyframe());
   }
+  // Both previews were seeded from the document's exact set: no full solve on the frame thread.
+  EXPECT_EQ(ed.preview().seeds(), 2u);
+  EXPECT_EQ(ed.preview().full_seeds(), 0u);
 }
 
 }  // namespace

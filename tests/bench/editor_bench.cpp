@@ -7,6 +7,9 @@
 /// The live preview (trigger placement or grab), per frame in which the preview keyframe moved:
 /// the old path (a fresh RbfInterpolator of all keyframes, O(N^3)) against PreviewInterpolant
 /// (one O(N^2) KeyframeSet::move), each followed by one evaluation away from the view.
+/// The preview's start (trigger press or grab) at N = 1000: the old seed, one full solve of the
+/// keyframes and the preview keyframe (source 0, the peer), against cloning the document's
+/// solved set and one incremental add or move (source 1).
 /// The frame thread while playing (a new frame every update) at N = 1000: the minimap computed
 /// in update() (async 0) against handed to MinimapWorker (async 1); CPU time is the frame
 /// thread's only.
@@ -19,6 +22,7 @@
 #include "app/editor.h"
 #include "app/editor_preview.h"
 #include "app/visualizations.h"
+#include "effects/keyframe_set.h"
 #include "effects/rbf_interpolator.h"
 
 namespace {
@@ -81,6 +85,41 @@ void BM_EditorPreviewIncremental(benchmark::State& state) {
   state.counters["seeds"] = static_cast<double>(p.seeds());
 }
 BENCHMARK(BM_EditorPreviewIncremental)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+/// The first PreviewInterpolant::update of a preview (placement: grab 0; grab: grab 1), with
+/// and without the document's solved set as the source. The scratch set is dropped untimed.
+void BM_EditorPreviewStart(benchmark::State& state) {
+  const auto ks = make_keyframes(static_cast<int>(state.range(0)));
+  const vdfx::effects::KeyframeSet doc(1, {}, 30.0, ks, {.async = false}, {0.0});
+  vdfx::app::PreviewTarget t;
+  t.keyframes = &doc.keyframes();
+  t.neutral = {0.0};
+  if (state.range(1) != 0) t.source = &doc;
+  if (state.range(2) != 0) {
+    t.moved = 17;
+    t.key = ks[17];
+    t.key.direction.azimuth_deg += 3.0;  // the first frame of the grab in which it moved
+  }
+  vdfx::app::PreviewInterpolant p({.async = false});
+  int i = 0;
+  for (auto _ : state) {
+    if (!t.moved) t.key = preview_key(i++);
+    auto v = p.update(t)->evaluate(Direction{100.0, 10.0}, 450);
+    benchmark::DoNotOptimize(v.data());
+    state.PauseTiming();
+    p.reset();
+    state.ResumeTiming();
+  }
+  state.counters["full_seeds_per_start"] =
+      static_cast<double>(p.full_seeds()) / static_cast<double>(std::max<std::uint64_t>(p.seeds(), 1));
+}
+BENCHMARK(BM_EditorPreviewStart)
+    ->ArgNames({"n", "source", "grab"})
+    ->Args({1000, 0, 0})
+    ->Args({1000, 1, 0})
+    ->Args({1000, 0, 1})
+    ->Args({1000, 1, 1})
+    ->Unit(benchmark::kMillisecond);
 
 /// Editor::update while playing (head still): the frame thread's cost.
 void BM_EditorPlayingFrame(benchmark::State& state) {

@@ -178,5 +178,97 @@ TEST(KeyframeSet, AsyncFullSolveIsSwappedInAndReadersAlwaysHaveASolution) {
   EXPECT_EQ(set.solution_version(), set.version());
 }
 
+/// Largest difference between two interpolants at random views.
+double max_diff(const RbfInterpolator& a, const RbfInterpolator& b, std::uint64_t seed) {
+  std::mt19937_64 views(seed);
+  double worst = 0.0;
+  for (int v = 0; v < 25; ++v) {
+    const Direction d = test::random_direction(views);
+    const std::int64_t f = static_cast<std::int64_t>(views() % 201);
+    worst = std::max(worst, (a.evaluate(d, f) - b.evaluate(d, f)).cwiseAbs().maxCoeff());
+  }
+  return worst;
+}
+
+TEST(KeyframeSet, CloneCopiesTheExactStateAndThenEditsLikeAFreshSolve) {
+  std::mt19937_64 rng(31);
+  std::vector<Keyframe> initial;
+  for (int i = 0; i < 80; ++i) initial.push_back(test::random_keyframe(rng, kDim, 0, 200));
+  KeyframeSetOptions opt;
+  opt.async = false;
+  KeyframeSet source(kDim, {}, 30.0, initial, opt);
+  for (int i = 0; i < 5; ++i) ASSERT_TRUE(source.add(test::random_keyframe(rng, kDim, 0, 200)).incremental);
+  source.set_params(3, {0.25, 3.0});
+  const auto before = source.solution();
+  const auto keyframes_before = source.keyframes();
+
+  const auto clone = source.clone(opt);
+  EXPECT_TRUE(clone->stats().cloned_exact) << "an exact source is copied, not solved";
+  EXPECT_FALSE(source.stats().cloned_exact);
+  EXPECT_EQ(clone->keyframes(), source.keyframes());
+  EXPECT_EQ(clone->version(), source.version());
+  EXPECT_EQ(clone->solution_version(), source.solution_version());
+  EXPECT_LE(max_diff(*clone->solution(), *before, 1), 1e-12);
+  EXPECT_EQ(clone->stats().capacity, source.stats().capacity);
+
+  // The clone's edits are incremental (it has the state) and match a fresh solve; the source
+  // is left alone.
+  for (int step = 0; step < 12; ++step) {
+    const size_t i = static_cast<size_t>(step * 7) % clone->keyframes().size();
+    switch (step % 4) {
+      case 0: EXPECT_TRUE(clone->add(test::random_keyframe(rng, kDim, 0, 200)).incremental); break;
+      case 1: EXPECT_TRUE(clone->move(i, test::random_direction(rng), clone->keyframes()[i].frame).incremental); break;
+      case 2: clone->set_params(i, {1.5, 2.5}); break;
+      case 3: clone->remove(i); break;
+    }
+    ASSERT_LE(max_diff_to_full_solve(*clone, rng), 1e-9) << "after clone edit " << step;
+  }
+  EXPECT_EQ(clone->stats().incremental_edits, 12u) << "no edit of the clone fell back to a full solve";
+  EXPECT_EQ(source.keyframes(), keyframes_before);
+  EXPECT_EQ(source.solution(), before);
+  // The source still edits correctly after being cloned.
+  EXPECT_TRUE(source.add(test::random_keyframe(rng, kDim, 0, 200)).incremental);
+  EXPECT_LE(max_diff_to_full_solve(source, rng), 1e-9);
+}
+
+TEST(KeyframeSet, CloneWithoutAnExactStateSolves) {
+  // Two keyframes merged into one centre: no incremental state, so the clone solves.
+  KeyframeSetOptions opt;
+  opt.async = false;
+  std::vector<Keyframe> k{{{10, 0}, 5, {1, 1}}, {{10, 0}, 5, {3, 3}}, {{60, 10}, 9, {2, 0}},
+                          {{-40, -20}, 20, {0, 2}}, {{120, 30}, 2, {4, 1}}, {{-150, 5}, 14, {1, 4}}};
+  KeyframeSet source(kDim, {}, 30.0, k, opt);
+  ASSERT_EQ(source.stats().capacity, 0) << "the test needs a source without incremental state";
+  const auto clone = source.clone(opt);
+  EXPECT_FALSE(clone->stats().cloned_exact);
+  EXPECT_EQ(clone->keyframes(), source.keyframes());
+  EXPECT_LE(max_diff(*clone->solution(), *source.solution(), 2), 1e-12);
+}
+
+TEST(KeyframeSet, CloneOfAnAsyncSetAfterAWorkerSolve) {
+  std::mt19937_64 rng(33);
+  std::vector<Keyframe> k;
+  for (int i = 0; i < 120; ++i) k.push_back(test::random_keyframe(rng, kDim, 0, 0));
+  KeyframeSetOptions opt;
+  opt.inline_full_solve_max = 0;  // full solves on the worker
+  KeyframeSet source(kDim, {}, 30.0, k, opt);
+  EXPECT_FALSE(source.add(test::random_keyframe(rng, kDim, 40, 40)).incremental);  // adds the t term
+  {
+    // Whether the worker has finished or not, the clone is complete and current.
+    const auto early = source.clone(opt);
+    EXPECT_EQ(early->solution_version(), source.version());
+    EXPECT_LE(max_diff_to_full_solve(*early, rng), 1e-9);
+  }
+  ASSERT_TRUE(source.wait_for_version(source.version(), std::chrono::seconds(60)));
+  // The worker's state was published but not adopted by an edit yet: the clone copies it.
+  KeyframeSetOptions sync = opt;
+  sync.async = false;
+  const auto clone = source.clone(sync);
+  EXPECT_TRUE(clone->stats().cloned_exact);
+  EXPECT_LE(max_diff(*clone->solution(), *source.solution(), 3), 1e-12);
+  EXPECT_TRUE(clone->add(test::random_keyframe(rng, kDim, 0, 40)).incremental);
+  EXPECT_LE(max_diff_to_full_solve(*clone, rng), 1e-9);
+}
+
 }  // namespace
 }  // namespace vdfx::effects
