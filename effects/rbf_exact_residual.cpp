@@ -39,8 +39,10 @@ double saddle_residual_dot2(const Eigen::MatrixXd& a, const Eigen::MatrixXd& p,
     std::copy_n(f.col(k).data(), m, sum.begin());
     std::fill(err.begin(), err.end(), 0.0);
     // Column by column through A and P: contiguous, vectorisable sweeps.
-    for (Eigen::Index j = 0; j < m; ++j) axpy_dot2(a.col(j).data(), -w(j, k), sum.data(), err.data(), m);
-    for (Eigen::Index q = 0; q < r; ++q) axpy_dot2(p.col(q).data(), -c(q, k), sum.data(), err.data(), m);
+    for (Eigen::Index j = 0; j < m; ++j)
+      axpy_dot2(a.col(j).data(), -w(j, k), sum.data(), err.data(), m);
+    for (Eigen::Index q = 0; q < r; ++q)
+      axpy_dot2(p.col(q).data(), -c(q, k), sum.data(), err.data(), m);
     for (Eigen::Index i = 0; i < m; ++i) rf(i, k) = sum[i] + err[i];
     for (Eigen::Index q = 0; q < r; ++q) {
       // g - P^T w: each row of P^T against w, as one (sum, error) pair.

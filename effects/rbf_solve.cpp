@@ -29,8 +29,8 @@ void kernel_row(const RbfPoints& points, const RbfKernel& kernel, const Eigen::V
                 double t, Eigen::Ref<Eigen::ArrayXd> out) {
   const double tf = kernel.time_factor;
   if (kernel.distance == AngularDistance::Chordal) {
-    out = (points.x - n.x()).square() + (points.y - n.y()).square() +
-          (points.z - n.z()).square() + ((points.t - t) * tf).square();
+    out = (points.x - n.x()).square() + (points.y - n.y()).square() + (points.z - n.z()).square() +
+          ((points.t - t) * tf).square();
   } else {
     for (Eigen::Index i = 0; i < out.size(); ++i) {
       const double dt = (points.t[i] - t) * tf;
@@ -217,8 +217,10 @@ class SaddleSolver {
         default: y.bottomRows(n2) = cod_->solve(rhs); break;
       }
     }
-    if (r_ > 0) c = r.solve(qf.topRows(r_) - b_top_ * y);
-    else c.resize(0, d);
+    if (r_ > 0)
+      c = r.solve(qf.topRows(r_) - b_top_ * y);
+    else
+      c.resize(0, d);
     w = y;
     w.applyOnTheLeft(qr_.householderQ());
   }
@@ -236,7 +238,9 @@ class SaddleSolver {
   double condition_ = 1.0;
 };
 
-double max_abs(const Eigen::MatrixXd& m) { return m.size() ? m.cwiseAbs().maxCoeff() : 0.0; }
+double max_abs(const Eigen::MatrixXd& m) {
+  return m.size() ? m.cwiseAbs().maxCoeff() : 0.0;
+}
 
 }  // namespace
 

@@ -80,9 +80,7 @@ class ViewCamera {
   /// Tangents (x right, y up) of the camera-space ray through continuous pixel coordinates (x, y):
   /// the ray is (tx, ty, -1). The single pixel <-> ray mapping of the project (xr::RenderView
   /// delegates here).
-  Eigen::Vector2d tangent(double x, double y) const {
-    return {(x - cx_) / fx_, -(y - cy_) / fy_};
-  }
+  Eigen::Vector2d tangent(double x, double y) const { return {(x - cx_) / fx_, -(y - cy_) / fy_}; }
   /// Continuous pixel coordinates of camera-space tangents (the inverse of tangent()).
   Eigen::Vector2d pixel_of_tangent(const Eigen::Vector2d& t) const {
     return {cx_ + fx_ * t.x(), cy_ - fy_ * t.y()};

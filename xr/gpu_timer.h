@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,5 +37,9 @@ class GpuTimer {
   std::vector<Pending> pending_;
   std::vector<size_t> open_;
 };
+
+/// Wall time of `work` with the GL pipeline drained before and after (glFinish), in ms: what a
+/// frame's GL work costs end to end, for tests that print figures and for the benchmarks.
+double finished_wall_ms(const std::function<void()>& work);
 
 }  // namespace vdfx::xr

@@ -2,6 +2,8 @@
 /// @brief GpuTimer with GL_TIMESTAMP queries.
 #include <epoxy/gl.h>
 
+#include <chrono>
+
 #include "xr/gl_context.h"
 #include "xr/gpu_timer.h"
 
@@ -44,6 +46,14 @@ std::vector<StageTime> GpuTimer::collect() {
   }
   pending_.clear();
   return out;
+}
+
+double finished_wall_ms(const std::function<void()>& work) {
+  glFinish();
+  const auto t0 = std::chrono::steady_clock::now();
+  work();
+  glFinish();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 }  // namespace vdfx::xr

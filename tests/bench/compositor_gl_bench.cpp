@@ -9,9 +9,8 @@
 /// Timing: every iteration ends with glFinish, and the benchmark uses real time, so a stage's
 /// time is the wall time of its GPU work (llvmpipe runs it on the CPU threads). Needs a display
 /// (run under `xvfb-run -a`); without one every case reports the context error.
-#include <epoxy/gl.h>
-
 #include <benchmark/benchmark.h>
+#include <epoxy/gl.h>
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +24,7 @@
 #include "xr/distortion_gl.h"
 #include "xr/effect_stack_gl.h"
 #include "xr/gl_context.h"
+#include "xr/gpu_timer.h"
 #include "xr/video_layer.h"
 
 namespace {
@@ -45,14 +45,6 @@ struct Fixture {
   effects::LensModel lens;
   double copy_ms = 0.0;
 };
-
-double time_ms(const std::function<void()>& f) {
-  glFinish();
-  const auto t0 = std::chrono::steady_clock::now();
-  f();
-  glFinish();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 Fixture& fixture() {
   static Fixture fx = [] {
@@ -88,7 +80,7 @@ Fixture& fixture() {
     // The memory-bound floor: the stack's copy pass (an empty mask), median of 7.
     std::vector<double> t;
     for (int i = 0; i < 7; ++i)
-      t.push_back(time_ms([&] { f.stack->apply(f.a.texture(), f.b, {}, 0, f.eye); }));
+      t.push_back(finished_wall_ms([&] { f.stack->apply(f.a.texture(), f.b, {}, 0, f.eye); }));
     std::nth_element(t.begin(), t.begin() + 3, t.end());
     f.copy_ms = t[3];
     return f;
@@ -106,7 +98,7 @@ void run(benchmark::State& state, const std::function<void(Fixture&)>& body) {
   glFinish();
   double total = 0.0;
   for (auto _ : state) {
-    const double ms = time_ms([&] { body(f); });
+    const double ms = finished_wall_ms([&] { body(f); });
     state.SetIterationTime(ms * 1e-3);
     total += ms;
   }
@@ -130,7 +122,9 @@ void BM_GlColourEffects(benchmark::State& s) {
   p.contrast = 1.2;
   p.vignette_radius_deg = 30;
   p.vignette_falloff_deg = 20;
-  run(s, [p](Fixture& f) { f.stack->apply(f.a.texture(), f.b, p, effects::non_neutral_mask(p), f.eye); });
+  run(s, [p](Fixture& f) {
+    f.stack->apply(f.a.texture(), f.b, p, effects::non_neutral_mask(p), f.eye);
+  });
 }
 void BM_GlFullStackBlurSigmaCentiDeg(benchmark::State& s) {
   effects::StackParams p;
@@ -140,7 +134,9 @@ void BM_GlFullStackBlurSigmaCentiDeg(benchmark::State& s) {
   p.contrast = 1.2;
   p.vignette_radius_deg = 30;
   p.vignette_falloff_deg = 20;
-  run(s, [p](Fixture& f) { f.stack->apply(f.a.texture(), f.b, p, effects::non_neutral_mask(p), f.eye); });
+  run(s, [p](Fixture& f) {
+    f.stack->apply(f.a.texture(), f.b, p, effects::non_neutral_mask(p), f.eye);
+  });
 }
 // Blur alone (no other effect), the given method; x_exact against the exact blur of the same
 // sigma timed once (median of 3) in this run.
@@ -153,10 +149,12 @@ void BM_GlBlurMethodSigmaCentiDeg(benchmark::State& s) {
   static std::unique_ptr<EffectStackGl> exact_stack, pyramid_stack;
   Fixture& fx = fixture();
   if (fx.ctx && !exact.count(s.range(1))) {
-    if (!exact_stack) exact_stack = std::make_unique<EffectStackGl>(TexFormat::RGBA16F, BlurMethod::Exact);
+    if (!exact_stack)
+      exact_stack = std::make_unique<EffectStackGl>(TexFormat::RGBA16F, BlurMethod::Exact);
     std::vector<double> t;
     for (int i = 0; i < 3; ++i)
-      t.push_back(time_ms([&] { exact_stack->apply(fx.a.texture(), fx.b, p, mask, fx.eye); }));
+      t.push_back(
+          finished_wall_ms([&] { exact_stack->apply(fx.a.texture(), fx.b, p, mask, fx.eye); }));
     std::sort(t.begin(), t.end());
     exact[s.range(1)] = {t[1], fx.b.read_float()};
   }
@@ -192,14 +190,16 @@ void BM_GlPredistortPixel(benchmark::State& s) {
 void BM_GlPredistortMesh(benchmark::State& s) {
   const int n = static_cast<int>(s.range(0));
   run(s, [n](Fixture& f) {
-    f.distortion->predistort(f.a.texture(), f.b, f.eye, f.lens, {DistortionMethod::Mesh, n, 0, true, false});
+    f.distortion->predistort(f.a.texture(), f.b, f.eye, f.lens,
+                             {DistortionMethod::Mesh, n, 0, true, false});
   });
 }
 void BM_GlThroughLens(benchmark::State& s) {
   run(s, [](Fixture& f) { f.distortion->through_lens(f.a.texture(), f.b, f.eye, f.lens); });
 }
 
-#define VDFX_GL_BENCH(fn) BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
+#define VDFX_GL_BENCH(fn) \
+  BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
 VDFX_GL_BENCH(BM_GlCopyFloor);
 VDFX_GL_BENCH(BM_GlVideoLayer)->Arg(0)->Arg(1)->Arg(2);  // LodMode analytic, derivatives, base
 VDFX_GL_BENCH(BM_GlColourEffects);

@@ -1,12 +1,12 @@
 /// @file
 /// @brief The Dot2 residual: exact where double summation loses everything, and as accurate as a
 /// long double reference on random systems.
+#include "effects/rbf_exact_residual.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
-
-#include "effects/rbf_exact_residual.h"
 
 namespace vdfx::effects {
 namespace {

@@ -1,9 +1,9 @@
 /// @file
 /// @brief Cross-check against an independent reference: the full (unreduced) saddle-point
 /// system assembled here in long double and solved by a full-pivot LU, evaluated at random views.
-#include <Eigen/LU>
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
 #include <limits>
 
 #include "effects/rbf_interpolator.h"
@@ -43,33 +43,32 @@ struct Reference {
       p[static_cast<Eigen::Index>(j)] = cols[j] == 0 ? 1 : (cols[j] == 4 ? tt : u[cols[j] - 1]);
     return p;
   }
-  Eigen::Matrix<LD, Eigen::Dynamic, 1> eval(const VecL& u, LD tt) const {
-    const Eigen::Index m = static_cast<Eigen::Index>(n.size()), r = static_cast<Eigen::Index>(cols.size());
+  /// The basis at (u, tt): the kernel against every centre, then the polynomial columns.
+  Eigen::Matrix<LD, Eigen::Dynamic, 1> basis_row(const VecL& u, LD tt) const {
+    const Eigen::Index m = static_cast<Eigen::Index>(n.size()),
+                       r = static_cast<Eigen::Index>(cols.size());
     Eigen::Matrix<LD, Eigen::Dynamic, 1> row(m + r);
     for (Eigen::Index i = 0; i < m; ++i) {
       const LD dt = (tt - t[static_cast<size_t>(i)]) * tf;
       row[i] = phi_l(std::sqrt((u - n[static_cast<size_t>(i)]).squaredNorm() + dt * dt), alpha);
     }
     row.tail(r) = poly(u, tt);
-    return coef.transpose() * row;
+    return row;
+  }
+  Eigen::Matrix<LD, Eigen::Dynamic, 1> eval(const VecL& u, LD tt) const {
+    return coef.transpose() * basis_row(u, tt);
   }
   /// sum_i |coef_i row_i| per output: the size of the terms that cancel in eval().
   Eigen::Matrix<LD, Eigen::Dynamic, 1> magnitude(const VecL& u, LD tt) const {
-    const Eigen::Index m = static_cast<Eigen::Index>(n.size()), r = static_cast<Eigen::Index>(cols.size());
-    Eigen::Matrix<LD, Eigen::Dynamic, 1> row(m + r);
-    for (Eigen::Index i = 0; i < m; ++i) {
-      const LD dt = (tt - t[static_cast<size_t>(i)]) * tf;
-      row[i] = phi_l(std::sqrt((u - n[static_cast<size_t>(i)]).squaredNorm() + dt * dt), alpha);
-    }
-    row.tail(r) = poly(u, tt);
-    return coef.cwiseAbs().transpose() * row.cwiseAbs();
+    return coef.cwiseAbs().transpose() * basis_row(u, tt).cwiseAbs();
   }
 };
 
 Reference solve_reference(const std::vector<Keyframe>& k, int dim, double alpha, double fps,
                           const std::vector<int>& cols) {
   Reference ref{{}, {}, {}, cols, alpha, 24.0 / fps};
-  const Eigen::Index m = static_cast<Eigen::Index>(k.size()), r = static_cast<Eigen::Index>(cols.size());
+  const Eigen::Index m = static_cast<Eigen::Index>(k.size()),
+                     r = static_cast<Eigen::Index>(cols.size());
   for (const auto& kf : k) {
     ref.n.push_back(unit_l(kf.direction));
     ref.t.push_back(static_cast<LD>(kf.frame));
@@ -78,12 +77,16 @@ Reference solve_reference(const std::vector<Keyframe>& k, int dim, double alpha,
   for (Eigen::Index i = 0; i < m; ++i) {
     for (Eigen::Index j = 0; j < m; ++j) {
       const LD dt = (ref.t[static_cast<size_t>(i)] - ref.t[static_cast<size_t>(j)]) * ref.tf;
-      sys(i, j) = phi_l(std::sqrt((ref.n[static_cast<size_t>(i)] - ref.n[static_cast<size_t>(j)]).squaredNorm() + dt * dt), alpha);
+      sys(i, j) = phi_l(
+          std::sqrt((ref.n[static_cast<size_t>(i)] - ref.n[static_cast<size_t>(j)]).squaredNorm() +
+                    dt * dt),
+          alpha);
     }
     const auto p = ref.poly(ref.n[static_cast<size_t>(i)], ref.t[static_cast<size_t>(i)]);
     sys.block(i, m, 1, r) = p.transpose();
     sys.block(m, i, r, 1) = p;
-    for (int c = 0; c < dim; ++c) rhs(i, c) = k[static_cast<size_t>(i)].params[static_cast<size_t>(c)];
+    for (int c = 0; c < dim; ++c)
+      rhs(i, c) = k[static_cast<size_t>(i)].params[static_cast<size_t>(c)];
   }
   ref.coef = Eigen::FullPivLU<MatL>(sys).solve(rhs);
   return ref;
@@ -94,7 +97,7 @@ TEST(RbfReference, MatchesAnIndependentLongDoubleSolveAtRandomViews) {
     int n;
     double alpha;
     std::int64_t frames;
-  } cases[] = {{8, 1.0, 100}, {40, 1.0, 300}, {40, 0.5, 300}, {40, 1.5, 0},
+  } cases[] = {{8, 1.0, 100},  {40, 1.0, 300}, {40, 0.5, 300}, {40, 1.5, 0},
                {30, 3.0, 200}, {30, 2.0, 200}, {25, 1.99, 50}};
   std::uint64_t seed = 100;
   for (const auto& c : cases) {

@@ -1,18 +1,19 @@
 /// @file
 /// @brief The pyramid blur against the exact separable blur: the plan's arithmetic, and error
 /// and time for sigma 0.5, 1, 2, 4 degrees (printed; only a generous error bound is asserted).
+#include "xr/blur_pyramid_gl.h"
+
+#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
-#include <epoxy/gl.h>
-
 #include "effects/effect_shaders.h"
 #include "gl_test_support.h"
-#include "xr/blur_pyramid_gl.h"
 #include "xr/effect_stack_gl.h"
+#include "xr/gpu_timer.h"
 
 namespace vdfx::xr {
 namespace {
@@ -37,23 +38,17 @@ TEST(PyramidPlan, HalvesWhileTheLevelSigmaStaysAboveTheMinimumAndKeepsTheVarianc
 
 class BlurPyramidGlTest : public GlTest {};
 
-double time_ms(const std::function<void()>& f) {
-  glFinish();
-  const auto t0 = std::chrono::steady_clock::now();
-  f();
-  glFinish();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 TEST_F(BlurPyramidGlTest, PyramidStaysCloseToTheExactBlur) {
-  // 512 x 512 at 90 degrees: 4.5 px/degree, so sigma 0.5 .. 4 deg is 2.2 .. 18 px (0 .. 3 halvings).
+  // 512 x 512 at 90 degrees: 4.5 px/degree, so sigma 0.5 .. 4 deg is 2.2 .. 18 px (0 .. 3
+  // halvings).
   const int n = 512;
   cv::Mat src;
   cv::resize(test::sunrise_float(), src, {n, n}, 0, 0, cv::INTER_AREA);
   GlTexture tex(n, n, TexFormat::RGBA32F);
   tex.upload(src);
   GlTarget exact_out(n, n, TexFormat::RGBA32F), pyr_out(n, n, TexFormat::RGBA32F);
-  EffectStackGl exact(TexFormat::RGBA32F, BlurMethod::Exact), pyramid(TexFormat::RGBA32F, BlurMethod::Pyramid);
+  EffectStackGl exact(TexFormat::RGBA32F, BlurMethod::Exact),
+      pyramid(TexFormat::RGBA32F, BlurMethod::Pyramid);
   const RenderView eye = RenderView::look_at({0, 0}, 0, 90, n, n);
   for (const double sigma_deg : {0.5, 1.0, 2.0, 4.0}) {
     effects::StackParams p;
@@ -61,16 +56,17 @@ TEST_F(BlurPyramidGlTest, PyramidStaysCloseToTheExactBlur) {
     const unsigned mask = effects::non_neutral_mask(p);
     exact.apply(tex, exact_out, p, mask, eye);  // warm-up: compiles the variants
     pyramid.apply(tex, pyr_out, p, mask, eye);
-    const double t_exact = time_ms([&] { exact.apply(tex, exact_out, p, mask, eye); });
-    const double t_pyr = time_ms([&] { pyramid.apply(tex, pyr_out, p, mask, eye); });
+    const double t_exact = finished_wall_ms([&] { exact.apply(tex, exact_out, p, mask, eye); });
+    const double t_pyr = finished_wall_ms([&] { pyramid.apply(tex, pyr_out, p, mask, eye); });
     const cv::Mat a = test::bgr_clamped(exact_out.read_float());
     const cv::Mat b = test::bgr_clamped(pyr_out.read_float());
     const test::ErrorStats e = test::compare(a, b);
     const BlurPixels px = blur_pixels(sigma_deg, eye, n, n);
-    std::printf("[ pyramid  ] sigma %.1f deg (%5.1f px, %d halvings): max %.4f mean %.5f "
-                "(0..1); exact %.1f ms, pyramid %.1f ms (512 x 512, llvmpipe, one run)\n",
-                sigma_deg, px.sigma_x, plan_pyramid(px.sigma_x, px.sigma_y).halvings, e.max,
-                e.mean, t_exact, t_pyr);
+    std::printf(
+        "[ pyramid  ] sigma %.1f deg (%5.1f px, %d halvings): max %.4f mean %.5f "
+        "(0..1); exact %.1f ms, pyramid %.1f ms (512 x 512, llvmpipe, one run)\n",
+        sigma_deg, px.sigma_x, plan_pyramid(px.sigma_x, px.sigma_y).halvings, e.max, e.mean,
+        t_exact, t_pyr);
     EXPECT_LE(e.mean, 1.0 / 255) << sigma_deg;
     EXPECT_LE(e.max, 24.0 / 255) << sigma_deg;  // measured <= 15.6/255, at the HDR sun's edge
     // The blur happened in both: far from the unblurred image.

@@ -1,9 +1,8 @@
 /// @file
 /// @brief Per-pixel mode on the GPU (compositor with a parameter grid) against the CPU reference
 /// per-pixel render (effects::render_view, RenderMode::Pixel, the same parameter function).
-#include <gtest/gtest.h>
-
 #include <epoxy/gl.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <chrono>
@@ -18,6 +17,7 @@
 #include "effects/view_renderer.h"
 #include "gl_test_support.h"
 #include "xr/compositor.h"
+#include "xr/gpu_timer.h"
 
 namespace vdfx::xr {
 namespace {
@@ -54,13 +54,7 @@ cv::Mat gpu_eye(const cv::Mat& eq_bgr, const effects::ParamsAt& at, unsigned mas
   if (ms) {
     // Median of 5 timed frames after the first (which compiled the programs and made the levels).
     std::vector<double> t;
-    for (int k = 0; k < 5; ++k) {
-      glFinish();
-      const auto t0 = std::chrono::steady_clock::now();
-      comp.render_eye(0, in);
-      glFinish();
-      t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-    }
+    for (int k = 0; k < 5; ++k) t.push_back(finished_wall_ms([&] { comp.render_eye(0, in); }));
     std::nth_element(t.begin(), t.begin() + 2, t.end());
     *ms = t[2];
   }
@@ -70,9 +64,11 @@ cv::Mat gpu_eye(const cv::Mat& eq_bgr, const effects::ParamsAt& at, unsigned mas
 cv::Mat cpu_eye(const cv::Mat& eq_bgr, const effects::ParamsAt& at) {
   cv::Mat eq_rgb, ref;
   cv::cvtColor(eq_bgr, eq_rgb, cv::COLOR_BGR2RGB);
-  const effects::EquirectSampler sampler(eq_rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
+  const effects::EquirectSampler sampler(
+      eq_rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
   const effects::ViewCamera cam = effects::ViewCamera::from_horizontal_fov(kPose, kFov, kW, kH);
-  cv::cvtColor(effects::render_view(sampler, cam, at, effects::RenderMode::Pixel), ref, cv::COLOR_RGB2BGR);
+  cv::cvtColor(effects::render_view(sampler, cam, at, effects::RenderMode::Pixel), ref,
+               cv::COLOR_RGB2BGR);
   cv::min(cv::max(ref, 0.0), 1.0, ref);
   return ref;
 }
@@ -81,7 +77,8 @@ cv::Mat cpu_eye(const cv::Mat& eq_bgr, const effects::ParamsAt& at) {
 StackParams smooth_params(const Direction& d) {
   const double a = d.azimuth_deg * effects::kDegToRad, h = d.altitude_deg * effects::kDegToRad;
   StackParams p;
-  p.set(EffectType::Tint, std::vector<double>{1.0 + 0.4 * std::sin(a), 1.0, 1.0 - 0.3 * std::cos(h + a)});
+  p.set(EffectType::Tint,
+        std::vector<double>{1.0 + 0.4 * std::sin(a), 1.0, 1.0 - 0.3 * std::cos(h + a)});
   p.exposure_stops = 0.8 * std::sin(2.0 * a);
   p.saturation = 1.0 + 0.6 * std::cos(3.0 * a);
   p.contrast = 1.0 + 0.3 * std::sin(2.0 * h - a);
@@ -118,8 +115,8 @@ TEST_F(PerPixelGlTest, ColourEffectsAndVignetteMatchTheCpuPixelRender) {
   // View mode (one parameter set for the view) is far from the per-pixel reference.
   const test::ErrorStats view =
       test::compare(gpu_eye(eq, smooth_params, mask, false, 0, 0, BlurMethod::Exact), ref);
-  std::printf("[ per-pixel] view mode vs CPU pixel mode: max %.3f/255 mean %.4f/255\n", view.max * 255,
-              view.mean * 255);
+  std::printf("[ per-pixel] view mode vs CPU pixel mode: max %.3f/255 mean %.4f/255\n",
+              view.max * 255, view.mean * 255);
   EXPECT_GT(view.mean, 4.0 / 255);
 }
 
@@ -133,7 +130,12 @@ TEST_F(PerPixelGlTest, BlurAndVignetteFollowEachPixelsOwnParameters) {
     std::function<void(StackParams&)> set;
     double tolerance;  //!< GPU vs CPU per-pixel (blur: measured <= 0.27/255, half-octave levels)
   } cases[] = {
-      {"vignette 5/10", [](StackParams& p) { p.vignette_radius_deg = 5; p.vignette_falloff_deg = 10; }, 2.0 / 255},
+      {"vignette 5/10",
+       [](StackParams& p) {
+         p.vignette_radius_deg = 5;
+         p.vignette_falloff_deg = 10;
+       },
+       2.0 / 255},
       {"blur 1.5 deg", [](StackParams& p) { p.blur_sigma_deg = 1.5; }, 1.0 / 255},
       {"blur 3 deg", [](StackParams& p) { p.blur_sigma_deg = 3.0; }, 1.0 / 255},
   };
@@ -165,10 +167,11 @@ TEST_F(PerPixelGlTest, BlurAndVignetteFollowEachPixelsOwnParameters) {
       const test::ErrorStats e_left = test::compare(gpu, ref, left);
       const test::ErrorStats e_right = test::compare(gpu, ref, right);
       const test::ErrorStats effect = test::compare(ref, plain, left);
-      std::printf("[ per-pixel] %-7s %-13s GPU vs CPU pixel mode: left max %.3f/255 mean %.4f/255, "
-                  "right max %.3f/255; effect on the left: mean %.2f/255\n",
-                  std::string(blur_method_name(method)).c_str(), c.name, e_left.max * 255,
-                  e_left.mean * 255, e_right.max * 255, effect.mean * 255);
+      std::printf(
+          "[ per-pixel] %-7s %-13s GPU vs CPU pixel mode: left max %.3f/255 mean %.4f/255, "
+          "right max %.3f/255; effect on the left: mean %.2f/255\n",
+          std::string(blur_method_name(method)).c_str(), c.name, e_left.max * 255,
+          e_left.mean * 255, e_right.max * 255, effect.mean * 255);
       EXPECT_LE(e_left.max, c.tolerance) << c.name;
       EXPECT_LE(e_right.max, 2.0 / 255) << c.name;
       EXPECT_GT(effect.mean, 3.0 / 255) << c.name << ": the case must change the left half";
@@ -194,17 +197,19 @@ TEST_F(PerPixelGlTest, HalfOctaveLevelsBlurCloserToTheCpuGatherThanOctaves) {
   const struct {
     const char* name;
     double ratio;
-  } spacings[] = {{"octaves (r = 2)", kOctaveLevels}, {"half octaves (r = sqrt 2)", kHalfOctaveLevels}};
+  } spacings[] = {{"octaves (r = 2)", kOctaveLevels},
+                  {"half octaves (r = sqrt 2)", kHalfOctaveLevels}};
   for (const BlurMethod method : {BlurMethod::Exact, BlurMethod::Pyramid}) {
     test::ErrorStats e[2];
     for (int k = 0; k < 2; ++k) {
       double ms = 0.0;
       const cv::Mat gpu = gpu_eye(eq, at, mask, true, 256, 128, method, spacings[k].ratio, &ms);
       e[k] = test::compare(gpu, ref);
-      std::printf("[ per-pixel] blur 0..3 deg, %-7s levels, %-25s: max %.3f/255 mean %.4f/255, "
-                  "%.2f ms/eye (200x150, median of 5)\n",
-                  std::string(blur_method_name(method)).c_str(), spacings[k].name, e[k].max * 255,
-                  e[k].mean * 255, ms);
+      std::printf(
+          "[ per-pixel] blur 0..3 deg, %-7s levels, %-25s: max %.3f/255 mean %.4f/255, "
+          "%.2f ms/eye (200x150, median of 5)\n",
+          std::string(blur_method_name(method)).c_str(), spacings[k].name, e[k].max * 255,
+          e[k].mean * 255, ms);
     }
     EXPECT_LT(e[1].mean, e[0].mean) << blur_method_name(method);
     EXPECT_LE(e[1].max, e[0].max) << blur_method_name(method);
