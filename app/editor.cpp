@@ -143,13 +143,7 @@ effects::StackParams Editor::params_for_view(const Direction& direction, std::in
     sp.set(effect_, chosen);
     return sp;
   }
-  if (grabbing_) {  // a grab that has not moved yet changes nothing
-    const auto held = selected_preview();
-    if (!held) return sp;
-    const auto& k = doc_.keyframes(effect_)[*selected_];
-    if (held->frame == k.frame && held->direction == k.direction) return sp;
-  }
-  const auto target = preview_target();
+  const auto target = shown_preview_target();  // a grab that has not moved yet changes nothing
   if (!target) return sp;
   const auto rbf = preview_.update(*target);
   const Eigen::VectorXd v = rbf->evaluate(direction, frame);
@@ -178,6 +172,16 @@ std::optional<PreviewTarget> Editor::preview_target() const {
     return t;
   }
   return std::nullopt;
+}
+
+std::optional<PreviewTarget> Editor::shown_preview_target() const {
+  if (grabbing_) {
+    const auto held = selected_preview();
+    if (!held) return std::nullopt;
+    const auto& k = doc_.keyframes(effect_)[*selected_];
+    if (held->frame == k.frame && held->direction == k.direction) return std::nullopt;
+  }
+  return preview_target();
 }
 
 std::optional<effects::Keyframe> Editor::selected_preview() const {
@@ -497,16 +501,36 @@ void Editor::refresh_visualizations() {
     marker_view_ = view_;
     ++marker_count_;
   }
-  const auto rbf = doc_.keyframe_set(effect_).solution();
-  const MinimapKey base{doc_.revision(), doc_.keyframe_set(effect_).solution_version(), eff, -1};
+  // While a keyframe is previewed (placed, or held away from its place) the track and the field
+  // are the live preview's interpolant, the one params_for_view answers with (at most one
+  // incremental move here); each new place of the preview keyframe is a new MinimapKey::preview.
+  const auto target = shown_preview_target();
+  if (!target) {
+    shown_preview_.reset();
+  } else if (!shown_preview_ || shown_preview_->moved != target->moved || !(shown_preview_->key == target->key)) {
+    shown_preview_ = ShownPreview{target->moved, target->key};
+    ++preview_serial_;
+  }
+  const auto doc_rbf = doc_.keyframe_set(effect_).solution();
+  std::shared_ptr<const effects::RbfInterpolator> preview_rbf;
+  auto interpolant = [&] {
+    if (!target) return doc_rbf;
+    if (!preview_rbf) preview_rbf = preview_.update(*target);
+    return preview_rbf;
+  };
+  const MinimapKey base{doc_.revision(), doc_.keyframe_set(effect_).solution_version(), eff, -1,
+                        target ? preview_serial_ : 0};
   const auto [lo, hi] = display_range(effect_);
   if (!(track_key_ == base) || angle_deg(track_view_, view_) > 1.0) {
-    track_ = effect_track(rbf.get(), effect_, view_, track_frames_);
+    track_ = effect_track(interpolant().get(), effect_, view_, track_frames_);
     panels_.plot->set_values(track_);
     panels_.plot->set_range(lo, hi);
+    std::vector<std::int64_t> key_frames;  // the held keyframe where it is held, a placed one at the playhead
+    for (std::size_t i = 0; i < ks.size(); ++i) key_frames.push_back(held && i == *selected_ ? held->frame : ks[i].frame);
+    if (previewing_) key_frames.push_back(frame_);
     std::vector<int> marks;  // keyframe frames as sample indices
-    for (const auto& k : ks) {
-      const auto it = std::lower_bound(track_frames_.begin(), track_frames_.end(), k.frame);
+    for (const auto f : key_frames) {
+      const auto it = std::lower_bound(track_frames_.begin(), track_frames_.end(), f);
       if (it != track_frames_.end()) marks.push_back(static_cast<int>(it - track_frames_.begin()));
     }
     panels_.plot->set_keyframes(marks);
@@ -520,25 +544,13 @@ void Editor::refresh_visualizations() {
   }
   MinimapKey mk = base;
   mk.frame = frame_;
-  auto map_rbf = rbf;
-  if (grabbing_ && held && !(held->direction == ks[*selected_].direction && held->frame == ks[*selected_].frame)) {
-    // A held keyframe away from its place: the field is the live preview's interpolant (the same
-    // one params_for_view answers with; at most one incremental move here).
-    if (!(held->direction == held_key_.direction && held->frame == held_key_.frame) || held_serial_ == 0) {
-      held_key_ = *held;
-      ++held_serial_;
-    }
-    mk.preview = held_serial_;
-    if (!(minimap_requested_ == mk))
-      if (const auto target = preview_target()) map_rbf = preview_.update(*target);
-  }
   if (!(minimap_requested_ == mk)) {
     nearest_ = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
     minimap_requested_ = mk;
     if (minimap_worker_)
-      minimap_worker_->request({mk, map_rbf, effect_, frame_, options_.minimap_width, options_.minimap_height});
+      minimap_worker_->request({mk, interpolant(), effect_, frame_, options_.minimap_width, options_.minimap_height});
     else
-      show_minimap(mk, effect_minimap(map_rbf.get(), effect_, frame_, options_.minimap_width, options_.minimap_height));
+      show_minimap(mk, effect_minimap(interpolant().get(), effect_, frame_, options_.minimap_width, options_.minimap_height));
   }
   // A field finished for an earlier frame or edit is shown until the current one is ready (a
   // frame or two while playing large sets); one for another effect is dropped.

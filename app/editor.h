@@ -136,7 +136,9 @@ class Editor {
   /// The live preview's interpolant (its seed and move counters: tests, benchmarks).
   const PreviewInterpolant& preview() const { return preview_; }
 
-  // ---- visualization data (kept up to date by update)
+  // ---- visualization data (kept up to date by update). While a keyframe is previewed (placed,
+  // or grabbed away from its place) the minimap field and the track are the preview
+  // interpolant's (the one params_for_view answers with), else the document's.
   const cv::Mat& minimap_field() const { return minimap_; }
   const std::vector<double>& track_values() const { return track_; }
   const std::vector<std::int64_t>& track_frames() const { return track_frames_; }
@@ -161,6 +163,9 @@ class Editor {
   std::vector<double> widget_params(const ui::Event& e) const;
   /// What the preview interpolates now (placement or grab); nullopt when neither.
   std::optional<PreviewTarget> preview_target() const;
+  /// preview_target() when the preview changes the interpolant (placing, or a grab that moved
+  /// its keyframe); nullopt when the document's interpolant is the one shown.
+  std::optional<PreviewTarget> shown_preview_target() const;
   /// The values the effect widget shows and edits: the selected keyframe's, else the chosen.
   const std::vector<double>& widget_values() const;
   void validate_selection();
@@ -199,8 +204,14 @@ class Editor {
   int marker_effect_ = -1;
   std::int64_t marker_selected_ = -1;  //!< the selected keyframe's (held) frame at the last marker update
   std::optional<std::size_t> nearest_;  //!< nearest keyframe at the last minimap update
-  effects::Keyframe held_key_;          //!< the held keyframe's place at the last minimap update
-  std::uint64_t held_serial_ = 0;       //!< grows when it changes (MinimapKey::preview)
+  //! The preview keyframe (placement: moved = nullopt; grab: the held index) the minimap and
+  //! track last showed; nullopt while they show the document's interpolant.
+  struct ShownPreview {
+    std::optional<std::size_t> moved;
+    effects::Keyframe key;
+  };
+  std::optional<ShownPreview> shown_preview_;
+  std::uint64_t preview_serial_ = 0;  //!< grows when it changes (MinimapKey::preview)
   cv::Mat minimap_;
   std::vector<double> track_;
   std::vector<std::int64_t> track_frames_;
