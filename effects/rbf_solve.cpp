@@ -74,15 +74,6 @@ Eigen::MatrixXd polynomial_matrix(const RbfPoints& points, const PolynomialBasis
   return p;
 }
 
-Eigen::MatrixXd projected_kernel(const Eigen::MatrixXd& a, const Eigen::MatrixXd& p) {
-  const Eigen::Index m = a.rows(), r = p.cols();
-  Eigen::HouseholderQR<Eigen::MatrixXd> qr(p);
-  Eigen::MatrixXd b = a;
-  b.applyOnTheLeft(qr.householderQ().adjoint());
-  b.applyOnTheRight(qr.householderQ());
-  return b.bottomRightCorner(m - r, m - r);
-}
-
 namespace {
 
 /// The Householder sequence of a QR of P in compact WY form, Q = H_0 ... H_{r-1} = I - V T V^T
@@ -140,6 +131,12 @@ Eigen::MatrixXd projected_lower(const Eigen::MatrixXd& a, const Eigen::MatrixXd&
   return k;
 }
 
+/// The whole symmetric matrix from its lower triangle.
+Eigen::MatrixXd mirror_lower(Eigen::MatrixXd k) {
+  k.triangularView<Eigen::StrictlyUpper>() = k.transpose();
+  return k;
+}
+
 /// The factorised saddle-point system: solves [A P; P^T 0][w; c] = [f; g].
 ///
 /// Only what the solve needs of B = Q^T A Q is formed: its first r rows, and the lower triangle
@@ -174,12 +171,8 @@ class SaddleSolver {
     }
     llt_.reset();
     // The factorisation overwrote k_: rebuild the whole block for the general solvers.
-    Eigen::MatrixXd b22 = a.bottomRightCorner(n2, n2);
-    if (r_ > 0) {
-      const auto y2 = y.bottomRows(n2), v2 = v.bottomRows(n2);
-      b22 -= y2 * v2.transpose() + v2 * y2.transpose();
-    }
     k_.resize(0, 0);
+    const Eigen::MatrixXd b22 = mirror_lower(projected_lower(a, y, v, 1.0));
     lu_.emplace(b22);
     if (lu_->isInvertible() && lu_->rcond() > 1e2 * std::numeric_limits<double>::epsilon()) {
       method_ = RbfSolveMethod::NullSpaceLu;
@@ -237,6 +230,17 @@ class SaddleSolver {
   RbfSolveMethod method_ = RbfSolveMethod::Empty;
   double condition_ = 1.0;
 };
+
+}  // namespace
+
+Eigen::MatrixXd projected_kernel(const Eigen::MatrixXd& a, const Eigen::MatrixXd& p) {
+  if (p.cols() == 0) return a;
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(p);
+  const CompactWy wy(qr);
+  return mirror_lower(projected_lower(a, wy.update_factor(a), wy.v, 1.0));
+}
+
+namespace {
 
 double max_abs(const Eigen::MatrixXd& m) {
   return m.size() ? m.cwiseAbs().maxCoeff() : 0.0;
