@@ -13,6 +13,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
+#include "tests/test_files.h"
+
 namespace vdfx::app::testing {
 
 struct CommandResult {
@@ -36,11 +38,8 @@ inline CommandResult run_vdfx(const std::string& args, const std::string& env_pr
 /// A fresh folder under the build tree, named after the running test.
 inline std::filesystem::path test_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::filesystem::path dir = std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "app" /
-                              (std::string(info->test_suite_name()) + "." + info->name());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return test_files::fresh_dir(std::filesystem::path("app") /
+                               (std::string(info->test_suite_name()) + "." + info->name()));
 }
 
 inline void write_text(const std::filesystem::path& p, const std::string& text) {

@@ -8,21 +8,17 @@
 #include <sstream>
 
 #include "editor_scripts.h"
+#include "tests/test_files.h"
 
 namespace vdfx::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_files::slurp;
 
 TEST(EditorRecordings, CommittedFilesMatchTheGenerator) {
-  const fs::path dir = fs::path(VDFX_TEST_DATA_DIR).parent_path().parent_path() / "recordings";
+  const fs::path dir = test_files::recordings_dir();
   const fs::path tmp = fs::path(VDFX_TEST_OUTPUT_DIR) / "editor" / "generated";
   fs::create_directories(tmp);
   const bool regenerate = std::getenv("VDFX_REGENERATE_RECORDINGS") != nullptr;

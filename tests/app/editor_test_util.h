@@ -6,6 +6,7 @@
 #include <string>
 
 #include "io/sidecar.h"
+#include "tests/test_files.h"
 #include "xr/actions.h"
 
 namespace vdfx::app::test {
@@ -30,10 +31,7 @@ inline xr::InputState looking(double az, double alt, std::int64_t t_ns = 0) {
 
 /// A fresh folder under the test output directory.
 inline std::filesystem::path temp_dir(const std::string& name) {
-  const auto d = std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "editor" / name;
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d;
+  return test_files::fresh_dir(std::filesystem::path("editor") / name);
 }
 
 }  // namespace vdfx::app::test

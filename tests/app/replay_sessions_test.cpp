@@ -14,6 +14,7 @@
 #include "editor_scripts.h"
 #include "editor_test_util.h"
 #include "io/input_error.h"
+#include "tests/test_files.h"
 #include "ui/colour_wheel.h"
 
 namespace vdfx::app {
@@ -22,21 +23,25 @@ namespace {
 namespace fs = std::filesystem;
 using effects::EffectType;
 
-const fs::path kRecordings = fs::path(VDFX_TEST_DATA_DIR).parent_path().parent_path() / "recordings";
+const fs::path kRecordings = test_files::recordings_dir();
 const fs::path kSunrise = "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_files::slurp;
 
 fs::path clip(const fs::path& dir) {
   const fs::path p = dir / "clip.avi";
   cv::VideoWriter w(p.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 30.0, cv::Size(128, 64));
   for (int i = 0; i < test::kClipFrames; ++i) w.write(cv::Mat(64, 128, CV_8UC3, cv::Scalar(40 + i, 90, 160)));
   return p;
+}
+
+/// Replays recordings/NAME over a fresh synthetic clip in `dir`, writing dir/out.vdfx.json.
+ReplayOptions clip_replay(const fs::path& dir, const std::string& name) {
+  ReplayOptions o;
+  o.recording = kRecordings / name;
+  o.video = clip(dir);
+  o.sidecar_out = dir / "out.vdfx.json";
+  return o;
 }
 
 int run(const std::string& args, std::string* err = nullptr) {
@@ -82,10 +87,7 @@ TEST(ReplaySessions, PlaceExposureUndoRedoIsByteIdenticalTwice) {
 
 TEST(ReplaySessions, AllWidgetsSessionGivesEveryEffect) {
   const auto dir = test::temp_dir("replay_all");
-  ReplayOptions o;
-  o.recording = kRecordings / "editor_all_widgets.vdrec.jsonl";
-  o.video = clip(dir);
-  o.sidecar_out = dir / "out.vdfx.json";
+  const ReplayOptions o = clip_replay(dir, "editor_all_widgets.vdrec.jsonl");
   const io::Sidecar s = run_replay(o).sidecar;
   ASSERT_EQ(s.video.frames, test::kClipFrames);
   ASSERT_EQ(s.effects.size(), 6u);
@@ -113,10 +115,7 @@ TEST(ReplaySessions, AllWidgetsSessionGivesEveryEffect) {
 
 TEST(ReplaySessions, MoveKeyframeSessionMovesRetimesAndReEditsIt) {
   const auto dir = test::temp_dir("replay_move");
-  ReplayOptions o;
-  o.recording = kRecordings / "editor_move_keyframe.vdrec.jsonl";
-  o.video = clip(dir);
-  o.sidecar_out = dir / "out.vdfx.json";
+  const ReplayOptions o = clip_replay(dir, "editor_move_keyframe.vdrec.jsonl");
   const io::Sidecar s = run_replay(o).sidecar;
   ASSERT_EQ(s.video.frames, test::kClipFrames);
   ASSERT_EQ(s.effects.size(), 1u);

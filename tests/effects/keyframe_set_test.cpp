@@ -11,17 +11,28 @@ namespace {
 
 constexpr int kDim = 2;
 
-/// Max difference between the set's published solution and a fresh full solve, at random views.
-double max_diff_to_full_solve(const KeyframeSet& set, std::mt19937_64& rng) {
-  const RbfInterpolator fresh(set.keyframes(), kDim, {}, 30.0);
-  const auto sol = set.solution();
+/// Largest difference between two interpolants at 25 random views (frames 0..200).
+double max_diff(const RbfInterpolator& a, const RbfInterpolator& b, std::mt19937_64& rng) {
   double worst = 0.0;
   std::uniform_int_distribution<std::int64_t> f(0, 200);
   for (int i = 0; i < 25; ++i) {
     const Direction d = test::random_direction(rng);
     const std::int64_t fr = f(rng);
-    worst = std::max(worst, (sol->evaluate(d, fr) - fresh.evaluate(d, fr)).cwiseAbs().maxCoeff());
+    worst = std::max(worst, (a.evaluate(d, fr) - b.evaluate(d, fr)).cwiseAbs().maxCoeff());
   }
+  return worst;
+}
+
+double max_diff(const RbfInterpolator& a, const RbfInterpolator& b, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  return max_diff(a, b, rng);
+}
+
+/// Max difference between the set's published solution and a fresh full solve, at random views.
+double max_diff_to_full_solve(const KeyframeSet& set, std::mt19937_64& rng) {
+  const RbfInterpolator fresh(set.keyframes(), kDim, {}, 30.0);
+  const auto sol = set.solution();
+  double worst = max_diff(*sol, fresh, rng);
   for (const Keyframe& k : set.keyframes())  // and every keyframe is reproduced
     worst = std::max(worst, (sol->evaluate(k.direction, k.frame) -
                              Eigen::Map<const Eigen::VectorXd>(k.params.data(), kDim))
@@ -47,7 +58,8 @@ TEST(KeyframeSet, IncrementalEditsMatchAFullSolve) {
       case 2: set.remove(pick(rng)); break;
       case 3: {
         const size_t i = pick(rng);
-        incremental += set.move(i, test::random_direction(rng), set.keyframes()[i].frame).incremental;
+        incremental +=
+            set.move(i, test::random_direction(rng), set.keyframes()[i].frame).incremental;
         set.set_params(i, {0.5, 3.5});
         break;
       }
@@ -178,18 +190,6 @@ TEST(KeyframeSet, AsyncFullSolveIsSwappedInAndReadersAlwaysHaveASolution) {
   EXPECT_EQ(set.solution_version(), set.version());
 }
 
-/// Largest difference between two interpolants at random views.
-double max_diff(const RbfInterpolator& a, const RbfInterpolator& b, std::uint64_t seed) {
-  std::mt19937_64 views(seed);
-  double worst = 0.0;
-  for (int v = 0; v < 25; ++v) {
-    const Direction d = test::random_direction(views);
-    const std::int64_t f = static_cast<std::int64_t>(views() % 201);
-    worst = std::max(worst, (a.evaluate(d, f) - b.evaluate(d, f)).cwiseAbs().maxCoeff());
-  }
-  return worst;
-}
-
 TEST(KeyframeSet, CloneCopiesTheExactStateAndThenEditsLikeAFreshSolve) {
   std::mt19937_64 rng(31);
   std::vector<Keyframe> initial;
@@ -197,7 +197,8 @@ TEST(KeyframeSet, CloneCopiesTheExactStateAndThenEditsLikeAFreshSolve) {
   KeyframeSetOptions opt;
   opt.async = false;
   KeyframeSet source(kDim, {}, 30.0, initial, opt);
-  for (int i = 0; i < 5; ++i) ASSERT_TRUE(source.add(test::random_keyframe(rng, kDim, 0, 200)).incremental);
+  for (int i = 0; i < 5; ++i)
+    ASSERT_TRUE(source.add(test::random_keyframe(rng, kDim, 0, 200)).incremental);
   source.set_params(3, {0.25, 3.0});
   const auto before = source.solution();
   const auto keyframes_before = source.keyframes();
@@ -217,13 +218,17 @@ TEST(KeyframeSet, CloneCopiesTheExactStateAndThenEditsLikeAFreshSolve) {
     const size_t i = static_cast<size_t>(step * 7) % clone->keyframes().size();
     switch (step % 4) {
       case 0: EXPECT_TRUE(clone->add(test::random_keyframe(rng, kDim, 0, 200)).incremental); break;
-      case 1: EXPECT_TRUE(clone->move(i, test::random_direction(rng), clone->keyframes()[i].frame).incremental); break;
+      case 1:
+        EXPECT_TRUE(
+            clone->move(i, test::random_direction(rng), clone->keyframes()[i].frame).incremental);
+        break;
       case 2: clone->set_params(i, {1.5, 2.5}); break;
       case 3: clone->remove(i); break;
     }
     ASSERT_LE(max_diff_to_full_solve(*clone, rng), 1e-9) << "after clone edit " << step;
   }
-  EXPECT_EQ(clone->stats().incremental_edits, 12u) << "no edit of the clone fell back to a full solve";
+  EXPECT_EQ(clone->stats().incremental_edits, 12u)
+      << "no edit of the clone fell back to a full solve";
   EXPECT_EQ(source.keyframes(), keyframes_before);
   EXPECT_EQ(source.solution(), before);
   // The source still edits correctly after being cloned.
@@ -235,8 +240,9 @@ TEST(KeyframeSet, CloneWithoutAnExactStateSolves) {
   // Two keyframes merged into one centre: no incremental state, so the clone solves.
   KeyframeSetOptions opt;
   opt.async = false;
-  std::vector<Keyframe> k{{{10, 0}, 5, {1, 1}}, {{10, 0}, 5, {3, 3}}, {{60, 10}, 9, {2, 0}},
-                          {{-40, -20}, 20, {0, 2}}, {{120, 30}, 2, {4, 1}}, {{-150, 5}, 14, {1, 4}}};
+  std::vector<Keyframe> k{{{10, 0}, 5, {1, 1}},   {{10, 0}, 5, {3, 3}},
+                          {{60, 10}, 9, {2, 0}},  {{-40, -20}, 20, {0, 2}},
+                          {{120, 30}, 2, {4, 1}}, {{-150, 5}, 14, {1, 4}}};
   KeyframeSet source(kDim, {}, 30.0, k, opt);
   ASSERT_EQ(source.stats().capacity, 0) << "the test needs a source without incremental state";
   const auto clone = source.clone(opt);
@@ -252,7 +258,8 @@ TEST(KeyframeSet, CloneOfAnAsyncSetAfterAWorkerSolve) {
   KeyframeSetOptions opt;
   opt.inline_full_solve_max = 0;  // full solves on the worker
   KeyframeSet source(kDim, {}, 30.0, k, opt);
-  EXPECT_FALSE(source.add(test::random_keyframe(rng, kDim, 40, 40)).incremental);  // adds the t term
+  EXPECT_FALSE(
+      source.add(test::random_keyframe(rng, kDim, 40, 40)).incremental);  // adds the t term
   {
     // Whether the worker has finished or not, the clone is complete and current.
     const auto early = source.clone(opt);

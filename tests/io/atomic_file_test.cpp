@@ -18,12 +18,7 @@ namespace fs = std::filesystem;
 
 using testing::temp_dir;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using test_files::slurp;
 
 std::size_t entries(const fs::path& dir) {
   std::size_t n = 0;

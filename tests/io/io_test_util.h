@@ -5,14 +5,13 @@
 #include <filesystem>
 #include <string>
 
+#include "tests/test_files.h"
+
 namespace vdfx::io::testing {
 
 /// Empties and returns build/tests/output/io/NAME.
 inline std::filesystem::path temp_dir(const std::string& name) {
-  const auto d = std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "io" / name;
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d;
+  return test_files::fresh_dir(std::filesystem::path("io") / name);
 }
 
 }  // namespace vdfx::io::testing

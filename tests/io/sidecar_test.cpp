@@ -11,6 +11,7 @@
 #include "io/input_error.h"
 #include "io/sidecar.h"
 #include "io/sidecar_validate.h"
+#include "tests/test_files.h"
 
 namespace vdfx::io {
 namespace {
@@ -310,15 +311,12 @@ TEST(Sidecar, RoundTripIsExact) {
   const Sidecar back = read_sidecar(dir / "a.vdfx.json");
   EXPECT_EQ(back, s);
   write_sidecar(dir / "b.vdfx.json", back);
-  std::ifstream a(dir / "a.vdfx.json", std::ios::binary), b(dir / "b.vdfx.json", std::ios::binary);
-  std::stringstream sa, sb;
-  sa << a.rdbuf();
-  sb << b.rdbuf();
-  EXPECT_EQ(sa.str(), sb.str());
-  EXPECT_EQ(sa.str(), format_sidecar(s));
+  const std::string a = test_files::slurp(dir / "a.vdfx.json");
+  EXPECT_EQ(a, test_files::slurp(dir / "b.vdfx.json"));
+  EXPECT_EQ(a, format_sidecar(s));
   // The writer keeps the contract's key order (format first) and a final newline.
-  EXPECT_EQ(sa.str().rfind("{\n  \"format\": \"vdfx.sidecar\",\n  \"version\": 1,", 0), 0u);
-  EXPECT_EQ(sa.str().back(), '\n');
+  EXPECT_EQ(a.rfind("{\n  \"format\": \"vdfx.sidecar\",\n  \"version\": 1,", 0), 0u);
+  EXPECT_EQ(a.back(), '\n');
 }
 
 TEST(Sidecar, DefaultDistanceIsNotWrittenGeodesicIs) {

@@ -8,6 +8,7 @@
 #include "input_test_util.h"
 #include "io/recording.h"
 #include "recording_scripts.h"
+#include "tests/test_files.h"
 #include "xr/input_backend.h"
 #include "xr/input_state_io.h"
 
@@ -17,7 +18,7 @@ namespace {
 using test_util::altitude_deg;
 using test_util::azimuth_deg;
 
-const std::filesystem::path kDir = std::filesystem::path(VDFX_SOURCE_DIR) / "recordings";
+const std::filesystem::path kDir = test_files::recordings_dir();
 
 std::unique_ptr<InputBackend> replay(const std::string& name) {
   return create_input_backend("replay:" + (kDir / name).string());
