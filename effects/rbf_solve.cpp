@@ -110,15 +110,14 @@ struct CompactWy {
 };
 
 /// The lower triangle of K = sign (A22 - Y2 V2^T - V2 Y2^T), the null-space block of Q^T A Q
-/// (22: rows and columns r..m-1), in one pass over A's lower triangle: 2r fused multiply-adds
-/// per entry, where two general rank-r triangular products would each sweep the matrix again.
+/// (22: rows and columns r..m-1), in one pass over A's lower triangle: 2r multiply-adds per
+/// entry, where two general rank-r triangular products would each sweep the matrix again.
 /// The strict upper triangle is left unset (only the lower one is factorised).
 Eigen::MatrixXd projected_lower(const Eigen::MatrixXd& a, const Eigen::MatrixXd& y,
                                 const Eigen::MatrixXd& v, double sign) {
   const Eigen::Index m = a.rows(), r = y.cols(), n2 = m - r;
   Eigen::MatrixXd k(n2, n2);
-  // Row-major copies of the r-column factors' rows would not vectorise down a column; the
-  // columns of Y2 and V2 are contiguous, so each entry's update runs down column j of K.
+  // Column j of K is updated with the contiguous columns of Y2 and V2 (vectorises).
   for (Eigen::Index j = 0; j < n2; ++j) {
     const Eigen::Index len = n2 - j;
     auto kc = k.col(j).tail(len);
