@@ -108,8 +108,7 @@ effects::KeyframeSet::Edit Document::add_keyframe(EffectType type, const effects
 effects::KeyframeSet::Edit Document::move_keyframe(EffectType type, std::size_t index,
                                                    const effects::Direction& direction, std::int64_t frame) {
   const auto& ks = sets_[idx(type)]->keyframes();
-  if (index < ks.size() && ks[index].frame == frame && ks[index].direction.azimuth_deg == direction.azimuth_deg &&
-      ks[index].direction.altitude_deg == direction.altitude_deg)
+  if (index < ks.size() && ks[index].frame == frame && ks[index].direction == direction)
     return {index, std::nullopt, true};
   auto before = snapshot(type);
   const auto edit = sets_[idx(type)]->move(index, direction, frame);

@@ -360,13 +360,12 @@ void Editor::grab_release() {
   const auto k = selected_preview();
   grabbing_ = false;
   if (!k) return;
-  const auto& old = doc_.keyframes(effect_)[*selected_];
-  if (k->frame == old.frame && k->direction.azimuth_deg == old.direction.azimuth_deg &&
-      k->direction.altitude_deg == old.direction.altitude_deg) {
+  const std::uint64_t revision = doc_.revision();
+  const auto edit = doc_.move_keyframe(effect_, *selected_, k->direction, k->frame);
+  if (doc_.revision() == revision) {  // released where it was: no edit
     message_ = "selected keyframe " + std::to_string(*selected_ + 1);
     return;
   }
-  const auto edit = doc_.move_keyframe(effect_, *selected_, k->direction, k->frame);
   selected_ = edit.index;
   message_ = edit.replaced ? "moved a keyframe onto another (replaced it)" : "moved a keyframe";
 }

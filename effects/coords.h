@@ -17,6 +17,8 @@ inline constexpr double kRadToDeg = 180.0 / kPi;
 struct Direction {
   double azimuth_deg = 0.0;   //!< (-180, 180], positive to the right
   double altitude_deg = 0.0;  //!< [-90, 90], positive up
+  /// Exactly the same numbers (no angular tolerance).
+  bool operator==(const Direction&) const = default;
 };
 
 /// Unit vector of a direction (OpenXR axes).

@@ -18,10 +18,6 @@ struct Keyframe {
   bool operator==(const Keyframe&) const = default;
 };
 
-inline bool operator==(const Direction& a, const Direction& b) {
-  return a.azimuth_deg == b.azimuth_deg && a.altitude_deg == b.altitude_deg;
-}
-
 /// How the angular part dsigma of the RBF distance is measured between two unit directions.
 /// Geodesic is the paper's angle; Chordal is |n_a - n_b| = 2 sin(angle / 2), which makes the
 /// whole distance Euclidean in (x, y, z, t) and so keeps the RBF system well-posed

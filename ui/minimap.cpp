@@ -42,12 +42,7 @@ void Minimap::set_image(const cv::Mat& bgr) {
 }
 
 void Minimap::set_keyframes(std::vector<effects::Direction> dirs, int highlighted, int selected) {
-  const auto same = [](const effects::Direction& a, const effects::Direction& b) {
-    return a.azimuth_deg == b.azimuth_deg && a.altitude_deg == b.altitude_deg;
-  };
-  if (highlighted == highlighted_ && selected == selected_ &&
-      std::equal(dirs.begin(), dirs.end(), keyframes_.begin(), keyframes_.end(), same))
-    return;
+  if (highlighted == highlighted_ && selected == selected_ && dirs == keyframes_) return;
   keyframes_ = std::move(dirs);
   highlighted_ = highlighted;
   selected_ = selected;
@@ -55,8 +50,7 @@ void Minimap::set_keyframes(std::vector<effects::Direction> dirs, int highlighte
 }
 
 void Minimap::set_view(effects::Direction forward, double hfov_deg, double vfov_deg) {
-  if (forward.azimuth_deg == view_.azimuth_deg && forward.altitude_deg == view_.altitude_deg &&
-      hfov_deg == hfov_ && vfov_deg == vfov_)
+  if (forward == view_ && hfov_deg == hfov_ && vfov_deg == vfov_)
     return;
   view_ = forward;
   hfov_ = hfov_deg;
