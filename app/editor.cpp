@@ -336,6 +336,13 @@ bool Editor::select_keyframe(std::size_t index) {
   return true;
 }
 
+void Editor::keep_selection_if_stable(std::size_t count_before) {
+  // An undone or redone step that added or removed keyframes (a place, a delete, a move that
+  // replaced another) renumbers them: the index would then name another keyframe.
+  if (doc_.keyframes(effect_).size() != count_before) selected_.reset();
+  validate_selection();
+}
+
 void Editor::deselect() {
   if (!selected_) return;
   selected_.reset();
@@ -376,16 +383,18 @@ void Editor::set_selected_params(std::vector<double> params) {
 
 bool Editor::undo() {
   grabbing_ = false;  // undo during a grab cancels it
+  const std::size_t count = doc_.keyframes(effect_).size();
   const bool ok = doc_.undo();
-  validate_selection();
+  keep_selection_if_stable(count);
   message_ = ok ? "undone" : "nothing to undo";
   return ok;
 }
 
 bool Editor::redo() {
   grabbing_ = false;
+  const std::size_t count = doc_.keyframes(effect_).size();
   const bool ok = doc_.redo();
-  validate_selection();
+  keep_selection_if_stable(count);
   message_ = ok ? "redone" : "nothing to redo";
   return ok;
 }

@@ -168,6 +168,8 @@ class Editor {
   std::optional<PreviewTarget> shown_preview_target() const;
   /// The values the effect widget shows and edits: the selected keyframe's, else the chosen.
   const std::vector<double>& widget_values() const;
+  /// After undo/redo: drops the selection when the keyframe count changed (indices renumbered).
+  void keep_selection_if_stable(std::size_t count_before);
   void validate_selection();
 
   Document doc_;

@@ -149,6 +149,8 @@ TEST_F(Grab, MovingOntoAnotherKeyframeReplacesItAndUndoRestoresBoth) {
   EXPECT_EQ(key(0).direction.azimuth_deg, -30.0);
   EXPECT_EQ(key(0).params, std::vector<double>{1.0});
   EXPECT_EQ(key(1).direction.azimuth_deg, 40.0);
+  // The undo renumbered the keyframes: index 0 is now A, not the moved one, so no selection.
+  EXPECT_FALSE(ed_.selected_keyframe());
 }
 
 TEST_F(Grab, SelectedKeyframeParamsAreEditedInsteadOfTheChosenValues) {
@@ -167,6 +169,7 @@ TEST_F(Grab, SelectedKeyframeParamsAreEditedInsteadOfTheChosenValues) {
   EXPECT_NEAR(slider->get(), 2.5, 1e-12);
   ed_.undo();
   EXPECT_EQ(key(1).params, std::vector<double>{-1.0});
+  EXPECT_EQ(ed_.selected_keyframe(), std::optional<std::size_t>(1));  // same keyframes: kept
   frame(40.0, 0.0, 0.0);
   EXPECT_NEAR(slider->get(), -1.0, 1e-12);
   ed_.redo();
