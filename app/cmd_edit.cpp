@@ -133,8 +133,8 @@ int cmd_edit(const Args& args) {
   LoopSetup setup = prepare_loop(loop, v, true);
   if (!exists) {
     const io::VideoProperties& p = setup.video->properties();
-    sidecar.video = {fs::absolute(v).string(), p.fps.value(), std::max<std::int64_t>(1, p.frames), p.width,
-                     p.height};
+    sidecar = io::new_sidecar({fs::absolute(v).string(), p.fps.value(),
+                               std::max<std::int64_t>(1, p.frames), p.width, p.height});
     std::cerr << "vdfx edit: new sidecar " << sidecar_path.string() << " for " << v.string() << "\n";
   }
   if (demo)

@@ -92,8 +92,8 @@ ReplayResult run_replay(const ReplayOptions& o) {
   if (o.sidecar_in) {
     sidecar = io::read_sidecar(*o.sidecar_in);
   } else {
-    sidecar.video = {o.video.string(), props.fps.value(), std::max<std::int64_t>(1, props.frames),
-                     props.width, props.height};
+    sidecar = io::new_sidecar({o.video.string(), props.fps.value(),
+                               std::max<std::int64_t>(1, props.frames), props.width, props.height});
   }
 
   EditorOptions eo;
