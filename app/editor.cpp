@@ -94,14 +94,14 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
   validate_selection();  // the document may have been edited from outside (tests, tools)
   for (const auto& e : events) handle(e);
 
+  // Buttons act on their edges (a tap between two frames is down in exactly one poll).
+  using xr::Control;
+  using xr::Hand;
+  const xr::ActionEdges& edges = input.edges;
   // Grab: right squeeze selects the nearest keyframe and holds it; release commits the move.
-  const bool squeeze = input.right.tracked && input.right.squeeze >= 0.5;
-  if (squeeze && !squeeze_was_down_) grab();
-  if (!squeeze && grabbing_) grab_release();
-  squeeze_was_down_ = squeeze;
-  const bool stick_click = input.right.tracked && input.right.thumbstick_click;
-  if (stick_click && !stick_click_was_down_) deselect();
-  stick_click_was_down_ = stick_click;
+  if (edges.was_pressed(Hand::Right, Control::Squeeze)) grab();
+  if (!edges.is_down(Hand::Right, Control::Squeeze) && grabbing_) grab_release();
+  if (edges.was_pressed(Hand::Right, Control::StickClick)) deselect();
 
   // Placement: a right-trigger press that did not land on a panel previews; release places. It
   // leaves a selection (the widget goes back to the chosen values that will be placed).
@@ -116,16 +116,10 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
   }
   right_was_down_ = down;
 
-  unaltered_ = input.right.tracked && input.right.secondary;
-  const bool a = input.right.tracked && input.right.primary;
-  if (a && !a_was_down_) delete_nearest();
-  a_was_down_ = a;
-  const bool x = input.left.tracked && input.left.primary;
-  if (x && !x_was_down_) undo();
-  x_was_down_ = x;
-  const bool y = input.left.tracked && input.left.secondary;
-  if (y && !y_was_down_) redo();
-  y_was_down_ = y;
+  unaltered_ = edges.is_down(Hand::Right, Control::Secondary);
+  if (edges.was_pressed(Hand::Right, Control::Primary)) delete_nearest();
+  if (edges.was_pressed(Hand::Left, Control::Primary)) undo();
+  if (edges.was_pressed(Hand::Left, Control::Secondary)) redo();
 
   if (look_target_ && angle_deg(*look_target_, view_) < 5.0) look_target_.reset();
   if (!previewing_ && !grabbing_) preview_.reset();

@@ -185,8 +185,7 @@ class Editor {
   std::int64_t frame_ = 0;
   effects::EffectType effect_ = effects::EffectType::Exposure;
   bool previewing_ = false, unaltered_ = false, playing_ = false;
-  bool right_was_down_ = false, a_was_down_ = false, x_was_down_ = false, y_was_down_ = false;
-  bool squeeze_was_down_ = false, stick_click_was_down_ = false;
+  bool right_was_down_ = false;  //!< the right pointer's trigger (ui hysteresis) at the last update
   // selection and grab
   std::optional<std::size_t> selected_;
   bool grabbing_ = false;

@@ -4,6 +4,10 @@
 /// Right-button drag turns the head; the main hand's aim ray goes through the cursor (its origin
 /// is the eye, so the ray hits exactly what is under the cursor); keys press buttons and move
 /// sticks. State is a function of the events alone: poll(t) applies the queued events and stamps t.
+/// No lost taps: a poll applies the queued events in order until one would change a control
+/// that an earlier event of the same poll already changed; that one and the rest wait for the
+/// next poll. So a key tapped between two frames is down in exactly one poll (and a double tap
+/// in two), and a recording of the polled states replays it as a tap.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -23,7 +27,6 @@ constexpr double kMaxPitchDeg = 89.0;
 const glm::dvec3 kOffHandOffset{0.2, -0.3, -0.3};  // head frame, mirrored in x for the left hand
 
 enum class Role { Main, Off, Left };  // Left: the control exists on the left hand only (menu)
-enum class Control { Trigger, Squeeze, Primary, Secondary, Menu, StickClick, StickUp, StickDown, StickLeft, StickRight };
 
 struct KeyBinding {
   Key key;
@@ -88,11 +91,26 @@ class SimInputBackend final : public InputBackend {
 
   void push_event(const DesktopEvent& event) override { queue_.push_back(event); }
 
-  InputState poll(std::int64_t t_ns) override {
+  InputState poll_state(std::int64_t t_ns) override {
+    ControlSet down = controls_down(state(t_ns), last_down_);
+    std::uint32_t changed = 0;  // controls an event of this poll changed
     while (!queue_.empty()) {
+      // Only key and left-button events change controls, and only through these two.
+      const std::set<Key> keys = keys_;
+      const bool left = left_button_;
       std::visit([this](const auto& e) { apply(e); }, queue_.front());
+      const ControlSet after = controls_down(state(t_ns), down);
+      const std::uint32_t diff = after.bits ^ down.bits;
+      if (diff & changed) {  // a second change of one control: it waits for the next poll
+        keys_ = keys;
+        left_button_ = left;
+        break;
+      }
+      changed |= diff;
+      down = after;
       queue_.pop_front();
     }
+    last_down_ = down;
     return state(t_ns);
   }
 
@@ -182,6 +200,7 @@ class SimInputBackend final : public InputBackend {
 
   SimConfig config_;
   std::deque<DesktopEvent> queue_;
+  ControlSet last_down_;
   std::set<Key> keys_;
   bool left_button_ = false;
   bool dragging_ = false;

@@ -45,7 +45,8 @@ struct Fixture {
   FakeTextures* fake = new FakeTextures;
   EditorClient client{editor, std::unique_ptr<PanelTextures>(fake)};
   FrameInfo info;
-  void step(const xr::InputState& in) { client.update(in, in.t_ns, info); }
+  xr::ActionSync sync;  //!< the edges InputBackend::poll would add
+  void step(const xr::InputState& in) { client.update(sync.sync(in), in.t_ns, info); }
 };
 
 // What the GL texture must show: the panel, straight alpha, bottom row first.
