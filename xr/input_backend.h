@@ -50,7 +50,7 @@ class InputBackend {
 struct SimConfig {
   int window_width = 1280;   //!< pixels; updated by ViewGeometryEvent
   int window_height = 720;
-  double hfov_deg = 90.0;    //!< horizontal field of view of the desktop view
+  double hfov_deg = 100.0;   //!< horizontal field of view of the desktop view (its default)
   double look_deg_per_px = 0.2;  //!< head turn per pixel of right-button drag
   bool left_handed = false;  //!< mouse and the main keys drive the left hand instead
   glm::dvec3 head_position{0.0, kDefaultEyeHeight, 0.0};

@@ -120,7 +120,8 @@ class SimInputBackend final : public InputBackend {
     else keys_.erase(e.key);
   }
   void apply(const MouseButtonEvent& e) {
-    if (e.button == MouseButton::Left) left_button_ = e.pressed;
+    // A press over no drawn view (a letterbox bar) presses nothing; a release always releases.
+    if (e.button == MouseButton::Left) left_button_ = e.pressed && over_view_;
     if (e.button == MouseButton::Right) dragging_ = e.pressed;
   }
   void apply(const MouseMoveEvent& e) {
@@ -133,6 +134,9 @@ class SimInputBackend final : public InputBackend {
     }
     mouse_x_ = e.x;
     mouse_y_ = e.y;
+    over_view_ = e.over_view;
+    if (e.ray) ray_ = *e.ray;
+    else ray_.reset();
   }
   void apply(const ViewGeometryEvent& e) {
     if (e.width_px > 0 && e.height_px > 0) {
@@ -140,6 +144,7 @@ class SimInputBackend final : public InputBackend {
       config_.window_height = e.height_px;
     }
     if (e.hfov_deg > 0.0 && e.hfov_deg < 180.0) config_.hfov_deg = e.hfov_deg;
+    ray_.reset();  // the mirror changed: the next move brings the ray through the new geometry
   }
 
   bool active(Hand hand, Control c) const {
@@ -149,15 +154,19 @@ class SimInputBackend final : public InputBackend {
     return false;
   }
 
-  // The ray through the cursor, in the view frame: a pinhole with the configured horizontal FOV,
-  // the vertical one following from the window's aspect ratio.
-  glm::dquat cursor_rotation() const {
+  // The ray through the cursor, in the view frame: the mirror's own (MouseMoveEvent::ray), else
+  // a pinhole with the configured horizontal FOV, the vertical one from the window's aspect.
+  ViewRay cursor_ray() const {
+    if (ray_) return *ray_;
     const double w = std::max(1, config_.window_width), h = std::max(1, config_.window_height);
     const double tan_h = std::tan(0.5 * config_.hfov_deg * kDegToRad);
     const double tan_v = tan_h * h / w;
-    const glm::dvec3 dir = glm::normalize(glm::dvec3((2.0 * mouse_x_ / w - 1.0) * tan_h,
-                                                     (1.0 - 2.0 * mouse_y_ / h) * tan_v, -1.0));
-    return look_rotation(std::atan2(dir.x, -dir.z) * kRadToDeg, std::asin(dir.y) * kRadToDeg);
+    return {glm::dvec3(0.0), glm::normalize(glm::dvec3((2.0 * mouse_x_ / w - 1.0) * tan_h,
+                                                       (1.0 - 2.0 * mouse_y_ / h) * tan_v, -1.0))};
+  }
+  static glm::dquat rotation_towards(const glm::dvec3& dir) {
+    return look_rotation(std::atan2(dir.x, -dir.z) * kRadToDeg,
+                         std::asin(std::clamp(dir.y, -1.0, 1.0)) * kRadToDeg);
   }
 
   void fill_hand(HandState& hs, Hand hand) const {
@@ -185,8 +194,9 @@ class SimInputBackend final : public InputBackend {
     fill_hand(s.left, Hand::Left);
     fill_hand(s.right, Hand::Right);
     HandState& m = s.hand(main);
-    m.aim.orientation = glm::normalize(s.head.orientation * cursor_rotation());
-    m.aim.position = s.head.position;
+    const ViewRay ray = cursor_ray();
+    m.aim.orientation = glm::normalize(s.head.orientation * rotation_towards(ray.direction));
+    m.aim.position = s.head.position + s.head.orientation * ray.origin;
     if (left_button_) m.trigger = 1.0;
     HandState& o = s.hand(off);
     glm::dvec3 offset = kOffHandOffset;
@@ -204,6 +214,8 @@ class SimInputBackend final : public InputBackend {
   std::set<Key> keys_;
   bool left_button_ = false;
   bool dragging_ = false;
+  bool over_view_ = true;
+  std::optional<ViewRay> ray_;
   double mouse_x_ = 0.0, mouse_y_ = 0.0;
   double azimuth_deg_ = 0.0, altitude_deg_ = 0.0;
 };

@@ -38,7 +38,10 @@ class VideoLayerGl {
   /// Uploads an equirect frame (CV_8UC3/4 or CV_32FC3/4, BGR) and rebuilds the mip chain;
   /// reallocates when the size or depth changes. 8-bit frames are stored RGBA8, float RGBA32F.
   void set_frame(const cv::Mat& equirect);
-  /// Draws the layer into `target` (whole viewport) for one eye.
+  /// Draws the layer into `target` (whole viewport) for one eye; before the first set_frame, a
+  /// uniform dark grey (kNoFrameGrey).
+  static constexpr float kNoFrameGrey = 0.08f;
+  bool has_frame() const;
   void render(const GlTarget& target, const RenderView& view, LodMode lod = LodMode::Analytic);
   const GlTexture& texture() const;
 

@@ -93,8 +93,14 @@ void VideoLayerGl::set_frame(const cv::Mat& equirect) {
 }
 
 void VideoLayerGl::render(const GlTarget& target, const RenderView& v, LodMode lod) {
-  if (!impl_->texture) throw GlError("VideoLayerGl::render: no frame uploaded");
   target.bind();
+  if (!impl_->texture) {
+    // No frame decoded yet (a video still loading): a dark, neutral field instead of a failure,
+    // so the first frames of a window never depend on the decoder's head start.
+    glClearColor(kNoFrameGrey, kNoFrameGrey, kNoFrameGrey, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    return;
+  }
   const GlProgram& p = impl_->program;
   p.use();
   glActiveTexture(GL_TEXTURE0);
@@ -113,5 +119,6 @@ void VideoLayerGl::render(const GlTarget& target, const RenderView& v, LodMode l
 }
 
 const GlTexture& VideoLayerGl::texture() const { return impl_->texture; }
+bool VideoLayerGl::has_frame() const { return static_cast<bool>(impl_->texture); }
 
 }  // namespace vdfx::xr

@@ -27,6 +27,7 @@ FrameLoopOptions small_options() {
   o.window_height = 90;
   o.visible = false;
   o.keep_records = true;
+  o.mirror = xr::MirrorMode::PreDistorted;  // these tests read the eye buffers
   return o;
 }
 
@@ -172,7 +173,7 @@ TEST(FrameLoopGl, ScreenshotOfTheMirrorIsWritten) {
   FrameLoopOptions o = small_options();
   o.decode_timeout = std::chrono::seconds(5);
   o.screenshot = out;
-  o.mirror_mode = 2;  // single eye: the grey fills the eye's rectangle
+  o.mirror = xr::MirrorMode::SingleEye;  // the grey fills the eye's rectangle
   FrameLoop loop(o, *input, *video, player);
   EXPECT_EQ(loop.run().frames, 3);
   const cv::Mat png = cv::imread(out.string());
