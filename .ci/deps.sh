@@ -9,7 +9,7 @@ packages=(
   libopencv-dev
   libglfw3-dev libglm-dev libepoxy-dev libstb-dev libhidapi-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  fonts-dejavu-core blender-data
+  fonts-dejavu-core blender-data ffmpeg
   xvfb xauth libgl1-mesa-dri mesa-utils
 )
 
