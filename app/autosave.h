@@ -42,7 +42,7 @@ class Autosave {
 
  private:
   std::filesystem::path path_;
-  std::string status_ = "not saved yet";
+  std::string status_ = "no changes yet";
   int saves_ = 0;
 };
 

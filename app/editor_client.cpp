@@ -243,22 +243,34 @@ void EditorClient::release_textures() {
 std::string EditorClient::status_line() const { return editor_.status_text(); }
 
 std::string EditorClient::controls_text() {
-  return "  right trigger (on no panel) preview the current effect's values at the view centre;\n"
+  return "On a desktop (--input sim, the desktop view):\n"
+         "  click the view / Space     preview the current effect's values at the centre reticle;\n"
          "                            release places a keyframe there at the current frame\n"
-         "  right trigger (on a panel) use the panel (menus, sliders, buttons, timeline)\n"
+         "  click a panel              use it (menus, sliders, buttons, timeline, minimap dots)\n"
+         "  right-drag                 look around\n"
+         "  arrow keys                 one step of the slider, pad, menu or timeline under the\n"
+         "                            pointer (held: continuous); the step shows beside the value\n"
+         "  Shift (held) while dragging fine adjustment: a tenth of the mouse's motion\n"
+         "  G (held)                   grab the selected keyframe (else the nearest): it follows\n"
+         "                            the view and the playhead; release moves it (one undo step)\n"
+         "  J / L / K (held)           delete selected or nearest / deselect / unaltered film\n"
+         "  X / Y                      undo / redo\n"
+         "With controllers (headset layout):\n"
+         "  right trigger (on no panel) preview at the view centre; release places a keyframe\n"
+         "  right trigger (on a panel) use the panel\n"
          "  left trigger + left aim   use the panels not held by the left hand\n"
          "  right a                   delete the selected keyframe, else the one nearest the view\n"
-         "  right squeeze (held)      grab the keyframe nearest the view and select it: it follows\n"
-         "                            the view and the playhead while held; release moves it there\n"
-         "                            (one undo step); while selected the effect widget edits its values\n"
+         "  right squeeze (held)      grab the selected keyframe (else the nearest); release moves it\n"
          "  right thumbstick click    deselect (so does the Deselect button or a trigger placement)\n"
          "  right b (held)            unaltered film (no effects) while held\n"
          "  left x / left y           undo / redo\n"
-         "  thumbstick                adjust the widget that hand's pointer focused last\n"
-         "Panels: effects (effect menu, the effect's widget, undo / redo, delete, deselect,\n"
-         "exponent and time scale, autosave status) and timeline (play, previous / next keyframe, strip,\n"
-         "track plot, minimap, lock in world). --input sim: both panels in front of the head, the\n"
-         "mouse-driven right aim ray reaches both; a headset: on the left and right grips.\n";
+         "  thumbstick                step the widget under that hand's pointer (else its focus)\n"
+         "  left squeeze (held)       fine adjustment while dragging\n"
+         "Panels: effects (menu, the effect's widget, undo / redo, delete, deselect, exponent, the\n"
+         "time scale as degrees of view per second of video, autosave status), timeline (play,\n"
+         "previous / next keyframe, time, thumbnails and keyframes on the strip), plot and minimap\n"
+         "(with toggles and lock in world), and on the desktop a heads-up line (frame, time,\n"
+         "heading, effect, selection, frame rate, the latest message).\n";
 }
 
 }  // namespace vdfx::app

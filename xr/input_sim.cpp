@@ -35,7 +35,7 @@ struct KeyBinding {
 };
 
 // The binding table: the sim applies it and sim_bindings_text prints it.
-constexpr std::array<KeyBinding, 20> kKeyBindings{{
+constexpr std::array<KeyBinding, 22> kKeyBindings{{
     {Key::Space, Role::Main, Control::Trigger},
     {Key::G, Role::Main, Control::Squeeze},
     {Key::J, Role::Main, Control::Primary},
@@ -47,6 +47,8 @@ constexpr std::array<KeyBinding, 20> kKeyBindings{{
     {Key::Right, Role::Main, Control::StickRight},
     {Key::E, Role::Off, Control::Trigger},
     {Key::Q, Role::Off, Control::Squeeze},
+    {Key::LeftShift, Role::Off, Control::Squeeze},  // held while dragging: fine adjustment
+    {Key::RightShift, Role::Off, Control::Squeeze},
     {Key::X, Role::Off, Control::Primary},
     {Key::Y, Role::Off, Control::Secondary},
     {Key::C, Role::Off, Control::StickClick},
