@@ -104,7 +104,13 @@ void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLay
     m.stack.apply(m.video_out[eye].texture(), m.eye_buffer[eye], in.params, in.active_effects,
                   in.view, margin);
   if (t) m.timer.stop();
-  // Flare and grain layers will go here (after effects, before UI).
+  // World-space layers (flare, then grain): after the effects, before the UI quads.
+  for (EyeLayer* layer : in.layers) {
+    if (t) m.timer.start(tag + layer->name());
+    m.eye_buffer[eye].bind();
+    layer->draw(in.view, eye, w, h);
+    if (t) m.timer.stop();
+  }
   if (!quads.empty()) {
     if (t) m.timer.start(tag + "quads");
     m.eye_buffer[eye].bind();
@@ -190,7 +196,7 @@ cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int wid
   Compositor comp(c);
   comp.set_video_frame(equirect);
   if (o.param_grid) comp.set_param_grid(*o.param_grid);
-  comp.render_eye(0, {view, params, active_effects, o.param_grid != nullptr});
+  comp.render_eye(0, {view, params, active_effects, o.param_grid != nullptr, o.layers});
   return to_bgr8(comp.read_panel(0));
 }
 
