@@ -75,8 +75,15 @@ TEST(AutoLight, NoLightWithoutABrightRegion) {
   EXPECT_TRUE(tracker.observed(3));
   EXPECT_FALSE(tracker.light(3));
   EXPECT_FALSE(tracker.light(4));  // never observed
-  // The same sky with a sun has one.
-  EXPECT_TRUE(find_brightest_region(synthetic_sky(512, {{{0.0, 20.0}, 3.0, 1.0}})));
+  // The same sky with a sun has one, in float and in 8-bit frames alike.
+  const cv::Mat sunny = synthetic_sky(512, {{{0.0, 20.0}, 3.0, 1.0}});
+  const auto from_float = find_brightest_region(sunny);
+  ASSERT_TRUE(from_float);
+  cv::Mat bytes;
+  sunny.convertTo(bytes, CV_8UC3, 255.0);
+  const auto from_bytes = find_brightest_region(bytes);
+  ASSERT_TRUE(from_bytes);
+  EXPECT_LT(angle_between(*from_float, *from_bytes) * kRadToDeg, 0.1);
 }
 
 TEST(AutoLight, TheBrighterOfTwoLightsWinsUnpulledByTheOther) {
