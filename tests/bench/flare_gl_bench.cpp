@@ -120,19 +120,37 @@ void run(benchmark::State& state, const std::function<void(Fixture&)>& body) {
   state.counters["frame_ms"] = f.frame_ms;
 }
 
-/// One eye of the play frame; arg 0: no flare, 1: directional, 2: headset (6 rings each).
+/// One eye of the play frame with a flare (arg 1: directional, 2: headset, 6 rings each; 0: none),
+/// interleaved with the same eye without it in every iteration so that the machine's load drifts
+/// alike for both: counter "x_no_flare" = median with / median without.
 void BM_GlFlareEye(benchmark::State& s) {
   const int which = static_cast<int>(s.range(0));
   Fixture& f = fixture();
-  if (f.flare) {
-    f.flare->set_layouts({});
-    if (which == 1) f.flare->set_layouts({layout(effects::FlareStyle::Directional, 6)});
-    if (which == 2) f.flare->set_layouts({layout(effects::FlareStyle::Headset, 6)});
+  if (!f.ctx) {
+    s.SkipWithError(f.error.c_str());
+    return;
   }
-  run(s, [](Fixture& fx) {
-    const std::array<EyeLayer*, 1> layers{fx.flare.get()};
-    fx.comp->render_eye(0, {fx.eyes[0], fx.params, fx.mask, false, layers});
-  });
+  std::vector<effects::FlareLayout> flares;
+  if (which == 1) flares = {layout(effects::FlareStyle::Directional, 6)};
+  if (which == 2) flares = {layout(effects::FlareStyle::Headset, 6)};
+  const std::array<EyeLayer*, 1> layers{f.flare.get()};
+  const auto eye = [&](bool with) {
+    f.flare->set_layouts(with ? flares : std::vector<effects::FlareLayout>{});
+    return finished_wall_ms([&] { f.comp->render_eye(0, {f.eyes[0], f.params, f.mask, false, layers}); });
+  };
+  eye(true);
+  std::vector<double> with, without;
+  for (auto _ : s) {
+    without.push_back(eye(false));
+    with.push_back(eye(true));
+    s.SetIterationTime(with.back() * 1e-3);
+  }
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  s.counters["without_ms"] = median(without);
+  s.counters["x_no_flare"] = median(with) / median(without);
 }
 
 /// The flare layer alone (into the eye buffer), directional style, against the ring count.
@@ -165,7 +183,7 @@ void BM_FlareAutoLightMeasure(benchmark::State& s) {
 }
 
 #define VDFX_GL_BENCH(fn) BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
-VDFX_GL_BENCH(BM_GlFlareEye)->Arg(0)->Arg(1)->Arg(2);  // none, directional, headset
+VDFX_GL_BENCH(BM_GlFlareEye)->Arg(0)->Arg(1)->Arg(2)->MinTime(2.0);  // none, directional, headset
 VDFX_GL_BENCH(BM_GlFlareLayerRings)->Arg(0)->Arg(2)->Arg(6)->Arg(12)->Arg(16);
 BENCHMARK(BM_FlareLayout);
 BENCHMARK(BM_FlareAutoLightMeasure)->Unit(benchmark::kMillisecond);
