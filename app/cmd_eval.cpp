@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "app/cli_util.h"
-#include "effects/flare_set.h"
+#include "app/flare_set_of.h"
 #include "effects/stack_interpolator.h"
 #include "io/input_error.h"
 #include "io/sidecar.h"
@@ -39,7 +39,7 @@ int cmd_eval(const Args& args) {
                            " frames (/video/frames)");
   }
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
-  const effects::FlareSet flares(sidecar.flares, sidecar.interpolation, sidecar.video.fps);
+  const effects::FlareSet flares = flare_set_of(sidecar);
   for (const EvalPoint& p : points) {
     const effects::StackParams params = stack.evaluate(p.direction, p.frame);
     nlohmann::ordered_json out;

@@ -1,13 +1,14 @@
 #include "app/view_render.h"
 
+#include <algorithm>
 #include <charconv>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "app/flare_set_of.h"
 #include "effects/distortion_mesh.h"
 #include "effects/effect_shaders.h"
 #include "effects/flare_render.h"
-#include "effects/flare_set.h"
 #include "effects/stack_interpolator.h"
 #include "effects/view_camera.h"
 #include "io/frame_decoder.h"
@@ -137,18 +138,13 @@ std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input
                                               const io::Sidecar& sidecar, const cv::Mat& equirect,
                                               const effects::HeadPose& head, std::int64_t frame) {
   if (sidecar.flares.empty()) return {};
-  std::optional<effects::FlareSet> flares;
-  try {
-    flares.emplace(sidecar.flares, sidecar.interpolation, sidecar.video.fps);
-  } catch (const std::invalid_argument& e) {
-    throw io::InputError(std::string("sidecar flares cannot be interpolated: ") + e.what());
+  effects::FlareSet flares = flare_set_of(sidecar);
+  if (flares.uses_auto_light()) {
+    for (std::int64_t f = std::max<std::int64_t>(0, frame - flares.auto_light_window()); f < frame; ++f)
+      flares.observe(f, load_equirect_frame(input, f));
+    flares.observe(frame, equirect);
   }
-  if (flares->uses_auto_light()) {
-    for (std::int64_t f = std::max<std::int64_t>(0, frame - flares->auto_light_window()); f < frame; ++f)
-      flares->observe(f, load_equirect_frame(input, f));
-    flares->observe(frame, equirect);
-  }
-  return flares->layouts(head, frame);
+  return flares.layouts(head, frame);
 }
 
 }  // namespace
