@@ -22,7 +22,6 @@ effects::StackInterpolator make_interpolator(const io::Sidecar& s) {
   }
 }
 
-
 }  // namespace
 
 Player::Player(const io::Sidecar& sidecar, const io::VideoProperties& video, PlayerOptions options)
