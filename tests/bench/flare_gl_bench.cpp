@@ -55,7 +55,8 @@ effects::FlareLayout layout(effects::FlareStyle style, int rings) {
   effects::FlareSettings s = effects::default_flare_settings(style);
   s.rings = rings;
   const Pose h = head_at(kLook);
-  return *effects::layout_flare(style, s, {position_of(h), rotation_of(h)}, effects::to_unit(kLight), 1.0);
+  return *effects::layout_flare(style, s, {position_of(h), rotation_of(h)},
+                                effects::to_unit(kLight), 1.0);
 }
 
 struct Fixture {
@@ -89,7 +90,8 @@ Fixture& fixture() {
     f.comp->set_video_frame(synthetic_frame());
     f.flare = std::make_unique<FlareGl>();
     const auto views = locate_eye_views(head_at(kLook), profile);
-    for (int e = 0; e < 2; ++e) f.eyes[static_cast<std::size_t>(e)] = render_view(views[static_cast<std::size_t>(e)]);
+    for (int e = 0; e < 2; ++e)
+      f.eyes[static_cast<std::size_t>(e)] = render_view(views[static_cast<std::size_t>(e)]);
     f.params.exposure_stops = 0.5;
     f.mask = effects::non_neutral_mask(f.params);
     const auto eye = [&] { f.comp->render_eye(0, {f.eyes[0], f.params, f.mask}); };
@@ -126,7 +128,9 @@ void BM_GlFlareEye(benchmark::State& s) {
   const std::array<EyeLayer*, 1> layers{f.flare.get()};
   const auto eye = [&](bool with) {
     f.flare->set_layouts(with ? flares : std::vector<effects::FlareLayout>{});
-    return finished_wall_ms([&] { f.comp->render_eye(0, {f.eyes[0], f.params, f.mask, false, layers}); });
+    return finished_wall_ms([&] {
+      f.comp->render_eye(0, {f.eyes[0], f.params, f.mask, false, layers});
+    });
   };
   eye(true);
   std::vector<double> with, without;
@@ -157,7 +161,9 @@ void BM_FlareLayout(benchmark::State& s) {
   const effects::HeadPose head{position_of(h), rotation_of(h)};
   const effects::FlareSettings settings;
   const Eigen::Vector3d l = effects::to_unit(kLight);
-  for (auto _ : s) benchmark::DoNotOptimize(effects::layout_flare(effects::FlareStyle::Directional, settings, head, l, 1.0));
+  for (auto _ : s)
+    benchmark::DoNotOptimize(
+        effects::layout_flare(effects::FlareStyle::Directional, settings, head, l, 1.0));
 }
 
 /// CPU, once per video frame with an auto light: the brightest-region measurement of a 3840 x
@@ -168,7 +174,8 @@ void BM_FlareAutoLightMeasure(benchmark::State& s) {
   s.SetLabel("3840x1920 RGB8");
 }
 
-#define VDFX_GL_BENCH(fn) BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
+#define VDFX_GL_BENCH(fn) \
+  BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
 VDFX_GL_BENCH(BM_GlFlareEye)->Arg(0)->Arg(1)->Arg(2)->MinTime(2.0);  // none, directional, headset
 VDFX_GL_BENCH(BM_GlFlareLayerRings)->Arg(0)->Arg(2)->Arg(6)->Arg(12)->Arg(16);
 BENCHMARK(BM_FlareLayout);
