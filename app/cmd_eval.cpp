@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/cli_util.h"
+#include "app/flare_set_of.h"
 #include "effects/stack_interpolator.h"
 #include "io/input_error.h"
 #include "io/sidecar.h"
@@ -11,10 +12,11 @@
 namespace vdfx::app {
 
 int cmd_eval(const Args& args) {
-  CLI::App cli{"Prints the interpolated parameters of every effect at the given views as JSON, one\n"
-               "object per --at and per line. Effects without keyframes print their neutral\n"
-               "values with \"active\": false.",
-               "vdfx eval"};
+  CLI::App cli{
+      "Prints the interpolated parameters of every effect at the given views as JSON, one\n"
+      "object per --at and per line. Effects without keyframes print their neutral\n"
+      "values with \"active\": false; flares print their intensity, in file order.",
+      "vdfx eval"};
   std::string path;
   std::vector<std::string> at_texts;
   cli.add_option("SIDECAR", path, "the sidecar file")->required();
@@ -38,6 +40,7 @@ int cmd_eval(const Args& args) {
                            " frames (/video/frames)");
   }
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+  const effects::FlareSet flares = flare_set_of(sidecar);
   for (const EvalPoint& p : points) {
     const effects::StackParams params = stack.evaluate(p.direction, p.frame);
     nlohmann::ordered_json out;
@@ -51,6 +54,11 @@ int cmd_eval(const Args& args) {
       fx[std::string(spec.name)] = std::move(e);
     }
     out["effects"] = std::move(fx);
+    // Flares (any number, in file order): their keyframed intensity at the view.
+    nlohmann::ordered_json fl = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < flares.size(); ++k)
+      fl.push_back({{"intensity", flares.intensity(k, effects::to_unit(p.direction), p.frame)}});
+    out["flares"] = std::move(fl);
     std::cout << out.dump() << "\n";
   }
   return kExitOk;

@@ -34,20 +34,6 @@ uniform sampler2D u_tex;
 void main() { frag = texture(u_tex, v_uv); }
 )";
 
-// OpenXR-style asymmetric projection from tangents (near n, far f), column-major.
-Eigen::Matrix4d projection(const RenderView& v, double n, double f) {
-  Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
-  const double w = v.tan_right - v.tan_left, h = v.tan_up - v.tan_down;
-  p(0, 0) = 2.0 / w;
-  p(0, 2) = (v.tan_right + v.tan_left) / w;
-  p(1, 1) = 2.0 / h;
-  p(1, 2) = (v.tan_up + v.tan_down) / h;
-  p(2, 2) = -(f + n) / (f - n);
-  p(2, 3) = -2.0 * f * n / (f - n);
-  p(3, 2) = -1.0;
-  return p;
-}
-
 }  // namespace
 
 /// Slots 0 and 1 are the eyes, slot 2 the desktop view.
@@ -105,7 +91,14 @@ void Compositor::Impl::video_and_effects(int slot, const EyeInput& in, int w, in
   else
     stack.apply(video_out[slot].texture(), eye_buffer[slot], in.params, in.active_effects, in.view, m);
   if (t) timer.stop();
-  // Flare and grain layers will go here (after effects, before UI).
+  // World-space layers (flare, then grain): after the effects, before the UI quads. The desktop
+  // view draws them as seen from the head (the cyclopean eye, index 0).
+  for (EyeLayer* layer : in.layers) {
+    if (t) timer.start(tag + layer->name());
+    eye_buffer[slot].bind();
+    layer->draw(in.view, slot == kDesktopSlot ? 0 : slot, w, h);
+    if (t) timer.stop();
+  }
 }
 
 void Compositor::Impl::quads(const GlTarget& target, const RenderView& view,
@@ -118,10 +111,8 @@ void Compositor::Impl::quads(const GlTarget& target, const RenderView& view,
   glBindVertexArray(vao);
   glActiveTexture(GL_TEXTURE0);
   glUniform1i(quad_program.uniform("u_tex"), 0);
-  const Eigen::Matrix4d proj = projection(view, 0.05, 100.0);
-  Eigen::Matrix4d world_to_view = Eigen::Matrix4d::Identity();
-  world_to_view.topLeftCorner<3, 3>() = view.orientation.transpose();
-  world_to_view.topRightCorner<3, 1>() = -view.orientation.transpose() * view.position;
+  const Eigen::Matrix4d proj = view.projection(0.05, 100.0);
+  const Eigen::Matrix4d world_to_view = view.world_to_eye();
   for (const QuadLayer& q : layers) {
     if (!q.texture) continue;
     const Pose p = Session::to_local(q.pose, q.space, head_in_local);
@@ -250,7 +241,7 @@ cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int wid
   Compositor comp(c);
   comp.set_video_frame(equirect);
   if (o.param_grid) comp.set_param_grid(*o.param_grid);
-  comp.render_eye(0, {view, params, active_effects, o.param_grid != nullptr});
+  comp.render_eye(0, {view, params, active_effects, o.param_grid != nullptr, o.layers});
   return to_bgr8(comp.read_panel(0));
 }
 
