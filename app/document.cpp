@@ -157,6 +157,25 @@ void Document::set_interpolation(EffectType type, const effects::InterpolationSe
   record(std::string(spec.name) + " interpolation", type, std::move(before));
 }
 
+PendingEdit& Document::begin_pending(EffectType type, std::optional<std::size_t> moved, effects::Keyframe key) {
+  pending_.reset();
+  pending_ = std::make_unique<PendingEdit>(*this, type, moved, std::move(key), options_.keyframes, pending_stats_);
+  return *pending_;
+}
+
+std::optional<effects::KeyframeSet::Edit> Document::commit_pending() {
+  if (!pending_) return std::nullopt;
+  const std::unique_ptr<PendingEdit> p = std::move(pending_);
+  if (p->moved()) return move_keyframe(p->effect(), *p->moved(), p->key().direction, p->key().frame);
+  return add_keyframe(p->effect(), p->key());
+}
+
+std::uint64_t Document::solutions_version() const {
+  std::uint64_t v = 0;
+  for (const auto& set : sets_) v += set->solution_version();
+  return v;
+}
+
 bool Document::undo() {
   const auto step = undo_.undo();
   if (!step) return false;

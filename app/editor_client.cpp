@@ -56,35 +56,20 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
   info.video_paused = !editor_.playing();
   info.video_loop = true;  // the editor's playhead wraps (or stops) itself; the decoder follows it
 
-  // Compiled-in effects: those with keyframes, plus the one being previewed.
+  // Compiled-in effects: those with keyframes, plus the one being placed.
   const Document& doc = editor_.document();
   unsigned mask = 0;
-  std::vector<double> key = {static_cast<double>(doc.revision()), editor_.previewing() ? 1.0 : 0.0,
-                             editor_.unaltered() ? 1.0 : 0.0};
-  for (const auto& spec : effects::all_effect_specs()) {
+  for (const auto& spec : effects::all_effect_specs())
     if (!doc.keyframes(spec.type).empty()) mask |= effects::shader_bit(spec.type);
-    // A finished asynchronous solve changes the answers without an edit.
-    key.push_back(static_cast<double>(doc.keyframe_set(spec.type).solution_version()));
-  }
-  if (editor_.previewing()) {
-    const effects::EffectType e = editor_.current_effect();
-    mask |= effects::shader_bit(e);
-    // The preview follows the view centre, the frame and the chosen values.
-    key.insert(key.end(), {editor_.view_direction().azimuth_deg, editor_.view_direction().altitude_deg,
-                           static_cast<double>(editor_.frame()), static_cast<double>(e)});
-    const auto& chosen = doc.params(e);
-    key.insert(key.end(), chosen.begin(), chosen.end());
-  }
-  if (editor_.grabbing()) {
-    // The held keyframe follows the view and the playhead before the move is committed.
-    key.push_back(2.0);
-    if (const auto k = editor_.selected_preview())
-      key.insert(key.end(), {k->direction.azimuth_deg, k->direction.altitude_deg, static_cast<double>(k->frame),
-                             static_cast<double>(*editor_.selected_keyframe())});
-  }
+  const PendingEdit* pending = doc.pending();
+  if (pending) mask |= effects::shader_bit(pending->effect());
   active_ = mask;
-  if (key != revision_key_) {
-    revision_key_ = std::move(key);
+  // params() answers differently after an edit, a finished asynchronous solve, a move of the
+  // pending keyframe, or the unaltered switch.
+  const AnswersKey key{doc.revision(), doc.solutions_version(), pending ? pending->version() : 0,
+                       pending != nullptr, editor_.unaltered()};
+  if (!(key == answers_)) {
+    answers_ = key;
     ++revision_;
   }
 }

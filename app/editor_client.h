@@ -101,7 +101,13 @@ class EditorClient : public FrameClient {
   std::vector<Slot> slots_;
   unsigned active_ = 0;
   std::uint64_t revision_ = 0;
-  std::vector<double> revision_key_;
+  /// What params() depends on; revision_ moves when it changes.
+  struct AnswersKey {
+    std::uint64_t document = ~0ull, solutions = 0, pending = 0;
+    bool pending_exists = false, unaltered = false;
+    bool operator==(const AnswersKey&) const = default;
+  };
+  AnswersKey answers_;
   int uploads_ = 0;
   std::int64_t uploaded_pixels_ = 0;
   bool follow_window_ = false;

@@ -100,13 +100,14 @@ void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, 
   menu = &p.add<MenuList>("effect_menu", names, static_cast<int>(EffectType::Exposure), t.row_height);
   menu->set_rect(col.next(6 * t.row_height + 16));
   effect_widget_rect_ = col.next(330);
-  effect_widgets[0] = &p.add<Slider1D>("blur", "Blur", Axis{0.0, 10.0, 0.1, "%.1f", "\u00b0", ""}, 0.0, 0.0);
-  effect_widgets[1] = &p.add<ColourWheel>("tint", "Tint");
-  effect_widgets[2] = &p.add<Slider1D>("exposure", "Exposure", Axis{-8.0, 8.0, 0.1, "%+.1f", " stops", ""}, 0.0, 0.0);
-  effect_widgets[3] = &p.add<Slider1D>("saturation", "Saturation", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
-  effect_widgets[4] = &p.add<Slider1D>("contrast", "Contrast", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
-  effect_widgets[5] = &p.add<Pad2D>("vignette", "Vignette", Axis{0.0, 180.0, 1.0, "%.0f", "\u00b0", "radius"},
-                                    Axis{0.01, 180.0, 1.0, "%.0f", "\u00b0", "falloff"}, glm::dvec2(180.0, 0.01));
+  blur = &p.add<Slider1D>("blur", "Blur", Axis{0.0, 10.0, 0.1, "%.1f", "\u00b0", ""}, 0.0, 0.0);
+  tint = &p.add<ColourWheel>("tint", "Tint");
+  exposure = &p.add<Slider1D>("exposure", "Exposure", Axis{-8.0, 8.0, 0.1, "%+.1f", " stops", ""}, 0.0, 0.0);
+  saturation = &p.add<Slider1D>("saturation", "Saturation", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
+  contrast = &p.add<Slider1D>("contrast", "Contrast", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
+  vignette = &p.add<Pad2D>("vignette", "Vignette", Axis{0.0, 180.0, 1.0, "%.0f", "\u00b0", "radius"},
+                           Axis{0.01, 180.0, 1.0, "%.0f", "\u00b0", "falloff"}, glm::dvec2(180.0, 0.01));
+  effect_widgets = {blur, tint, exposure, saturation, contrast, vignette};
   const Rect row = col.next(t.row_height);
   undo = &p.add<Button>("undo", "\u2190 Undo");
   undo->set_rect(split_cols(row, 2, 0, t.gap));
@@ -251,6 +252,34 @@ ScreenRect EditorPanels::screen_rect(std::string_view id) const {
   if (id == kViewsPanelId) return {v.width - m - px(kDeskViewsW), m, px(kDeskViewsW), px(kDeskViewsH)};
   if (id == kHudPanelId) return {(v.width - px(kDeskHudW)) / 2, m, px(kDeskHudW), px(kDeskHudH)};
   return {};
+}
+
+void EditorPanels::show_values(EffectType type, std::span<const double> v) {
+  ui::Widget* w = effect_widgets[static_cast<std::size_t>(type)];
+  if (w->pressed()) return;  // it shows its own value while dragged
+  switch (type) {
+    case EffectType::Tint: {
+      const glm::dvec2 hs = ui::hue_sat_from_tint_gain({v[0], v[1], v[2]});
+      if (glm::length(hs - glm::dvec2(tint->hue(), tint->sat())) > 1e-6) tint->set_hue_sat(hs.x, hs.y);
+      break;
+    }
+    case EffectType::Vignette: vignette->set_value({v[0], v[1]}); break;
+    case EffectType::Blur: blur->set_value(v[0]); break;
+    case EffectType::Exposure: exposure->set_value(v[0]); break;
+    case EffectType::Saturation: saturation->set_value(v[0]); break;
+    case EffectType::Contrast: contrast->set_value(v[0]); break;
+  }
+}
+
+std::vector<double> EditorPanels::values_of(EffectType type, const ui::Event& e) {
+  switch (type) {
+    case EffectType::Tint: {
+      const Eigen::Vector3d g = ui::tint_gain_from_hue_sat(e.new_value.x, e.new_value.y);
+      return {g[0], g[1], g[2]};
+    }
+    case EffectType::Vignette: return {e.new_value.x, e.new_value.y};
+    default: return {e.new_value.x};
+  }
 }
 
 void EditorPanels::show_effect(EffectType type) {

@@ -65,11 +65,6 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-effects::Direction head_direction(const xr::InputState& in) {
-  const glm::dvec3 f = xr::forward(in.head);
-  return effects::from_unit(Eigen::Vector3d(f.x, f.y, f.z));
-}
-
 }  // namespace
 
 struct FrameLoop::Impl {
@@ -261,7 +256,7 @@ struct FrameLoop::Impl {
       FrameInfo info;
       info.loop_frame = n;
       info.display_time_ns = t;
-      info.head_forward = head_direction(in);
+      info.head_forward = xr::forward_direction(in.head);
       info.shown_video_frame = shown ? shown->index : -1;
       client.update(in, t, info);
       if (info.request_exit) quit = true;
