@@ -162,6 +162,7 @@ class EditorPanels {
   void build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames);
   void build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames);
   void add_visualizations(ui::Panel& p, ui::Stack& col, double toggles_h, bool stacked);
+  void add_transport_row(ui::Panel& p, ui::Stack& col);
 
   DesktopViewport viewport_;
   ui::Rect effect_widget_rect_;
