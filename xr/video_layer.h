@@ -24,6 +24,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "io/picture.h"
 #include "xr/gl_texture.h"
 #include "xr/render_view.h"
 
@@ -38,6 +39,9 @@ class VideoLayerGl {
   /// Uploads an equirect frame (CV_8UC3/4 or CV_32FC3/4, BGR) and rebuilds the mip chain;
   /// reallocates when the size or depth changes. 8-bit frames are stored RGBA8, float RGBA32F.
   void set_frame(const cv::Mat& equirect);
+  /// Uploads a decoded picture: Y'CbCr planes converted on the GPU (see above), or packed RGB
+  /// (CV_8UC3 / CV_32FC3, RGB order) as it is. Rebuilds the mip chain.
+  void set_frame(const io::Picture& picture);
   /// Draws the layer into `target` (whole viewport) for one eye.
   void render(const GlTarget& target, const RenderView& view, LodMode lod = LodMode::Analytic);
   const GlTexture& texture() const;
