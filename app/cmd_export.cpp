@@ -78,7 +78,7 @@ int cmd_export(const Args& args) {
   cli.add_option("--threads", threads, "render threads (default: one per core)")->check(CLI::Range(1, 256));
   cli.add_option("--param-step", param_step,
                  "--baked: evaluate the effects exactly every N pixels, bilinear between (1: every "
-                 "pixel; default: a grid at most 1024 columns wide)")
+                 "pixel; default: a grid at most 512 columns wide)")
       ->check(CLI::Range(1, 64));
   cli.add_option("--fov", fov, "--path: horizontal field of view in degrees")->check(CLI::Range(1.0, 179.0))
       ->capture_default_str();

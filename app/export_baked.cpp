@@ -9,7 +9,6 @@
 #include <opencv2/core/utility.hpp>
 
 #include "effects/coords.h"
-#include "effects/effect_stack.h"
 #include "effects/equirect_blur.h"
 
 namespace vdfx::app {
@@ -55,36 +54,24 @@ Eigen::Vector3d pixel_direction(int x, int y, int w, int h) {
   return effects::to_unit({az, alt});
 }
 
-/// The flat parameters the baked export blends (blur sigma, tint gain, exposure, saturation,
-/// contrast), in StackParams' own fields.
-constexpr int kFields = 7;
+/// The flat parameters the baked export blends: blur sigma, the colour gain (tint, renormalised
+/// as StackParams keeps it, times 2^stops), saturation, contrast.
+constexpr int kFields = 6;
 void flatten(const StackParams& p, double* f) {
+  const double e = std::exp2(p.exposure_stops);
   f[0] = p.blur_sigma_deg;
-  f[1] = p.tint_gain.x();
-  f[2] = p.tint_gain.y();
-  f[3] = p.tint_gain.z();
-  f[4] = p.exposure_stops;
-  f[5] = p.saturation;
-  f[6] = p.contrast;
-}
-
-StackParams unflatten(const double* f) {
-  StackParams p;
-  p.blur_sigma_deg = f[0];
-  // Renormalised after the blend, as the contract asks of any interpolated tint.
-  const double n = 0.25 * f[1] + 0.5 * f[2] + 0.25 * f[3];
-  p.tint_gain = n > 0 ? Eigen::Vector3d(f[1], f[2], f[3]) / n : Eigen::Vector3d(1, 1, 1);
-  p.exposure_stops = f[4];
-  p.saturation = f[5];
-  p.contrast = f[6];
-  return p;  // vignette stays neutral: left out of a baked export
+  f[1] = p.tint_gain.x() * e;
+  f[2] = p.tint_gain.y() * e;
+  f[3] = p.tint_gain.z() * e;
+  f[4] = p.saturation;
+  f[5] = p.contrast;
 }
 
 }  // namespace
 
 int baked_param_step(const BakedOptions& o, int width) {
   if (o.param_step > 0) return o.param_step;
-  return std::max(1, (width + 1023) / 1024);
+  return std::max(1, (width + 511) / 512);
 }
 
 bool baked_drops_effects(const effects::StackInterpolator& stack) {
@@ -106,20 +93,24 @@ cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& 
                 &grid[(static_cast<std::size_t>(j) * gx.size() + static_cast<std::size_t>(i)) * kFields]);
   });
   const Axis ax = axis_weights(w, gx, true), ay = axis_weights(h, gy, false);
-  auto params_at = [&](int x, int y, double* f) {
-    const std::size_t xa = static_cast<std::size_t>(ax.a[static_cast<std::size_t>(x)]);
-    const std::size_t xb = static_cast<std::size_t>(ax.b[static_cast<std::size_t>(x)]);
+  // Bilinear, split: the two grid rows around image row y are blended once per row, then each
+  // pixel blends two neighbouring entries of that row.
+  auto grid_row = [&](int y, std::vector<float>& row) {
     const std::size_t ya = static_cast<std::size_t>(ay.a[static_cast<std::size_t>(y)]);
     const std::size_t yb = static_cast<std::size_t>(ay.b[static_cast<std::size_t>(y)]);
-    const double tx = ax.t[static_cast<std::size_t>(x)], ty = ay.t[static_cast<std::size_t>(y)];
-    const double* p00 = &grid[(ya * gx.size() + xa) * kFields];
-    const double* p01 = &grid[(ya * gx.size() + xb) * kFields];
-    const double* p10 = &grid[(yb * gx.size() + xa) * kFields];
-    const double* p11 = &grid[(yb * gx.size() + xb) * kFields];
-    for (int k = 0; k < kFields; ++k) {
-      const double top = p00[k] + tx * (p01[k] - p00[k]), bottom = p10[k] + tx * (p11[k] - p10[k]);
-      f[k] = top + ty * (bottom - top);
+    const double ty = ay.t[static_cast<std::size_t>(y)];
+    row.resize(gx.size() * kFields);
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      const double a = grid[ya * gx.size() * kFields + i], b = grid[yb * gx.size() * kFields + i];
+      row[i] = static_cast<float>(a + ty * (b - a));
     }
+  };
+  std::vector<float> axis_t(ax.t.begin(), ax.t.end());
+  auto params_at = [&](const std::vector<float>& row, int x, float* f) {
+    const std::size_t xa = static_cast<std::size_t>(ax.a[static_cast<std::size_t>(x)]) * kFields;
+    const std::size_t xb = static_cast<std::size_t>(ax.b[static_cast<std::size_t>(x)]) * kFields;
+    const float tx = axis_t[static_cast<std::size_t>(x)];
+    for (int k = 0; k < kFields; ++k) f[k] = row[xa + k] + tx * (row[xb + k] - row[xa + k]);
   };
 
   // Blur first (the contract's order), each pixel with its own sigma, on the sphere.
@@ -127,29 +118,33 @@ cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& 
   if (stack.active(EffectType::Blur)) {
     cv::Mat sigma(h, w, CV_32FC1);
     cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& r) {
-      double f[kFields];
-      for (int y = r.start; y < r.end; ++y)
+      float f[kFields];
+      std::vector<float> row;
+      for (int y = r.start; y < r.end; ++y) {
+        grid_row(y, row);
         for (int x = 0; x < w; ++x) {
-          params_at(x, y, f);
+          params_at(row, x, f);
           sigma.at<float>(y, x) = static_cast<float>(f[0]);
         }
+      }
     });
     src = effects::blur_equirect_varying(equirect, sigma);
   }
-  const bool colour = stack.active(EffectType::Tint) || stack.active(EffectType::Exposure) ||
-                      stack.active(EffectType::Saturation) || stack.active(EffectType::Contrast);
-  if (!colour) return src.data == equirect.data ? equirect.clone() : src;
+  const ColourMask mask{stack.active(EffectType::Tint) || stack.active(EffectType::Exposure),
+                        stack.active(EffectType::Saturation), stack.active(EffectType::Contrast)};
+  if (!mask.any()) return src.data == equirect.data ? equirect.clone() : src;
   cv::Mat out(h, w, CV_32FC3);
   cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& r) {
-    double f[kFields];
+    float f[kFields];
+    std::vector<float> row;
     for (int y = r.start; y < r.end; ++y) {
+      grid_row(y, row);
       const cv::Vec3f* in = src.ptr<cv::Vec3f>(y);
       cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
       for (int x = 0; x < w; ++x) {
-        params_at(x, y, f);
-        const Eigen::Vector3d c = effects::apply_colour_stack(Eigen::Vector3d(in[x][0], in[x][1], in[x][2]),
-                                                              unflatten(f), 0.0);
-        o[x] = cv::Vec3f(static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z()));
+        params_at(row, x, f);
+        o[x] = in[x];
+        apply_colour_pixel(&o[x][0], f + 1, mask);
       }
     }
   });

@@ -2,6 +2,8 @@
 /// @brief run_export_pipeline: decode thread -> render workers -> ordered sink.
 #include "app/export_pipeline.h"
 
+#include <malloc.h>
+
 #include <chrono>
 #include <condition_variable>
 #include <deque>
@@ -45,6 +47,11 @@ struct State {
 
 PipelineResult run_export_pipeline(io::FrameDecoder& decoder, const FrameRenderer& render,
                                    const FrameSink& sink, const PipelineSettings& s) {
+  // Every frame allocates a few full-size images on each worker; glibc would give them back to
+  // the kernel and fault them in again, zeroed, for the next frame (a fifth of an export's CPU
+  // time, measured with perf). Freed memory is kept for reuse instead (process-wide).
+  mallopt(M_MMAP_THRESHOLD, 512 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   const int workers = s.workers > 0 ? s.workers : std::max(1u, std::thread::hardware_concurrency());
   const std::int64_t in_flight = s.max_in_flight > 0 ? s.max_in_flight : 2 * workers;
   State st;

@@ -36,7 +36,8 @@ struct ChromaTaps {
   std::vector<float> f;
 };
 
-ChromaTaps chroma_taps(int luma_count, int chroma_count, int log2_sub, double siting) {
+/// `wrap`: the axis is periodic (an equirect's columns: azimuth), else clamped at the edges.
+ChromaTaps chroma_taps(int luma_count, int chroma_count, int log2_sub, double siting, bool wrap) {
   ChromaTaps t;
   t.i0.resize(luma_count);
   t.i1.resize(luma_count);
@@ -46,8 +47,13 @@ ChromaTaps chroma_taps(int luma_count, int chroma_count, int log2_sub, double si
     const double c = (x - siting) / step;
     const double c0 = std::floor(c);
     const int i = static_cast<int>(c0);
-    t.i0[x] = std::clamp(i, 0, chroma_count - 1);
-    t.i1[x] = std::clamp(i + 1, 0, chroma_count - 1);
+    if (wrap) {
+      t.i0[x] = ((i % chroma_count) + chroma_count) % chroma_count;
+      t.i1[x] = (t.i0[x] + 1) % chroma_count;
+    } else {
+      t.i0[x] = std::clamp(i, 0, chroma_count - 1);
+      t.i1[x] = std::clamp(i + 1, 0, chroma_count - 1);
+    }
     t.f[x] = static_cast<float>(c - c0);
   }
   return t;
@@ -92,8 +98,8 @@ template <typename T>
 cv::Mat convert(const Picture& p, PixelFormat format) {
   const YcbcrInfo& info = p.ycbcr;
   const int w = p.planes[0].cols, h = p.planes[0].rows;
-  const ChromaTaps cols = chroma_taps(w, p.planes[1].cols, info.log2_chroma_w, info.chroma_x);
-  const ChromaTaps rows = chroma_taps(h, p.planes[1].rows, info.log2_chroma_h, info.chroma_y);
+  const ChromaTaps cols = chroma_taps(w, p.planes[1].cols, info.log2_chroma_w, info.chroma_x, true);
+  const ChromaTaps rows = chroma_taps(h, p.planes[1].rows, info.log2_chroma_h, info.chroma_y, false);
   const AffineMap3 map = ycbcr_to_rgb_map(info);
   cv::Mat out(h, w, format == PixelFormat::Rgb8 ? CV_8UC3 : CV_32FC3);
   // Rows are independent: OpenCV's pool splits them (serial when called from inside a pool task).
@@ -104,32 +110,58 @@ cv::Mat convert(const Picture& p, PixelFormat format) {
   return out;
 }
 
-/// One separable tent-filter pass along x of an RGB float image (rows unchanged).
-cv::Mat downsample_x(const cv::Mat& src, int out_w, int log2_sub, double siting) {
-  if (log2_sub == 0) return src;
+/// Taps of the tent filter that makes chroma sample j (centred on its siting, half-width one
+/// subsampling step), over `n` source samples (clamped at the edges), normalised.
+std::vector<std::vector<std::pair<int, float>>> tent_taps(int out_n, int n, int log2_sub, double siting) {
   const double step = std::ldexp(1.0, log2_sub);
-  std::vector<std::vector<std::pair<int, float>>> taps(out_w);
-  for (int j = 0; j < out_w; ++j) {
+  std::vector<std::vector<std::pair<int, float>>> taps(static_cast<std::size_t>(out_n));
+  for (int j = 0; j < out_n; ++j) {
     const double centre = j * step + siting;
     const int lo = static_cast<int>(std::ceil(centre - step));
     const int hi = static_cast<int>(std::floor(centre + step));
     double sum = 0.0;
+    auto& t = taps[static_cast<std::size_t>(j)];
     for (int x = lo; x <= hi; ++x) {
       const double wgt = 1.0 - std::abs(x - centre) / step;
       if (wgt <= 0.0) continue;
-      taps[j].emplace_back(std::clamp(x, 0, src.cols - 1), static_cast<float>(wgt));
+      t.emplace_back(std::clamp(x, 0, n - 1), static_cast<float>(wgt));
       sum += wgt;
     }
-    for (auto& t : taps[j]) t.second = static_cast<float>(t.second / sum);
+    for (auto& tap : t) tap.second = static_cast<float>(tap.second / sum);
   }
-  cv::Mat out(src.rows, out_w, CV_32FC3);
-  for (int y = 0; y < src.rows; ++y) {
-    const cv::Vec3f* s = src.ptr<cv::Vec3f>(y);
-    cv::Vec3f* d = out.ptr<cv::Vec3f>(y);
-    for (int j = 0; j < out_w; ++j) {
+  return taps;
+}
+
+inline float clamp01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
+inline cv::Vec3f clamp01(const cv::Vec3f& v) { return {clamp01(v[0]), clamp01(v[1]), clamp01(v[2])}; }
+
+/// R'G'B' (CV_32FC3 or CV_8UC3, clamped to [0, 1] on the way) filtered down to the chroma grid:
+/// along x, then along y; the result is CV_32FC3 of cw x ch.
+cv::Mat chroma_rgb(const cv::Mat& rgb, int cw, int ch, const YcbcrInfo& info) {
+  const auto tx = tent_taps(cw, rgb.cols, info.log2_chroma_w, info.chroma_x);
+  const auto ty = tent_taps(ch, rgb.rows, info.log2_chroma_h, info.chroma_y);
+  const bool bytes = rgb.depth() == CV_8U;
+  auto pixel = [&](int y, int x) {
+    if (bytes) return cv::Vec3f(rgb.at<cv::Vec3b>(y, x)) * (1.0f / 255.0f);
+    return clamp01(rgb.at<cv::Vec3f>(y, x));
+  };
+  cv::Mat horizontal(rgb.rows, cw, CV_32FC3), out(ch, cw, CV_32FC3);
+  std::vector<cv::Vec3f> line(static_cast<std::size_t>(rgb.cols));
+  for (int y = 0; y < rgb.rows; ++y) {
+    for (int x = 0; x < rgb.cols; ++x) line[static_cast<std::size_t>(x)] = pixel(y, x);
+    cv::Vec3f* d = horizontal.ptr<cv::Vec3f>(y);
+    for (int j = 0; j < cw; ++j) {
       cv::Vec3f acc(0, 0, 0);
-      for (const auto& [x, wgt] : taps[j]) acc += s[x] * wgt;
+      for (const auto& [x, wgt] : tx[static_cast<std::size_t>(j)]) acc += line[static_cast<std::size_t>(x)] * wgt;
       d[j] = acc;
+    }
+  }
+  for (int i = 0; i < ch; ++i) {
+    cv::Vec3f* d = out.ptr<cv::Vec3f>(i);
+    for (int j = 0; j < cw; ++j) d[j] = cv::Vec3f(0, 0, 0);
+    for (const auto& [y, wgt] : ty[static_cast<std::size_t>(i)]) {
+      const cv::Vec3f* s = horizontal.ptr<cv::Vec3f>(y);
+      for (int j = 0; j < cw; ++j) d[j] += s[j] * wgt;
     }
   }
   return out;
@@ -202,11 +234,8 @@ Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
   if (rgb.empty() || (rgb.type() != CV_32FC3 && rgb.type() != CV_8UC3))
     throw std::invalid_argument("rgb_to_ycbcr: CV_32FC3 or CV_8UC3 RGB expected");
   if (info.bit_depth != 8) throw std::invalid_argument("rgb_to_ycbcr: 8-bit codes only");
-  cv::Mat f;
-  if (rgb.depth() == CV_8U) rgb.convertTo(f, CV_32FC3, 1.0 / 255.0);
-  else f = cv::min(cv::max(rgb, cv::Scalar::all(0.0)), cv::Scalar::all(1.0));
   const AffineMap3 a = rgb_to_ycbcr_map(info);
-  const int w = f.cols, h = f.rows;
+  const int w = rgb.cols, h = rgb.rows;
   const int cw = (w + (1 << info.log2_chroma_w) - 1) >> info.log2_chroma_w;
   const int ch = (h + (1 << info.log2_chroma_h) - 1) >> info.log2_chroma_h;
   Picture p;
@@ -214,25 +243,30 @@ Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
   p.planes[0].create(h, w, CV_8UC1);
   p.planes[1].create(ch, cw, CV_8UC1);
   p.planes[2].create(ch, cw, CV_8UC1);
-  auto code = [](double v) { return static_cast<std::uint8_t>(std::clamp(std::lround(v), 0L, 255L)); };
+  // Codes are never negative here (offsets >= 0, inputs clamped): rounding is + 0.5 and a cut.
+  auto code = [](float v) { return static_cast<std::uint8_t>(std::clamp(v + 0.5f, 0.0f, 255.0f)); };
+  const float m0 = static_cast<float>(a.m[0]), m1 = static_cast<float>(a.m[1]), m2 = static_cast<float>(a.m[2]);
+  const float o0 = static_cast<float>(a.offset[0]);
   for (int y = 0; y < h; ++y) {
-    const cv::Vec3f* s = f.ptr<cv::Vec3f>(y);
     std::uint8_t* d = p.planes[0].ptr<std::uint8_t>(y);
-    for (int x = 0; x < w; ++x) d[x] = code(a.m[0] * s[x][0] + a.m[1] * s[x][1] + a.m[2] * s[x][2] + a.offset[0]);
+    if (rgb.depth() == CV_8U) {
+      const cv::Vec3b* s = rgb.ptr<cv::Vec3b>(y);
+      for (int x = 0; x < w; ++x) d[x] = code((m0 * s[x][0] + m1 * s[x][1] + m2 * s[x][2]) * (1.0f / 255.0f) + o0);
+    } else {
+      const cv::Vec3f* s = rgb.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < w; ++x)
+        d[x] = code(m0 * clamp01(s[x][0]) + m1 * clamp01(s[x][1]) + m2 * clamp01(s[x][2]) + o0);
+    }
   }
-  // Chroma: filter R'G'B' down to the chroma grid (linear, so the same as filtering Cb and Cr).
-  cv::Mat sub = downsample_x(f, cw, info.log2_chroma_w, info.chroma_x);
-  if (info.log2_chroma_h > 0) {
-    cv::Mat t = downsample_x(sub.t(), ch, info.log2_chroma_h, info.chroma_y);
-    sub = t.t();
-  }
+  // Chroma: R'G'B' filtered down to the chroma grid (linear, so the same as filtering Cb, Cr).
+  const cv::Mat sub = chroma_rgb(rgb, cw, ch, info);
   for (int y = 0; y < ch; ++y) {
     const cv::Vec3f* s = sub.ptr<cv::Vec3f>(y);
     std::uint8_t* cb = p.planes[1].ptr<std::uint8_t>(y);
     std::uint8_t* cr = p.planes[2].ptr<std::uint8_t>(y);
     for (int x = 0; x < cw; ++x) {
-      cb[x] = code(a.m[3] * s[x][0] + a.m[4] * s[x][1] + a.m[5] * s[x][2] + a.offset[1]);
-      cr[x] = code(a.m[6] * s[x][0] + a.m[7] * s[x][1] + a.m[8] * s[x][2] + a.offset[2]);
+      cb[x] = code(static_cast<float>(a.m[3] * s[x][0] + a.m[4] * s[x][1] + a.m[5] * s[x][2] + a.offset[1]));
+      cr[x] = code(static_cast<float>(a.m[6] * s[x][0] + a.m[7] * s[x][1] + a.m[8] * s[x][2] + a.offset[2]));
     }
   }
   return p;
