@@ -8,10 +8,9 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libopencv-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
-  ffmpeg
   libglfw3-dev libglm-dev libepoxy-dev libstb-dev libhidapi-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  fonts-dejavu-core blender-data
+  fonts-dejavu-core blender-data ffmpeg
   xvfb xauth libgl1-mesa-dri mesa-utils
 )
 

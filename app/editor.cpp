@@ -36,7 +36,7 @@ std::string title_case(std::string_view s) {
 Editor::Editor(io::Sidecar sidecar, DocumentOptions document_options, EditorOptions options)
     : doc_(std::move(sidecar), document_options),
       options_(options),
-      panels_(fonts_or_default(options.fonts), doc_.video().frames, options.layout),
+      panels_(fonts_or_default(options.fonts), doc_.video().frames, options.layout, options.viewport),
       fps_(io::fps_to_rational(doc_.video().fps)),
       input_(xr::neutral_input_state(0)),
       preview_(document_options.keyframes) {
@@ -54,6 +54,7 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
   last_t_ = t_ns;
   now_ = t_ns;
   input_ = input;
+  if (!message_.empty() && t_ns - message_t_ > kMessageLifetimeNs) message_.clear();
   if (input.head_tracked) view_ = effects::from_unit([&] {
     const glm::dvec3 f = xr::forward(input.head);
     return Eigen::Vector3d(f.x, f.y, f.z);
@@ -68,8 +69,9 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
 
   panels_.place(input);
 
-  // Pointers: each hand's aim ray drives the panels not attached to it.
-  auto pointer_input = [](const xr::HandState& h) {
+  // Pointers: each hand's aim ray drives the panels not attached to it; the other hand's grip
+  // held (Shift in the sim) makes a drag fine.
+  auto pointer_input = [&](const xr::HandState& h, xr::Hand other) {
     ui::PointerInput p;
     if (!h.tracked) {
       p.ray.direction = glm::dvec3(0.0);  // parallel to everything: hits nothing
@@ -78,30 +80,31 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
     p.ray = {h.aim.position, xr::forward(h.aim)};
     p.trigger = h.trigger;
     p.thumbstick = h.thumbstick;
+    p.fine = input.edges.is_down(other, xr::Control::Squeeze);
     return p;
   };
   std::vector<ui::Event> events;
   {
     auto reach = panels_.reachable_by(xr::Hand::Left);
-    auto ev = left_ptr_.update(reach, pointer_input(input.left), dt);
+    auto ev = left_ptr_.update(reach, pointer_input(input.left, xr::Hand::Right), dt);
     events.insert(events.end(), ev.begin(), ev.end());
   }
   {
     auto reach = panels_.reachable_by(xr::Hand::Right);
-    auto ev = right_ptr_.update(reach, pointer_input(input.right), dt);
+    auto ev = right_ptr_.update(reach, pointer_input(input.right, xr::Hand::Left), dt);
     events.insert(events.end(), ev.begin(), ev.end());
   }
   validate_selection();  // the document may have been edited from outside (tests, tools)
   for (const auto& e : events) handle(e);
 
+  // Buttons act on their edges (a tap between two frames is down in exactly one poll).
+  using xr::Control;
+  using xr::Hand;
+  const xr::ActionEdges& edges = input.edges;
   // Grab: right squeeze selects the nearest keyframe and holds it; release commits the move.
-  const bool squeeze = input.right.tracked && input.right.squeeze >= 0.5;
-  if (squeeze && !squeeze_was_down_) grab();
-  if (!squeeze && grabbing_) grab_release();
-  squeeze_was_down_ = squeeze;
-  const bool stick_click = input.right.tracked && input.right.thumbstick_click;
-  if (stick_click && !stick_click_was_down_) deselect();
-  stick_click_was_down_ = stick_click;
+  if (edges.was_pressed(Hand::Right, Control::Squeeze)) grab();
+  if (!edges.is_down(Hand::Right, Control::Squeeze) && grabbing_) grab_release();
+  if (edges.was_pressed(Hand::Right, Control::StickClick)) deselect();
 
   // Placement: a right-trigger press that did not land on a panel previews; release places. It
   // leaves a selection (the widget goes back to the chosen values that will be placed).
@@ -116,16 +119,10 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
   }
   right_was_down_ = down;
 
-  unaltered_ = input.right.tracked && input.right.secondary;
-  const bool a = input.right.tracked && input.right.primary;
-  if (a && !a_was_down_) delete_nearest();
-  a_was_down_ = a;
-  const bool x = input.left.tracked && input.left.primary;
-  if (x && !x_was_down_) undo();
-  x_was_down_ = x;
-  const bool y = input.left.tracked && input.left.secondary;
-  if (y && !y_was_down_) redo();
-  y_was_down_ = y;
+  unaltered_ = edges.is_down(Hand::Right, Control::Secondary);
+  if (edges.was_pressed(Hand::Right, Control::Primary)) delete_nearest();
+  if (edges.was_pressed(Hand::Left, Control::Primary)) undo();
+  if (edges.was_pressed(Hand::Left, Control::Secondary)) redo();
 
   if (look_target_ && angle_deg(*look_target_, view_) < 5.0) look_target_.reset();
   if (!previewing_ && !grabbing_) preview_.reset();
@@ -246,6 +243,47 @@ std::string Editor::status_text() const {
   return s;
 }
 
+void Editor::say(std::string message) {
+  message_ = std::move(message);
+  message_t_ = now_;
+}
+
+void Editor::set_viewport(const DesktopViewport& v) {
+  if (v == panels_.viewport()) return;
+  panels_.set_viewport(v);
+  sync_widgets();
+}
+
+void Editor::set_loop_status(double frames_per_second, bool video_loading) {
+  loop_fps_ = frames_per_second;
+  video_loading_ = video_loading;
+}
+
+std::string Editor::hud_text() const {
+  const double fps = doc_.video().fps;
+  const double t = static_cast<double>(frame_) / fps;
+  const int minutes = static_cast<int>(t / 60.0);
+  std::string s = "frame " + std::to_string(frame_) + " / " + std::to_string(doc_.video().frames) + "   " +
+                  std::to_string(minutes) + ":" + fmt("%05.2f", t - 60.0 * minutes) + "   az " +
+                  fmt("%.0f\u00b0", view_.azimuth_deg) + " alt " + fmt("%.0f\u00b0", view_.altitude_deg) +
+                  "   " + title_case(effects::effect_name(effect_)) + " (" +
+                  std::to_string(doc_.keyframes(effect_).size()) + " keyframes)";
+  if (selected_) s += (grabbing_ ? "   moving " : "   selected ") + std::to_string(*selected_ + 1);
+  if (playing_) s += "   \u25b6";
+  if (loop_fps_ > 0.0) s += "   " + fmt("%.0f fps", loop_fps_);
+  return s;
+}
+
+std::string Editor::hud_message() const {
+  if (!message_.empty()) return message_;
+  if (video_loading_) return "loading the video\u2026";
+  if (previewing_) return "release to place the keyframe at the centre of the view";
+  if (grabbing_) return "turn or scrub to move the keyframe; release to drop it";
+  if (unaltered_) return "showing the unaltered film";
+  if (selected_) return "the widget edits the selected keyframe; G (hold) moves it, L deselects";
+  return "click the view or Space: keyframe at the centre   right-drag: look   arrows: step   Shift: fine";
+}
+
 bool Editor::finish() { return autosave_ ? autosave_->finish(doc_.sidecar()) : true; }
 
 void Editor::select_effect(EffectType type) {
@@ -277,12 +315,12 @@ std::optional<Direction> Editor::jump_to_keyframe(int step) {
   const auto& ks = doc_.keyframes(effect_);
   const auto i = adjacent_keyframe(ks, view_, frame_, step);
   if (!i) {
-    message_ = step > 0 ? "no keyframe after this frame" : "no keyframe before this frame";
+    say(step > 0 ? "no keyframe after this frame" : "no keyframe before this frame");
     return std::nullopt;
   }
   seek(ks[*i].frame);
   look_target_ = ks[*i].direction;
-  message_.clear();
+  say({});
   // The keyframe jumped to becomes the selection (its values in the widget, ready to grab); a
   // grab in progress keeps its keyframe, which follows the playhead instead.
   if (!grabbing_) select_keyframe(*i);
@@ -295,36 +333,36 @@ bool Editor::delete_nearest() {
     selected_.reset();
     grabbing_ = false;
     doc_.remove_keyframe(effect_, i);
-    message_ = "deleted the selected keyframe";
+    say("deleted the selected keyframe");
     return true;
   }
   const auto& ks = doc_.keyframes(effect_);
   const auto i = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
   if (!i) {
-    message_ = "no keyframe to delete";
+    say("no keyframe to delete");
     return false;
   }
   doc_.remove_keyframe(effect_, *i);
-  message_ = "deleted a keyframe";
+  say("deleted a keyframe");
   return true;
 }
 
 void Editor::place_keyframe() {
   const auto edit = doc_.add_keyframe(effect_, {view_, frame_, doc_.params(effect_)});
-  message_ = edit.replaced ? "replaced a keyframe" : "placed a keyframe";
+  say(edit.replaced ? "replaced a keyframe" : "placed a keyframe");
 }
 
 bool Editor::select_nearest() {
   const auto& ks = doc_.keyframes(effect_);
   const auto i = nearest_keyframe(ks, view_, frame_, doc_.interpolation(effect_).time_scale, doc_.video().fps);
   if (!i) {
-    message_ = "no keyframe to select";
+    say("no keyframe to select");
     return false;
   }
   selected_ = *i;
   grabbing_ = false;
   previewing_ = false;
-  message_ = "selected keyframe " + std::to_string(*i + 1);
+  say("selected keyframe " + std::to_string(*i + 1));
   return true;
 }
 
@@ -332,7 +370,7 @@ bool Editor::select_keyframe(std::size_t index) {
   if (grabbing_ || index >= doc_.keyframes(effect_).size()) return false;
   selected_ = index;
   previewing_ = false;
-  message_ = "selected keyframe " + std::to_string(index + 1);
+  say("selected keyframe " + std::to_string(index + 1));
   return true;
 }
 
@@ -347,7 +385,7 @@ void Editor::deselect() {
   if (!selected_) return;
   selected_.reset();
   grabbing_ = false;  // a grab in progress is cancelled, not committed
-  message_ = "deselected";
+  say("deselected");
 }
 
 bool Editor::grab() {
@@ -358,7 +396,7 @@ bool Editor::grab() {
   grab_view0_ = view_;
   grab_frame0_ = frame_;
   grab_key0_ = doc_.keyframes(effect_)[*selected_];
-  message_ = "holding keyframe " + std::to_string(*selected_ + 1);
+  say("holding keyframe " + std::to_string(*selected_ + 1));
   return true;
 }
 
@@ -370,11 +408,11 @@ void Editor::grab_release() {
   const std::uint64_t revision = doc_.revision();
   const auto edit = doc_.move_keyframe(effect_, *selected_, k->direction, k->frame);
   if (doc_.revision() == revision) {  // released where it was: no edit
-    message_ = "selected keyframe " + std::to_string(*selected_ + 1);
+    say("selected keyframe " + std::to_string(*selected_ + 1));
     return;
   }
   selected_ = edit.index;
-  message_ = edit.replaced ? "moved a keyframe onto another (replaced it)" : "moved a keyframe";
+  say(edit.replaced ? "moved a keyframe onto another (replaced it)" : "moved a keyframe");
 }
 
 void Editor::set_selected_params(std::vector<double> params) {
@@ -386,7 +424,7 @@ bool Editor::undo() {
   const std::size_t count = doc_.keyframes(effect_).size();
   const bool ok = doc_.undo();
   keep_selection_if_stable(count);
-  message_ = ok ? "undone" : "nothing to undo";
+  say(ok ? "undone" : "nothing to undo");
   return ok;
 }
 
@@ -395,7 +433,7 @@ bool Editor::redo() {
   const std::size_t count = doc_.keyframes(effect_).size();
   const bool ok = doc_.redo();
   keep_selection_if_stable(count);
-  message_ = ok ? "redone" : "nothing to redo";
+  say(ok ? "redone" : "nothing to redo");
   return ok;
 }
 
@@ -411,43 +449,49 @@ std::vector<double> Editor::widget_params(const ui::Event& e) const {
 }
 
 void Editor::handle(const ui::Event& e) {
+  // Widget ids are unique across the panels; which panel holds a widget depends on the layout.
   using ui::EventKind;
   const bool drag_begin = e.kind == EventKind::DragBegin, drag_end = e.kind == EventKind::DragEnd;
   const bool changed = e.kind == EventKind::ValueChanged, clicked = e.kind == EventKind::Clicked;
-  if (e.panel == kEffectPanelId) {
-    if (e.widget == "effect_menu" && changed) {
-      select_effect(static_cast<EffectType>(std::clamp(static_cast<int>(e.new_value.x), 0, effects::kEffectCount - 1)));
-    } else if (e.widget == effect_widget_id(effect_) || e.widget == "exponent" || e.widget == "time_scale") {
-      if (drag_begin) doc_.begin_group(e.widget);
-      if (drag_end) doc_.end_group();
-      if (!changed) return;
-      if (e.widget == "exponent" || e.widget == "time_scale") {
-        auto s = doc_.interpolation(effect_);
-        (e.widget == "exponent" ? s.exponent : s.time_scale) = e.new_value.x;
-        doc_.set_interpolation(effect_, s);
-      } else if (selected_) {
-        set_selected_params(widget_params(e));
-      } else {
-        set_chosen_params(widget_params(e));
-      }
-    } else if (clicked && e.widget == "undo") {
-      undo();
-    } else if (clicked && e.widget == "redo") {
-      redo();
-    } else if (clicked && e.widget == "delete_nearest") {
-      delete_nearest();
-    } else if (clicked && e.widget == "deselect") {
-      deselect();
+  const std::string& w = e.widget;
+  if (w == "effect_menu" && changed) {
+    select_effect(static_cast<EffectType>(std::clamp(static_cast<int>(e.new_value.x), 0, effects::kEffectCount - 1)));
+  } else if (w == effect_widget_id(effect_) || w == "exponent" || w == "time_scale") {
+    if (drag_begin) doc_.begin_group(w);
+    if (drag_end) doc_.end_group();
+    if (!changed) return;
+    if (w == "exponent" || w == "time_scale") {
+      auto s = doc_.interpolation(effect_);
+      if (w == "exponent") s.exponent = e.new_value.x;
+      else s.time_scale = effects::time_scale_from_deg_per_s(e.new_value.x);
+      doc_.set_interpolation(effect_, s);
+    } else if (selected_) {
+      set_selected_params(widget_params(e));
+    } else {
+      set_chosen_params(widget_params(e));
     }
-  } else if (e.panel == kTimelinePanelId) {
-    if (e.widget == "minimap" && changed) {
-      if (e.new_value.x >= 0.0) select_keyframe(static_cast<std::size_t>(e.new_value.x));
-    } else if (clicked && e.widget == "play") set_playing(!playing_);
-    else if (clicked && e.widget == "prev_key") jump_to_keyframe(-1);
-    else if (clicked && e.widget == "next_key") jump_to_keyframe(+1);
-    else if (e.widget == "strip" && drag_begin) set_playing(false);
-    else if (e.widget == "strip" && changed) seek(static_cast<std::int64_t>(e.new_value.x));
-    else if (e.widget == "lock" && changed) panels_.lock_timeline(e.new_value.x > 0.5);
+  } else if (clicked && w == "undo") {
+    undo();
+  } else if (clicked && w == "redo") {
+    redo();
+  } else if (clicked && w == "delete_nearest") {
+    delete_nearest();
+  } else if (clicked && w == "deselect") {
+    deselect();
+  } else if (w == "minimap" && changed) {
+    if (e.new_value.x >= 0.0) select_keyframe(static_cast<std::size_t>(e.new_value.x));
+  } else if (clicked && w == "play") {
+    set_playing(!playing_);
+  } else if (clicked && w == "prev_key") {
+    jump_to_keyframe(-1);
+  } else if (clicked && w == "next_key") {
+    jump_to_keyframe(+1);
+  } else if (w == "strip" && drag_begin) {
+    set_playing(false);
+  } else if (w == "strip" && changed) {
+    seek(static_cast<std::int64_t>(e.new_value.x));
+  } else if (w == "lock" && changed) {
+    panels_.lock_timeline(e.new_value.x > 0.5);
   }
 }
 
@@ -467,7 +511,7 @@ void Editor::sync_widgets() {
   }
   const auto s = doc_.interpolation(effect_);
   if (!panels_.exponent->pressed()) panels_.exponent->set_value(s.exponent);
-  if (!panels_.time_scale->pressed()) panels_.time_scale->set_value(s.time_scale);
+  if (!panels_.time_scale->pressed()) panels_.time_scale->set_value(effects::deg_per_s_from_time_scale(s.time_scale));
   panels_.undo->set_enabled(doc_.undo_stack().can_undo());
   panels_.redo->set_enabled(doc_.undo_stack().can_redo());
   const std::string name = title_case(effects::effect_name(effect_));
@@ -483,8 +527,12 @@ void Editor::sync_widgets() {
   panels_.strip->set_playhead(static_cast<int>(frame_));
   const double fps = doc_.video().fps;
   panels_.time->set_text(fmt("frame %.0f", static_cast<double>(frame_)) + fmt("  %.2f s", static_cast<double>(frame_) / fps));
-  panels_.status->set_text(autosave_ ? message_ + (message_.empty() ? "" : " \u2014 ") + autosave_->status() : message_);
-  panels_.hint->set_text(status_text());
+  panels_.status->set_text(autosave_ ? autosave_->status() : std::string());
+  if (panels_.hint) panels_.hint->set_text(status_text());
+  if (panels_.hud_line) {
+    panels_.hud_line->set_text(hud_text());
+    panels_.hud_message->set_text(hud_message());
+  }
 }
 
 void Editor::refresh_visualizations() {
@@ -572,7 +620,13 @@ void Editor::refresh_visualizations() {
     panels_.minimap->set_keyframes(std::move(dirs), nearest_ ? static_cast<int>(*nearest_) : -1,
                                    selected_ ? static_cast<int>(*selected_) : -1);
   }
-  panels_.minimap->set_view(view_, options_.view_hfov_deg, options_.view_vfov_deg);
+  if (options_.layout == PanelLayout::Desktop) {
+    const DesktopViewport& v = panels_.viewport();
+    const double vfov = 2.0 * std::atan(std::tan(0.5 * v.hfov_deg * effects::kDegToRad) * v.height / v.width);
+    panels_.minimap->set_view(view_, v.hfov_deg, vfov * effects::kRadToDeg);
+  } else {
+    panels_.minimap->set_view(view_, options_.view_hfov_deg, options_.view_vfov_deg);
+  }
 }
 
 void Editor::show_minimap(const MinimapKey& key, cv::Mat field) {

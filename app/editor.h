@@ -42,14 +42,16 @@ namespace vdfx::app {
 
 struct EditorOptions {
   PanelLayout layout = PanelLayout::Hands;
+  /// Desktop layout: the desktop view the panels are laid out in (set_viewport follows a window).
+  DesktopViewport viewport;
   std::shared_ptr<const ui::FontSet> fonts;  //!< null: ui::FontSet::load() (DejaVu)
   double marker_cone_deg = 30.0;             //!< timeline markers highlighted within this angle of the view
   int track_samples = 240;                   //!< frames sampled for the effect-track plot
   int minimap_width = 128;
   int minimap_height = 64;
   bool loop = true;                          //!< playback wraps at the end
-  double view_hfov_deg = 90.0;               //!< the view footprint drawn on the minimap
-  double view_vfov_deg = 90.0;
+  double view_hfov_deg = 90.0;               //!< the view footprint drawn on the minimap (Hands;
+  double view_vfov_deg = 90.0;               //!< Desktop: the viewport's)
   //! true (`vdfx edit`): the minimap is computed on a worker (MinimapWorker) and shown a frame
   //! or two late; the frame thread never waits for it. false (replay, tests): computed in
   //! update(), so every run shows the same pictures.
@@ -75,6 +77,12 @@ class Editor {
   /// The panels for quad layers, with world poses (Panel::pose()) and textures (Panel::texture()).
   std::vector<ui::Panel*> panels();
   std::string status_text() const;
+  /// The heads-up line (Desktop): frame, time, heading, effect, selection, frame rate.
+  std::string hud_text() const;
+  /// Under it: the latest message while it lasts (kMessageLifetimeNs), else what to do now.
+  std::string hud_message() const;
+  /// Messages (placed, undone, ...) show this long (display time), then go.
+  static constexpr std::int64_t kMessageLifetimeNs = 4'000'000'000;
   bool unaltered() const { return unaltered_; }
   bool previewing() const { return previewing_; }
   /// The current effect's selected keyframe (index into its keyframes), if any.
@@ -89,9 +97,18 @@ class Editor {
   const effects::Direction& view_direction() const { return view_; }
   /// The input of the last update.
   const xr::InputState& input() const { return input_; }
+  /// A hand's UI pointer (what its ray hits, the widget under it).
+  const ui::Pointer& pointer(xr::Hand hand) const { return hand == xr::Hand::Left ? left_ptr_ : right_ptr_; }
   effects::EffectType current_effect() const { return effect_; }
   /// Where the last keyframe jump asks the user to look (cleared once the view is within 5 deg).
   const std::optional<effects::Direction>& look_target() const { return look_target_; }
+
+  // ---- the window around the editor
+  /// Desktop layout: the window's size or FOV changed; the panels follow.
+  void set_viewport(const DesktopViewport& viewport);
+  /// What the frame loop measures, for the heads-up line: frames per second, and whether the
+  /// video is still loading (no frame decoded yet).
+  void set_loop_status(double frames_per_second, bool video_loading);
 
   // ---- actions (panels and bindings call these; so can tests)
   void select_effect(effects::EffectType type);
@@ -157,6 +174,7 @@ class Editor {
 
  private:
   void handle(const ui::Event& e);
+  void say(std::string message);
   void sync_widgets();
   void refresh_visualizations();
   void show_minimap(const MinimapKey& key, cv::Mat field);
@@ -185,8 +203,7 @@ class Editor {
   std::int64_t frame_ = 0;
   effects::EffectType effect_ = effects::EffectType::Exposure;
   bool previewing_ = false, unaltered_ = false, playing_ = false;
-  bool right_was_down_ = false, a_was_down_ = false, x_was_down_ = false, y_was_down_ = false;
-  bool squeeze_was_down_ = false, stick_click_was_down_ = false;
+  bool right_was_down_ = false;  //!< the right pointer's trigger (ui hysteresis) at the last update
   // selection and grab
   std::optional<std::size_t> selected_;
   bool grabbing_ = false;
@@ -196,6 +213,9 @@ class Editor {
   std::int64_t play_t0_ = 0, play_f0_ = 0, now_ = 0;
   std::optional<effects::Direction> look_target_;
   std::string message_;
+  std::int64_t message_t_ = 0;  //!< display time the message was said
+  double loop_fps_ = 0.0;
+  bool video_loading_ = false;
 
   // visualization caches
   MinimapKey minimap_key_;        //!< what the minimap shown was computed for

@@ -78,10 +78,8 @@ void Player::update(const xr::InputState& input, std::int64_t t, FrameInfo& info
   for (xr::Key k : pending_keys_) apply_key(k, t);
   pending_keys_.clear();
   // Controller: b toggles A/B on its press, a shows the unaltered film while held.
-  const bool b = input.right.tracked && input.right.secondary;
-  if (b && !prev_b_) apply_key(xr::Key::V, t);
-  prev_b_ = b;
-  unaltered_button_ = input.right.tracked && input.right.primary;
+  if (input.edges.was_pressed(xr::Hand::Right, xr::Control::Secondary)) apply_key(xr::Key::V, t);
+  unaltered_button_ = input.edges.is_down(xr::Hand::Right, xr::Control::Primary);
 
   frame_ = playhead_.frame_at(t);
   info.video_frame = frame_;

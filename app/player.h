@@ -56,7 +56,6 @@ class Player : public FrameClient {
   ParamMode mode_;
   std::vector<xr::Key> pending_keys_;  //!< pressed since the last update (applied at its time)
   bool unaltered_key_ = false, unaltered_button_ = false, forced_unaltered_ = false;
-  bool prev_b_ = false;
   std::int64_t frame_ = 0;
 };
 

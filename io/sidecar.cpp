@@ -19,6 +19,7 @@ ordered interpolation_json(const effects::InterpolationSettings& s) {
   // The extension is written only when it differs from the default, so files that do not use
   // it stay plain format 1 for readers that do not know it.
   if (s.distance == effects::AngularDistance::Geodesic) j["distance"] = "geodesic";
+  if (s.outside == effects::TimeOutside::Extrapolate) j["outside_span"] = "extrapolate";
   return j;
 }
 
@@ -97,6 +98,13 @@ std::string format_sidecar(const Sidecar& sidecar) { return ordered_document(sid
 
 void write_sidecar(const std::filesystem::path& path, const Sidecar& sidecar) {
   write_file_atomic(path, format_sidecar(sidecar));
+}
+
+Sidecar new_sidecar(VideoInfo video) {
+  Sidecar s;
+  s.video = std::move(video);
+  s.interpolation.time_scale = effects::kAuthorTimeScale;
+  return s;
 }
 
 }  // namespace vdfx::io

@@ -31,6 +31,10 @@ struct Sidecar {
   bool operator==(const Sidecar&) const = default;
 };
 
+/// A new, empty sidecar for a video, as vdfx starts one: the author's time scale
+/// (effects::kAuthorTimeScale, docs/interpolation.md "Time") instead of the paper's c = 1.
+Sidecar new_sidecar(VideoInfo video);
+
 inline constexpr const char* kSidecarFormat = "vdfx.sidecar";
 inline constexpr int kSidecarVersion = 1;
 

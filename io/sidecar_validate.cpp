@@ -187,7 +187,7 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
                         effects::InterpolationSettings& out) {
   const json* obj = c.object(v, ptr);
   if (!obj) return;
-  c.only_keys(*obj, ptr, {"exponent", "time_scale", "distance"});
+  c.only_keys(*obj, ptr, {"exponent", "time_scale", "distance", "outside_span"});
   if (const json* p = c.member(*obj, ptr, "exponent"))
     if (auto d = c.number(*p, ptr + "/exponent",
                           {effects::kExponentMin, effects::kExponentMax, true, true}))
@@ -202,6 +202,14 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
       if (*s == "chordal") out.distance = effects::AngularDistance::Chordal;
       else if (*s == "geodesic") out.distance = effects::AngularDistance::Geodesic;
       else c.error(ptr + "/distance", "unknown distance \"" + *s + "\" (expected chordal or geodesic)");
+    }
+  }
+  // Extension of format 1: optional, hold when absent (docs/sidecar.md).
+  if (const json* p = c.member(*obj, ptr, "outside_span", /*required=*/false)) {
+    if (auto s = c.string(*p, ptr + "/outside_span")) {
+      if (*s == "hold") out.outside = effects::TimeOutside::Hold;
+      else if (*s == "extrapolate") out.outside = effects::TimeOutside::Extrapolate;
+      else c.error(ptr + "/outside_span", "unknown value \"" + *s + "\" (expected hold or extrapolate)");
     }
   }
 }

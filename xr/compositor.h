@@ -18,17 +18,12 @@
 #include "xr/blur_method.h"
 #include "xr/distortion_gl.h"
 #include "xr/gpu_timer.h"
+#include "xr/mirror.h"
 #include "xr/param_grid.h"
 #include "xr/session.h"
 #include "xr/video_layer.h"
 
 namespace vdfx::xr {
-
-enum class MirrorMode {
-  PreDistorted,    //!< both panels side by side, as the displays show them
-  ThroughTheLens,  //!< both eyes as the wearer sees them (forward lens model applied)
-  SingleEye,       //!< the left eye buffer, undistorted (effects and quads, no lens)
-};
 
 struct CompositorConfig {
   int eye_width = 1440, eye_height = 1600;  //!< per eye, eye buffer and panel
@@ -66,8 +61,16 @@ class Compositor {
   /// Renders one eye (0 left, 1 right). Quads are placed with Session::to_local(head_in_local).
   void render_eye(int eye, const EyeInput& in, std::span<const QuadLayer> quads = {},
                   const Pose& head_in_local = {});
-  /// Draws the mirror into `target` (or the default framebuffer when null), scaled to fit.
+  /// Renders the desktop view (MirrorMode::Desktop): `in.view` is the cyclopean pinhole
+  /// (xr::desktop_view); video and effects are rendered at video_scale of width x height and
+  /// scaled up, then the quads are drawn at the full width x height (sharp panel text), no lens.
+  void render_desktop(const EyeInput& in, int width, int height, double video_scale,
+                      std::span<const QuadLayer> quads = {}, const Pose& head_in_local = {});
+  /// Draws the mirror into `target` (or the default framebuffer when null): the desktop view
+  /// 1:1 (render_desktop at this size), or the eyes fitted as xr::mirror_eye_rect says.
   void draw_mirror(MirrorMode mode, const GlTarget* target, int width, int height);
+  /// The desktop view as last rendered (CV_32FC4 BGRA, upright).
+  cv::Mat read_desktop() const;
 
   /// Undistorted eye buffer (effects and quads), CV_32FC4 BGRA, upright.
   cv::Mat read_eye_buffer(int eye) const;

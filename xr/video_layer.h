@@ -50,7 +50,10 @@ class VideoLayerGl {
   /// Uploads a decoded picture: Y'CbCr planes as they are (converted per sample by render(), see
   /// above), or packed RGB (CV_8UC3 / CV_32FC3, RGB order; channels swapped once on the CPU).
   void set_frame(const io::Picture& picture);
-  /// Draws the layer into `target` (whole viewport) for one eye.
+  /// Draws the layer into `target` (whole viewport) for one eye; before the first set_frame, a
+  /// uniform dark grey (kNoFrameGrey).
+  static constexpr float kNoFrameGrey = 0.08f;
+  bool has_frame() const;
   void render(const GlTarget& target, const RenderView& view, LodMode lod = LodMode::Analytic);
   /// The RGB texture (frames given as cv::Mat or RGB pictures; empty for Y'CbCr pictures).
   const GlTexture& texture() const;

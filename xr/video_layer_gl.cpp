@@ -197,8 +197,14 @@ void VideoLayerGl::set_frame(const io::Picture& pic) {
 
 void VideoLayerGl::render(const GlTarget& target, const RenderView& v, LodMode lod) {
   Impl& m = *impl_;
-  if (!m.ycbcr && !m.texture) throw GlError("VideoLayerGl::render: no frame uploaded");
   target.bind();
+  if (!has_frame()) {
+    // No frame decoded yet (a video still loading): a dark, neutral field instead of a failure,
+    // so the first frames of a window never depend on the decoder's head start.
+    glClearColor(kNoFrameGrey, kNoFrameGrey, kNoFrameGrey, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    return;
+  }
   const GlProgram& p = impl_->program;
   p.use();
   glActiveTexture(GL_TEXTURE0);
@@ -236,5 +242,6 @@ void VideoLayerGl::render(const GlTarget& target, const RenderView& v, LodMode l
 }
 
 const GlTexture& VideoLayerGl::texture() const { return impl_->texture; }
+bool VideoLayerGl::has_frame() const { return impl_->ycbcr || static_cast<bool>(impl_->texture); }
 
 }  // namespace vdfx::xr

@@ -21,10 +21,12 @@ struct FakeTextures : PanelTextures {
     bool whole;
     std::vector<cv::Rect> regions;
   };
-  std::vector<Call> calls;
+  std::vector<Call> calls;        //!< panel uploads (pointer marks are uploaded once, apart)
+  std::vector<std::size_t> marks;  //!< slots of the pointer marks' textures
   std::map<std::size_t, cv::Mat> images;
   unsigned upload(std::size_t slot, const cv::Mat& image, const std::vector<cv::Rect>& regions) override {
-    calls.push_back({slot, regions.empty(), regions});
+    if (slot >= 1000) marks.push_back(slot);
+    else calls.push_back({slot, regions.empty(), regions});
     if (regions.empty()) {
       images[slot] = image.clone();
     } else {
@@ -45,13 +47,14 @@ struct Fixture {
   FakeTextures* fake = new FakeTextures;
   EditorClient client{editor, std::unique_ptr<PanelTextures>(fake)};
   FrameInfo info;
-  void step(const xr::InputState& in) { client.update(in, in.t_ns, info); }
+  xr::ActionSync sync;  //!< the edges InputBackend::poll would add
+  void step(const xr::InputState& in) { client.update(sync.sync(in), in.t_ns, info); }
 };
 
 // What the GL texture must show: the panel, straight alpha, bottom row first.
 cv::Mat expected_texture(ui::Panel& p) {
-  cv::Mat out(p.height_px(), p.width_px(), CV_8UC4);
-  unpremultiply_flipped(p.texture(), {0, 0, p.width_px(), p.height_px()}, out);
+  cv::Mat out(p.texture_height(), p.texture_width(), CV_8UC4);
+  unpremultiply_flipped(p.texture(), {0, 0, p.texture_width(), p.texture_height()}, out);
   return out;
 }
 
@@ -60,9 +63,11 @@ TEST(EditClient, QuadsAtPanelPosesUploadOnlyWhenPanelsRerender) {
   f.step(test::looking(10.0, 5.0, 0));
   const auto q1 = f.client.quads();
   const auto panels = f.editor.panels();
-  ASSERT_EQ(q1.size(), panels.size());
+  // The panels, then the pointer's marks (their textures made once).
+  ASSERT_EQ(q1.size(), panels.size() + f.client.pointer_quads().size());
   ASSERT_EQ(f.fake->calls.size(), panels.size());
-  for (std::size_t i = 0; i < q1.size(); ++i) {
+  EXPECT_EQ(f.fake->marks.size(), 3u);
+  for (std::size_t i = 0; i < panels.size(); ++i) {
     EXPECT_TRUE(f.fake->calls[i].whole);
     EXPECT_EQ(q1[i].space, xr::ReferenceSpace::Local);
     EXPECT_EQ(q1[i].pose, panels[i]->pose());

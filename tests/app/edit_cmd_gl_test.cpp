@@ -1,7 +1,7 @@
 /// @file
 /// @brief `vdfx edit` end to end under Xvfb: a recorded editing session replayed in the window
-/// leaves the same keyframes as `vdfx replay`, and the mirror shows the panels over the effects
-/// (golden screenshot, single-eye mirror at a small size).
+/// leaves the same keyframes as `vdfx replay`, and the window shows the panels over the effects
+/// (golden screenshot of the desktop view at the default window size, compared at half size).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -22,9 +22,8 @@ using testing::run_vdfx;
 const std::string kSrc = VDFX_SOURCE_DIR;
 const std::string kSunrise = "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
 const std::string kRecording = kSrc + "/recordings/editor_place_exposure.vdrec.jsonl";
-// Small and fast: the left eye at 1/4 of 1440x1600 (below vdfx edit's default 0.5: at this
-// window size the two look the same, and 0.25 renders 4x fewer pixels), shown as it is (no lens).
-const std::string kMirror = " --hidden --scale 0.25 --window 360x400 --mirror eye";
+// The desktop view a sim session opens in (the recording's header: 1280 x 720, 100 degrees).
+const std::string kMirror = " --hidden --window 1280x720";
 
 // Golden comparison in the style of tests/ui/golden.h (BGR here): max and mean tolerances on
 // 8-bit values, actual and x8 diff written on failure, VDFX_BLESS=1 rewrites the golden.
@@ -104,7 +103,9 @@ TEST(EditCmdGl, ReplayedSessionWritesTheReplaysKeyframesAndShowsPanels) {
   cv::inRange(a, cv::Scalar(110, 110, 110), cv::Scalar(255, 255, 255), textish);
   EXPECT_GE(cv::countNonZero(textish & (grey > 24)), 20) << "light text pixels on the panels";
 
-  const std::string g = compare_with_golden(a, "edit_mirror_eye", 48.0, 1.5);
+  cv::Mat half;
+  cv::resize(a, half, {a.cols / 2, a.rows / 2}, 0, 0, cv::INTER_AREA);
+  const std::string g = compare_with_golden(half, "edit_desktop_view", 48.0, 1.5);
   EXPECT_TRUE(g.empty()) << g;
 }
 

@@ -155,22 +155,23 @@ TEST(EditorPreview, HeadTurnsWhilePlacingAndGrabbingMatchAFreshSolve) {
       EXPECT_NEAR(ed.params_for_view(d, 30).exposure_stops, std::clamp(fresh.evaluate(d, 30)[0], -8.0, 8.0), 1e-9);
   };
   std::int64_t t = 0;
+  xr::ActionSync sync;  // the edges InputBackend::poll would add
   for (int step = 0; step < 6; ++step) {  // trigger held: preview a new keyframe
     t += 33'333'333;
     auto in = test::looking(20.0 + 4.0 * step, 2.0 * step, t);
     in.right.trigger = 1.0;
-    ed.update(in, t);
+    ed.update(sync.sync(in), t);
     ASSERT_TRUE(ed.previewing());
     expect_fresh(ed.document().keyframes(EffectType::Exposure), {ed.view_direction(), 30, {2.0}}, std::nullopt);
   }
   t += 33'333'333;
-  ed.update(test::looking(40.0, 10.0, t), t);  // release: placed
+  ed.update(sync.sync(test::looking(40.0, 10.0, t)), t);  // release: placed
   ASSERT_FALSE(ed.previewing());
   for (int step = 0; step < 6; ++step) {  // squeeze held: grab the nearest (the one just placed)
     t += 33'333'333;
     auto in = test::looking(40.0 - 5.0 * step, 10.0 - step, t);
     in.right.squeeze = 1.0;
-    ed.update(in, t);
+    ed.update(sync.sync(in), t);
     ASSERT_TRUE(ed.grabbing());
     expect_fresh(ed.document().keyframes(EffectType::Exposure), *ed.selected_preview(), ed.selected_keyframe());
   }
