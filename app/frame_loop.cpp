@@ -130,9 +130,7 @@ struct FrameLoop::Impl {
   /// Uploads the shown frame as it is decoded.
   void upload(FrameLoopStats& stats) {
     const auto t0 = Clock::now();
-    cv::Mat bgr;
-    cv::cvtColor(shown->image, bgr, cv::COLOR_RGB2BGR);
-    compositor->set_video_frame(bgr);
+    compositor->set_video_frame(shown->picture);  // as decoded: the GPU converts Y'CbCr
     stats.add_cpu("upload", ms_since(t0));
     uploaded_any = true;
   }

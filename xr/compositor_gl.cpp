@@ -145,6 +145,7 @@ Compositor::~Compositor() {
 }
 
 void Compositor::set_video_frame(const cv::Mat& equirect) { impl_->video.set_frame(equirect); }
+void Compositor::set_video_frame(const io::Picture& picture) { impl_->video.set_frame(picture); }
 void Compositor::set_param_grid(const ParamGrid& grid) { impl_->stack.set_param_grid(grid); }
 
 void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLayer> quads,
