@@ -16,6 +16,7 @@
 #include "effects/coords.h"
 #include "effects/effect_types.h"
 #include "effects/flare_layout.h"
+#include "io/picture.h"
 #include "xr/actions.h"
 #include "xr/input_events.h"
 #include "xr/session.h"
@@ -62,12 +63,12 @@ class FrameClient {
   /// per-pixel bake is redone when it or the shown frame changes.
   virtual std::uint64_t params_revision() const { return 0; }
   /// This frame's flares for the head pose (LOCAL) at a video frame, computed once and drawn
-  /// into both eyes after the effects (docs/flare.md). `frame_rgb` is that video frame (RGB,
-  /// empty while none is decoded), for lights found in the video.
+  /// into both eyes after the effects (docs/flare.md). `picture` is that video frame as decoded
+  /// (null while none is), for lights found in the video (converted only then: io::to_rgb).
   virtual std::vector<effects::FlareLayout> flares(const xr::Pose& head_in_local,
                                                    std::int64_t video_frame,
-                                                   const cv::Mat& frame_rgb) {
-    (void)head_in_local, (void)video_frame, (void)frame_rgb;
+                                                   const io::Picture* picture) {
+    (void)head_in_local, (void)video_frame, (void)picture;
     return {};
   }
   /// UI panels, composited after the effects (never blurred or tinted).

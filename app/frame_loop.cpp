@@ -296,7 +296,7 @@ struct FrameLoop::Impl {
       const auto flares_t0 = Clock::now();
       flare->set_layouts(client.unaltered() ? std::vector<effects::FlareLayout>{}
                                             : client.flares(in.head, param_frame,
-                                                            shown ? shown->image : cv::Mat()));
+                                                            shown ? &shown->picture : nullptr));
       stats.add_cpu("flares", ms_since(flares_t0));
       const std::array<xr::EyeLayer*, 1> layers{flare.get()};
 

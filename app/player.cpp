@@ -2,6 +2,8 @@
 /// @brief Player: playhead, keys, and the sidecar's interpolated effects.
 #include "app/player.h"
 
+#include "io/ycbcr.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -94,9 +96,13 @@ effects::StackParams Player::params(const effects::Direction& direction, std::in
 }
 
 std::vector<effects::FlareLayout> Player::flares(const xr::Pose& head, std::int64_t frame,
-                                                 const cv::Mat& frame_rgb) {
+                                                 const io::Picture* picture) {
   if (flares_.empty()) return {};
-  if (flares_.uses_auto_light() && !frame_rgb.empty()) flares_.observe(frame, frame_rgb);
+  // An auto light looks at each video frame once (converted to RGB on the CPU only then).
+  if (flares_.uses_auto_light() && picture && frame != observed_frame_) {
+    flares_.observe(frame, io::to_rgb(*picture, io::PixelFormat::RgbF32));
+    observed_frame_ = frame;
+  }
   return flares_.layouts({xr::position_of(head), xr::rotation_of(head)}, frame);
 }
 

@@ -36,7 +36,7 @@ class Player : public FrameClient {
   void update(const xr::InputState& input, std::int64_t display_time_ns, FrameInfo& info) override;
   effects::StackParams params(const effects::Direction& direction, std::int64_t frame) override;
   std::vector<effects::FlareLayout> flares(const xr::Pose& head_in_local, std::int64_t frame,
-                                           const cv::Mat& frame_rgb) override;
+                                           const io::Picture* picture) override;
   unsigned active_effects() const override { return active_; }
   bool unaltered() const override { return unaltered_key_ || unaltered_button_ || forced_unaltered_; }
   ParamMode param_mode() const override { return mode_; }
@@ -55,6 +55,7 @@ class Player : public FrameClient {
   void apply_key(xr::Key key, std::int64_t t_ns);
   effects::StackInterpolator interp_;
   effects::FlareSet flares_;
+  std::int64_t observed_frame_ = -1;  //!< the video frame the auto lights last looked at
   unsigned active_ = 0;
   Playhead playhead_;
   PlayerOptions options_;
