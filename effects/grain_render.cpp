@@ -1,0 +1,85 @@
+/// @file
+/// @brief The shader grain styles on the CPU, operation for operation as the GLSL.
+#include "effects/grain_render.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace vdfx::effects {
+
+ShaderGrainUniforms shader_grain_uniforms(const GrainFrame& f, const Eigen::Matrix3d& eye_rot,
+                                          const Eigen::Vector3d& eye_pos, const TanRect& fov) {
+  ShaderGrainUniforms u;
+  u.style = f.style == GrainStyle::Headset ? 0 : 1;
+  // The grain frame: the head's axes for the head-anchored plane, LOCAL's for the sphere; its
+  // origin is the head position either way.
+  const Eigen::Matrix3d to_grain = f.style == GrainStyle::Headset
+                                       ? Eigen::Matrix3d(f.head.orientation.transpose())
+                                       : Eigen::Matrix3d::Identity().eval();
+  u.eye_to_grain = (to_grain * eye_rot).cast<float>();
+  u.eye = (to_grain * (eye_pos - f.head.position)).cast<float>();
+  u.distance = static_cast<float>(f.distance_m);
+  u.inv_cell = static_cast<float>(1.0 / f.cell_m);
+  u.offset1 = f.noise_offset[0].cast<float>();
+  u.offset2 = f.noise_offset[1].cast<float>();
+  u.gain = static_cast<float>(f.params.intensity * kGrainGain);
+  u.tangents = {static_cast<float>(fov.left), static_cast<float>(fov.right),
+                static_cast<float>(fov.down), static_cast<float>(fov.up)};
+  if (f.noise)
+    for (std::size_t i = 0; i < 256; ++i) u.perm[i] = f.noise->permutation()[i];
+  return u;
+}
+
+Eigen::Vector4f shader_grain_fragment(const ShaderGrainUniforms& u, const PerlinNoise& noise,
+                                      float frag_x, float frag_y, int width, int height) {
+  const auto& t = u.tangents;
+  const float tx = t[0] + (frag_x / static_cast<float>(width)) * (t[1] - t[0]);
+  const float ty = t[2] + (frag_y / static_cast<float>(height)) * (t[3] - t[2]);
+  const Eigen::Matrix3f& m = u.eye_to_grain;
+  Eigen::Vector3f d = m.col(0) * tx + m.col(1) * ty - m.col(2);
+  d = d * (1.0f / std::sqrt(d.dot(d)));
+  const Eigen::Vector3f& e = u.eye;
+  Eigen::Vector3f lattice;
+  if (u.style == 0) {
+    if (!(d.z() < 0.0f)) return Eigen::Vector4f::Zero();  // the plane is not ahead
+    const float s = (-u.distance - e.z()) / d.z();
+    const Eigen::Vector3f q = e + d * s;
+    lattice = Eigen::Vector3f(q.x() * u.inv_cell, q.y() * u.inv_cell, 0.0f);
+  } else {
+    const float b = d.dot(e), c = e.dot(e) - u.distance * u.distance;
+    const float disc = b * b - c;
+    if (!(disc >= 0.0f)) return Eigen::Vector4f::Zero();  // the eye is outside and misses it
+    const float s = -b + std::sqrt(disc);
+    lattice = (e + d * s) * u.inv_cell;
+  }
+  const Eigen::Vector3f p1 = lattice + u.offset1;
+  const Eigen::Vector3f p2 = lattice * 2.0f + u.offset2;
+  const float g = noise(p1.x(), p1.y(), p1.z()) + u.octave2 * noise(p2.x(), p2.y(), p2.z());
+  const float alpha = std::min(1.0f, u.gain * std::abs(g));
+  const float v = g > 0.0f ? alpha : 0.0f;
+  return {v, v, v, alpha};
+}
+
+void composite_shader_grain(cv::Mat& image, const GrainFrame& f, const Eigen::Matrix3d& eye_rot,
+                            const Eigen::Vector3d& eye_pos, const TanRect& fov) {
+  if (is_volumetric(f.style) || !f.noise)
+    throw std::invalid_argument("composite_shader_grain: " + std::string(grain_style_name(f.style)) +
+                                " has no CPU reference (volumetric grain renders on the GPU)");
+  if (image.type() != CV_32FC3) throw std::invalid_argument("composite_shader_grain: CV_32FC3 expected");
+  const ShaderGrainUniforms u = shader_grain_uniforms(f, eye_rot, eye_pos, fov);
+  const int w = image.cols, h = image.rows;
+  cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& rows) {
+    for (int j = rows.start; j < rows.end; ++j) {
+      auto* row = image.ptr<cv::Vec3f>(j);
+      // GL's fragment y grows upwards from the bottom edge; image row 0 is the top.
+      const float fy = static_cast<float>(h - j) - 0.5f;
+      for (int i = 0; i < w; ++i) {
+        const Eigen::Vector4f g =
+            shader_grain_fragment(u, *f.noise, static_cast<float>(i) + 0.5f, fy, w, h);
+        for (int c = 0; c < 3; ++c) row[i][c] = g[c] + row[i][c] * (1.0f - g[3]);
+      }
+    }
+  });
+}
+
+}  // namespace vdfx::effects
