@@ -4,6 +4,7 @@
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/sidecar_flare.h"
 #include "io/sidecar_validate.h"
 
 namespace vdfx::io {
@@ -53,11 +54,16 @@ ordered ordered_document(const Sidecar& s) {
     e["keyframes"] = std::move(kfs);
     effects_json.push_back(std::move(e));
   }
+  for (const effects::FlareEffect& f : s.flares) effects_json.push_back(flare_to_json(f));
   doc["effects"] = std::move(effects_json);
   return doc;
 }
 
 }  // namespace
+
+nlohmann::ordered_json interpolation_to_json(const effects::InterpolationSettings& s) {
+  return interpolation_json(s);
+}
 
 nlohmann::ordered_json params_to_json(effects::EffectType type, std::span<const double> values) {
   const effects::EffectSpec& spec = effects::effect_spec(type);

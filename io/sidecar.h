@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "effects/flare.h"
 #include "effects/keyframe.h"
 
 namespace vdfx::io {
@@ -28,6 +29,9 @@ struct Sidecar {
   VideoInfo video;
   effects::InterpolationSettings interpolation;  //!< the file's default
   std::vector<effects::EffectTrack> effects;     //!< in file order; each type at most once
+  /// "type": "flare" entries of "effects", in file order (any number; written after the stack
+  /// effects: a flare is drawn after the whole stack whatever its place in the file).
+  std::vector<effects::FlareEffect> flares;
   bool operator==(const Sidecar&) const = default;
 };
 
@@ -45,6 +49,9 @@ nlohmann::json to_json(const Sidecar& sidecar);
 /// One effect's flat parameter vector as the sidecar's "params" object ({"stops": 1.0},
 /// {"gain": [r, g, b]}, ...), in the effect spec's order.
 nlohmann::ordered_json params_to_json(effects::EffectType type, std::span<const double> values);
+
+/// An "interpolation" object (the file's default or an effect's override).
+nlohmann::ordered_json interpolation_to_json(const effects::InterpolationSettings& settings);
 
 /// The text write_sidecar() writes: 2-space indented JSON in the contract's key order, shortest
 /// round-trip doubles, a final newline. write -> read -> write gives identical bytes.

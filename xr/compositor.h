@@ -1,9 +1,10 @@
 /// @file
-/// @brief The simulated headset's compositor: per eye, video layer -> effect stack -> quad layers
-/// -> lens pre-distortion -> panel; mirror modes; offscreen readback.
+/// @brief The simulated headset's compositor: per eye, video layer -> effect stack -> world-space
+/// layers (flare, grain: xr/eye_layer.h) -> quad layers -> lens pre-distortion -> panel; mirror
+/// modes; offscreen readback.
 ///
-/// Effects see only the video (and, later, flare/grain layers); UI quads are composited after
-/// them, so a panel is never blurred or vignetted. Everything renders into textures; the mirror
+/// Effects see only the video; the world-space layers and then the UI quads are composited after
+/// them, so a panel is never blurred, vignetted or flared. Everything renders into textures; the mirror
 /// window (or a test) reads them. The eye buffers are float (RGBA16F by default): no 8-bit
 /// rounding happens before the panel.
 #pragma once
@@ -17,6 +18,7 @@
 #include "effects/effect_types.h"
 #include "xr/blur_method.h"
 #include "xr/distortion_gl.h"
+#include "xr/eye_layer.h"
 #include "xr/gpu_timer.h"
 #include "xr/param_grid.h"
 #include "xr/session.h"
@@ -50,6 +52,9 @@ struct EyeInput {
   /// Per-pixel mode: every pixel's parameters come from the grid given to
   /// Compositor::set_param_grid, looked up along its own view ray (`params` is then unused).
   bool per_pixel = false;
+  /// World-space layers drawn over the effects and under the quads, in this order (flare, then
+  /// grain); each already holds this frame's content.
+  std::span<EyeLayer* const> layers = {};
 };
 
 class Compositor {
@@ -92,6 +97,8 @@ struct GpuViewOptions {
   /// Per-pixel mode when set: every pixel's parameters from this grid along its own ray (the
   /// `params` argument is then unused; `active_effects` still selects the compiled effects).
   const ParamGrid* param_grid = nullptr;
+  /// World-space layers (flare, grain) drawn after the effects, as EyeInput::layers.
+  std::span<EyeLayer* const> layers = {};
 };
 
 /// One offscreen view for `vdfx render --gpu` (and tests): video layer -> effects ->

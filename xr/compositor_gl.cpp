@@ -32,20 +32,6 @@ uniform sampler2D u_tex;
 void main() { frag = texture(u_tex, v_uv); }
 )";
 
-// OpenXR-style asymmetric projection from tangents (near n, far f), column-major.
-Eigen::Matrix4d projection(const RenderView& v, double n, double f) {
-  Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
-  const double w = v.tan_right - v.tan_left, h = v.tan_up - v.tan_down;
-  p(0, 0) = 2.0 / w;
-  p(0, 2) = (v.tan_right + v.tan_left) / w;
-  p(1, 1) = 2.0 / h;
-  p(1, 2) = (v.tan_up + v.tan_down) / h;
-  p(2, 2) = -(f + n) / (f - n);
-  p(2, 3) = -2.0 * f * n / (f - n);
-  p(3, 2) = -1.0;
-  return p;
-}
-
 }  // namespace
 
 struct Compositor::Impl {
@@ -118,7 +104,13 @@ void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLay
     m.stack.apply(m.video_out[eye].texture(), m.eye_buffer[eye], in.params, in.active_effects,
                   in.view, margin);
   if (t) m.timer.stop();
-  // Flare and grain layers will go here (after effects, before UI).
+  // World-space layers (flare, then grain): after the effects, before the UI quads.
+  for (EyeLayer* layer : in.layers) {
+    if (t) m.timer.start(tag + layer->name());
+    m.eye_buffer[eye].bind();
+    layer->draw(in.view, eye, w, h);
+    if (t) m.timer.stop();
+  }
   if (!quads.empty()) {
     if (t) m.timer.start(tag + "quads");
     m.eye_buffer[eye].bind();
@@ -128,10 +120,8 @@ void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLay
     glBindVertexArray(m.vao);
     glActiveTexture(GL_TEXTURE0);
     glUniform1i(m.quad_program.uniform("u_tex"), 0);
-    const Eigen::Matrix4d proj = projection(in.view, 0.05, 100.0);
-    Eigen::Matrix4d view = Eigen::Matrix4d::Identity();
-    view.topLeftCorner<3, 3>() = in.view.orientation.transpose();
-    view.topRightCorner<3, 1>() = -in.view.orientation.transpose() * in.view.position;
+    const Eigen::Matrix4d proj = in.view.projection(0.05, 100.0);
+    const Eigen::Matrix4d view = in.view.world_to_eye();
     for (const QuadLayer& q : quads) {
       if (!q.texture) continue;
       const Pose p = Session::to_local(q.pose, q.space, head_in_local);
@@ -206,7 +196,7 @@ cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int wid
   Compositor comp(c);
   comp.set_video_frame(equirect);
   if (o.param_grid) comp.set_param_grid(*o.param_grid);
-  comp.render_eye(0, {view, params, active_effects, o.param_grid != nullptr});
+  comp.render_eye(0, {view, params, active_effects, o.param_grid != nullptr, o.layers});
   return to_bgr8(comp.read_panel(0));
 }
 
