@@ -63,8 +63,8 @@ bool grain_style_has_setting(GrainStyle style, GrainSetting id) {
   return false;
 }
 
-double GrainSettings::get(GrainSetting id) const {
-  return raw(id).value_or(grain_setting_spec(id).default_value);
+GrainSettings::GrainSettings() {
+  for (const GrainSettingSpec& s : grain_setting_specs()) set(s.id, s.default_value);
 }
 
 const std::vector<ParamSpec>& grain_param_specs() {

@@ -60,15 +60,13 @@ const GrainSettingSpec& grain_setting_spec(GrainSetting id);
 std::span<const GrainSetting> grain_style_settings(GrainStyle style);
 bool grain_style_has_setting(GrainStyle style, GrainSetting id);
 
-/// Settings as written in the file: absent ones take their defaults (get()); the writer writes
-/// back exactly the ones present, so files round-trip byte for byte.
+/// The settings of one grain effect, every one at its default until set. The reader fills in
+/// what the file gives; the writer writes the style's own settings, all of them.
 struct GrainSettings {
-  std::array<std::optional<double>, kGrainSettingCount> values{};
-  double get(GrainSetting id) const;
+  GrainSettings();
+  std::array<double, kGrainSettingCount> values{};
+  double get(GrainSetting id) const { return values[static_cast<std::size_t>(id)]; }
   void set(GrainSetting id, double v) { values[static_cast<std::size_t>(id)] = v; }
-  const std::optional<double>& raw(GrainSetting id) const {
-    return values[static_cast<std::size_t>(id)];
-  }
   bool operator==(const GrainSettings&) const = default;
 };
 
