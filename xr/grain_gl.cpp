@@ -19,72 +19,26 @@ namespace {
 constexpr int kFloatsPerParticle = 12;  // centre 3, extent 3, rotation 4, shade 2
 constexpr double kNearM = 0.01;
 
-/// Grain frame (LOCAL axes, origin at the head) -> clip for one eye: OpenXR projection from the
-/// eye's tangents with an infinite far plane (the surrounding volume reaches kilometres).
-Eigen::Matrix4f view_projection(const RenderView& v, const Eigen::Vector3d& eye_in_grain) {
-  Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
-  const double w = v.tan_right - v.tan_left, h = v.tan_up - v.tan_down;
-  p(0, 0) = 2.0 / w;
-  p(0, 2) = (v.tan_right + v.tan_left) / w;
-  p(1, 1) = 2.0 / h;
-  p(1, 2) = (v.tan_up + v.tan_down) / h;
-  p(2, 2) = -1.0;
-  p(2, 3) = -2.0 * kNearM;
-  p(3, 2) = -1.0;
-  Eigen::Matrix4d view = Eigen::Matrix4d::Identity();
-  view.topLeftCorner<3, 3>() = v.orientation.transpose();
-  view.topRightCorner<3, 1>() = -v.orientation.transpose() * eye_in_grain;
-  return (p * view).cast<float>();
-}
+struct Buffers {
+  unsigned vao = 0, vbo = 0;
+  std::shared_ptr<const effects::ParticleSet> uploaded;  //!< held, so its identity stays unique
+  std::int64_t count = 0;
+};
 
-class GrainLayerGlImpl final : public GrainLayerGl {
- public:
-  GrainLayerGlImpl() {
-    shader_ = GlProgram::build("grain_shader", fullscreen_vertex_source(),
-                               effects::grain_shader_fragment_source());
-    particles_ = GlProgram::build("grain_particles", effects::grain_particle_vertex_source(),
-                                  effects::grain_particle_fragment_source());
-    glGenVertexArrays(1, &empty_vao_);
-    check_gl("GrainLayerGl::create");
-  }
-  ~GrainLayerGlImpl() override {
-    for (auto& [_, b] : buffers_) {
-      glDeleteBuffers(1, &b.vbo);
-      glDeleteVertexArrays(1, &b.vao);
-    }
-    if (empty_vao_) glDeleteVertexArrays(1, &empty_vao_);
-  }
+}  // namespace
 
-  void render(const GlTarget& target, const RenderView& view,
-              std::span<const effects::GrainFrame> layers) override {
-    if (layers.empty()) return;
-    target.bind();
-    glEnable(GL_BLEND);
-    // Premultiplied over on colour; the eye buffer's alpha is left as it was.
-    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    for (const effects::GrainFrame& f : layers) {
-      if (!(f.params.intensity > 0.0)) continue;
-      if (effects::is_volumetric(f.style)) draw_particles(target, view, f);
-      else draw_shader(target, view, f);
-    }
-    glDisable(GL_BLEND);
-    glBindVertexArray(0);
-  }
+struct GrainGl::Impl {
+  GlProgram shader, particles;
+  unsigned empty_vao = 0;
+  std::map<std::size_t, Buffers> buffers;  //!< per grain effect (GrainFrame::effect)
+  std::vector<effects::GrainFrame> layers;
+  GrainLayerStats stats;
 
-  GrainLayerStats stats() const override { return stats_; }
-
- private:
-  struct Buffers {
-    unsigned vao = 0, vbo = 0;
-    const effects::ParticleSet* uploaded = nullptr;
-    std::int64_t count = 0;
-  };
-
-  void draw_shader(const GlTarget& target, const RenderView& view, const effects::GrainFrame& f) {
+  void draw_shader(const RenderView& view, int width, int height, const effects::GrainFrame& f) {
     const effects::ShaderGrainUniforms u =
         effects::shader_grain_uniforms(f, view.orientation, view.position, view.tangents());
-    shader_.use();
-    const auto loc = [&](const char* n) { return shader_.uniform(n); };
+    shader.use();
+    const auto loc = [&](const char* n) { return shader.uniform(n); };
     glUniform4iv(loc("u_perm"), 64, u.perm.data());
     glUniform1i(loc("u_style"), u.style);
     glUniformMatrix3fv(loc("u_eye_to_grain"), 1, GL_FALSE, u.eye_to_grain.data());
@@ -96,15 +50,14 @@ class GrainLayerGlImpl final : public GrainLayerGl {
     glUniform1f(loc("u_octave2"), u.octave2);
     glUniform1f(loc("u_gain"), u.gain);
     glUniform4f(loc("u_tan"), u.tangents[0], u.tangents[1], u.tangents[2], u.tangents[3]);
-    glUniform2f(loc("u_viewport"), static_cast<float>(target.width()),
-                static_cast<float>(target.height()));
-    glBindVertexArray(empty_vao_);
+    glUniform2f(loc("u_viewport"), static_cast<float>(width), static_cast<float>(height));
+    glBindVertexArray(empty_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    ++stats_.shader_draws;
+    ++stats.shader_draws;
   }
 
   Buffers& upload(const effects::GrainFrame& f) {
-    Buffers& b = buffers_[f.effect];
+    Buffers& b = buffers[f.effect];
     if (!b.vao) {
       glGenVertexArrays(1, &b.vao);
       glGenBuffers(1, &b.vbo);
@@ -121,7 +74,7 @@ class GrainLayerGlImpl final : public GrainLayerGl {
         offset += static_cast<std::size_t>(sizes[a]);
       }
     }
-    if (b.uploaded != f.particles.get()) {
+    if (b.uploaded != f.particles) {
       const auto& ps = f.particles->particles;
       std::vector<float> data;
       data.reserve(ps.size() * kFloatsPerParticle);
@@ -135,29 +88,30 @@ class GrainLayerGlImpl final : public GrainLayerGl {
       glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
       glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)),
                    data.data(), GL_STREAM_DRAW);
-      b.uploaded = f.particles.get();
+      b.uploaded = f.particles;
       b.count = static_cast<std::int64_t>(ps.size());
-      held_[f.effect] = f.particles;  // keeps the pointer's identity meaningful
-      ++stats_.particle_uploads;
+      ++stats.particle_uploads;
     }
     return b;
   }
 
-  void draw_particles(const GlTarget& target, const RenderView& view,
-                      const effects::GrainFrame& f) {
+  void draw_particles(const RenderView& view, int width, int height, const effects::GrainFrame& f) {
     if (!f.particles || f.particles->particles.empty()) return;
     Buffers& b = upload(f);
-    const Eigen::Vector3d eye = view.position - f.head.position;
-    const Eigen::Matrix4f vp = view_projection(view, eye);
-    const Eigen::Vector3f eye_f = eye.cast<float>();
+    // Positions are relative to the head: the eye at (view.position - head) sees them, with an
+    // infinite far plane (the surrounding volume reaches kilometres).
+    RenderView local = view;
+    local.position = view.position - f.head.position;
+    const Eigen::Matrix4f vp = (local.projection(kNearM, 0.0) * local.world_to_eye()).cast<float>();
+    const Eigen::Vector3f eye = local.position.cast<float>();
     const Eigen::Vector3f up = view.orientation.col(1).cast<float>();
     const Eigen::Vector3f right = view.orientation.col(0).cast<float>();
-    const double px_per_tan = std::min(target.width() / (view.tan_right - view.tan_left),
-                                       target.height() / (view.tan_up - view.tan_down));
-    particles_.use();
-    const auto loc = [&](const char* n) { return particles_.uniform(n); };
+    const double px_per_tan = std::min(width / (view.tan_right - view.tan_left),
+                                       height / (view.tan_up - view.tan_down));
+    particles.use();
+    const auto loc = [&](const char* n) { return particles.uniform(n); };
     glUniformMatrix4fv(loc("u_view_proj"), 1, GL_FALSE, vp.data());
-    glUniform3fv(loc("u_eye"), 1, eye_f.data());
+    glUniform3fv(loc("u_eye"), 1, eye.data());
     glUniform3fv(loc("u_eye_up"), 1, up.data());
     glUniform3fv(loc("u_eye_right"), 1, right.data());
     glUniform1f(loc("u_size"), static_cast<float>(f.params.size));
@@ -168,18 +122,45 @@ class GrainLayerGlImpl final : public GrainLayerGl {
     glUniform1f(loc("u_min_radius_px"), static_cast<float>(effects::kParticleMinRadiusPx));
     glBindVertexArray(b.vao);
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(b.count));
-    ++stats_.particle_draws;
+    ++stats.particle_draws;
   }
-
-  GlProgram shader_, particles_;
-  unsigned empty_vao_ = 0;
-  std::map<std::size_t, Buffers> buffers_;
-  std::map<std::size_t, std::shared_ptr<const effects::ParticleSet>> held_;
-  GrainLayerStats stats_;
 };
 
-}  // namespace
+GrainGl::GrainGl() : impl_(std::make_unique<Impl>()) {
+  impl_->shader = GlProgram::build("grain_shader", fullscreen_vertex_source(),
+                                   effects::grain_shader_fragment_source());
+  impl_->particles = GlProgram::build("grain_particles", effects::grain_particle_vertex_source(),
+                                      effects::grain_particle_fragment_source());
+  glGenVertexArrays(1, &impl_->empty_vao);
+  check_gl("GrainGl");
+}
 
-std::unique_ptr<GrainLayerGl> GrainLayerGl::create() { return std::make_unique<GrainLayerGlImpl>(); }
+GrainGl::~GrainGl() {
+  if (!impl_) return;
+  for (auto& [_, b] : impl_->buffers) {
+    glDeleteBuffers(1, &b.vbo);
+    glDeleteVertexArrays(1, &b.vao);
+  }
+  if (impl_->empty_vao) glDeleteVertexArrays(1, &impl_->empty_vao);
+}
+
+void GrainGl::set_layers(std::vector<effects::GrainFrame> layers) { impl_->layers = std::move(layers); }
+const std::vector<effects::GrainFrame>& GrainGl::layers() const { return impl_->layers; }
+GrainLayerStats GrainGl::stats() const { return impl_->stats; }
+
+void GrainGl::draw(const RenderView& view, int /*eye*/, int width, int height) {
+  Impl& m = *impl_;
+  if (m.layers.empty()) return;
+  glEnable(GL_BLEND);
+  // Premultiplied over on colour; the eye buffer's alpha is left as it was.
+  glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+  for (const effects::GrainFrame& f : m.layers) {
+    if (!(f.params.intensity > 0.0)) continue;
+    if (effects::is_volumetric(f.style)) m.draw_particles(view, width, height, f);
+    else m.draw_shader(view, width, height, f);
+  }
+  glDisable(GL_BLEND);
+  glBindVertexArray(0);
+}
 
 }  // namespace vdfx::xr

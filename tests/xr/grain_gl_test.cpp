@@ -8,6 +8,7 @@
 
 #include "effects/grain_render.h"
 #include "gl_test_support.h"
+#include "xr/gl_texture.h"
 #include "xr/grain_gl.h"
 
 namespace vdfx::xr {
@@ -52,11 +53,14 @@ cv::Mat background() {
   return out;
 }
 
-cv::Mat gpu_render(GrainLayerGl& g, const cv::Mat& bg, const RenderView& v,
+/// Draws the layers over `bg` as the compositor does: the eye buffer bound, then the layer.
+cv::Mat gpu_render(GrainGl& g, const cv::Mat& bg, const RenderView& v,
                    const std::vector<effects::GrainFrame>& layers) {
   GlTarget t(kW, kH, TexFormat::RGBA32F);
   t.texture().upload(bg);
-  g.render(t, v, layers);
+  g.set_layers(layers);
+  t.bind();
+  g.draw(v, 0, kW, kH);
   return test::bgr_clamped(t.read_float());
 }
 
@@ -70,7 +74,7 @@ cv::Mat cpu_render(const cv::Mat& bg, const RenderView& v, const effects::GrainF
 class GrainGlTest : public GlTest {};
 
 TEST_F(GrainGlTest, ShaderStylesMatchTheCppReferenceWithinTwoLevels) {
-  auto g = GrainLayerGl::create();
+  auto g = std::make_unique<GrainGl>();
   const cv::Mat bg = background();
   effects::HeadPose head;
   head.position = {0.2, 1.6, -0.3};
@@ -101,7 +105,7 @@ TEST_F(GrainGlTest, ShaderStylesMatchTheCppReferenceWithinTwoLevels) {
 }
 
 TEST_F(GrainGlTest, NoLayersDrawNothing) {
-  auto g = GrainLayerGl::create();
+  auto g = std::make_unique<GrainGl>();
   const cv::Mat bg = background();
   const cv::Mat out = gpu_render(*g, bg, eye_view({}, 0), {});
   EXPECT_EQ(g->stats().shader_draws + g->stats().particle_draws, 0);
@@ -125,7 +129,7 @@ Eigen::Vector2d centroid(const cv::Mat& out, const cv::Mat& bg, const Eigen::Vec
 }
 
 TEST_F(GrainGlTest, ParticlesLandWhereTheirPositionProjectsInEachEye) {
-  auto g = GrainLayerGl::create();
+  auto g = std::make_unique<GrainGl>();
   effects::HeadPose head;
   head.position = {0.0, 1.6, 0.0};
   head.orientation = view_rotation({-20, 5}, 0);
@@ -169,7 +173,7 @@ TEST_F(GrainGlTest, ParticlesLandWhereTheirPositionProjectsInEachEye) {
 }
 
 TEST_F(GrainGlTest, ParticlesUploadOncePerRefreshAndZeroIntensityDrawsNothing) {
-  auto g = GrainLayerGl::create();
+  auto g = std::make_unique<GrainGl>();
   effects::GrainEffect e;
   e.style = effects::GrainStyle::ObjectCloud;
   e.settings.set(effects::GrainSetting::Count, 2000);
