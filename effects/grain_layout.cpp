@@ -40,7 +40,7 @@ GrainParams GrainSet::params(std::size_t i, const Eigen::Vector3d& unit, std::in
 std::vector<GrainFrame> GrainSet::layout(const HeadPose& head, std::int64_t display_time_ns,
                                          std::int64_t video_frame) {
   std::vector<GrainFrame> out;
-  const Eigen::Vector3d forward = -head.orientation.col(2).normalized();
+  const Eigen::Vector3d forward = head.forward().normalized();
   for (std::size_t i = 0; i < effects_.size(); ++i) {
     Entry& en = effects_[i];
     const GrainEffect& e = en.effect;

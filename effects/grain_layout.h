@@ -20,6 +20,7 @@
 #include "effects/grain.h"
 #include "effects/grain_interpolator.h"
 #include "effects/grain_particles.h"
+#include "effects/head_pose.h"
 #include "effects/perlin_noise.h"
 
 namespace vdfx::effects {
@@ -31,13 +32,6 @@ inline constexpr double kGrainCellRad = 0.004;
 inline constexpr double kGrainOctave2Weight = 0.5;
 /// Grain opacity per unit of noise at intensity 1: alpha = min(1, intensity * gain * |noise|).
 inline constexpr double kGrainGain = 2.0;
-
-/// The head (cyclopean) pose in LOCAL space: position in metres, orientation head -> LOCAL
-/// (columns: right, up, back).
-struct HeadPose {
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();
-};
 
 /// One grain layer of one frame (both eyes render it).
 struct GrainFrame {
