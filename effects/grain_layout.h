@@ -30,8 +30,10 @@ namespace vdfx::effects {
 inline constexpr double kGrainCellRad = 0.004;
 /// Second octave: twice the frequency, this weight (finer grains inside the coarse ones).
 inline constexpr double kGrainOctave2Weight = 0.5;
-/// Grain opacity per unit of noise at intensity 1: alpha = min(1, intensity * gain * |noise|).
-inline constexpr double kGrainGain = 2.0;
+/// Shader grain: the noise g becomes the modulation s = max(-1, intensity * kGrainGain * g) and
+/// the eye colour C becomes C + s (C + kGrainFloor) (effects/grain_render.h).
+inline constexpr double kGrainGain = 0.5;
+inline constexpr double kGrainFloor = 0.1;
 
 /// One grain layer of one frame (both eyes render it).
 struct GrainFrame {

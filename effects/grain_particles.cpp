@@ -3,6 +3,7 @@
 #include "effects/grain_particles.h"
 
 #include <cmath>
+#include <opencv2/core.hpp>
 #include <stdexcept>
 
 #include "effects/coords.h"
@@ -75,19 +76,25 @@ ParticleSet sample_grain_particles(GrainStyle style, const GrainSettings& s, std
   out.refresh = refresh;
   const auto count = static_cast<std::size_t>(s.get(GrainSetting::Count));
   out.particles.resize(count);
-  RandomStream rng(random_key(seed, kParticleStream, refresh));
-  for (GrainParticle& p : out.particles) {
-    p.region = style == GrainStyle::ObjectCloud && rng.uniform() >= kObjectShellShare ? 1 : 0;
-    do {
-      p.centre = sample_point(style, s, p.region, rng);
-    } while (grain_region(style, s, p.centre) != p.region);
-    for (int a = 0; a < 3; ++a)
-      p.extent[a] = size * rng.uniform(kParticleMinExtentM, kParticleMaxExtentM);
-    p.rotation = uniform_rotation(rng);
-    p.brightness = rng.uniform();
-    p.opacity = rng.uniform(kMinParticleOpacity, 1.0);
-    ++out.region_count[p.region];
-  }
+  // Counter-based: particle i draws from its own stream, so the set is the same however the work
+  // is split between threads (and a GPU could generate it the same way).
+  const std::uint64_t key = random_key(seed, kParticleStream, refresh);
+  cv::parallel_for_(cv::Range(0, static_cast<int>(count)), [&](const cv::Range& range) {
+    for (int i = range.start; i < range.end; ++i) {
+      GrainParticle& p = out.particles[static_cast<std::size_t>(i)];
+      RandomStream rng(mix64(key ^ static_cast<std::uint64_t>(i)));
+      p.region = style == GrainStyle::ObjectCloud && rng.uniform() >= kObjectShellShare ? 1 : 0;
+      do {
+        p.centre = sample_point(style, s, p.region, rng);
+      } while (grain_region(style, s, p.centre) != p.region);
+      for (int a = 0; a < 3; ++a)
+        p.extent[a] = size * rng.uniform(kParticleMinExtentM, kParticleMaxExtentM);
+      p.rotation = uniform_rotation(rng);
+      p.brightness = rng.uniform();
+      p.opacity = rng.uniform(kMinParticleOpacity, 1.0);
+    }
+  });
+  for (const GrainParticle& p : out.particles) ++out.region_count[p.region];
   return out;
 }
 

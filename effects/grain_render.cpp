@@ -30,7 +30,7 @@ ShaderGrainUniforms shader_grain_uniforms(const GrainFrame& f, const Eigen::Matr
   return u;
 }
 
-Eigen::Vector4f shader_grain_fragment(const ShaderGrainUniforms& u, const PerlinNoise& noise,
+std::optional<float> shader_grain_fragment(const ShaderGrainUniforms& u, const PerlinNoise& noise,
                                       float frag_x, float frag_y, int width, int height) {
   const auto& t = u.tangents;
   const float tx = t[0] + (frag_x / static_cast<float>(width)) * (t[1] - t[0]);
@@ -41,23 +41,21 @@ Eigen::Vector4f shader_grain_fragment(const ShaderGrainUniforms& u, const Perlin
   const Eigen::Vector3f& e = u.eye;
   Eigen::Vector3f lattice;
   if (u.style == 0) {
-    if (!(d.z() < 0.0f)) return Eigen::Vector4f::Zero();  // the plane is not ahead
+    if (!(d.z() < 0.0f)) return std::nullopt;  // the plane is not ahead
     const float s = (-u.distance - e.z()) / d.z();
     const Eigen::Vector3f q = e + d * s;
     lattice = Eigen::Vector3f(q.x() * u.inv_cell, q.y() * u.inv_cell, 0.0f);
   } else {
     const float b = d.dot(e), c = e.dot(e) - u.distance * u.distance;
     const float disc = b * b - c;
-    if (!(disc >= 0.0f)) return Eigen::Vector4f::Zero();  // the eye is outside and misses it
+    if (!(disc >= 0.0f)) return std::nullopt;  // the eye is outside and misses it
     const float s = -b + std::sqrt(disc);
     lattice = (e + d * s) * u.inv_cell;
   }
   const Eigen::Vector3f p1 = lattice + u.offset1;
   const Eigen::Vector3f p2 = lattice * 2.0f + u.offset2;
   const float g = noise(p1.x(), p1.y(), p1.z()) + u.octave2 * noise(p2.x(), p2.y(), p2.z());
-  const float alpha = std::min(1.0f, u.gain * std::abs(g));
-  const float v = g > 0.0f ? alpha : 0.0f;
-  return {v, v, v, alpha};
+  return std::max(-1.0f, u.gain * g);
 }
 
 void composite_shader_grain(cv::Mat& image, const GrainFrame& f, const Eigen::Matrix3d& eye_rot,
@@ -74,9 +72,12 @@ void composite_shader_grain(cv::Mat& image, const GrainFrame& f, const Eigen::Ma
       // GL's fragment y grows upwards from the bottom edge; image row 0 is the top.
       const float fy = static_cast<float>(h - j) - 0.5f;
       for (int i = 0; i < w; ++i) {
-        const Eigen::Vector4f g =
+        const std::optional<float> s =
             shader_grain_fragment(u, *f.noise, static_cast<float>(i) + 0.5f, fy, w, h);
-        for (int c = 0; c < 3; ++c) row[i][c] = g[c] + row[i][c] * (1.0f - g[3]);
+        if (!s) continue;
+        // The blend's operations: src0 + dst * src1.
+        const float add = *s * u.floor, scale = 1.0f + *s;
+        for (int c = 0; c < 3; ++c) row[i][c] = add + row[i][c] * scale;
       }
     }
   });

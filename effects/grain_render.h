@@ -10,14 +10,17 @@
 ///    when the head turns), the far root t = -b + sqrt(b^2 - c) of the eye inside it; noise in
 ///    3-D at q / cell (no seam, no pole pinch).
 /// The grain value g = n(q / cell + o1) + w2 n(2 q / cell + o2) (o the refresh's offsets)
-/// sets a grain's opacity alpha = min(1, intensity * kGrainGain * |g|) and its shade: white
-/// where g > 0, black where g < 0. It is composited "over" the eye image (premultiplied:
-/// out = (v alpha) + C (1 - alpha)), as the GL layer's blending does.
+/// gives the modulation s = max(-1, intensity * kGrainGain * g), and the eye colour C becomes
+/// C' = C + s (C + kGrainFloor) = s kGrainFloor + C (1 + s): grains darken or brighten the
+/// image in proportion to its own value, as density grains in film do (hue kept, strongest in
+/// the light and mid tones), with a small floor so that shadows keep some grain. The GL layer
+/// does the same with dual-source blending (out = src0 + dst src1).
 #pragma once
 
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <opencv2/core.hpp>
 
 #include "effects/grain_layout.h"
@@ -35,6 +38,7 @@ struct ShaderGrainUniforms {
   Eigen::Vector3f offset1 = Eigen::Vector3f::Zero(), offset2 = Eigen::Vector3f::Zero();
   float octave2 = static_cast<float>(kGrainOctave2Weight);
   float gain = 0.0f;                   //!< intensity * kGrainGain
+  float floor = static_cast<float>(kGrainFloor);
   std::array<float, 4> tangents{-1, 1, -1, 1};  //!< left, right, down, up
   std::array<int, 256> perm{};          //!< the permutation of the effect's noise
 };
@@ -43,10 +47,10 @@ struct ShaderGrainUniforms {
 ShaderGrainUniforms shader_grain_uniforms(const GrainFrame& frame, const Eigen::Matrix3d& eye_orientation,
                                           const Eigen::Vector3d& eye_position, const TanRect& fov);
 
-/// The premultiplied grain (v alpha, v alpha, v alpha, alpha) at a fragment position in GL's
-/// convention (x from the left edge, y from the bottom edge, pixel centres at +0.5) of a
-/// width x height eye image.
-Eigen::Vector4f shader_grain_fragment(const ShaderGrainUniforms& u, const PerlinNoise& noise,
+/// The modulation s at a fragment position in GL's convention (x from the left edge, y from the
+/// bottom edge, pixel centres at +0.5) of a width x height eye image; nullopt where the ray
+/// misses the grain surface (nothing is drawn there).
+std::optional<float> shader_grain_fragment(const ShaderGrainUniforms& u, const PerlinNoise& noise,
                                       float frag_x, float frag_y, int width, int height);
 
 /// Composites a shader-style layer onto an upright eye image (CV_32FC3, any channel order).

@@ -54,7 +54,10 @@ uniform float u_octave2;
 uniform float u_gain;
 uniform vec4 u_tan;
 uniform vec2 u_viewport;
-out vec4 frag;
+uniform float u_floor;
+// Dual-source blending (ONE, SRC1_COLOR): out = frag + dst * frag_scale.
+layout(location = 0, index = 0) out vec4 frag;
+layout(location = 0, index = 1) out vec4 frag_scale;
 void main() {
   float tx = u_tan.x + (gl_FragCoord.x / u_viewport.x) * (u_tan.y - u_tan.x);
   float ty = u_tan.z + (gl_FragCoord.y / u_viewport.y) * (u_tan.w - u_tan.z);
@@ -77,9 +80,9 @@ void main() {
   vec3 p1 = lattice + u_offset1;
   vec3 p2 = lattice * 2.0 + u_offset2;
   float g = perlin(p1) + u_octave2 * perlin(p2);
-  float alpha = min(1.0, u_gain * abs(g));
-  float v = g > 0.0 ? alpha : 0.0;
-  frag = vec4(v, v, v, alpha);
+  float s = max(-1.0, u_gain * g);
+  frag = vec4(vec3(s * u_floor), 0.0);
+  frag_scale = vec4(vec3(1.0 + s), 1.0);
 }
 )";
 
@@ -98,6 +101,7 @@ uniform float u_px_per_tan;
 uniform float u_near_start;
 uniform float u_near_end;
 uniform float u_min_radius_px;
+uniform float u_max_radius_rad;
 out vec3 v_point;
 flat out vec3 v_centre;
 flat out vec3 v_semi;
@@ -109,8 +113,12 @@ void main() {
   vec3 to = a_centre - u_eye;
   float dist = length(to);
   float alpha = a_shade.y * u_intensity * smoothstep(u_near_start, u_near_end, dist);
+  // A grain seen larger than u_max_radius_rad (a particle close to the eye) keeps the coverage of
+  // one that size: it fades as (max / radius)^2 instead of showing as a flake.
+  float radius_rad = r / dist;
+  if (radius_rad > u_max_radius_rad) alpha *= (u_max_radius_rad / radius_rad) * (u_max_radius_rad / radius_rad);
   // Coverage-preserving minimum footprint: grow a sub-pixel particle, thin it by the area ratio.
-  float radius_px = r / dist * u_px_per_tan;
+  float radius_px = radius_rad * u_px_per_tan;
   float k = max(1.0, u_min_radius_px / max(radius_px, 1e-9));
   semi *= k;
   r *= k;
@@ -118,7 +126,8 @@ void main() {
   v_centre = a_centre;
   v_semi = semi;
   v_rotation = a_rotation;
-  v_shade = vec2(a_shade.x, alpha);
+  // Modulation amplitude: brightness 0 darkens, 1 brightens, 0.5 leaves the image as it is.
+  v_shade = vec2(2.0 * a_shade.x - 1.0, alpha);
   if (!(alpha > 0.0) || dist <= 1.05 * r) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: nothing drawn
     v_point = a_centre;
@@ -146,7 +155,10 @@ flat in vec3 v_semi;
 flat in vec4 v_rotation;
 flat in vec2 v_shade;
 uniform vec3 u_eye;
-out vec4 frag;
+uniform float u_floor;
+// Dual-source blending (ONE, SRC1_COLOR) as the shader styles: out = frag + dst * frag_scale.
+layout(location = 0, index = 0) out vec4 frag;
+layout(location = 0, index = 1) out vec4 frag_scale;
 // Rotates by the inverse of the unit quaternion q = (x, y, z, w).
 vec3 rotate_inverse(vec4 q, vec3 v) {
   vec3 u = -q.xyz;
@@ -158,8 +170,9 @@ void main() {
   float a = dot(d, d), b = dot(o, d), c = dot(o, o) - 1.0;
   float disc = b * b - a * c;
   if (!(disc > 0.0)) discard;
-  float alpha = v_shade.y * sqrt(disc / a);
-  frag = vec4(vec3(v_shade.x * alpha), alpha);
+  float s = max(-1.0, v_shade.x * v_shade.y * sqrt(disc / a));
+  frag = vec4(vec3(s * u_floor), 0.0);
+  frag_scale = vec4(vec3(1.0 + s), 1.0);
 }
 )";
 

@@ -49,6 +49,7 @@ struct GrainGl::Impl {
     glUniform3fv(loc("u_offset2"), 1, u.offset2.data());
     glUniform1f(loc("u_octave2"), u.octave2);
     glUniform1f(loc("u_gain"), u.gain);
+    glUniform1f(loc("u_floor"), u.floor);
     glUniform4f(loc("u_tan"), u.tangents[0], u.tangents[1], u.tangents[2], u.tangents[3]);
     glUniform2f(loc("u_viewport"), static_cast<float>(width), static_cast<float>(height));
     glBindVertexArray(empty_vao);
@@ -120,6 +121,8 @@ struct GrainGl::Impl {
     glUniform1f(loc("u_near_start"), static_cast<float>(effects::kParticleNearFadeStartM));
     glUniform1f(loc("u_near_end"), static_cast<float>(effects::kParticleNearFadeEndM));
     glUniform1f(loc("u_min_radius_px"), static_cast<float>(effects::kParticleMinRadiusPx));
+    glUniform1f(loc("u_max_radius_rad"), static_cast<float>(effects::kParticleMaxRadiusRad));
+    glUniform1f(loc("u_floor"), static_cast<float>(effects::kGrainFloor));
     glBindVertexArray(b.vao);
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(b.count));
     ++stats.particle_draws;
@@ -152,8 +155,8 @@ void GrainGl::draw(const RenderView& view, int /*eye*/, int width, int height) {
   Impl& m = *impl_;
   if (m.layers.empty()) return;
   glEnable(GL_BLEND);
-  // Premultiplied over on colour; the eye buffer's alpha is left as it was.
-  glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+  // out = src0 + dst * src1 on colour (the grain modulates what is there); alpha is left alone.
+  glBlendFuncSeparate(GL_ONE, GL_SRC1_COLOR, GL_ZERO, GL_ONE);
   for (const effects::GrainFrame& f : m.layers) {
     if (!(f.params.intensity > 0.0)) continue;
     if (effects::is_volumetric(f.style)) m.draw_particles(view, width, height, f);

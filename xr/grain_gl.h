@@ -8,8 +8,9 @@
 /// reference is effects/grain_render.h, from the same uniforms). Volumetric styles
 /// (object_cloud, free_cloud): one instanced camera-facing quad per particle, ray-cast against
 /// the particle's ellipsoid in the fragment shader; a refresh's particles are uploaded once and
-/// drawn by both eyes. Both blend premultiplied "over" (ONE, ONE_MINUS_SRC_ALPHA) and leave the
-/// eye buffer's alpha alone. A frame without layers (every grain at intensity 0) draws nothing.
+/// drawn by both eyes. Both modulate the eye colour C by their grain value s (dual-source
+/// blending ONE, SRC1_COLOR: C becomes s floor + C (1 + s)) and leave the eye buffer's alpha
+/// alone. A frame without layers (every grain at intensity 0) draws nothing.
 #pragma once
 
 #include <cstdint>

@@ -31,11 +31,13 @@ Eigen::Matrix3d yaw(double deg) {
 
 const TanRect kFov{-0.8, 0.7, 0.75, -0.75};
 
-/// Grain alpha at a fractional fragment position of a 200x160 eye.
-Eigen::Vector4f at(const GrainFrame& f, const Eigen::Matrix3d& eye_rot, const Eigen::Vector3d& eye,
-                   double fx, double fy) {
+/// Grain modulation s at a fractional fragment position of a 200x160 eye.
+float at(const GrainFrame& f, const Eigen::Matrix3d& eye_rot, const Eigen::Vector3d& eye,
+         double fx, double fy) {
   const ShaderGrainUniforms u = shader_grain_uniforms(f, eye_rot, eye, kFov);
-  return shader_grain_fragment(u, *f.noise, float(fx), float(fy), 200, 160);
+  const std::optional<float> s = shader_grain_fragment(u, *f.noise, float(fx), float(fy), 200, 160);
+  EXPECT_TRUE(s.has_value());
+  return s.value_or(std::nanf(""));
 }
 
 TEST(GrainRender, HeadsetNoiseIsEvaluatedOnThePlaneAheadOfTheHead) {
@@ -57,9 +59,9 @@ TEST(GrainRender, HeadsetNoiseIsEvaluatedOnThePlaneAheadOfTheHead) {
     const auto n = [&](const Eigen::Vector3d& p) { return (*f.noise)(float(p.x()), float(p.y()), float(p.z())); };
     const double g = n(Eigen::Vector3d(q.x(), q.y(), 0) + f.noise_offset[0]) +
                      0.5 * n(Eigen::Vector3d(2 * q.x(), 2 * q.y(), 0) + f.noise_offset[1]);
-    const Eigen::Vector4f s = at(f, head.orientation, eye, px.x(), px.y());
-    EXPECT_NEAR(s[3], std::min(1.0, 0.4 * kGrainGain * std::abs(g)), 2e-3) << px.transpose();
-    EXPECT_EQ(s[0] > 0.0f, g > 0.0 && s[3] > 0.0f);
+    EXPECT_NEAR(at(f, head.orientation, eye, px.x(), px.y()), std::max(-1.0, 0.4 * kGrainGain * g),
+                1e-3)
+        << px.transpose();
   }
 }
 
@@ -77,9 +79,9 @@ TEST(GrainRender, SurfaceGrainStaysPutInTheWorldWhenTheHeadTurns) {
       const Eigen::Vector3d ray = cam_a.pixel_ray(i, j);
       const auto pb = cam_b.project(ray);
       if (!pb || pb->x() < 0 || pb->x() >= 200) continue;
-      const Eigen::Vector4f va = at(fa, a.orientation, a.position, i + 0.5, 160 - (j + 0.5));
-      const Eigen::Vector4f vb = at(fb, b.orientation, b.position, pb->x(), 160 - pb->y());
-      worst = std::max(worst, double(std::abs(va[3] - vb[3])));
+      const float va = at(fa, a.orientation, a.position, i + 0.5, 160 - (j + 0.5));
+      const float vb = at(fb, b.orientation, b.position, pb->x(), 160 - pb->y());
+      worst = std::max(worst, double(std::abs(va - vb)));
       ++compared;
     }
   EXPECT_GT(compared, 50);
@@ -89,8 +91,8 @@ TEST(GrainRender, SurfaceGrainStaysPutInTheWorldWhenTheHeadTurns) {
   double moved = 0.0;
   for (int i = 100; i < 200; i += 3) {
     const auto pb = cam_b.project(cam_a.pixel_ray(i, 80));
-    moved += std::abs(at(ha, a.orientation, a.position, i + 0.5, 79.5)[3] -
-                      at(hb, b.orientation, b.position, pb->x(), 160 - pb->y())[3]);
+    moved += std::abs(at(ha, a.orientation, a.position, i + 0.5, 79.5) -
+                      at(hb, b.orientation, b.position, pb->x(), 160 - pb->y()));
   }
   EXPECT_GT(moved, 0.5);
 }
@@ -104,13 +106,13 @@ TEST(GrainRender, HeadsetGrainIsFixedToTheHead) {
   const Eigen::Vector3d off(0.0315, 0, 0);
   for (int j = 0; j < 160; j += 9)
     for (int i = 0; i < 200; i += 11) {
-      const Eigen::Vector4f va = at(fa, a.orientation, a.position + a.orientation * off, i + .5, j + .5);
-      const Eigen::Vector4f vb = at(fb, b.orientation, b.position + b.orientation * off, i + .5, j + .5);
-      ASSERT_NEAR(va[3], vb[3], 2e-3) << i << "," << j;
+      const float va = at(fa, a.orientation, a.position + a.orientation * off, i + .5, j + .5);
+      const float vb = at(fb, b.orientation, b.position + b.orientation * off, i + .5, j + .5);
+      ASSERT_NEAR(va, vb, 1e-3) << i << "," << j;
     }
 }
 
-/// Mean alpha and mean alpha difference of horizontal neighbours of a layer rendered on black.
+/// Mean change and mean difference of horizontal neighbours of a layer rendered on grey.
 std::pair<double, double> texture_stats(const GrainFrame& f, const Eigen::Matrix3d& rot) {
   cv::Mat img(160, 200, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5));
   composite_shader_grain(img, f, rot, Eigen::Vector3d::Zero(), kFov);
@@ -143,7 +145,14 @@ TEST(GrainRender, IntensityScalesTheLayerAndZeroLeavesTheImage) {
   const GrainFrame weak = frame(GrainStyle::Surface, 0.1, h), strong = frame(GrainStyle::Surface, 0.4, h);
   const auto a = texture_stats(weak, Eigen::Matrix3d::Identity());
   const auto b = texture_stats(strong, Eigen::Matrix3d::Identity());
-  EXPECT_NEAR(b.first / a.first, 4.0, 0.4);  // alpha = min(1, I * gain * |g|): linear while < 1
+  EXPECT_NEAR(b.first / a.first, 4.0, 0.4);  // s = max(-1, I * gain * g): linear above -1
+  // The change is s (C + floor): twice as strong on a colour twice as bright (plus the floor).
+  cv::Mat dark(160, 200, CV_32FC3, cv::Scalar(0.2, 0.2, 0.2)), light(160, 200, CV_32FC3, cv::Scalar(0.4, 0.4, 0.4));
+  composite_shader_grain(dark, strong, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), kFov);
+  composite_shader_grain(light, strong, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), kFov);
+  const double ratio = cv::norm(light - cv::Scalar(0.4, 0.4, 0.4), cv::NORM_L1) /
+                       cv::norm(dark - cv::Scalar(0.2, 0.2, 0.2), cv::NORM_L1);
+  EXPECT_NEAR(ratio, (0.4 + kGrainFloor) / (0.2 + kGrainFloor), 1e-3);
   // Intensity 0 gives no layer at all (GrainSet skips it), and a frame forced to 0 draws nothing.
   GrainFrame zero = weak;
   zero.params.intensity = 0.0;
