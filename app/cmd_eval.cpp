@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/cli_util.h"
+#include "effects/flare_set.h"
 #include "effects/stack_interpolator.h"
 #include "io/input_error.h"
 #include "io/sidecar.h"
@@ -13,7 +14,7 @@ namespace vdfx::app {
 int cmd_eval(const Args& args) {
   CLI::App cli{"Prints the interpolated parameters of every effect at the given views as JSON, one\n"
                "object per --at and per line. Effects without keyframes print their neutral\n"
-               "values with \"active\": false.",
+               "values with \"active\": false; flares print their intensity, in file order.",
                "vdfx eval"};
   std::string path;
   std::vector<std::string> at_texts;
@@ -38,6 +39,7 @@ int cmd_eval(const Args& args) {
                            " frames (/video/frames)");
   }
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+  const effects::FlareSet flares(sidecar.flares, sidecar.interpolation, sidecar.video.fps);
   for (const EvalPoint& p : points) {
     const effects::StackParams params = stack.evaluate(p.direction, p.frame);
     nlohmann::ordered_json out;
@@ -51,6 +53,11 @@ int cmd_eval(const Args& args) {
       fx[std::string(spec.name)] = std::move(e);
     }
     out["effects"] = std::move(fx);
+    // Flares (any number, in file order): their keyframed intensity at the view.
+    nlohmann::ordered_json fl = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < flares.size(); ++k)
+      fl.push_back({{"intensity", flares.intensity(k, effects::to_unit(p.direction), p.frame)}});
+    out["flares"] = std::move(fl);
     std::cout << out.dump() << "\n";
   }
   return kExitOk;

@@ -28,8 +28,9 @@ int cmd_validate(const Args& args) {
   if (!quiet) {
     std::size_t keyframes = 0;
     for (const auto& track : report.sidecar->effects) keyframes += track.keyframes.size();
-    std::cout << path << ": valid (" << report.sidecar->effects.size() << " effects, " << keyframes
-              << " keyframes)\n";
+    for (const auto& flare : report.sidecar->flares) keyframes += flare.keyframes.size();
+    std::cout << path << ": valid (" << report.sidecar->effects.size() + report.sidecar->flares.size()
+              << " effects, " << keyframes << " keyframes)\n";
   }
   return kExitOk;
 }

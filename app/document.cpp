@@ -12,7 +12,10 @@ namespace vdfx::app {
 using effects::EffectType;
 
 Document::Document(io::Sidecar sidecar, DocumentOptions options)
-    : video_(sidecar.video), defaults_(sidecar.interpolation), options_(options) {
+    : video_(sidecar.video),
+      defaults_(sidecar.interpolation),
+      flares_(std::move(sidecar.flares)),
+      options_(options) {
   std::array<std::vector<effects::Keyframe>, effects::kEffectCount> loaded;
   for (auto& track : sidecar.effects) {
     overrides_[idx(track.type)] = track.interpolation;
@@ -28,6 +31,7 @@ io::Sidecar Document::sidecar() const {
   io::Sidecar s;
   s.video = video_;
   s.interpolation = defaults_;
+  s.flares = flares_;
   for (const auto& spec : effects::all_effect_specs()) {
     const auto i = idx(spec.type);
     if (sets_[i]->keyframes().empty() && !overrides_[i]) continue;

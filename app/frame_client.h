@@ -4,15 +4,19 @@
 ///
 /// Order per frame: desktop events (on_desktop_event) -> update(input at the display time) ->
 /// the loop fetches info.video_frame from the decoder -> params(head forward, shown frame) unless
-/// unaltered() -> quads() -> both eyes rendered -> mirror.
+/// unaltered() -> flares(head pose, shown frame) unless unaltered() -> quads() -> both eyes
+/// rendered -> mirror.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "effects/coords.h"
 #include "effects/effect_types.h"
+#include "effects/flare_layout.h"
 #include "xr/actions.h"
 #include "xr/input_events.h"
 #include "xr/session.h"
@@ -58,6 +62,14 @@ class FrameClient {
   /// Changes whenever params() would answer differently for the same arguments (an edit); the
   /// per-pixel bake is redone when it or the shown frame changes.
   virtual std::uint64_t params_revision() const { return 0; }
+  /// This frame's flares for the head pose (LOCAL) at a video frame, computed once and drawn
+  /// into both eyes after the effects (docs/flare.md). `frame_rgb` is that video frame (RGB,
+  /// empty while none is decoded), for lights found in the video.
+  virtual std::vector<effects::FlareLayout> flares(const xr::Pose& head_in_local,
+                                                   std::int64_t video_frame, const cv::Mat& frame_rgb) {
+    (void)head_in_local, (void)video_frame, (void)frame_rgb;
+    return {};
+  }
   /// UI panels, composited after the effects (never blurred or tinted).
   virtual std::vector<xr::QuadLayer> quads() { return {}; }
   /// True while the plain film should be shown (no effect at all).

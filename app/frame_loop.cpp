@@ -3,6 +3,7 @@
 #include "app/frame_loop.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -24,6 +25,7 @@
 #include "io/input_error.h"
 #include "io/video_source.h"
 #include "xr/compositor.h"
+#include "xr/flare_gl.h"
 #include "xr/gl_context.h"
 #include "xr/input_backend.h"
 #include "xr/param_grid.h"
@@ -64,6 +66,7 @@ struct FrameLoop::Impl {
   std::unique_ptr<xr::GlContext> gl;
   std::unique_ptr<GlfwInputGlue> glue;
   std::unique_ptr<xr::Compositor> compositor;
+  std::unique_ptr<xr::FlareGl> flare;  //!< the client's flares, drawn after the effects
   xr::MirrorMode mirror = xr::MirrorMode::PreDistorted;
 
   // What is on screen: the decoded frame, and the parameter grid baked for it (per-pixel mode).
@@ -94,6 +97,7 @@ struct FrameLoop::Impl {
     cc.gpu_timing = o.stats;
     cc.blur = o.blur;
     compositor = std::make_unique<xr::Compositor>(cc);
+    flare = std::make_unique<xr::FlareGl>();
     mirror = static_cast<xr::MirrorMode>(std::clamp(o.mirror_mode, 0, 2));
   }
 
@@ -238,11 +242,19 @@ struct FrameLoop::Impl {
         stats.add_cpu("params", ms_since(params_t0));
       }
 
+      // Flares: laid out once per frame from the head pose, drawn into both eyes.
+      const auto flares_t0 = Clock::now();
+      flare->set_layouts(client.unaltered() ? std::vector<effects::FlareLayout>{}
+                                            : client.flares(in.head, param_frame,
+                                                            shown ? shown->image : cv::Mat()));
+      stats.add_cpu("flares", ms_since(flares_t0));
+      const std::array<xr::EyeLayer*, 1> layers{flare.get()};
+
       const std::vector<xr::QuadLayer> quads = client.quads();
       const auto views = session.locate_views(in.head, xr::ReferenceSpace::Local);
       for (int e = 0; e < 2; ++e)
-        compositor->render_eye(e, {xr::render_view(views[e]), params, mask, per_pixel}, quads,
-                               in.head);
+        compositor->render_eye(e, {xr::render_view(views[e]), params, mask, per_pixel, layers},
+                               quads, in.head);
       if (o.on_frame) o.on_frame(*compositor, n);
       compositor->draw_mirror(mirror, nullptr, fbw, fbh);
       const bool last = quit || (o.max_frames >= 0 && n + 1 >= o.max_frames) ||

@@ -21,10 +21,19 @@ effects::StackInterpolator make_interpolator(const io::Sidecar& s) {
   }
 }
 
+effects::FlareSet make_flares(const io::Sidecar& s) {
+  try {
+    return effects::FlareSet(s.flares, s.interpolation, s.video.fps);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(std::string("sidecar flares cannot be interpolated: ") + e.what());
+  }
+}
+
 }  // namespace
 
 Player::Player(const io::Sidecar& sidecar, const io::VideoProperties& video, PlayerOptions options)
     : interp_(make_interpolator(sidecar)),
+      flares_(make_flares(sidecar)),
       playhead_(video.fps, std::max<std::int64_t>(video.frames, 1), options.loop),
       options_(options),
       mode_(options.mode) {
@@ -91,6 +100,13 @@ void Player::update(const xr::InputState& input, std::int64_t t, FrameInfo& info
 
 effects::StackParams Player::params(const effects::Direction& direction, std::int64_t frame) {
   return interp_.evaluate(direction, frame);
+}
+
+std::vector<effects::FlareLayout> Player::flares(const xr::Pose& head, std::int64_t frame,
+                                                 const cv::Mat& frame_rgb) {
+  if (flares_.empty()) return {};
+  if (flares_.uses_auto_light() && !frame_rgb.empty()) flares_.observe(frame, frame_rgb);
+  return flares_.layouts({xr::position_of(head), xr::rotation_of(head)}, frame);
 }
 
 std::string Player::status_line() const {

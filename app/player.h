@@ -1,7 +1,8 @@
 /// @file
 /// @brief The player (`vdfx play`): a FrameClient with no authoring UI. Plays the video against
 /// the display time (exact frame mapping, app/player_playhead.h), interpolates the sidecar's
-/// effects at the head's forward direction, and has the perception-study switches: view-dependent
+/// effects at the head's forward direction (and its flares for the head pose), and has the
+/// perception-study switches: view-dependent
 /// vs per-pixel parameters, and the unaltered film while a key is held.
 #pragma once
 
@@ -11,6 +12,7 @@
 
 #include "app/frame_client.h"
 #include "app/player_playhead.h"
+#include "effects/flare_set.h"
 #include "effects/stack_interpolator.h"
 #include "io/frame_decoder.h"
 #include "io/sidecar.h"
@@ -33,6 +35,8 @@ class Player : public FrameClient {
   void on_desktop_event(const xr::DesktopEvent& event) override;
   void update(const xr::InputState& input, std::int64_t display_time_ns, FrameInfo& info) override;
   effects::StackParams params(const effects::Direction& direction, std::int64_t frame) override;
+  std::vector<effects::FlareLayout> flares(const xr::Pose& head_in_local, std::int64_t frame,
+                                           const cv::Mat& frame_rgb) override;
   unsigned active_effects() const override { return active_; }
   bool unaltered() const override { return unaltered_key_ || unaltered_button_ || forced_unaltered_; }
   ParamMode param_mode() const override { return mode_; }
@@ -50,6 +54,7 @@ class Player : public FrameClient {
  private:
   void apply_key(xr::Key key, std::int64_t t_ns);
   effects::StackInterpolator interp_;
+  effects::FlareSet flares_;
   unsigned active_ = 0;
   Playhead playhead_;
   PlayerOptions options_;

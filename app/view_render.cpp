@@ -6,12 +6,15 @@
 
 #include "effects/distortion_mesh.h"
 #include "effects/effect_shaders.h"
+#include "effects/flare_render.h"
+#include "effects/flare_set.h"
 #include "effects/stack_interpolator.h"
 #include "effects/view_camera.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
+#include "xr/flare_gl.h"
 #include "xr/gl_context.h"
 #include "xr/param_grid.h"
 #include "xr/render_view.h"
@@ -127,6 +130,27 @@ EyeSetup eye_setup(const RenderRequest& r) {
   return {view, lens};
 }
 
+/// The sidecar's flares for a head pose at `frame` (docs/flare.md). An auto light is measured in
+/// `equirect` and in the frames before it that its fit uses, so a lone frame gets the light
+/// playback shows.
+std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input,
+                                              const io::Sidecar& sidecar, const cv::Mat& equirect,
+                                              const effects::HeadPose& head, std::int64_t frame) {
+  if (sidecar.flares.empty()) return {};
+  std::optional<effects::FlareSet> flares;
+  try {
+    flares.emplace(sidecar.flares, sidecar.interpolation, sidecar.video.fps);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(std::string("sidecar flares cannot be interpolated: ") + e.what());
+  }
+  if (flares->uses_auto_light()) {
+    for (std::int64_t f = std::max<std::int64_t>(0, frame - flares->auto_light_window()); f < frame; ++f)
+      flares->observe(f, load_equirect_frame(input, f));
+    flares->observe(frame, equirect);
+  }
+  return flares->layouts(head, frame);
+}
+
 }  // namespace
 
 cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
@@ -138,8 +162,13 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
   std::optional<EyeSetup> eye;
   if (r.hmd) eye = eye_setup(r);
   const int w = eye ? eye->lens.width : r.width, h = eye ? eye->lens.height : r.height;
-  const xr::RenderView view =
+  xr::RenderView view =
       eye ? eye->view : xr::RenderView::look_at(r.look, r.roll_deg, r.hfov_deg, w, h);
+  // The head sits at the origin looking at the view; an HMD eye is half the IPD to its side
+  // (the video ignores that, flares do not: docs/flare.md, "Stereo").
+  const effects::HeadPose head{Eigen::Vector3d::Zero(), xr::view_rotation(r.look, r.roll_deg)};
+  if (eye) view.position = head.orientation * Eigen::Vector3d((r.eye == xr::Eye::Left ? -0.5 : 0.5) * r.hmd->ipd_m, 0.0, 0.0);
+  const std::vector<effects::FlareLayout> flares = view_flares(input, sidecar, equirect, head, r.frame);
 
   if (r.gpu) {
     auto context = xr::GlContext::create({});
@@ -149,6 +178,10 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
     options.distortion = r.distortion;
     if (eye) options.lens = eye->lens.lens;
     options.blur = r.blur;
+    xr::FlareGl flare_layer;
+    flare_layer.set_layouts(flares);
+    const std::array<xr::EyeLayer*, 1> layers{&flare_layer};
+    options.layers = layers;
     unsigned mask = effects::non_neutral_mask(view_params);
     std::optional<xr::ParamGrid> grid;
     if (r.mode == effects::RenderMode::Pixel) {
@@ -177,6 +210,7 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
     };
     rendered = effects::render_view(sampler, camera, at, effects::RenderMode::Pixel);
   }
+  effects::add_flares(rendered, camera, view.position, flares);
   if (eye && r.distortion.method != xr::DistortionMethod::None)
     rendered = predistort_cpu(rendered, eye->lens, r.distortion);
   return effects::to_rgb8(rendered);

@@ -30,11 +30,12 @@ Eigen::Vector3d cell_direction(int i, int j, int w, int h) {
 std::optional<Eigen::Vector3d> find_brightest_region(const cv::Mat& rgb,
                                                      const AutoLightOptions& o) {
   if (rgb.empty()) return std::nullopt;
-  if (rgb.type() != CV_32FC3)
-    throw std::invalid_argument("find_brightest_region: expected a CV_32FC3 RGB equirect");
+  if (rgb.type() != CV_32FC3 && rgb.type() != CV_8UC3)
+    throw std::invalid_argument("find_brightest_region: expected a CV_32FC3 or CV_8UC3 RGB equirect");
   const int w = std::max(8, o.grid_width), h = w / 2;
   cv::Mat small;
   cv::resize(rgb, small, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+  if (small.type() == CV_8UC3) small.convertTo(small, CV_32FC3, 1.0 / 255.0);
   cv::Mat luma(h, w, CV_64F);
   std::vector<double> row_weight(static_cast<std::size_t>(h));
   double weight_sum = 0.0, luma_sum = 0.0;

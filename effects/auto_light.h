@@ -44,8 +44,8 @@ struct AutoLightOptions {
   double max_jump_deg = 15.0;    //!< measurements farther than this from f's are not f's light
 };
 
-/// The brightest region of one equirect frame (CV_32FC3 RGB, encoded values) as a unit
-/// direction, or nullopt when nothing is bright enough.
+/// The brightest region of one equirect frame (RGB, encoded values: CV_32FC3, or CV_8UC3 read as
+/// value / 255) as a unit direction, or nullopt when nothing is bright enough.
 std::optional<Eigen::Vector3d> find_brightest_region(const cv::Mat& rgb,
                                                      const AutoLightOptions& options = {});
 

@@ -33,7 +33,7 @@ enum class FlareShape {
 
 /// Ring profile constants: rim half-width and the interior fill's level (rho units).
 inline constexpr double kRingRimWidth = 0.15;
-inline constexpr double kRingFill = 0.3;
+inline constexpr double kRingFill = 0.4;
 
 /// One element: a radially symmetric sprite in the flare plane.
 struct FlareElement {

@@ -1,0 +1,191 @@
+/// @file
+/// @brief What a flare costs per eye at generic90 (1440 x 1600, RGBA16F, 3840 x 1920 video, a
+/// colour effect, mesh pre-distortion: the frame `vdfx play` renders), for each style, as a ratio
+/// to the same eye without a flare measured in the same run (counter "x_frame"); the flare layer
+/// alone against its ring count (counter "x_frame" too, and "ms_per_element"); and the CPU side
+/// per frame: the layout (once per frame for both eyes) and the auto light's measurement of a
+/// 3840 x 1920 frame.
+///
+/// Timing as in compositor_gl_bench.cpp: glFinish around each iteration, wall (manual) time, so
+/// llvmpipe's CPU threads are what is measured. Run under `xvfb-run -a`.
+#include <benchmark/benchmark.h>
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "effects/auto_light.h"
+#include "effects/effect_shaders.h"
+#include "effects/flare_layout.h"
+#include "xr/compositor.h"
+#include "xr/eye_views.h"
+#include "xr/flare_gl.h"
+#include "xr/gl_context.h"
+#include "xr/gpu_timer.h"
+#include "xr/session.h"
+
+namespace {
+
+using namespace vdfx;
+using namespace vdfx::xr;
+
+cv::Mat synthetic_frame() {
+  cv::Mat frame(1920, 3840, CV_8UC3);
+  frame.forEach<cv::Vec3b>([](cv::Vec3b& p, const int* pos) {
+    p = cv::Vec3b(static_cast<uchar>((pos[1] * 7) & 255), static_cast<uchar>((pos[0] * 3) & 255),
+                  static_cast<uchar>(((pos[0] + pos[1]) / 4) & 255));
+  });
+  return frame;
+}
+
+Pose head_at(const effects::Direction& look) {
+  Pose p;
+  p.position = {0.0, 1.6, 0.0};
+  p.orientation = glm::quat_cast(camera_rotation(look, 0.0));
+  return p;
+}
+
+// The gaze 8 degrees from the light: the whole flare, rings spread over the view.
+const effects::Direction kLook{20.0, 5.0}, kLight{27.0, 9.0};
+
+effects::FlareLayout layout(effects::FlareStyle style, int rings) {
+  effects::FlareSettings s = effects::default_flare_settings(style);
+  s.rings = rings;
+  const Pose h = head_at(kLook);
+  return *effects::layout_flare(style, s, {position_of(h), rotation_of(h)}, effects::to_unit(kLight), 1.0);
+}
+
+struct Fixture {
+  std::unique_ptr<GlContext> ctx;
+  std::string error;
+  std::unique_ptr<Compositor> comp;
+  std::unique_ptr<FlareGl> flare;
+  std::array<RenderView, 2> eyes;
+  effects::StackParams params;
+  unsigned mask = 0;
+  double frame_ms = 0.0;  //!< left eye without a flare, median of 7
+};
+
+Fixture& fixture() {
+  static Fixture fx = [] {
+    Fixture f;
+    try {
+      f.ctx = GlContext::create();
+    } catch (const GlError& e) {
+      f.error = e.what();
+      return f;
+    }
+    const HmdProfile profile = load_hmd_profile("generic90");
+    CompositorConfig c;
+    c.eye_width = profile.eye(Eye::Left).width;
+    c.eye_height = profile.eye(Eye::Left).height;
+    c.lens = effects::LensModel(profile.lens);
+    c.distortion.method = DistortionMethod::Mesh;
+    c.distortion.mesh_n = 65;
+    f.comp = std::make_unique<Compositor>(c);
+    f.comp->set_video_frame(synthetic_frame());
+    f.flare = std::make_unique<FlareGl>();
+    const auto views = locate_eye_views(head_at(kLook), profile);
+    for (int e = 0; e < 2; ++e) f.eyes[static_cast<std::size_t>(e)] = render_view(views[static_cast<std::size_t>(e)]);
+    f.params.exposure_stops = 0.5;
+    f.mask = effects::non_neutral_mask(f.params);
+    std::vector<double> t;
+    for (int i = 0; i < 8; ++i)
+      t.push_back(finished_wall_ms([&] { f.comp->render_eye(0, {f.eyes[0], f.params, f.mask}); }));
+    t.erase(t.begin());  // the first compiles the shaders
+    std::nth_element(t.begin(), t.begin() + 3, t.end());
+    f.frame_ms = t[3];
+    return f;
+  }();
+  return fx;
+}
+
+void run(benchmark::State& state, const std::function<void(Fixture&)>& body) {
+  Fixture& f = fixture();
+  if (!f.ctx) {
+    state.SkipWithError(f.error.c_str());
+    return;
+  }
+  body(f);
+  glFinish();
+  double total = 0.0;
+  for (auto _ : state) {
+    const double ms = finished_wall_ms([&] { body(f); });
+    state.SetIterationTime(ms * 1e-3);
+    total += ms;
+  }
+  state.counters["x_frame"] = total / static_cast<double>(state.iterations()) / f.frame_ms;
+  state.counters["frame_ms"] = f.frame_ms;
+}
+
+/// One eye of the play frame with a flare (arg 1: directional, 2: headset, 6 rings each; 0: none),
+/// interleaved with the same eye without it in every iteration so that the machine's load drifts
+/// alike for both: counter "x_no_flare" = median with / median without.
+void BM_GlFlareEye(benchmark::State& s) {
+  const int which = static_cast<int>(s.range(0));
+  Fixture& f = fixture();
+  if (!f.ctx) {
+    s.SkipWithError(f.error.c_str());
+    return;
+  }
+  std::vector<effects::FlareLayout> flares;
+  if (which == 1) flares = {layout(effects::FlareStyle::Directional, 6)};
+  if (which == 2) flares = {layout(effects::FlareStyle::Headset, 6)};
+  const std::array<EyeLayer*, 1> layers{f.flare.get()};
+  const auto eye = [&](bool with) {
+    f.flare->set_layouts(with ? flares : std::vector<effects::FlareLayout>{});
+    return finished_wall_ms([&] { f.comp->render_eye(0, {f.eyes[0], f.params, f.mask, false, layers}); });
+  };
+  eye(true);
+  std::vector<double> with, without;
+  for (auto _ : s) {
+    without.push_back(eye(false));
+    with.push_back(eye(true));
+    s.SetIterationTime(with.back() * 1e-3);
+  }
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  s.counters["without_ms"] = median(without);
+  s.counters["x_no_flare"] = median(with) / median(without);
+}
+
+/// The flare layer alone (into the eye buffer), directional style, against the ring count.
+void BM_GlFlareLayerRings(benchmark::State& s) {
+  const int rings = static_cast<int>(s.range(0));
+  Fixture& f = fixture();
+  if (f.flare) f.flare->set_layouts({layout(effects::FlareStyle::Directional, rings)});
+  run(s, [](Fixture& fx) {
+    fx.comp->eye_buffer(0).bind();
+    fx.flare->draw(fx.eyes[0], 0, fx.comp->config().eye_width, fx.comp->config().eye_height);
+  });
+  s.counters["elements"] = 2 + rings;
+}
+
+/// CPU, once per frame: the layout of one flare from the head pose.
+void BM_FlareLayout(benchmark::State& s) {
+  const Pose h = head_at(kLook);
+  const effects::HeadPose head{position_of(h), rotation_of(h)};
+  const effects::FlareSettings settings;
+  const Eigen::Vector3d l = effects::to_unit(kLight);
+  for (auto _ : s) benchmark::DoNotOptimize(effects::layout_flare(effects::FlareStyle::Directional, settings, head, l, 1.0));
+}
+
+/// CPU, once per video frame with an auto light: the brightest-region measurement of a 3840 x
+/// 1920 8-bit frame.
+void BM_FlareAutoLightMeasure(benchmark::State& s) {
+  const cv::Mat frame = synthetic_frame();
+  for (auto _ : s) benchmark::DoNotOptimize(effects::find_brightest_region(frame));
+  s.SetLabel("3840x1920 RGB8");
+}
+
+#define VDFX_GL_BENCH(fn) BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
+VDFX_GL_BENCH(BM_GlFlareEye)->Arg(0)->Arg(1)->Arg(2)->MinTime(2.0);  // none, directional, headset
+VDFX_GL_BENCH(BM_GlFlareLayerRings)->Arg(0)->Arg(2)->Arg(6)->Arg(12)->Arg(16);
+BENCHMARK(BM_FlareLayout);
+BENCHMARK(BM_FlareAutoLightMeasure)->Unit(benchmark::kMillisecond);
+
+}  // namespace
