@@ -29,11 +29,20 @@ effects::FlareSet make_flares(const io::Sidecar& s) {
   }
 }
 
+effects::GrainSet make_grains(const io::Sidecar& s) {
+  try {
+    return effects::GrainSet(s.grains, s.interpolation, s.video.fps);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(std::string("sidecar grain cannot be interpolated: ") + e.what());
+  }
+}
+
 }  // namespace
 
 Player::Player(const io::Sidecar& sidecar, const io::VideoProperties& video, PlayerOptions options)
     : interp_(make_interpolator(sidecar)),
       flares_(make_flares(sidecar)),
+      grains_(make_grains(sidecar)),
       playhead_(video.fps, std::max<std::int64_t>(video.frames, 1), options.loop),
       options_(options),
       mode_(options.mode) {
@@ -107,6 +116,12 @@ std::vector<effects::FlareLayout> Player::flares(const xr::Pose& head, std::int6
   if (flares_.empty()) return {};
   if (flares_.uses_auto_light() && !frame_rgb.empty()) flares_.observe(frame, frame_rgb);
   return flares_.layouts({xr::position_of(head), xr::rotation_of(head)}, frame);
+}
+
+std::vector<effects::GrainFrame> Player::grains(const xr::Pose& head, std::int64_t display_time_ns,
+                                                std::int64_t frame) {
+  if (grains_.empty()) return {};
+  return grains_.layout({xr::position_of(head), xr::rotation_of(head)}, display_time_ns, frame);
 }
 
 std::string Player::status_line() const {
