@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "app/cli_util.h"
-#include "effects/flare_set.h"
-#include "effects/grain_layout.h"
+#include "app/flare_set_of.h"
+#include "app/grain_set_of.h"
 #include "effects/stack_interpolator.h"
 #include "io/input_error.h"
 #include "io/sidecar.h"
@@ -41,8 +41,8 @@ int cmd_eval(const Args& args) {
                            " frames (/video/frames)");
   }
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
-  const effects::FlareSet flares(sidecar.flares, sidecar.interpolation, sidecar.video.fps);
-  const effects::GrainSet grains(sidecar.grains, sidecar.interpolation, sidecar.video.fps);
+  const effects::FlareSet flares = flare_set_of(sidecar);
+  const effects::GrainSet grains = grain_set_of(sidecar);
   for (const EvalPoint& p : points) {
     const effects::StackParams params = stack.evaluate(p.direction, p.frame);
     nlohmann::ordered_json out;

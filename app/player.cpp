@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/flare_set_of.h"
+#include "app/grain_set_of.h"
 #include "effects/effect_shaders.h"
 #include "io/input_error.h"
 
@@ -21,28 +23,12 @@ effects::StackInterpolator make_interpolator(const io::Sidecar& s) {
   }
 }
 
-effects::FlareSet make_flares(const io::Sidecar& s) {
-  try {
-    return effects::FlareSet(s.flares, s.interpolation, s.video.fps);
-  } catch (const std::invalid_argument& e) {
-    throw io::InputError(std::string("sidecar flares cannot be interpolated: ") + e.what());
-  }
-}
-
-effects::GrainSet make_grains(const io::Sidecar& s) {
-  try {
-    return effects::GrainSet(s.grains, s.interpolation, s.video.fps);
-  } catch (const std::invalid_argument& e) {
-    throw io::InputError(std::string("sidecar grain cannot be interpolated: ") + e.what());
-  }
-}
-
 }  // namespace
 
 Player::Player(const io::Sidecar& sidecar, const io::VideoProperties& video, PlayerOptions options)
     : interp_(make_interpolator(sidecar)),
-      flares_(make_flares(sidecar)),
-      grains_(make_grains(sidecar)),
+      flares_(flare_set_of(sidecar)),
+      grains_(grain_set_of(sidecar)),
       playhead_(video.fps, std::max<std::int64_t>(video.frames, 1), options.loop),
       options_(options),
       mode_(options.mode) {

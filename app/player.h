@@ -1,9 +1,9 @@
 /// @file
 /// @brief The player (`vdfx play`): a FrameClient with no authoring UI. Plays the video against
 /// the display time (exact frame mapping, app/player_playhead.h), interpolates the sidecar's
-/// effects at the head's forward direction (and its flares and grain for the head pose), and has the
-/// perception-study switches: view-dependent
-/// vs per-pixel parameters, and the unaltered film while a key is held.
+/// effects at the head's forward direction (and its flares and grain for the head pose), and has
+/// the perception-study switches: view-dependent vs per-pixel parameters, and the unaltered film
+/// while a key is held.
 #pragma once
 
 #include <cstdint>

@@ -1,13 +1,15 @@
 #include "app/view_render.h"
 
+#include <algorithm>
 #include <charconv>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "app/flare_set_of.h"
+#include "app/grain_set_of.h"
 #include "effects/distortion_mesh.h"
 #include "effects/effect_shaders.h"
 #include "effects/flare_render.h"
-#include "effects/flare_set.h"
 #include "effects/grain_render.h"
 #include "effects/stack_interpolator.h"
 #include "effects/view_camera.h"
@@ -139,18 +141,13 @@ std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input
                                               const io::Sidecar& sidecar, const cv::Mat& equirect,
                                               const effects::HeadPose& head, std::int64_t frame) {
   if (sidecar.flares.empty()) return {};
-  std::optional<effects::FlareSet> flares;
-  try {
-    flares.emplace(sidecar.flares, sidecar.interpolation, sidecar.video.fps);
-  } catch (const std::invalid_argument& e) {
-    throw io::InputError(std::string("sidecar flares cannot be interpolated: ") + e.what());
+  effects::FlareSet flares = flare_set_of(sidecar);
+  if (flares.uses_auto_light()) {
+    for (std::int64_t f = std::max<std::int64_t>(0, frame - flares.auto_light_window()); f < frame; ++f)
+      flares.observe(f, load_equirect_frame(input, f));
+    flares.observe(frame, equirect);
   }
-  if (flares->uses_auto_light()) {
-    for (std::int64_t f = std::max<std::int64_t>(0, frame - flares->auto_light_window()); f < frame; ++f)
-      flares->observe(f, load_equirect_frame(input, f));
-    flares->observe(frame, equirect);
-  }
-  return flares->layouts(head, frame);
+  return flares.layouts(head, frame);
 }
 
 /// The sidecar's grain layers for a head pose at `frame`, at the request's display time (by
@@ -158,14 +155,9 @@ std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input
 std::vector<effects::GrainFrame> view_grains(const io::Sidecar& sidecar, const effects::HeadPose& head,
                                              const RenderRequest& r) {
   if (sidecar.grains.empty()) return {};
-  std::optional<effects::GrainSet> grains;
-  try {
-    grains.emplace(sidecar.grains, sidecar.interpolation, sidecar.video.fps);
-  } catch (const std::invalid_argument& e) {
-    throw io::InputError(std::string("sidecar grain cannot be interpolated: ") + e.what());
-  }
+  effects::GrainSet grains = grain_set_of(sidecar);
   const std::int64_t t = r.display_time_ns.value_or(effects::frame_display_time_ns(r.frame, sidecar.video.fps));
-  return grains->layout(head, t, r.frame);
+  return grains.layout(head, t, r.frame);
 }
 
 }  // namespace

@@ -44,14 +44,8 @@ ordered ordered_document(const Sidecar& s) {
     e["type"] = std::string(spec.name);
     if (track.interpolation) e["interpolation"] = interpolation_json(*track.interpolation);
     ordered kfs = ordered::array();
-    for (const effects::Keyframe& k : track.keyframes) {
-      ordered kj;
-      kj["azimuth_deg"] = k.direction.azimuth_deg;
-      kj["altitude_deg"] = k.direction.altitude_deg;
-      kj["frame"] = k.frame;
-      kj["params"] = params_to_json(track.type, k.params);
-      kfs.push_back(std::move(kj));
-    }
+    for (const effects::Keyframe& k : track.keyframes)
+      kfs.push_back(keyframe_to_json(k, params_to_json(track.type, k.params)));
     e["keyframes"] = std::move(kfs);
     effects_json.push_back(std::move(e));
   }
@@ -62,6 +56,15 @@ ordered ordered_document(const Sidecar& s) {
 }
 
 }  // namespace
+
+nlohmann::ordered_json keyframe_to_json(const effects::Keyframe& k, nlohmann::ordered_json params) {
+  ordered kj;
+  kj["azimuth_deg"] = k.direction.azimuth_deg;
+  kj["altitude_deg"] = k.direction.altitude_deg;
+  kj["frame"] = k.frame;
+  kj["params"] = std::move(params);
+  return kj;
+}
 
 nlohmann::ordered_json interpolation_to_json(const effects::InterpolationSettings& s) {
   return interpolation_json(s);

@@ -54,6 +54,10 @@ nlohmann::json to_json(const Sidecar& sidecar);
 /// {"gain": [r, g, b]}, ...), in the effect spec's order.
 nlohmann::ordered_json params_to_json(effects::EffectType type, std::span<const double> values);
 
+/// One keyframe as written: azimuth_deg, altitude_deg, frame, then `params`.
+nlohmann::ordered_json keyframe_to_json(const effects::Keyframe& keyframe,
+                                        nlohmann::ordered_json params);
+
 /// An "interpolation" object (the file's default or an effect's override).
 nlohmann::ordered_json interpolation_to_json(const effects::InterpolationSettings& settings);
 

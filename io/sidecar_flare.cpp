@@ -182,14 +182,9 @@ nlohmann::ordered_json flare_to_json(const effects::FlareEffect& f) {
   if (f.interpolation) e["interpolation"] = interpolation_to_json(*f.interpolation);
   ordered kfs = ordered::array();
   for (const effects::Keyframe& k : f.keyframes) {
-    ordered kj;
-    kj["azimuth_deg"] = k.direction.azimuth_deg;
-    kj["altitude_deg"] = k.direction.altitude_deg;
-    kj["frame"] = k.frame;
     ordered params;
     params["intensity"] = k.params.empty() ? effects::kFlareIntensitySpec.neutral : k.params[0];
-    kj["params"] = std::move(params);
-    kfs.push_back(std::move(kj));
+    kfs.push_back(keyframe_to_json(k, std::move(params)));
   }
   e["keyframes"] = std::move(kfs);
   return e;

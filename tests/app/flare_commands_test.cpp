@@ -11,6 +11,7 @@
 #include "app/document.h"
 #include "app/player.h"
 #include "command_test_util.h"
+#include "tests/image_centroid.h"
 #include "effects/view_camera.h"
 #include "io/sidecar_validate.h"
 #include "xr/eye_views.h"
@@ -36,15 +37,8 @@ cv::Point2d brightening_centroid(const cv::Mat& with, const cv::Mat& without) {
   with.convertTo(a, CV_32F);
   without.convertTo(b, CV_32F);
   cv::extractChannel(a - b, d, 1);
-  double mx = 0;
-  cv::minMaxLoc(d, nullptr, &mx);
-  double sw = 0, sx = 0, sy = 0;
-  for (int j = 0; j < d.rows; ++j)
-    for (int i = 0; i < d.cols; ++i) {
-      const double w = d.at<float>(j, i) - 0.5 * mx;
-      if (w > 0) sw += w, sx += w * (i + 0.5), sy += w * (j + 0.5);
-    }
-  return {sx / sw, sy / sw};
+  const Eigen::Vector2d c = test_images::half_max_centroid(d);
+  return {c.x(), c.y()};
 }
 
 TEST(FlareCommands, RenderDrawsTheGlareOnTheLightAndNothingAtIntensityZero) {

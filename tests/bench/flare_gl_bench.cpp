@@ -19,6 +19,7 @@
 #include "effects/auto_light.h"
 #include "effects/effect_shaders.h"
 #include "effects/flare_layout.h"
+#include "gl_bench_support.h"
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
 #include "xr/flare_gl.h"
@@ -91,12 +92,9 @@ Fixture& fixture() {
     for (int e = 0; e < 2; ++e) f.eyes[static_cast<std::size_t>(e)] = render_view(views[static_cast<std::size_t>(e)]);
     f.params.exposure_stops = 0.5;
     f.mask = effects::non_neutral_mask(f.params);
-    std::vector<double> t;
-    for (int i = 0; i < 8; ++i)
-      t.push_back(finished_wall_ms([&] { f.comp->render_eye(0, {f.eyes[0], f.params, f.mask}); }));
-    t.erase(t.begin());  // the first compiles the shaders
-    std::nth_element(t.begin(), t.begin() + 3, t.end());
-    f.frame_ms = t[3];
+    const auto eye = [&] { f.comp->render_eye(0, {f.eyes[0], f.params, f.mask}); };
+    eye();  // compiles the shaders
+    f.frame_ms = bench::median_wall_ms(7, eye);
     return f;
   }();
   return fx;
@@ -108,15 +106,7 @@ void run(benchmark::State& state, const std::function<void(Fixture&)>& body) {
     state.SkipWithError(f.error.c_str());
     return;
   }
-  body(f);
-  glFinish();
-  double total = 0.0;
-  for (auto _ : state) {
-    const double ms = finished_wall_ms([&] { body(f); });
-    state.SetIterationTime(ms * 1e-3);
-    total += ms;
-  }
-  state.counters["x_frame"] = total / static_cast<double>(state.iterations()) / f.frame_ms;
+  state.counters["x_frame"] = bench::timed_gl_loop(state, [&] { body(f); }) / f.frame_ms;
   state.counters["frame_ms"] = f.frame_ms;
 }
 
@@ -145,12 +135,8 @@ void BM_GlFlareEye(benchmark::State& s) {
     with.push_back(eye(true));
     s.SetIterationTime(with.back() * 1e-3);
   }
-  const auto median = [](std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
-  s.counters["without_ms"] = median(without);
-  s.counters["x_no_flare"] = median(with) / median(without);
+  s.counters["without_ms"] = bench::median(without);
+  s.counters["x_no_flare"] = bench::median(with) / bench::median(without);
 }
 
 /// The flare layer alone (into the eye buffer), directional style, against the ring count.

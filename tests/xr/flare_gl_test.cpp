@@ -13,6 +13,7 @@
 #include "effects/flare_render.h"
 #include "effects/view_renderer.h"
 #include "gl_test_support.h"
+#include "tests/image_centroid.h"
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
 #include "xr/flare_gl.h"
@@ -85,25 +86,8 @@ cv::Mat energy(const cv::Mat& rgb) {
   return e;
 }
 
-/// Weighted centroid (pixel coordinates, centres at +0.5) of max(v - floor, 0).
-Eigen::Vector2d centroid(const cv::Mat& v, double floor = 0.0) {
-  double sw = 0, sx = 0, sy = 0;
-  for (int j = 0; j < v.rows; ++j)
-    for (int i = 0; i < v.cols; ++i) {
-      const double w = v.at<float>(j, i) - floor;
-      if (w <= 0) continue;
-      sw += w, sx += w * (i + 0.5), sy += w * (j + 0.5);
-    }
-  return sw > 0 ? Eigen::Vector2d(sx / sw, sy / sw) : Eigen::Vector2d::Constant(NAN);
-}
-
 /// The glare's centroid: its core above half its peak.
-Eigen::Vector2d glare_centroid(const cv::Mat& rgb) {
-  const cv::Mat e = energy(rgb);
-  double mx = 0;
-  cv::minMaxLoc(e, nullptr, &mx);
-  return centroid(e, 0.5 * mx);
-}
+Eigen::Vector2d glare_centroid(const cv::Mat& rgb) { return test_images::half_max_centroid(energy(rgb)); }
 
 /// Pixel of a world point seen by an eye (nullopt behind it).
 std::optional<Eigen::Vector2d> pixel_of(const Rig& rig, int eye, const Eigen::Vector3d& p) {
@@ -192,7 +176,7 @@ int check_geometry(const Rig& rig, int eye, const FlareLayout& l, const Eigen::V
   double worst = 0.0;
   for (std::size_t i = 2; i < l.elements.size(); ++i) {
     if (!fully_visible(rig, eye, l, l.elements[i])) continue;
-    const Eigen::Vector2d c = centroid(energy(render_gl(rig, {only_element(l, i)})[static_cast<std::size_t>(eye)]));
+    const Eigen::Vector2d c = test_images::weighted_centroid(energy(render_gl(rig, {only_element(l, i)})[static_cast<std::size_t>(eye)]));
     const double off = distance_to_line(c, g, *b);
     worst = std::max(worst, off);
     EXPECT_LT(off, 1.0) << where << " ring " << i - 2;
@@ -248,7 +232,8 @@ TEST_F(FlareGlTest, HeadsetRingDisparityIsThatOfAPointOnTheFiveCentimetrePlane) 
   for (std::size_t i = 2; i < l.elements.size(); ++i) {
     if (!fully_visible(rig, 0, l, l.elements[i]) || !fully_visible(rig, 1, l, l.elements[i])) continue;
     const auto images = render_gl(rig, {only_element(l, i)});
-    const Eigen::Vector2d left = centroid(energy(images[0])), right = centroid(energy(images[1]));
+    const Eigen::Vector2d left = test_images::weighted_centroid(energy(images[0])),
+                          right = test_images::weighted_centroid(energy(images[1]));
     const Eigen::Vector2d expected = *pixel_of(rig, 0, l.elements[i].centre) - *pixel_of(rig, 1, l.elements[i].centre);
     const Eigen::Vector2d measured_disparity = left - right;
     std::cout << "ring " << i - 2 << ": disparity " << measured_disparity.x() << " px (plane point "
