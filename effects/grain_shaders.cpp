@@ -170,7 +170,7 @@ void main() {
   float a = dot(d, d), b = dot(o, d), c = dot(o, o) - 1.0;
   float disc = b * b - a * c;
   if (!(disc > 0.0)) discard;
-  float s = max(-1.0, v_shade.x * v_shade.y * sqrt(disc / a));
+  float s = max(-1.0, v_shade.x * v_shade.y * (disc / a));
   frag = vec4(vec3(s * u_floor), 0.0);
   frag_scale = vec4(vec3(1.0 + s), 1.0);
 }

@@ -22,11 +22,11 @@ std::string grain_shader_fragment_source();
 /// u_eye (eye in the grain frame), u_eye_up, u_eye_right, u_size, u_intensity, u_px_per_tan.
 std::string grain_particle_vertex_source();
 
-/// The particle's fragment: the eye's ray through the fragment against the ellipsoid; weight
-/// proportional to the chord through it (1 through the centre, 0 at the rim). The particle
-/// modulates the eye colour as the shader styles do (s = (2 brightness - 1) opacity intensity
-/// chord, C -> s floor + C (1 + s), dual-source blending; uniform u_floor): a dark grain darkens,
-/// a bright one brightens, and the hue stays.
+/// The particle's fragment: the eye's ray through the fragment against the ellipsoid; weight the
+/// squared chord through it, normalised (1 through the centre, falling as 1 - r^2 to 0 at the
+/// rim: a soft grain, not a disc). The particle modulates the eye colour as the shader styles do
+/// (s = (2 brightness - 1) opacity intensity weight, C -> s floor + C (1 + s), dual-source
+/// blending; uniform u_floor): a dark grain darkens, a bright one brightens, and the hue stays.
 std::string grain_particle_fragment_source();
 
 /// Near fade of particles (metres from the eye): none beyond the end, all below the start.
@@ -34,8 +34,8 @@ inline constexpr double kParticleNearFadeStartM = 0.1;
 inline constexpr double kParticleNearFadeEndM = 0.3;
 /// Angular radius beyond which a particle (one near the eye) fades as (this / radius)^2, keeping
 /// the coverage of a grain this size: volumetric grain stays grain-sized instead of showing the
-/// nearest particles as flakes. 4 mrad is about 2.4 px of a 1440-px, 100-degree eye.
-inline constexpr double kParticleMaxRadiusRad = 0.004;
+/// nearest particles as flakes. 2 mrad is about 1.2 px of a 1440-px, 100-degree eye.
+inline constexpr double kParticleMaxRadiusRad = 0.002;
 /// Smallest drawn particle radius in pixels: a smaller one is drawn this large with its opacity
 /// scaled by the area ratio (same coverage, no sub-pixel flicker).
 inline constexpr double kParticleMinRadiusPx = 0.75;

@@ -13,6 +13,7 @@
 #include "effects/flare_render.h"
 #include "effects/view_renderer.h"
 #include "gl_test_support.h"
+#include "golden_bgr.h"
 #include "tests/image_centroid.h"
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
@@ -251,33 +252,6 @@ TEST_F(FlareGlTest, HeadsetRingDisparityIsThatOfAPointOnTheFiveCentimetrePlane) 
                      (*pixel_of(rig, 0, far.light_point) - *pixel_of(rig, 1, far.light_point)).x()), 1.0);
 }
 
-// Golden comparison (BGR 8-bit): max and mean tolerances, actual and x8 diff written to the build
-// tree on failure; VDFX_BLESS=1 rewrites the golden.
-std::string compare_with_golden(const cv::Mat& actual, const std::string& name, double max_tol, double mean_tol) {
-  namespace fs = std::filesystem;
-  const std::string golden = std::string(VDFX_SOURCE_DIR) + "/tests/xr/golden/" + name + ".png";
-  const fs::path out_dir = fs::path(VDFX_TEST_OUTPUT_DIR) / "xr" / "golden";
-  fs::create_directories(out_dir);
-  const std::string actual_path = (out_dir / (name + ".png")).string();
-  cv::imwrite(actual_path, actual);
-  if (const char* bless = std::getenv("VDFX_BLESS"); bless && std::string(bless) == "1") {
-    fs::create_directories(fs::path(golden).parent_path());
-    cv::imwrite(golden, actual);
-  }
-  const cv::Mat g = cv::imread(golden, cv::IMREAD_COLOR);
-  if (g.empty() || g.size() != actual.size())
-    return "no golden of the right size at " + golden + " (actual " + actual_path + "; VDFX_BLESS=1 writes it)";
-  cv::Mat d;
-  cv::absdiff(g, actual, d);
-  double mx = 0;
-  cv::minMaxLoc(d.reshape(1), nullptr, &mx);
-  const double mean = cv::mean(d.reshape(1))[0];
-  if (mx <= max_tol && mean <= mean_tol) return {};
-  cv::imwrite((out_dir / (name + "_diff_x8.png")).string(), d * 8);
-  return golden + ": max difference " + std::to_string(mx) + " (tolerance " + std::to_string(max_tol) + "), mean " +
-         std::to_string(mean) + " (tolerance " + std::to_string(mean_tol) + "); actual " + actual_path;
-}
-
 TEST_F(FlareGlTest, GoldenScreenshotsOfBothStylesOnTheSunrise) {
   // Both eyes side by side, the band around the horizon, 10 degrees off the sun (36, 6) so the
   // rings splay from it through the view centre.
@@ -292,7 +266,7 @@ TEST_F(FlareGlTest, GoldenScreenshotsOfBothStylesOnTheSunrise) {
     cv::Mat bgr8;
     cv::cvtColor(both, both, cv::COLOR_RGB2BGR);
     both.convertTo(bgr8, CV_8UC3, 255.0);
-    const std::string r = compare_with_golden(bgr8, "flare_" + std::string(effects::flare_style_name(style)), 8.0, 0.5);
+    const std::string r = test::compare_with_golden(bgr8, "flare_" + std::string(effects::flare_style_name(style)), 8.0, 0.5);
     EXPECT_TRUE(r.empty()) << r;
   }
 }

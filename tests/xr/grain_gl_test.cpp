@@ -9,6 +9,8 @@
 #include "effects/grain_render.h"
 #include "effects/grain_shaders.h"
 #include "gl_test_support.h"
+#include "golden_bgr.h"
+#include "xr/compositor.h"
 #include "xr/gl_texture.h"
 #include "xr/grain_gl.h"
 
@@ -164,12 +166,12 @@ TEST_F(GrainGlTest, ParticlesLandWhereTheirPositionProjectsInEachEye) {
       const Eigen::Vector2d c = centroid(out, bg, px, 12, &mass);
       EXPECT_LT((c - px).norm(), 0.25) << p.transpose() << " eye " << offset;
       // Coverage: a sphere of radius 1.5 cm at distance D covers pi (0.015 f / D)^2 pixels with
-      // mean weight 2/3 (chord profile sqrt(1 - s^2)); a white grain (s = chord) on 0.2 grey
+      // mean weight 1/2 (profile 1 - s^2, the squared chord); a white grain on 0.2 grey
       // changes it by s (0.2 + floor). Seen larger than kParticleMaxRadiusRad, its weight fades
       // by (max / radius)^2.
       const double f_px = kW / (v.tan_right - v.tan_left), rho = 0.015 * f_px / -e.z();
       const double theta = 0.015 / e.norm(), fade = std::min(1.0, std::pow(effects::kParticleMaxRadiusRad / theta, 2));
-      const double expected = (0.2 + effects::kGrainFloor) * effects::kPi * rho * rho * 2.0 / 3.0 * fade;
+      const double expected = (0.2 + effects::kGrainFloor) * effects::kPi * rho * rho * 0.5 * fade;
       // Pixel sampling of a disc a pixel or two wide errs by up to ~15 % of it.
       EXPECT_NEAR(mass, expected, (0.1 + 0.2 / rho) * expected) << p.transpose();
     }
@@ -181,7 +183,7 @@ TEST_F(GrainGlTest, ParticlesUploadOncePerRefreshAndZeroIntensityDrawsNothing) {
   auto g = std::make_unique<GrainGl>();
   effects::GrainEffect e;
   e.style = effects::GrainStyle::ObjectCloud;
-  e.settings.set(effects::GrainSetting::Count, 2000);
+  e.settings.set(effects::GrainSetting::Count, 20000);
   e.settings.set(effects::GrainSetting::SphereM, 1.0);  // near enough for pixel-sized grains
   e.keyframes = {{{0, 0}, 0, {0.8, 1.0}}};
   effects::GrainSet set({e}, {}, 30.0);
@@ -207,6 +209,65 @@ TEST_F(GrainGlTest, ParticlesUploadOncePerRefreshAndZeroIntensityDrawsNothing) {
   EXPECT_EQ(g->stats().particle_draws, before.particle_draws);
   EXPECT_EQ(g->stats().particle_uploads, before.particle_uploads);
   EXPECT_EQ(test::compare(out, bg).max, 0.0);
+}
+
+}  // namespace
+}  // namespace vdfx::xr
+
+namespace vdfx::xr {
+namespace {
+
+/// Golden screenshots: each style over the sunrise panorama, both eyes side by side, each a
+/// 480 x 320 crop around the view centre at generic90's pixel density (612 px per tangent
+/// unit), head looking at the trees. Settings as an author would pick them for a film-grain look
+/// (docs/grain.md, "Looks"); the volumetric styles need many small particles for that.
+TEST_F(GrainGlTest, GoldenScreenshotsOfEachStyleOnTheSunrise) {
+  const double f = 1440.0 / (std::tan(52.0 * effects::kDegToRad) + std::tan(47.0 * effects::kDegToRad));
+  const int w = 480, h = 320;
+  effects::HeadPose head;
+  head.orientation = view_rotation({-30, 5}, 0);
+  CompositorConfig cc;
+  cc.eye_width = w;
+  cc.eye_height = h;
+  cc.eye_format = TexFormat::RGBA32F;
+  cc.distortion.method = DistortionMethod::None;
+  Compositor comp(cc);
+  comp.set_video_frame(test::sunrise_float());
+  struct Look {
+    effects::GrainStyle style;
+    double intensity, size;
+    std::vector<std::pair<effects::GrainSetting, double>> settings;
+  };
+  using S = effects::GrainSetting;
+  for (const Look& look : {Look{effects::GrainStyle::Headset, 0.5, 1.0, {}},
+                           Look{effects::GrainStyle::Surface, 0.5, 1.0, {}},
+                           Look{effects::GrainStyle::ObjectCloud, 1.0, 1.0, {{S::SphereM, 2.0}, {S::Count, 1000000}}},
+                           Look{effects::GrainStyle::FreeCloud, 1.0, 1.0, {{S::Count, 600000}}}}) {
+    effects::GrainEffect e;
+    e.style = look.style;
+    e.seed = 2024;
+    for (const auto& [id, v] : look.settings) e.settings.set(id, v);
+    e.keyframes = {{{0, 0}, 0, {look.intensity, look.size}}};
+    effects::GrainSet set({e}, {}, 30.0);
+    GrainGl grain;
+    grain.set_layers(set.layout(head, 0, 0));
+    const std::array<EyeLayer*, 1> layers{&grain};
+    cv::Mat eyes[2];
+    for (int k = 0; k < 2; ++k) {
+      RenderView v = eye_view(head, k == 0 ? -0.0315 : 0.0315);
+      v.tan_left = -0.5 * w / f;
+      v.tan_right = 0.5 * w / f;
+      v.tan_down = -0.5 * h / f;
+      v.tan_up = 0.5 * h / f;
+      comp.render_eye(k, {v, {}, 0, false, layers});
+      eyes[k] = to_bgr8(comp.read_panel(k));
+    }
+    cv::Mat both;
+    cv::hconcat(eyes[0], eyes[1], both);
+    const std::string r =
+        test::compare_with_golden(both, "grain_" + std::string(effects::grain_style_name(look.style)), 8.0, 0.5);
+    EXPECT_TRUE(r.empty()) << r;
+  }
 }
 
 }  // namespace
