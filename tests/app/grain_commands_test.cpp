@@ -25,13 +25,6 @@ std::string grain_entry(const std::string& style, double intensity, double size,
   return s.str();
 }
 
-double mean_abs_diff(const cv::Mat& a, const cv::Mat& b) {
-  cv::Mat d;
-  cv::absdiff(a, b, d);
-  const cv::Scalar m = cv::mean(d);
-  return (m[0] + m[1] + m[2]) / 3.0;
-}
-
 TEST(GrainCommands, RenderDrawsShaderGrainAndNothingAtIntensityZero) {
   const auto dir = test_dir();
   write_test_panorama(dir);

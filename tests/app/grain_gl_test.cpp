@@ -29,14 +29,6 @@ std::string grain_entry(const std::string& style, double intensity, const std::s
   return s.str();
 }
 
-double max_diff(const cv::Mat& a, const cv::Mat& b) {
-  cv::Mat d;
-  cv::absdiff(a, b, d);
-  double m = 0;
-  cv::minMaxLoc(d.reshape(1), nullptr, &m);
-  return m;
-}
-
 TEST(GrainGpu, RenderGpuMatchesTheCpuPathForTheShaderStyles) {
   const auto dir = test_dir();
   write_test_panorama(dir);
@@ -47,7 +39,7 @@ TEST(GrainGpu, RenderGpuMatchesTheCpuPathForTheShaderStyles) {
       const cv::Mat cpu = render(dir, common, "cpu.png");
       const cv::Mat gpu = render(dir, common + "--gpu", "gpu.png");
       ASSERT_EQ(cpu.size(), gpu.size());
-      const double err = max_diff(cpu, gpu);
+      const double err = max_abs_diff(cpu, gpu);
       std::cout << style << " " << eye << ": render --gpu vs CPU max " << err << "/255\n";
       EXPECT_LE(err, 2.0) << style << " " << eye;
     }
@@ -70,9 +62,9 @@ TEST(GrainGpu, RenderGpuDrawsTheVolumetricStyles) {
     const double changed = cv::countNonZero(d.reshape(1) > 2) / static_cast<double>(d.total() * 3);
     std::cout << style << ": " << changed * 100 << " % of the channels changed by more than 2/255\n";
     EXPECT_GT(changed, 0.005) << style;
-    EXPECT_EQ(max_diff(on, render(dir, common, "again.png")), 0.0) << style;  // reproducible
+    EXPECT_EQ(max_abs_diff(on, render(dir, common, "again.png")), 0.0) << style;  // reproducible
     write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry(style, 0.0, settings)));
-    EXPECT_EQ(max_diff(plain, render(dir, common, "off.png")), 0.0) << style;
+    EXPECT_EQ(max_abs_diff(plain, render(dir, common, "off.png")), 0.0) << style;
   }
 }
 
@@ -89,13 +81,7 @@ TEST(GrainGpu, PlayChangesTheGrainOnRefreshBoundariesOnlyAndNotWhileUnaltered) {
   g.keyframes.push_back({{0.0, 0.0}, 0, {1.0, 1.0}});
   sc.grains.push_back(g);
   Player player(sc, video->properties());
-  FrameLoopOptions o;
-  o.profile = xr::load_hmd_profile("generic90");
-  o.eye_scale = 0.1;
-  o.window_width = 160;
-  o.window_height = 90;
-  o.visible = false;
-  o.decode_timeout = std::chrono::seconds(5);
+  FrameLoopOptions o = test::small_hidden_loop();
   o.script = [](std::int64_t n) {
     return n == 10 ? std::vector<xr::DesktopEvent>{xr::KeyEvent{xr::Key::U, true}} : std::vector<xr::DesktopEvent>{};
   };
@@ -113,13 +99,13 @@ TEST(GrainGpu, PlayChangesTheGrainOnRefreshBoundariesOnlyAndNotWhileUnaltered) {
   const cv::Mat grey(eyes[0][0].size(), CV_32FC3, cv::Scalar(level, level, level));
   for (std::size_t n = 0; n < times.size(); ++n) {
     for (int e = 0; e < 2; ++e) {
-      const double from_grey = max_diff(eyes[n][static_cast<std::size_t>(e)], grey);
+      const double from_grey = max_abs_diff(eyes[n][static_cast<std::size_t>(e)], grey);
       if (n >= 10) EXPECT_LT(from_grey, 1e-3) << "unaltered frame " << n;
       else EXPECT_GT(from_grey, 0.05) << "frame " << n << " eye " << e;
     }
     if (n == 0 || n >= 10) continue;
     const bool boundary = times[n] / 20'000'000 != times[n - 1] / 20'000'000;
-    const double change = max_diff(eyes[n][0], eyes[n - 1][0]);
+    const double change = max_abs_diff(eyes[n][0], eyes[n - 1][0]);
     if (boundary) EXPECT_GT(change, 0.05) << "frame " << n << " starts a refresh";
     else EXPECT_EQ(change, 0.0) << "frame " << n << " is in the same refresh";
   }
