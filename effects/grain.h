@@ -27,8 +27,8 @@
 namespace vdfx::effects {
 
 enum class GrainStyle { Headset, Surface, ObjectCloud, FreeCloud };
-inline constexpr std::array<GrainStyle, 4> kGrainStyles{GrainStyle::Headset, GrainStyle::Surface,
-                                                       GrainStyle::ObjectCloud, GrainStyle::FreeCloud};
+inline constexpr std::array<GrainStyle, 4> kGrainStyles{
+    GrainStyle::Headset, GrainStyle::Surface, GrainStyle::ObjectCloud, GrainStyle::FreeCloud};
 
 std::string_view grain_style_name(GrainStyle style);  //!< "headset", "surface", ...
 std::optional<GrainStyle> grain_style_from_name(std::string_view name);
@@ -46,8 +46,8 @@ struct GrainSettingSpec {
   std::string_view name;  //!< sidecar name
   double min;
   double max;
-  bool min_open;      //!< min itself is not accepted
-  bool integer;       //!< a whole number (count)
+  bool min_open;  //!< min itself is not accepted
+  bool integer;   //!< a whole number (count)
   double default_value;
 };
 

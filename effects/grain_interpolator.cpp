@@ -15,9 +15,8 @@ std::vector<double> neutral() {
 
 GrainInterpolator::GrainInterpolator(const GrainEffect& e, const InterpolationSettings& defaults,
                                      double fps)
-    : rbf_(std::make_shared<const RbfInterpolator>(e.keyframes, kGrainParamCount,
-                                                   e.interpolation.value_or(defaults), fps,
-                                                   neutral())) {}
+    : rbf_(std::make_shared<const RbfInterpolator>(
+          e.keyframes, kGrainParamCount, e.interpolation.value_or(defaults), fps, neutral())) {}
 
 GrainParams GrainInterpolator::evaluate(const Eigen::Vector3d& unit, std::int64_t frame) const {
   double v[kGrainParamCount];

@@ -60,7 +60,7 @@ std::vector<GrainFrame> GrainSet::layout(const HeadPose& head, std::int64_t disp
       f.particles = en.cached;
     } else {
       f.distance_m = e.settings.get(e.style == GrainStyle::Headset ? GrainSetting::PlaneM
-                                                                    : GrainSetting::SphereM);
+                                                                   : GrainSetting::SphereM);
       f.cell_m = kGrainCellRad * f.distance_m * f.params.size;
       f.noise_offset = grain_noise_offsets(e.seed, f.refresh);
       f.noise = en.noise;

@@ -39,9 +39,9 @@ inline constexpr double kGrainFloor = 0.1;
 struct GrainFrame {
   std::size_t effect = 0;  //!< index of the effect in the GrainSet (file order of the grains)
   GrainStyle style = GrainStyle::Surface;
-  GrainParams params;       //!< at the head's forward direction and the video frame
+  GrainParams params;        //!< at the head's forward direction and the video frame
   std::int64_t refresh = 0;  //!< grain_refresh_index of the display time
-  HeadPose head;            //!< anchor: volumes and sphere centred on head.position
+  HeadPose head;             //!< anchor: volumes and sphere centred on head.position
   // Shader styles.
   double distance_m = 0.0;  //!< plane_m (headset) or sphere_m (surface)
   double cell_m = 0.0;      //!< lattice spacing of octave 1: kGrainCellRad * distance * size

@@ -34,16 +34,16 @@ namespace vdfx::effects {
 inline constexpr double kParticleMinExtentM = 0.005;
 inline constexpr double kParticleMaxExtentM = 0.03;
 inline constexpr double kMinParticleOpacity = 0.25;
-inline constexpr double kObjectShellShare = 0.8;   //!< expected share of particles in the shell
-inline constexpr double kObjectFarFactor = 4.0;    //!< surrounding volume's outer radius / R
+inline constexpr double kObjectShellShare = 0.8;  //!< expected share of particles in the shell
+inline constexpr double kObjectFarFactor = 4.0;   //!< surrounding volume's outer radius / R
 
 struct GrainParticle {
-  Eigen::Vector3d centre;      //!< metres, relative to the head position, LOCAL axes
-  Eigen::Vector3d extent;      //!< full size along the particle's own axes, metres
-  Eigen::Vector4d rotation;    //!< unit quaternion (x, y, z, w): particle axes -> LOCAL
-  double brightness = 0.5;     //!< grey value drawn, 0..1
-  double opacity = 1.0;        //!< kMinParticleOpacity..1
-  int region = 0;              //!< 0: shell (free_cloud: the cylinder), 1: surrounding volume
+  Eigen::Vector3d centre;    //!< metres, relative to the head position, LOCAL axes
+  Eigen::Vector3d extent;    //!< full size along the particle's own axes, metres
+  Eigen::Vector4d rotation;  //!< unit quaternion (x, y, z, w): particle axes -> LOCAL
+  double brightness = 0.5;   //!< grey value drawn, 0..1
+  double opacity = 1.0;      //!< kMinParticleOpacity..1
+  int region = 0;            //!< 0: shell (free_cloud: the cylinder), 1: surrounding volume
 };
 
 struct ParticleSet {

@@ -26,6 +26,8 @@ std::uint64_t RandomStream::next() {
   return mix64(state_);
 }
 
-double RandomStream::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+double RandomStream::uniform() {
+  return static_cast<double>(next() >> 11) * 0x1.0p-53;
+}
 
 }  // namespace vdfx::effects

@@ -31,7 +31,7 @@ ShaderGrainUniforms shader_grain_uniforms(const GrainFrame& f, const Eigen::Matr
 }
 
 std::optional<float> shader_grain_fragment(const ShaderGrainUniforms& u, const PerlinNoise& noise,
-                                      float frag_x, float frag_y, int width, int height) {
+                                           float frag_x, float frag_y, int width, int height) {
   const auto& t = u.tangents;
   const float tx = t[0] + (frag_x / static_cast<float>(width)) * (t[1] - t[0]);
   const float ty = t[2] + (frag_y / static_cast<float>(height)) * (t[3] - t[2]);
@@ -61,9 +61,11 @@ std::optional<float> shader_grain_fragment(const ShaderGrainUniforms& u, const P
 void composite_shader_grain(cv::Mat& image, const GrainFrame& f, const Eigen::Matrix3d& eye_rot,
                             const Eigen::Vector3d& eye_pos, const TanRect& fov) {
   if (is_volumetric(f.style) || !f.noise)
-    throw std::invalid_argument("composite_shader_grain: " + std::string(grain_style_name(f.style)) +
-                                " has no CPU reference (volumetric grain renders on the GPU)");
-  if (image.type() != CV_32FC3) throw std::invalid_argument("composite_shader_grain: CV_32FC3 expected");
+    throw std::invalid_argument(
+        "composite_shader_grain: " + std::string(grain_style_name(f.style)) +
+        " has no CPU reference (volumetric grain renders on the GPU)");
+  if (image.type() != CV_32FC3)
+    throw std::invalid_argument("composite_shader_grain: CV_32FC3 expected");
   const ShaderGrainUniforms u = shader_grain_uniforms(f, eye_rot, eye_pos, fov);
   const int w = image.cols, h = image.rows;
   cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& rows) {

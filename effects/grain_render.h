@@ -20,8 +20,8 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <opencv2/core.hpp>
+#include <optional>
 
 #include "effects/grain_layout.h"
 #include "effects/view_camera.h"
@@ -30,28 +30,29 @@ namespace vdfx::effects {
 
 /// Everything the shader-style pass reads, in the shader's precision.
 struct ShaderGrainUniforms {
-  int style = 1;                       //!< 0 headset plane, 1 surface sphere
+  int style = 1;  //!< 0 headset plane, 1 surface sphere
   Eigen::Matrix3f eye_to_grain = Eigen::Matrix3f::Identity();  //!< eye-space ray -> grain frame
   Eigen::Vector3f eye = Eigen::Vector3f::Zero();               //!< eye position in the grain frame
-  float distance = 10.0f;              //!< plane distance or sphere radius, metres
-  float inv_cell = 1.0f;               //!< 1 / lattice spacing of octave 1, per metre
+  float distance = 10.0f;  //!< plane distance or sphere radius, metres
+  float inv_cell = 1.0f;   //!< 1 / lattice spacing of octave 1, per metre
   Eigen::Vector3f offset1 = Eigen::Vector3f::Zero(), offset2 = Eigen::Vector3f::Zero();
   float octave2 = static_cast<float>(kGrainOctave2Weight);
-  float gain = 0.0f;                   //!< intensity * kGrainGain
+  float gain = 0.0f;  //!< intensity * kGrainGain
   float floor = static_cast<float>(kGrainFloor);
   std::array<float, 4> tangents{-1, 1, -1, 1};  //!< left, right, down, up
-  std::array<int, 256> perm{};          //!< the permutation of the effect's noise
+  std::array<int, 256> perm{};                  //!< the permutation of the effect's noise
 };
 
 /// The uniforms of one layer for one eye (orientation: eye -> LOCAL; position in LOCAL).
-ShaderGrainUniforms shader_grain_uniforms(const GrainFrame& frame, const Eigen::Matrix3d& eye_orientation,
+ShaderGrainUniforms shader_grain_uniforms(const GrainFrame& frame,
+                                          const Eigen::Matrix3d& eye_orientation,
                                           const Eigen::Vector3d& eye_position, const TanRect& fov);
 
 /// The modulation s at a fragment position in GL's convention (x from the left edge, y from the
 /// bottom edge, pixel centres at +0.5) of a width x height eye image; nullopt where the ray
 /// misses the grain surface (nothing is drawn there).
 std::optional<float> shader_grain_fragment(const ShaderGrainUniforms& u, const PerlinNoise& noise,
-                                      float frag_x, float frag_y, int width, int height);
+                                           float frag_x, float frag_y, int width, int height);
 
 /// Composites a shader-style layer onto an upright eye image (CV_32FC3, any channel order).
 /// Throws std::invalid_argument for a volumetric layer (those have no CPU reference).

@@ -178,8 +178,14 @@ void main() {
 
 }  // namespace
 
-std::string grain_shader_fragment_source() { return std::string(kNoise) + kShaderStyles; }
-std::string grain_particle_vertex_source() { return kParticleVertex; }
-std::string grain_particle_fragment_source() { return kParticleFragment; }
+std::string grain_shader_fragment_source() {
+  return std::string(kNoise) + kShaderStyles;
+}
+std::string grain_particle_vertex_source() {
+  return kParticleVertex;
+}
+std::string grain_particle_fragment_source() {
+  return kParticleFragment;
+}
 
 }  // namespace vdfx::effects

@@ -12,7 +12,9 @@ namespace {
 
 constexpr std::uint64_t kPermutationStream = 0x7065726d;  // "perm"
 
-float lerp(float t, float a, float b) { return a + t * (b - a); }
+float lerp(float t, float a, float b) {
+  return a + t * (b - a);
+}
 
 }  // namespace
 
@@ -21,12 +23,14 @@ const std::array<std::array<float, 3>, 16>& PerlinNoise::gradients() {
   // again, in the order the paper's hash-bit selection gives entries 12..15. Four hash bits pick
   // an entry without a division (the paper's choice; the repeats make those four directions
   // slightly more frequent, which it found invisible).
+  // clang-format off
   static const std::array<std::array<float, 3>, 16> g = {{
       {1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
       {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
       {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1},
       {1, 1, 0}, {0, -1, 1}, {-1, 1, 0}, {0, -1, -1},
   }};
+  // clang-format on
   return g;
 }
 

@@ -40,6 +40,8 @@ class PerlinNoise {
 };
 
 /// The quintic fade 6t^5 - 15t^4 + 10t^3, in the shader's operation order.
-inline float perlin_fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
+inline float perlin_fade(float t) {
+  return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
+}
 
 }  // namespace vdfx::effects

@@ -47,13 +47,15 @@ void read_settings(Checker& c, const json& v, const std::string& ptr,
     }
     if (style && !effects::grain_style_has_setting(*style, spec->id)) {
       c.error(kp, "\"" + key + "\" is not a setting of style " +
-                      std::string(effects::grain_style_name(*style)) + " (its settings: " +
-                      settings_list(style) + ")");
+                      std::string(effects::grain_style_name(*style)) +
+                      " (its settings: " + settings_list(style) + ")");
       continue;
     }
     if (spec->integer) {
-      const auto lo = static_cast<std::int64_t>(spec->min), hi = static_cast<std::int64_t>(spec->max);
-      if (auto i = c.integer(value, kp, lo, hi, "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]"))
+      const auto lo = static_cast<std::int64_t>(spec->min),
+                 hi = static_cast<std::int64_t>(spec->max);
+      if (auto i = c.integer(value, kp, lo, hi,
+                             "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]"))
         out.set(spec->id, static_cast<double>(*i));
     } else if (auto d = c.number(value, kp, {spec->min, spec->max, spec->min_open, false})) {
       out.set(spec->id, *d);
@@ -106,8 +108,10 @@ nlohmann::ordered_json grain_to_json(const effects::GrainEffect& g) {
   ordered s = ordered::object();
   for (effects::GrainSetting id : effects::grain_style_settings(g.style)) {
     const effects::GrainSettingSpec& spec = effects::grain_setting_spec(id);
-    if (spec.integer) s[std::string(spec.name)] = static_cast<std::int64_t>(g.settings.get(id));
-    else s[std::string(spec.name)] = g.settings.get(id);
+    if (spec.integer)
+      s[std::string(spec.name)] = static_cast<std::int64_t>(g.settings.get(id));
+    else
+      s[std::string(spec.name)] = g.settings.get(id);
   }
   e["settings"] = std::move(s);
   if (g.interpolation) e["interpolation"] = interpolation_to_json(*g.interpolation);
@@ -137,12 +141,16 @@ void read_grain(Checker& c, const json& entry, const std::string& ptr,
   std::optional<effects::GrainStyle> style;
   if (const json* p = c.member(entry, ptr, "style")) {
     if (auto s = c.string(*p, ptr + "/style")) {
-      if ((style = effects::grain_style_from_name(*s))) out.style = *style;
-      else c.error(ptr + "/style", "unknown grain style \"" + *s + "\" (expected: " + style_list() + ")");
+      if ((style = effects::grain_style_from_name(*s)))
+        out.style = *style;
+      else
+        c.error(ptr + "/style",
+                "unknown grain style \"" + *s + "\" (expected: " + style_list() + ")");
     }
   }
   if (const json* p = c.member(entry, ptr, "seed"))
-    if (auto i = c.integer(*p, ptr + "/seed", 0, std::numeric_limits<std::int64_t>::max(), "[0, 2^63)"))
+    if (auto i =
+            c.integer(*p, ptr + "/seed", 0, std::numeric_limits<std::int64_t>::max(), "[0, 2^63)"))
       out.seed = static_cast<std::uint64_t>(*i);
   out.settings = effects::GrainSettings();
   if (const json* p = c.member(entry, ptr, "settings", false))

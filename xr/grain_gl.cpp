@@ -107,8 +107,8 @@ struct GrainGl::Impl {
     const Eigen::Vector3f eye = local.position.cast<float>();
     const Eigen::Vector3f up = view.orientation.col(1).cast<float>();
     const Eigen::Vector3f right = view.orientation.col(0).cast<float>();
-    const double px_per_tan = std::min(width / (view.tan_right - view.tan_left),
-                                       height / (view.tan_up - view.tan_down));
+    const double px_per_tan =
+        std::min(width / (view.tan_right - view.tan_left), height / (view.tan_up - view.tan_down));
     particles.use();
     const auto loc = [&](const char* n) { return particles.uniform(n); };
     glUniformMatrix4fv(loc("u_view_proj"), 1, GL_FALSE, vp.data());
@@ -147,9 +147,15 @@ GrainGl::~GrainGl() {
   if (impl_->empty_vao) glDeleteVertexArrays(1, &impl_->empty_vao);
 }
 
-void GrainGl::set_layers(std::vector<effects::GrainFrame> layers) { impl_->layers = std::move(layers); }
-const std::vector<effects::GrainFrame>& GrainGl::layers() const { return impl_->layers; }
-GrainLayerStats GrainGl::stats() const { return impl_->stats; }
+void GrainGl::set_layers(std::vector<effects::GrainFrame> layers) {
+  impl_->layers = std::move(layers);
+}
+const std::vector<effects::GrainFrame>& GrainGl::layers() const {
+  return impl_->layers;
+}
+GrainLayerStats GrainGl::stats() const {
+  return impl_->stats;
+}
 
 void GrainGl::draw(const RenderView& view, int /*eye*/, int width, int height) {
   Impl& m = *impl_;
@@ -159,8 +165,10 @@ void GrainGl::draw(const RenderView& view, int /*eye*/, int width, int height) {
   glBlendFuncSeparate(GL_ONE, GL_SRC1_COLOR, GL_ZERO, GL_ONE);
   for (const effects::GrainFrame& f : m.layers) {
     if (!(f.params.intensity > 0.0)) continue;
-    if (effects::is_volumetric(f.style)) m.draw_particles(view, width, height, f);
-    else m.draw_shader(view, width, height, f);
+    if (effects::is_volumetric(f.style))
+      m.draw_particles(view, width, height, f);
+    else
+      m.draw_shader(view, width, height, f);
   }
   glDisable(GL_BLEND);
   glBindVertexArray(0);

@@ -19,7 +19,8 @@ namespace {
 std::string grain_entry(const std::string& style, double intensity, double size, int seed = 4) {
   std::ostringstream s;
   s << R"(,
-    {"type": "grain", "style": ")" << style << R"(", "seed": )" << seed << R"(,
+    {"type": "grain", "style": ")"
+    << style << R"(", "seed": )" << seed << R"(,
      "keyframes": [{"azimuth_deg": 0.0, "altitude_deg": 0.0, "frame": 0, "params": {"intensity": )"
     << intensity << R"(, "size": )" << size << "}}]}";
   return s.str();
@@ -51,12 +52,13 @@ TEST(GrainCommands, VolumetricGrainWithoutGpuIsAUsageError) {
   write_test_panorama(dir);
   write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry("surface", 0.5, 1.0) +
                                                    grain_entry("free_cloud", 0.5, 1.0)));
-  const CommandResult r = run_vdfx("render " + (dir / "pano.png").string() + " --sidecar " +
-                                   (dir / "s.vdfx.json").string() +
-                                   " --view 0,0 --fov 90 --size 64x48 --out " + (dir / "x.png").string());
+  const CommandResult r = run_vdfx(
+      "render " + (dir / "pano.png").string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+      " --view 0,0 --fov 90 --size 64x48 --out " + (dir / "x.png").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("grain #2 (free_cloud) is volumetric and renders on the GPU only: add --gpu"),
-            std::string::npos)
+  EXPECT_NE(
+      r.output.find("grain #2 (free_cloud) is volumetric and renders on the GPU only: add --gpu"),
+      std::string::npos)
       << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
 }
@@ -80,7 +82,8 @@ TEST(GrainCommands, EvalPrintsEachGrainAndValidateCountsThem) {
 
 TEST(GrainCommands, TheEditorsDocumentKeepsGrainOnSave) {
   const io::SidecarReport r = io::validate_sidecar_text(
-      exposure_sidecar(grain_entry("free_cloud", 0.3, 1.0) + grain_entry("surface", 0.7, 2.0)), "s");
+      exposure_sidecar(grain_entry("free_cloud", 0.3, 1.0) + grain_entry("surface", 0.7, 2.0)),
+      "s");
   ASSERT_TRUE(r.ok()) << r.to_string();
   const Document doc(*r.sidecar);
   EXPECT_EQ(doc.sidecar().grains, r.sidecar->grains);

@@ -20,10 +20,12 @@
 namespace vdfx::app::testing {
 namespace {
 
-std::string grain_entry(const std::string& style, double intensity, const std::string& settings = "{}") {
+std::string grain_entry(const std::string& style, double intensity,
+                        const std::string& settings = "{}") {
   std::ostringstream s;
   s << R"(,
-    {"type": "grain", "style": ")" << style << R"(", "seed": 11, "settings": )" << settings << R"(,
+    {"type": "grain", "style": ")"
+    << style << R"(", "seed": 11, "settings": )" << settings << R"(,
      "keyframes": [{"azimuth_deg": 0.0, "altitude_deg": 0.0, "frame": 0, "params": {"intensity": )"
     << intensity << R"(, "size": 1.0}}]})";
   return s.str();
@@ -60,7 +62,8 @@ TEST(GrainGpu, RenderGpuDrawsTheVolumetricStyles) {
     cv::Mat d;
     cv::absdiff(on, plain, d);
     const double changed = cv::countNonZero(d.reshape(1) > 2) / static_cast<double>(d.total() * 3);
-    std::cout << style << ": " << changed * 100 << " % of the channels changed by more than 2/255\n";
+    std::cout << style << ": " << changed * 100
+              << " % of the channels changed by more than 2/255\n";
     EXPECT_GT(changed, 0.005) << style;
     EXPECT_EQ(max_abs_diff(on, render(dir, common, "again.png")), 0.0) << style;  // reproducible
     write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry(style, 0.0, settings)));
@@ -72,8 +75,8 @@ TEST(GrainGpu, PlayChangesTheGrainOnRefreshBoundariesOnlyAndNotWhileUnaltered) {
   // 90 Hz display times (the session's period) from a start that is no multiple of 20 ms.
   std::vector<std::int64_t> times;
   for (std::int64_t k = 0; k < 12; ++k) times.push_back(7'000'000 + k * 11'111'111);
-  auto video = std::make_unique<io::VideoSource>(std::make_unique<test::FakeDecoder>(10, 64, 32, 0.5, nullptr),
-                                                 io::VideoSourceOptions{});
+  auto video = std::make_unique<io::VideoSource>(
+      std::make_unique<test::FakeDecoder>(10, 64, 32, 0.5, nullptr), io::VideoSourceOptions{});
   auto input = xr::create_replay_backend(test::still_head_recording(times), {});
   io::Sidecar sc = test::one_effect_sidecar(effects::EffectType::Exposure, {{0, 0, {0.0}}});
   effects::GrainEffect g;
@@ -83,12 +86,14 @@ TEST(GrainGpu, PlayChangesTheGrainOnRefreshBoundariesOnlyAndNotWhileUnaltered) {
   Player player(sc, video->properties());
   FrameLoopOptions o = test::small_hidden_loop();
   o.script = [](std::int64_t n) {
-    return n == 10 ? std::vector<xr::DesktopEvent>{xr::KeyEvent{xr::Key::U, true}} : std::vector<xr::DesktopEvent>{};
+    return n == 10 ? std::vector<xr::DesktopEvent>{xr::KeyEvent{xr::Key::U, true}}
+                   : std::vector<xr::DesktopEvent>{};
   };
   std::vector<std::array<cv::Mat, 2>> eyes;
   o.on_frame = [&](xr::Compositor& c, std::int64_t) {
     std::array<cv::Mat, 2> e;
-    for (int k = 0; k < 2; ++k) cv::cvtColor(c.read_eye_buffer(k), e[static_cast<std::size_t>(k)], cv::COLOR_BGRA2BGR);
+    for (int k = 0; k < 2; ++k)
+      cv::cvtColor(c.read_eye_buffer(k), e[static_cast<std::size_t>(k)], cv::COLOR_BGRA2BGR);
     eyes.push_back(e);
   };
   FrameLoop loop(o, *input, *video, player);
@@ -100,14 +105,18 @@ TEST(GrainGpu, PlayChangesTheGrainOnRefreshBoundariesOnlyAndNotWhileUnaltered) {
   for (std::size_t n = 0; n < times.size(); ++n) {
     for (int e = 0; e < 2; ++e) {
       const double from_grey = max_abs_diff(eyes[n][static_cast<std::size_t>(e)], grey);
-      if (n >= 10) EXPECT_LT(from_grey, 1e-3) << "unaltered frame " << n;
-      else EXPECT_GT(from_grey, 0.05) << "frame " << n << " eye " << e;
+      if (n >= 10)
+        EXPECT_LT(from_grey, 1e-3) << "unaltered frame " << n;
+      else
+        EXPECT_GT(from_grey, 0.05) << "frame " << n << " eye " << e;
     }
     if (n == 0 || n >= 10) continue;
     const bool boundary = times[n] / 20'000'000 != times[n - 1] / 20'000'000;
     const double change = max_abs_diff(eyes[n][0], eyes[n - 1][0]);
-    if (boundary) EXPECT_GT(change, 0.05) << "frame " << n << " starts a refresh";
-    else EXPECT_EQ(change, 0.0) << "frame " << n << " is in the same refresh";
+    if (boundary)
+      EXPECT_GT(change, 0.05) << "frame " << n << " starts a refresh";
+    else
+      EXPECT_EQ(change, 0.0) << "frame " << n << " is in the same refresh";
   }
 }
 

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <iostream>
 #include <map>
-
 #include <opencv2/imgproc.hpp>
 
 #include "app/view_render.h"
@@ -21,7 +20,8 @@
 namespace vdfx::app {
 namespace {
 
-const std::filesystem::path kSunrise = "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
+const std::filesystem::path kSunrise =
+    "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
 const effects::Direction kLook{-30.0, 5.0};  // towards the trees: sky, trees and grass in view
 
 io::Sidecar sidecar_with(std::vector<effects::GrainEffect> grains) {
@@ -111,8 +111,10 @@ Match best_shift(const cv::Mat& left, const cv::Mat& right, const cv::Rect& win,
     const double denom = a - 2 * b + d;
     if (denom < 0) m.shift += 0.5 * (a - d) / denom;
   }
-  if (std::abs(e) > search) m.corr_at_zero = correlation(left, right, win, 0);
-  else m.corr_at_zero = c.count(0) ? c[0] : correlation(left, right, win, 0);
+  if (std::abs(e) > search)
+    m.corr_at_zero = correlation(left, right, win, 0);
+  else
+    m.corr_at_zero = c.count(0) ? c[0] : correlation(left, right, win, 0);
   return m;
 }
 
@@ -122,8 +124,8 @@ std::pair<double, Eigen::Vector2d> expected_disparity(double distance) {
   const xr::HmdProfile p = xr::load_hmd_profile("generic90");
   const Eigen::Matrix3d R = xr::view_rotation(kLook, 0.0);
   xr::Pose head;
-  head.orientation = glm::quat_cast(glm::dmat3(R(0, 0), R(1, 0), R(2, 0), R(0, 1), R(1, 1), R(2, 1),
-                                               R(0, 2), R(1, 2), R(2, 2)));
+  head.orientation = glm::quat_cast(
+      glm::dmat3(R(0, 0), R(1, 0), R(2, 0), R(0, 1), R(1, 1), R(2, 1), R(0, 2), R(1, 2), R(2, 2)));
   const auto views = xr::locate_eye_views(head, p);
   const Eigen::Vector3d f = -R.col(2) * distance;
   const glm::dvec2 l = xr::project_to_pixel(views[0], {f.x(), f.y(), f.z()});
@@ -164,21 +166,27 @@ TEST_P(GrainStereo, EyesAgreeAfterTheShiftTheirDepthImplies) {
   const Match control = best_shift(sl, sr_own, win, expected, 6);
   const effects::Disparity d = effects::disparity_at(c.distance, 0.063, 1.0);
   std::cout << c.name << ": expected shift " << expected << " px (disparity " << d.vergence_deg
-            << " deg), measured " << m.shift << " px, correlation " << m.corr << " (at shift 0: "
-            << m.corr_at_zero << "); independent eyes: " << control.corr << "\n";
+            << " deg), measured " << m.shift << " px, correlation " << m.corr
+            << " (at shift 0: " << m.corr_at_zero << "); independent eyes: " << control.corr
+            << "\n";
   EXPECT_GE(m.corr, c.min_correlation);
   EXPECT_NEAR(m.shift, expected, 1.0);
   EXPECT_LT(control.corr, 0.3);  // the check can fail: uncorrelated eyes do not pass it
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Styles, GrainStereo,
-    ::testing::Values(Case{"surface_10m_cpu", effects::GrainStyle::Surface, effects::GrainSetting::SphereM, 10.0, false},
-                      Case{"surface_2m_gpu", effects::GrainStyle::Surface, effects::GrainSetting::SphereM, 2.0, true},
-                      Case{"headset_5cm_cpu", effects::GrainStyle::Headset, effects::GrainSetting::PlaneM, 0.05, false},
-                      Case{"headset_50cm_gpu", effects::GrainStyle::Headset, effects::GrainSetting::PlaneM, 0.5, true},
-                      Case{"object_cloud_2m_gpu", effects::GrainStyle::ObjectCloud, effects::GrainSetting::SphereM, 2.0, true, 0.85}),
-    [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Styles, GrainStereo,
+                         ::testing::Values(Case{"surface_10m_cpu", effects::GrainStyle::Surface,
+                                                effects::GrainSetting::SphereM, 10.0, false},
+                                           Case{"surface_2m_gpu", effects::GrainStyle::Surface,
+                                                effects::GrainSetting::SphereM, 2.0, true},
+                                           Case{"headset_5cm_cpu", effects::GrainStyle::Headset,
+                                                effects::GrainSetting::PlaneM, 0.05, false},
+                                           Case{"headset_50cm_gpu", effects::GrainStyle::Headset,
+                                                effects::GrainSetting::PlaneM, 0.5, true},
+                                           Case{"object_cloud_2m_gpu",
+                                                effects::GrainStyle::ObjectCloud,
+                                                effects::GrainSetting::SphereM, 2.0, true, 0.85}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace vdfx::app

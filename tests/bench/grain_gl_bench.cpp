@@ -107,13 +107,15 @@ void BM_GlGrainParticlesRefresh(benchmark::State& s) {
     s.SkipWithError(f.error.c_str());
     return;
   }
-  effects::GrainSet set = grain_set(effects::GrainStyle::ObjectCloud, 0.5, static_cast<int>(s.range(0)));
+  effects::GrainSet set =
+      grain_set(effects::GrainStyle::ObjectCloud, 0.5, static_cast<int>(s.range(0)));
   std::int64_t refresh = 0;
   double sample_ms = 0.0;
   const double ms = bench::timed_gl_loop(s, [&] {
     const auto t0 = std::chrono::steady_clock::now();
     f.grain->set_layers(set.layout(f.head, 20'000'000 * refresh++, 0));
-    sample_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    sample_ms +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     f.comp->eye_buffer(0).bind();
     f.grain->draw(f.eyes[0], 0, f.width(), f.height());
   });
@@ -121,7 +123,8 @@ void BM_GlGrainParticlesRefresh(benchmark::State& s) {
   s.counters["x_frame"] = ms / f.frame_ms;
 }
 
-#define VDFX_GL_BENCH(fn) BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
+#define VDFX_GL_BENCH(fn) \
+  BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
 VDFX_GL_BENCH(BM_GlGrainEye)
     ->ArgsProduct({{0, 1, 2, 3}, {50}})
     ->Args({1, 0})

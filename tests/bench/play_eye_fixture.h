@@ -73,7 +73,9 @@ struct PlayEye {
 
   /// The left eye with these layers, wall ms.
   double left_eye_ms(std::span<xr::EyeLayer* const> layers) {
-    return xr::finished_wall_ms([&] { comp->render_eye(0, {eyes[0], params, mask, false, layers}); });
+    return xr::finished_wall_ms([&] {
+      comp->render_eye(0, {eyes[0], params, mask, false, layers});
+    });
   }
   int width() const { return comp->config().eye_width; }
   int height() const { return comp->config().eye_height; }

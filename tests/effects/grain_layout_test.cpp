@@ -1,12 +1,12 @@
 /// @file
 /// @brief Grain parameters and per-frame layout: RBF intensity and size, zero intensity costs
 /// nothing, the refresh clock at 90 Hz, particle caching per refresh.
+#include "effects/grain_layout.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
-
-#include "effects/grain_layout.h"
 
 namespace vdfx::effects {
 namespace {
@@ -25,7 +25,8 @@ Keyframe key(double az, double alt, std::int64_t frame, double intensity, double
 
 HeadPose looking_at(double az_deg) {
   HeadPose h;
-  h.orientation = Eigen::AngleAxisd(-az_deg * kDegToRad, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  h.orientation =
+      Eigen::AngleAxisd(-az_deg * kDegToRad, Eigen::Vector3d::UnitY()).toRotationMatrix();
   return h;
 }
 
@@ -80,8 +81,8 @@ TEST(GrainRefresh, At90HzThePatternChangesOnThe20msBoundariesAndNowhereElse) {
 }
 
 TEST(GrainLayout, IntensityAndSizeAreRbfParametersAtTheHeadsForwardDirection) {
-  GrainSet set({effect(GrainStyle::Surface, {key(0, 0, 0, 0.2, 0.5), key(90, 0, 0, 0.8, 3.0)})},
-               {}, 30.0);
+  GrainSet set({effect(GrainStyle::Surface, {key(0, 0, 0, 0.2, 0.5), key(90, 0, 0, 0.8, 3.0)})}, {},
+               30.0);
   auto at0 = set.layout(looking_at(0), 0, 0);
   auto at90 = set.layout(looking_at(90), 0, 0);
   ASSERT_EQ(at0.size(), 1u);

@@ -29,7 +29,9 @@ double reference_noise(const std::array<std::uint8_t, 256>& perm, double x, doub
   const double fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
   const int X = static_cast<int>(fx), Y = static_cast<int>(fy), Z = static_cast<int>(fz);
   const double dx = x - fx, dy = y - fy, dz = z - fz;
-  const auto fade = [](double t) { return 6 * std::pow(t, 5) - 15 * std::pow(t, 4) + 10 * std::pow(t, 3); };
+  const auto fade = [](double t) {
+    return 6 * std::pow(t, 5) - 15 * std::pow(t, 4) + 10 * std::pow(t, 3);
+  };
   double sum = 0.0;
   for (int c = 0; c < 8; ++c) {
     const int i = c & 1, j = (c >> 1) & 1, k = (c >> 2) & 1;
@@ -74,7 +76,7 @@ TEST(PerlinNoise, MatchesAnIndependentDoubleEvaluation) {
     const double x = u(rng), y = u(rng), z = u(rng);
     const double ref = reference_noise(n.permutation(), x, y, z);
     worst = std::max(worst, std::abs(ref - n(static_cast<float>(x), static_cast<float>(y),
-                                              static_cast<float>(z))));
+                                             static_cast<float>(z))));
   }
   // Float inputs near 700 are rounded by up to 3e-5 lattice units; the gradient is below ~3.
   EXPECT_LT(worst, 2e-4);

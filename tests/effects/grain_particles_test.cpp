@@ -1,6 +1,8 @@
 /// @file
 /// @brief The volumetric grain sampler (CPU): every particle in Vb - Vo, sizes, the documented
 /// density laws, determinism per (seed, refresh index) and change at the next index.
+#include "effects/grain_particles.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,7 +10,6 @@
 #include <vector>
 
 #include "effects/coords.h"
-#include "effects/grain_particles.h"
 
 namespace vdfx::effects {
 namespace {
@@ -24,7 +25,9 @@ double ks_uniform(std::vector<double> x) {
 }
 /// The KS critical value at 0.1 % significance: a correct sampler fails one run in a thousand
 /// seeds, and the seeds here are fixed.
-double ks_limit(std::size_t n) { return 1.95 / std::sqrt(static_cast<double>(n)); }
+double ks_limit(std::size_t n) {
+  return 1.95 / std::sqrt(static_cast<double>(n));
+}
 
 GrainSettings object_settings(double sphere_m, double shell, int count) {
   GrainSettings s;
@@ -51,8 +54,10 @@ TEST(GrainParticles, ObjectCloudParticlesLieInTheShellOrTheSurroundingVolume) {
     // Vo is the ball r <= 10 (the video sphere); Vb the ball r <= 11; beyond it the surrounding
     // volume reaches 4 x 10 m.
     ASSERT_GT(r, 10.0);
-    if (p.region == 0) ASSERT_LE(r, 11.0);
-    else ASSERT_TRUE(r > 11.0 && r <= 40.0) << r;
+    if (p.region == 0)
+      ASSERT_LE(r, 11.0);
+    else
+      ASSERT_TRUE(r > 11.0 && r <= 40.0) << r;
     ASSERT_EQ(grain_region(GrainStyle::ObjectCloud, s, p.centre), p.region);
   }
   EXPECT_EQ(set.region_count[0] + set.region_count[1], 20000u);
@@ -122,7 +127,8 @@ TEST(GrainParticles, ObjectCloudDensityFallsAsTheCubeOfDistance) {
   EXPECT_GT(ks_uniform(wrong), 10 * ks_limit(wrong.size()));
   // Shell share: binomial, 5 standard deviations.
   const double n = 40000, share = set.region_count[0] / n;
-  EXPECT_NEAR(share, kObjectShellShare, 5 * std::sqrt(kObjectShellShare * (1 - kObjectShellShare) / n));
+  EXPECT_NEAR(share, kObjectShellShare,
+              5 * std::sqrt(kObjectShellShare * (1 - kObjectShellShare) / n));
   // Directions are uniform: the mean unit vector is near 0 (sd 1/sqrt(3N) per axis).
   EXPECT_LT(mean_dir.norm(), 5.0 / std::sqrt(3 * n));
   // Number density itself, from counts in two thin shells of the surrounding volume:

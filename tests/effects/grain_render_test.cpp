@@ -2,12 +2,13 @@
 /// @brief CPU reference of the shader grain styles: the plane and sphere geometry per eye, the
 /// surface grain fixed in the world and the headset grain fixed to the head, no pinch at the
 /// pole, intensity.
+#include "effects/grain_render.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "effects/grain_render.h"
 #include "effects/view_camera.h"
 
 namespace vdfx::effects {
@@ -32,8 +33,8 @@ Eigen::Matrix3d yaw(double deg) {
 const TanRect kFov{-0.8, 0.7, 0.75, -0.75};
 
 /// Grain modulation s at a fractional fragment position of a 200x160 eye.
-float at(const GrainFrame& f, const Eigen::Matrix3d& eye_rot, const Eigen::Vector3d& eye,
-         double fx, double fy) {
+float at(const GrainFrame& f, const Eigen::Matrix3d& eye_rot, const Eigen::Vector3d& eye, double fx,
+         double fy) {
   const ShaderGrainUniforms u = shader_grain_uniforms(f, eye_rot, eye, kFov);
   const std::optional<float> s = shader_grain_fragment(u, *f.noise, float(fx), float(fy), 200, 160);
   EXPECT_TRUE(s.has_value());
@@ -47,8 +48,8 @@ TEST(GrainRender, HeadsetNoiseIsEvaluatedOnThePlaneAheadOfTheHead) {
   const GrainFrame f = frame(GrainStyle::Headset, 0.4, head);
   const Eigen::Vector3d eye = head.position + head.orientation * Eigen::Vector3d(-0.0315, 0, 0);
   // Independent double-precision geometry for a few pixels: ray, plane hit in head coordinates.
-  for (const auto& px : {Eigen::Vector2d(10.5, 20.5), Eigen::Vector2d(100.5, 80.5),
-                         Eigen::Vector2d(190.5, 150.5)}) {
+  for (const auto& px :
+       {Eigen::Vector2d(10.5, 20.5), Eigen::Vector2d(100.5, 80.5), Eigen::Vector2d(190.5, 150.5)}) {
     const double tx = kFov.left + px.x() / 200 * (kFov.right - kFov.left);
     const double ty = kFov.down + px.y() / 160 * (kFov.up - kFov.down);
     const Eigen::Vector3d d = head.orientation * Eigen::Vector3d(tx, ty, -1).normalized();
@@ -56,7 +57,9 @@ TEST(GrainRender, HeadsetNoiseIsEvaluatedOnThePlaneAheadOfTheHead) {
     const Eigen::Vector3d d_h = head.orientation.transpose() * d;
     const double t = (-0.05 - e_h.z()) / d_h.z();
     const Eigen::Vector3d q = (e_h + t * d_h) / f.cell_m;
-    const auto n = [&](const Eigen::Vector3d& p) { return (*f.noise)(float(p.x()), float(p.y()), float(p.z())); };
+    const auto n = [&](const Eigen::Vector3d& p) {
+      return (*f.noise)(float(p.x()), float(p.y()), float(p.z()));
+    };
     const double g = n(Eigen::Vector3d(q.x(), q.y(), 0) + f.noise_offset[0]) +
                      0.5 * n(Eigen::Vector3d(2 * q.x(), 2 * q.y(), 0) + f.noise_offset[1]);
     EXPECT_NEAR(at(f, head.orientation, eye, px.x(), px.y()), std::max(-1.0, 0.4 * kGrainGain * g),
@@ -131,7 +134,8 @@ TEST(GrainRender, SurfaceGrainLooksTheSameAtThePoleAsAtTheHorizon) {
   HeadPose h;
   const GrainFrame f = frame(GrainStyle::Surface, 0.5, h);
   const auto horizon = texture_stats(f, Eigen::Matrix3d::Identity());
-  const Eigen::Matrix3d up = Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Matrix3d up =
+      Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   const auto pole = texture_stats(f, up);
   const auto seam = texture_stats(f, yaw(180));
   EXPECT_GT(horizon.first, 0.02);
@@ -142,12 +146,14 @@ TEST(GrainRender, SurfaceGrainLooksTheSameAtThePoleAsAtTheHorizon) {
 
 TEST(GrainRender, IntensityScalesTheLayerAndZeroLeavesTheImage) {
   HeadPose h;
-  const GrainFrame weak = frame(GrainStyle::Surface, 0.1, h), strong = frame(GrainStyle::Surface, 0.4, h);
+  const GrainFrame weak = frame(GrainStyle::Surface, 0.1, h),
+                   strong = frame(GrainStyle::Surface, 0.4, h);
   const auto a = texture_stats(weak, Eigen::Matrix3d::Identity());
   const auto b = texture_stats(strong, Eigen::Matrix3d::Identity());
   EXPECT_NEAR(b.first / a.first, 4.0, 0.4);  // s = max(-1, I * gain * g): linear above -1
   // The change is s (C + floor): twice as strong on a colour twice as bright (plus the floor).
-  cv::Mat dark(160, 200, CV_32FC3, cv::Scalar(0.2, 0.2, 0.2)), light(160, 200, CV_32FC3, cv::Scalar(0.4, 0.4, 0.4));
+  cv::Mat dark(160, 200, CV_32FC3, cv::Scalar(0.2, 0.2, 0.2)),
+      light(160, 200, CV_32FC3, cv::Scalar(0.4, 0.4, 0.4));
   composite_shader_grain(dark, strong, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), kFov);
   composite_shader_grain(light, strong, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), kFov);
   const double ratio = cv::norm(light - cv::Scalar(0.4, 0.4, 0.4), cv::NORM_L1) /

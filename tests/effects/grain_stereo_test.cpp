@@ -1,10 +1,10 @@
 /// @file
 /// @brief The depth ranges and disparities the docs quote for each grain style.
+#include "effects/grain_stereo.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "effects/grain_stereo.h"
 
 namespace vdfx::effects {
 namespace {

@@ -26,7 +26,9 @@ struct BrokenCase {
   const char* message;
 };
 
-inline void PrintTo(const BrokenCase& c, std::ostream* os) { *os << c.name; }
+inline void PrintTo(const BrokenCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 /// Success when `valid` changed by the case is reported as the case says; else every problem that
 /// was reported.
@@ -41,7 +43,9 @@ inline ::testing::AssertionResult reports_as_expected(const char* valid, const B
       return ::testing::AssertionSuccess();
     all += p.to_string() + "\n";
   }
-  return ::testing::AssertionFailure() << "expected at " << c.pointer << ": " << c.message << "\ngot:\n" << all;
+  return ::testing::AssertionFailure()
+         << "expected at " << c.pointer << ": " << c.message << "\ngot:\n"
+         << all;
 }
 
 /// The sidecar validates as a document, write -> read gives it back equal, and write -> read ->

@@ -1,12 +1,13 @@
 /// @file
 /// @brief Sidecar grain entries: the guide's example, defaults, every field's validation with its
 /// pointer and reason, several grains beside a flare, and exact round trips.
+#include "io/sidecar_grain.h"
+
 #include <gtest/gtest.h>
 
 #include <functional>
 
 #include "io/sidecar.h"
-#include "io/sidecar_grain.h"
 #include "io/sidecar_validate.h"
 #include "tests/io/sidecar_cases.h"
 #include "tests/test_files.h"
@@ -90,37 +91,46 @@ using test::BrokenCase;
 const BrokenCase kBroken[] = {
     {"style_unknown", [](json& j) { j["effects"][1]["style"] = "snow"; }, "/effects/1/style",
      "unknown grain style \"snow\" (expected: headset, surface, object_cloud, free_cloud)"},
-    {"style_missing", [](json& j) { j["effects"][1].erase("style"); }, "/effects/1", "missing field \"style\""},
-    {"style_not_string", [](json& j) { j["effects"][1]["style"] = 2; }, "/effects/1/style", "expected a string"},
+    {"style_missing", [](json& j) { j["effects"][1].erase("style"); }, "/effects/1",
+     "missing field \"style\""},
+    {"style_not_string", [](json& j) { j["effects"][1]["style"] = 2; }, "/effects/1/style",
+     "expected a string"},
     {"unknown_field", [](json& j) { j["effects"][1]["colour"] = "red"; }, "/effects/1/colour",
      "unknown field \"colour\" (expected: type, style, seed, settings, interpolation, keyframes)"},
     {"light_is_not_grain", [](json& j) { j["effects"][1]["light"] = "auto"; }, "/effects/1/light",
      "unknown field \"light\""},
-    {"seed_missing", [](json& j) { j["effects"][1].erase("seed"); }, "/effects/1", "missing field \"seed\""},
-    {"seed_negative", [](json& j) { j["effects"][1]["seed"] = -1; }, "/effects/1/seed", "out of range [0, 2^63)"},
-    {"seed_fraction", [](json& j) { j["effects"][1]["seed"] = 1.5; }, "/effects/1/seed", "expected an integer"},
-    {"seed_huge", [](json& j) { j["effects"][1]["seed"] = 18446744073709551615ull; }, "/effects/1/seed",
+    {"seed_missing", [](json& j) { j["effects"][1].erase("seed"); }, "/effects/1",
+     "missing field \"seed\""},
+    {"seed_negative", [](json& j) { j["effects"][1]["seed"] = -1; }, "/effects/1/seed",
      "out of range [0, 2^63)"},
-    {"seed_string", [](json& j) { j["effects"][1]["seed"] = "7"; }, "/effects/1/seed", "expected an integer"},
+    {"seed_fraction", [](json& j) { j["effects"][1]["seed"] = 1.5; }, "/effects/1/seed",
+     "expected an integer"},
+    {"seed_huge", [](json& j) { j["effects"][1]["seed"] = 18446744073709551615ull; },
+     "/effects/1/seed", "out of range [0, 2^63)"},
+    {"seed_string", [](json& j) { j["effects"][1]["seed"] = "7"; }, "/effects/1/seed",
+     "expected an integer"},
     {"settings_not_object", [](json& j) { j["effects"][1]["settings"] = 1; }, "/effects/1/settings",
      "expected an object"},
     {"settings_unknown", [](json& j) { j["effects"][1]["settings"]["density"] = 4; },
-     "/effects/1/settings/density", "unknown field \"density\" (expected: refresh_ms, count, radius_m, height_m)"},
+     "/effects/1/settings/density",
+     "unknown field \"density\" (expected: refresh_ms, count, radius_m, height_m)"},
     {"setting_of_another_style", [](json& j) { j["effects"][1]["settings"]["sphere_m"] = 4; },
      "/effects/1/settings/sphere_m",
-     "\"sphere_m\" is not a setting of style free_cloud (its settings: refresh_ms, count, radius_m, height_m)"},
+     "\"sphere_m\" is not a setting of style free_cloud (its settings: refresh_ms, count, "
+     "radius_m, height_m)"},
     {"plane_on_surface", [](json& j) { j["effects"][3]["settings"]["plane_m"] = 0.1; },
-     "/effects/3/settings/plane_m", "is not a setting of style surface (its settings: refresh_ms, sphere_m)"},
+     "/effects/3/settings/plane_m",
+     "is not a setting of style surface (its settings: refresh_ms, sphere_m)"},
     {"refresh_small", [](json& j) { j["effects"][1]["settings"]["refresh_ms"] = 0.5; },
      "/effects/1/settings/refresh_ms", "out of range [1, 60000]"},
     {"refresh_nan", [](json& j) { j["effects"][1]["settings"]["refresh_ms"] = std::nan(""); },
      "/effects/1/settings/refresh_ms", "not a finite number"},
     {"refresh_string", [](json& j) { j["effects"][1]["settings"]["refresh_ms"] = "20"; },
      "/effects/1/settings/refresh_ms", "expected a number"},
-    {"count_zero", [](json& j) { j["effects"][1]["settings"]["count"] = 0; }, "/effects/1/settings/count",
-     "out of range [1, 1000000]"},
-    {"count_big", [](json& j) { j["effects"][1]["settings"]["count"] = 1000001; }, "/effects/1/settings/count",
-     "out of range [1, 1000000]"},
+    {"count_zero", [](json& j) { j["effects"][1]["settings"]["count"] = 0; },
+     "/effects/1/settings/count", "out of range [1, 1000000]"},
+    {"count_big", [](json& j) { j["effects"][1]["settings"]["count"] = 1000001; },
+     "/effects/1/settings/count", "out of range [1, 1000000]"},
     {"count_fraction", [](json& j) { j["effects"][1]["settings"]["count"] = 10.5; },
      "/effects/1/settings/count", "expected an integer"},
     {"radius_small", [](json& j) { j["effects"][1]["settings"]["radius_m"] = 0.05; },
@@ -129,12 +139,15 @@ const BrokenCase kBroken[] = {
      "/effects/1/settings/height_m", "out of range [0.1, 100]"},
     {"sphere_small", [](json& j) { j["effects"][3]["settings"]["sphere_m"] = 0.05; },
      "/effects/3/settings/sphere_m", "out of range [0.1, 1000]"},
-    {"plane_small", [](json& j) { j["effects"][4]["settings"] = {{"plane_m", 0.001}}; },
+    {"plane_small",
+     [](json& j) {
+       j["effects"][4]["settings"] = {{"plane_m", 0.001}};
+     },
      "/effects/4/settings/plane_m", "out of range [0.01, 100]"},
-    {"shell_one", [](json& j) { j["effects"][5]["settings"]["shell"] = 1.0; }, "/effects/5/settings/shell",
-     "out of range (1, 4]"},
-    {"shell_big", [](json& j) { j["effects"][5]["settings"]["shell"] = 4.5; }, "/effects/5/settings/shell",
-     "out of range (1, 4]"},
+    {"shell_one", [](json& j) { j["effects"][5]["settings"]["shell"] = 1.0; },
+     "/effects/5/settings/shell", "out of range (1, 4]"},
+    {"shell_big", [](json& j) { j["effects"][5]["settings"]["shell"] = 4.5; },
+     "/effects/5/settings/shell", "out of range (1, 4]"},
     {"interpolation_bad", [](json& j) { j["effects"][3]["interpolation"]["exponent"] = 5.0; },
      "/effects/3/interpolation/exponent", "out of range"},
     {"interpolation_unknown", [](json& j) { j["effects"][3]["interpolation"]["kernel"] = "tps"; },
@@ -147,9 +160,11 @@ const BrokenCase kBroken[] = {
      "/effects/1/keyframes/0", "expected an object"},
     {"intensity_big", [](json& j) { j["effects"][1]["keyframes"][0]["params"]["intensity"] = 1.5; },
      "/effects/1/keyframes/0/params/intensity", "out of range [0, 1]"},
-    {"intensity_negative", [](json& j) { j["effects"][3]["keyframes"][1]["params"]["intensity"] = -0.1; },
+    {"intensity_negative",
+     [](json& j) { j["effects"][3]["keyframes"][1]["params"]["intensity"] = -0.1; },
      "/effects/3/keyframes/1/params/intensity", "out of range [0, 1]"},
-    {"intensity_missing", [](json& j) { j["effects"][1]["keyframes"][0]["params"].erase("intensity"); },
+    {"intensity_missing",
+     [](json& j) { j["effects"][1]["keyframes"][0]["params"].erase("intensity"); },
      "/effects/1/keyframes/0/params", "missing field \"intensity\""},
     {"size_small", [](json& j) { j["effects"][1]["keyframes"][0]["params"]["size"] = 0.2; },
      "/effects/1/keyframes/0/params/size", "out of range [0.25, 4]"},
@@ -157,7 +172,8 @@ const BrokenCase kBroken[] = {
      "/effects/3/keyframes/0/params/size", "out of range [0.25, 4]"},
     {"size_missing", [](json& j) { j["effects"][1]["keyframes"][0]["params"].erase("size"); },
      "/effects/1/keyframes/0/params", "missing field \"size\""},
-    {"size_not_number", [](json& j) { j["effects"][1]["keyframes"][0]["params"]["size"] = json::array({1}); },
+    {"size_not_number",
+     [](json& j) { j["effects"][1]["keyframes"][0]["params"]["size"] = json::array({1}); },
      "/effects/1/keyframes/0/params/size", "expected a number"},
     {"param_unknown", [](json& j) { j["effects"][1]["keyframes"][0]["params"]["stops"] = 1.0; },
      "/effects/1/keyframes/0/params/stops", "unknown field \"stops\" (expected: intensity, size)"},
@@ -167,15 +183,20 @@ const BrokenCase kBroken[] = {
      "/effects/1/keyframes/0/frame", "out of range [0, 300)"},
     {"keyframe_azimuth", [](json& j) { j["effects"][1]["keyframes"][0]["azimuth_deg"] = 200.0; },
      "/effects/1/keyframes/0/azimuth_deg", "out of range"},
-    {"keyframe_altitude_missing", [](json& j) { j["effects"][1]["keyframes"][0].erase("altitude_deg"); },
+    {"keyframe_altitude_missing",
+     [](json& j) { j["effects"][1]["keyframes"][0].erase("altitude_deg"); },
      "/effects/1/keyframes/0", "missing field \"altitude_deg\""},
-    {"type_unknown_lists_grain", [](json& j) { j["effects"][1]["type"] = "grian"; }, "/effects/1/type",
-     "unknown effect type \"grian\" (known: blur, tint, exposure, saturation, contrast, vignette, flare, grain)"},
+    {"type_unknown_lists_grain", [](json& j) { j["effects"][1]["type"] = "grian"; },
+     "/effects/1/type",
+     "unknown effect type \"grian\" (known: blur, tint, exposure, saturation, contrast, vignette, "
+     "flare, grain)"},
 };
 
 class SidecarGrainBroken : public ::testing::TestWithParam<BrokenCase> {};
 
-TEST_P(SidecarGrainBroken, ReportsPointerAndReason) { EXPECT_TRUE(test::reports_as_expected(kValid, GetParam())); }
+TEST_P(SidecarGrainBroken, ReportsPointerAndReason) {
+  EXPECT_TRUE(test::reports_as_expected(kValid, GetParam()));
+}
 
 INSTANTIATE_TEST_SUITE_P(Cases, SidecarGrainBroken, ::testing::ValuesIn(kBroken),
                          [](const auto& info) { return std::string(info.param.name); });
@@ -189,7 +210,8 @@ TEST(SidecarGrain, ReportsEveryProblemOfOneGrainAndNamesTheFile) {
   j["effects"][3]["keyframes"][0]["params"]["intensity"] = 2;
   const SidecarReport r = validate_sidecar_text(j.dump(), "shot.vdfx.json");
   ASSERT_EQ(r.problems.size(), 5u) << r.to_string();
-  EXPECT_NE(r.to_string().find("shot.vdfx.json: /effects/1/seed: value -3 is out of range"), std::string::npos);
+  EXPECT_NE(r.to_string().find("shot.vdfx.json: /effects/1/seed: value -3 is out of range"),
+            std::string::npos);
   EXPECT_FALSE(r.sidecar.has_value());
 }
 
@@ -216,7 +238,8 @@ Sidecar grain_sidecar() {
   s.grains.push_back(awkward_grain(effects::GrainStyle::Surface, 9223372036854775807ull));
   s.grains.push_back(awkward_grain(effects::GrainStyle::ObjectCloud, 12345));
   s.grains.push_back(awkward_grain(effects::GrainStyle::FreeCloud, 1));
-  s.grains.back().interpolation = effects::InterpolationSettings{0.25, 999.0, effects::AngularDistance::Geodesic};
+  s.grains.back().interpolation =
+      effects::InterpolationSettings{0.25, 999.0, effects::AngularDistance::Geodesic};
   s.grains.back().keyframes.clear();
   return s;
 }

@@ -13,7 +13,8 @@
 namespace vdfx::xr::test {
 
 /// Empty when `actual` matches the golden within the tolerances (8-bit levels), else what failed.
-inline std::string compare_with_golden(const cv::Mat& actual, const std::string& name, double max_tol, double mean_tol) {
+inline std::string compare_with_golden(const cv::Mat& actual, const std::string& name,
+                                       double max_tol, double mean_tol) {
   namespace fs = std::filesystem;
   const std::string golden = std::string(VDFX_SOURCE_DIR) + "/tests/xr/golden/" + name + ".png";
   const fs::path out_dir = fs::path(VDFX_TEST_OUTPUT_DIR) / "xr" / "golden";
@@ -26,7 +27,8 @@ inline std::string compare_with_golden(const cv::Mat& actual, const std::string&
   }
   const cv::Mat g = cv::imread(golden, cv::IMREAD_COLOR);
   if (g.empty() || g.size() != actual.size())
-    return "no golden of the right size at " + golden + " (actual " + actual_path + "; VDFX_BLESS=1 writes it)";
+    return "no golden of the right size at " + golden + " (actual " + actual_path +
+           "; VDFX_BLESS=1 writes it)";
   cv::Mat d;
   cv::absdiff(g, actual, d);
   double mx = 0;
@@ -34,8 +36,9 @@ inline std::string compare_with_golden(const cv::Mat& actual, const std::string&
   const double mean = cv::mean(d.reshape(1))[0];
   if (mx <= max_tol && mean <= mean_tol) return {};
   cv::imwrite((out_dir / (name + "_diff_x8.png")).string(), d * 8);
-  return golden + ": max difference " + std::to_string(mx) + " (tolerance " + std::to_string(max_tol) + "), mean " +
-         std::to_string(mean) + " (tolerance " + std::to_string(mean_tol) + "); actual " + actual_path;
+  return golden + ": max difference " + std::to_string(mx) + " (tolerance " +
+         std::to_string(max_tol) + "), mean " + std::to_string(mean) + " (tolerance " +
+         std::to_string(mean_tol) + "); actual " + actual_path;
 }
 
 }  // namespace vdfx::xr::test

@@ -1,6 +1,8 @@
 /// @file
 /// @brief The GL grain layer: shader styles against the CPU reference (GLSL vs C++ noise), the
 /// particles' geometry per eye, zero intensity, uploads once per refresh.
+#include "xr/grain_gl.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -12,7 +14,6 @@
 #include "golden_bgr.h"
 #include "xr/compositor.h"
 #include "xr/gl_texture.h"
-#include "xr/grain_gl.h"
 
 namespace vdfx::xr {
 namespace {
@@ -101,9 +102,10 @@ TEST_F(GrainGlTest, ShaderStylesMatchTheCppReferenceWithinTwoLevels) {
     EXPECT_LE(e.max * 255.0, 2.0);
     EXPECT_LT(e.mean * 255.0, 0.05);
     EXPECT_GT(grain.mean * 255.0, 5.0);  // the layer is really there
-    std::printf("%s I %.1f size %.1f at %.2f m: GL vs C++ max %.3f/255 mean %.4f/255 (grain %.1f/255)\n",
-                effects::grain_style_name(c.style).data(), c.intensity, c.size, c.distance,
-                e.max * 255, e.mean * 255, grain.mean * 255);
+    std::printf(
+        "%s I %.1f size %.1f at %.2f m: GL vs C++ max %.3f/255 mean %.4f/255 (grain %.1f/255)\n",
+        effects::grain_style_name(c.style).data(), c.intensity, c.size, c.distance, e.max * 255,
+        e.mean * 255, grain.mean * 255);
   }
 }
 
@@ -138,8 +140,11 @@ TEST_F(GrainGlTest, ParticlesLandWhereTheirPositionProjectsInEachEye) {
   head.orientation = view_rotation({-20, 5}, 0);
   // A hand-placed cloud: white spheres (3 cm) at 0.6 .. 3 m, far enough apart to be isolated.
   auto set = std::make_shared<effects::ParticleSet>();
-  const std::vector<Eigen::Vector3d> local = {{0.0, 0.0, -0.6}, {-0.25, 0.1, -1.0}, {0.3, -0.2, -1.5},
-                                              {0.5, 0.4, -3.0}, {-0.6, -0.4, -2.0}};
+  const std::vector<Eigen::Vector3d> local = {{0.0, 0.0, -0.6},
+                                              {-0.25, 0.1, -1.0},
+                                              {0.3, -0.2, -1.5},
+                                              {0.5, 0.4, -3.0},
+                                              {-0.6, -0.4, -2.0}};
   for (const Eigen::Vector3d& p : local) {
     effects::GrainParticle q;
     q.centre = head.orientation * p;
@@ -170,7 +175,8 @@ TEST_F(GrainGlTest, ParticlesLandWhereTheirPositionProjectsInEachEye) {
       // changes it by s (0.2 + floor). Seen larger than kParticleMaxRadiusRad, its weight fades
       // by (max / radius)^2.
       const double f_px = kW / (v.tan_right - v.tan_left), rho = 0.015 * f_px / -e.z();
-      const double theta = 0.015 / e.norm(), fade = std::min(1.0, std::pow(effects::kParticleMaxRadiusRad / theta, 2));
+      const double theta = 0.015 / e.norm(),
+                   fade = std::min(1.0, std::pow(effects::kParticleMaxRadiusRad / theta, 2));
       const double expected = (0.2 + effects::kGrainFloor) * effects::kPi * rho * rho * 0.5 * fade;
       // Pixel sampling of a disc a pixel or two wide errs by up to ~15 % of it.
       EXPECT_NEAR(mass, expected, (0.1 + 0.2 / rho) * expected) << p.transpose();
@@ -222,7 +228,8 @@ namespace {
 /// unit), head looking at the trees. Settings as an author would pick them for a film-grain look
 /// (docs/grain.md, "Looks"); the volumetric styles need many small particles for that.
 TEST_F(GrainGlTest, GoldenScreenshotsOfEachStyleOnTheSunrise) {
-  const double f = 1440.0 / (std::tan(52.0 * effects::kDegToRad) + std::tan(47.0 * effects::kDegToRad));
+  const double f =
+      1440.0 / (std::tan(52.0 * effects::kDegToRad) + std::tan(47.0 * effects::kDegToRad));
   const int w = 480, h = 320;
   effects::HeadPose head;
   head.orientation = view_rotation({-30, 5}, 0);
@@ -239,10 +246,11 @@ TEST_F(GrainGlTest, GoldenScreenshotsOfEachStyleOnTheSunrise) {
     std::vector<std::pair<effects::GrainSetting, double>> settings;
   };
   using S = effects::GrainSetting;
-  for (const Look& look : {Look{effects::GrainStyle::Headset, 0.5, 1.0, {}},
-                           Look{effects::GrainStyle::Surface, 0.5, 1.0, {}},
-                           Look{effects::GrainStyle::ObjectCloud, 1.0, 1.0, {{S::SphereM, 2.0}, {S::Count, 1000000}}},
-                           Look{effects::GrainStyle::FreeCloud, 1.0, 1.0, {{S::Count, 600000}}}}) {
+  for (const Look& look :
+       {Look{effects::GrainStyle::Headset, 0.5, 1.0, {}},
+        Look{effects::GrainStyle::Surface, 0.5, 1.0, {}},
+        Look{effects::GrainStyle::ObjectCloud, 1.0, 1.0, {{S::SphereM, 2.0}, {S::Count, 1000000}}},
+        Look{effects::GrainStyle::FreeCloud, 1.0, 1.0, {{S::Count, 600000}}}}) {
     effects::GrainEffect e;
     e.style = look.style;
     e.seed = 2024;
@@ -264,8 +272,8 @@ TEST_F(GrainGlTest, GoldenScreenshotsOfEachStyleOnTheSunrise) {
     }
     cv::Mat both;
     cv::hconcat(eyes[0], eyes[1], both);
-    const std::string r =
-        test::compare_with_golden(both, "grain_" + std::string(effects::grain_style_name(look.style)), 8.0, 0.5);
+    const std::string r = test::compare_with_golden(
+        both, "grain_" + std::string(effects::grain_style_name(look.style)), 8.0, 0.5);
     EXPECT_TRUE(r.empty()) << r;
   }
 }
