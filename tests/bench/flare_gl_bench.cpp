@@ -87,15 +87,7 @@ void BM_GlFlareEye(benchmark::State& s) {
     f.flare->set_layouts(with ? flares : std::vector<effects::FlareLayout>{});
     return f.left_eye_ms(layers);
   };
-  eye(true);
-  std::vector<double> with, without;
-  for (auto _ : s) {
-    without.push_back(eye(false));
-    with.push_back(eye(true));
-    s.SetIterationTime(with.back() * 1e-3);
-  }
-  s.counters["without_ms"] = bench::median(without);
-  s.counters["x_no_flare"] = bench::median(with) / bench::median(without);
+  bench::interleaved_eye(s, eye, "x_no_flare");
 }
 
 /// The flare layer alone (into the eye buffer), directional style, against the ring count.

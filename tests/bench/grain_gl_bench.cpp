@@ -69,15 +69,7 @@ void BM_GlGrainEye(benchmark::State& s) {
     f.grain->set_layers(with ? layers : std::vector<effects::GrainFrame>{});
     return f.left_eye_ms(eye_layers);
   };
-  eye(true);  // compiles, uploads
-  std::vector<double> with, without;
-  for (auto _ : s) {
-    without.push_back(eye(false));
-    with.push_back(eye(true));
-    s.SetIterationTime(with.back() * 1e-3);
-  }
-  s.counters["without_ms"] = bench::median(without);
-  s.counters["x_no_grain"] = bench::median(with) / bench::median(without);
+  bench::interleaved_eye(s, eye, "x_no_grain");
   s.counters["layers"] = static_cast<double>(layers.size());
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <string>
@@ -80,5 +81,21 @@ struct PlayEye {
   int width() const { return comp->config().eye_width; }
   int height() const { return comp->config().eye_height; }
 };
+
+/// Times `eye(true)` (with the layer) against `eye(false)` (without) alternately in every
+/// iteration, so that the machine's load drifts alike for both; the manual time is the eye with
+/// the layer. Counters: without_ms, and `ratio` = median with / median without.
+inline void interleaved_eye(benchmark::State& s, const std::function<double(bool)>& eye,
+                            const std::string& ratio) {
+  eye(true);  // compiles, uploads
+  std::vector<double> with, without;
+  for (auto _ : s) {
+    without.push_back(eye(false));
+    with.push_back(eye(true));
+    s.SetIterationTime(with.back() * 1e-3);
+  }
+  s.counters["without_ms"] = median(without);
+  s.counters[ratio] = median(with) / median(without);
+}
 
 }  // namespace vdfx::bench
