@@ -13,11 +13,12 @@
 namespace vdfx::app {
 
 int cmd_eval(const Args& args) {
-  CLI::App cli{"Prints the interpolated parameters of every effect at the given views as JSON, one\n"
-               "object per --at and per line. Effects without keyframes print their neutral\n"
-               "values with \"active\": false; flares print their intensity, grains their intensity\n"
-               "and size, each in file order.",
-               "vdfx eval"};
+  CLI::App cli{
+      "Prints the interpolated parameters of every effect at the given views as JSON, one\n"
+      "object per --at and per line. Effects without keyframes print their neutral\n"
+      "values with \"active\": false; flares print their intensity, grains their intensity\n"
+      "and size, each in file order.",
+      "vdfx eval"};
   std::string path;
   std::vector<std::string> at_texts;
   cli.add_option("SIDECAR", path, "the sidecar file")->required();

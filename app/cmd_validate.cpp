@@ -31,7 +31,8 @@ int cmd_validate(const Args& args) {
     for (const auto& flare : report.sidecar->flares) keyframes += flare.keyframes.size();
     for (const auto& grain : report.sidecar->grains) keyframes += grain.keyframes.size();
     std::cout << path << ": valid ("
-              << report.sidecar->effects.size() + report.sidecar->flares.size() + report.sidecar->grains.size()
+              << report.sidecar->effects.size() + report.sidecar->flares.size() +
+                     report.sidecar->grains.size()
               << " effects, " << keyframes << " keyframes)\n";
   }
   return kExitOk;

@@ -9,10 +9,9 @@
 #pragma once
 
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "effects/coords.h"
 #include "effects/effect_types.h"
@@ -67,7 +66,8 @@ class FrameClient {
   /// into both eyes after the effects (docs/flare.md). `frame_rgb` is that video frame (RGB,
   /// empty while none is decoded), for lights found in the video.
   virtual std::vector<effects::FlareLayout> flares(const xr::Pose& head_in_local,
-                                                   std::int64_t video_frame, const cv::Mat& frame_rgb) {
+                                                   std::int64_t video_frame,
+                                                   const cv::Mat& frame_rgb) {
     (void)head_in_local, (void)video_frame, (void)frame_rgb;
     return {};
   }

@@ -143,7 +143,8 @@ std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input
   if (sidecar.flares.empty()) return {};
   effects::FlareSet flares = flare_set_of(sidecar);
   if (flares.uses_auto_light()) {
-    for (std::int64_t f = std::max<std::int64_t>(0, frame - flares.auto_light_window()); f < frame; ++f)
+    for (std::int64_t f = std::max<std::int64_t>(0, frame - flares.auto_light_window()); f < frame;
+         ++f)
       flares.observe(f, load_equirect_frame(input, f));
     flares.observe(frame, equirect);
   }
@@ -182,8 +183,11 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
   // The head sits at the origin looking at the view; an HMD eye is half the IPD to its side
   // (the video ignores that, flares do not: docs/flare.md, "Stereo").
   const effects::HeadPose head{Eigen::Vector3d::Zero(), xr::view_rotation(r.look, r.roll_deg)};
-  if (eye) view.position = head.orientation * Eigen::Vector3d((r.eye == xr::Eye::Left ? -0.5 : 0.5) * r.hmd->ipd_m, 0.0, 0.0);
-  const std::vector<effects::FlareLayout> flares = view_flares(input, sidecar, equirect, head, r.frame);
+  if (eye)
+    view.position = head.orientation *
+                    Eigen::Vector3d((r.eye == xr::Eye::Left ? -0.5 : 0.5) * r.hmd->ipd_m, 0.0, 0.0);
+  const std::vector<effects::FlareLayout> flares =
+      view_flares(input, sidecar, equirect, head, r.frame);
   const std::vector<effects::GrainFrame> grains = view_grains(sidecar, head, r);
 
   if (r.gpu) {

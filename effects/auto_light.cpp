@@ -31,7 +31,8 @@ std::optional<Eigen::Vector3d> find_brightest_region(const cv::Mat& rgb,
                                                      const AutoLightOptions& o) {
   if (rgb.empty()) return std::nullopt;
   if (rgb.type() != CV_32FC3 && rgb.type() != CV_8UC3)
-    throw std::invalid_argument("find_brightest_region: expected a CV_32FC3 or CV_8UC3 RGB equirect");
+    throw std::invalid_argument(
+        "find_brightest_region: expected a CV_32FC3 or CV_8UC3 RGB equirect");
   const int w = std::max(8, o.grid_width), h = w / 2;
   cv::Mat small;
   cv::resize(rgb, small, cv::Size(w, h), 0, 0, cv::INTER_AREA);
@@ -125,12 +126,14 @@ std::optional<Eigen::Vector3d> AutoLightTracker::light(std::int64_t frame) const
   if (at == cache_.end() || !at->second) return std::nullopt;
   const Eigen::Vector3d m = *at->second;
   // Tangent plane at f's measurement; gnomonic coordinates keep great circles straight.
-  const Eigen::Vector3d helper = std::abs(m.y()) < 0.9 ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d helper =
+      std::abs(m.y()) < 0.9 ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX();
   const Eigen::Vector3d e1 = helper.cross(m).normalized(), e2 = m.cross(e1);
   const double cos_jump = std::cos(options_.max_jump_deg * kDegToRad);
   std::vector<double> dk;
   std::vector<Eigen::Vector2d> p;
-  for (auto it = cache_.lower_bound(frame - options_.window); it != cache_.end() && it->first <= frame; ++it) {
+  for (auto it = cache_.lower_bound(frame - options_.window);
+       it != cache_.end() && it->first <= frame; ++it) {
     if (!it->second) continue;
     const Eigen::Vector3d& v = *it->second;
     const double c = v.dot(m);

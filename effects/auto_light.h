@@ -29,19 +29,19 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <map>
-#include <optional>
 #include <opencv2/core.hpp>
+#include <optional>
 
 namespace vdfx::effects {
 
 struct AutoLightOptions {
-  int grid_width = 256;          //!< measurement grid (height = width / 2)
-  double top_fraction = 0.001;   //!< of the sphere's solid angle
-  double min_luma = 0.8;         //!< the region's brightest cell must reach this
-  double min_contrast = 2.0;     //!< region mean luma / frame mean luma at least this
-  double region_deg = 10.0;      //!< top-set cells beyond this from the peak are another light
-  int window = 4;                //!< frames before f used by the fit at f
-  double max_jump_deg = 15.0;    //!< measurements farther than this from f's are not f's light
+  int grid_width = 256;         //!< measurement grid (height = width / 2)
+  double top_fraction = 0.001;  //!< of the sphere's solid angle
+  double min_luma = 0.8;        //!< the region's brightest cell must reach this
+  double min_contrast = 2.0;    //!< region mean luma / frame mean luma at least this
+  double region_deg = 10.0;     //!< top-set cells beyond this from the peak are another light
+  int window = 4;               //!< frames before f used by the fit at f
+  double max_jump_deg = 15.0;   //!< measurements farther than this from f's are not f's light
 };
 
 /// The brightest region of one equirect frame (RGB, encoded values: CV_32FC3, or CV_8UC3 read as

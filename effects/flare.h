@@ -59,7 +59,7 @@ FlareSettings default_flare_settings(FlareStyle style);
 
 /// Accepted ranges (the sidecar reader and the geometry agree on these).
 inline constexpr int kMaxFlareRings = 16;
-inline constexpr double kFlareFadeMinDeg = 0.0;   //!< exclusive
+inline constexpr double kFlareFadeMinDeg = 0.0;  //!< exclusive
 inline constexpr double kFlareFadeMaxDeg = 80.0;
 inline constexpr double kFlareRampMaxDeg = 40.0;  //!< ramp is in [0, this]
 /// fade + ramp/2 must stay below this, so the light is in front of the gaze (g . l > 0) whenever
@@ -76,7 +76,7 @@ struct FlareEffect {
   FlareLight light = Direction{};
   FlareSettings settings;
   std::optional<InterpolationSettings> interpolation;  //!< overrides the file's default
-  std::vector<Keyframe> keyframes;  //!< params: {intensity}
+  std::vector<Keyframe> keyframes;                     //!< params: {intensity}
   bool operator==(const FlareEffect&) const = default;
 };
 

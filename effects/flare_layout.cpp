@@ -55,7 +55,9 @@ double ring_channel(double rho) {
 
 }  // namespace
 
-std::span<const RingSpec> ring_table() { return kRings; }
+std::span<const RingSpec> ring_table() {
+  return kRings;
+}
 
 double flare_fade(double theta_deg, double fade_deg, double ramp_deg) {
   if (ramp_deg <= 0.0) return theta_deg <= fade_deg ? 1.0 : 0.0;
@@ -113,8 +115,10 @@ std::optional<FlareLayout> layout_flare(FlareStyle style, const FlareSettings& s
   out.axis_v = out.normal.cross(out.axis_u);
 
   const auto radius = [&](double deg) { return dist * std::tan(deg * kDegToRad); };
-  out.elements.push_back({FlareShape::Glow, out.light_point, radius(kGlareCoreDeg), level * kCoreColour, 0.0});
-  out.elements.push_back({FlareShape::Glow, out.light_point, radius(kGlareHaloDeg), level * kHaloColour, 0.0});
+  out.elements.push_back(
+      {FlareShape::Glow, out.light_point, radius(kGlareCoreDeg), level * kCoreColour, 0.0});
+  out.elements.push_back(
+      {FlareShape::Glow, out.light_point, radius(kGlareHaloDeg), level * kHaloColour, 0.0});
   const int rings = std::clamp(settings.rings, 0, kMaxFlareRings);
   for (int i = 0; i < rings; ++i) {
     const RingSpec& r = kRings[static_cast<std::size_t>(i)];

@@ -64,8 +64,8 @@ struct FlareLayout {
   Eigen::Vector3d view_point = Eigen::Vector3d::Zero();   //!< B
   double plane_distance = 0.0;  //!< from A to the plane along its normal (d or D)
   double theta_deg = 0.0;
-  double fade = 0.0;       //!< fade(theta) in [0, 1]
-  double intensity = 0.0;  //!< the keyframed intensity (0..4)
+  double fade = 0.0;                   //!< fade(theta) in [0, 1]
+  double intensity = 0.0;              //!< the keyframed intensity (0..4)
   std::vector<FlareElement> elements;  //!< glare core, glare halo, then the rings
 };
 

@@ -20,8 +20,9 @@ Eigen::Vector3d light_on_track(std::span<const LightSample> track, std::int64_t 
   if (track.empty()) throw std::invalid_argument("light_on_track: empty track");
   if (frame <= track.front().frame) return to_unit(track.front().direction);
   if (frame >= track.back().frame) return to_unit(track.back().direction);
-  const auto hi = std::upper_bound(track.begin(), track.end(), frame,
-                                   [](std::int64_t f, const LightSample& s) { return f < s.frame; });
+  const auto hi =
+      std::upper_bound(track.begin(), track.end(), frame,
+                       [](std::int64_t f, const LightSample& s) { return f < s.frame; });
   const LightSample& b = *hi;
   const LightSample& a = *(hi - 1);
   const double t = static_cast<double>(frame - a.frame) / static_cast<double>(b.frame - a.frame);

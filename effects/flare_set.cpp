@@ -56,7 +56,8 @@ std::vector<FlareLayout> FlareSet::layouts(const HeadPose& head, std::int64_t fr
     const auto l = light(k, frame);
     if (!l) continue;
     const FlareEffect& f = flares_[k];
-    if (auto layout = layout_flare(f.style, f.settings, head, *l, level)) out.push_back(std::move(*layout));
+    if (auto layout = layout_flare(f.style, f.settings, head, *l, level))
+      out.push_back(std::move(*layout));
   }
   return out;
 }

@@ -7,8 +7,8 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "effects/auto_light.h"

@@ -31,8 +31,8 @@ void main() {
 std::string flare_fragment_source() {
   char constants[160];
   // %.17g: the shader's constants are the doubles of flare_layout.h, rounded once to float.
-  std::snprintf(constants, sizeof constants, "const float RIM = %.17g;\nconst float FILL = %.17g;\n",
-                kRingRimWidth, kRingFill);
+  std::snprintf(constants, sizeof constants,
+                "const float RIM = %.17g;\nconst float FILL = %.17g;\n", kRingRimWidth, kRingFill);
   return std::string(constants) + R"(
 in vec2 v_q;
 out vec4 frag;

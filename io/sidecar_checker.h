@@ -51,7 +51,9 @@ class Checker {
  public:
   Checker(std::string file, std::vector<Problem>& out) : file_(std::move(file)), out_(out) {}
 
-  void error(const std::string& ptr, std::string msg) { out_.push_back({file_, ptr, std::move(msg)}); }
+  void error(const std::string& ptr, std::string msg) {
+    out_.push_back({file_, ptr, std::move(msg)});
+  }
   /// Problems reported so far (a reader compares counts to know whether a part was fine).
   std::size_t problems() const { return out_.size(); }
 
@@ -63,20 +65,23 @@ class Checker {
   }
 
   /// Reports every key that is not in `known` (a reader must never silently drop data).
-  void only_keys(const json& obj, const std::string& ptr, std::initializer_list<const char*> known) {
+  void only_keys(const json& obj, const std::string& ptr,
+                 std::initializer_list<const char*> known) {
     for (const auto& [k, v] : obj.items()) {
       bool ok = false;
       for (const char* n : known) ok = ok || k == n;
       if (!ok) {
         std::string list;
         for (const char* n : known) list += std::string(list.empty() ? "" : ", ") + n;
-        error(ptr + "/" + json_pointer_token(k), "unknown field \"" + k + "\" (expected: " + list + ")");
+        error(ptr + "/" + json_pointer_token(k),
+              "unknown field \"" + k + "\" (expected: " + list + ")");
       }
     }
   }
 
   /// The member `key` of `obj`; reports it when missing and `required`.
-  const json* member(const json& obj, const std::string& ptr, const char* key, bool required = true) {
+  const json* member(const json& obj, const std::string& ptr, const char* key,
+                     bool required = true) {
     const auto it = obj.find(key);
     if (it != obj.end()) return &*it;
     if (required) error(ptr, std::string("missing field \"") + key + "\"");

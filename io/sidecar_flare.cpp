@@ -44,20 +44,25 @@ ordered light_json(const effects::FlareLight& light) {
 /// azimuth_deg and altitude_deg of `obj` (the keyframes' ranges).
 void read_direction(Checker& c, const json& obj, const std::string& ptr, effects::Direction& out) {
   if (const json* p = c.member(obj, ptr, "azimuth_deg"))
-    if (auto d = c.number(*p, ptr + "/azimuth_deg", {-180.0, 180.0, true, false})) out.azimuth_deg = *d;
+    if (auto d = c.number(*p, ptr + "/azimuth_deg", {-180.0, 180.0, true, false}))
+      out.azimuth_deg = *d;
   if (const json* p = c.member(obj, ptr, "altitude_deg"))
-    if (auto d = c.number(*p, ptr + "/altitude_deg", {-90.0, 90.0, false, false})) out.altitude_deg = *d;
+    if (auto d = c.number(*p, ptr + "/altitude_deg", {-90.0, 90.0, false, false}))
+      out.altitude_deg = *d;
 }
 
 std::string frame_range_text(std::optional<std::int64_t> frames) {
-  return frames ? "[0, " + std::to_string(*frames) + ") (video.frames is " + std::to_string(*frames) + ")"
+  return frames ? "[0, " + std::to_string(*frames) + ") (video.frames is " +
+                      std::to_string(*frames) + ")"
                 : std::string("[0, video.frames)");
 }
 
-void read_track(Checker& c, const json& arr, const std::string& ptr, std::optional<std::int64_t> frames,
-                std::vector<effects::LightSample>& out) {
+void read_track(Checker& c, const json& arr, const std::string& ptr,
+                std::optional<std::int64_t> frames, std::vector<effects::LightSample>& out) {
   if (arr.empty()) {
-    c.error(ptr, "a light track needs at least one {\"frame\", \"azimuth_deg\", \"altitude_deg\"} sample");
+    c.error(
+        ptr,
+        "a light track needs at least one {\"frame\", \"azimuth_deg\", \"altitude_deg\"} sample");
     return;
   }
   const std::int64_t hi = frames ? *frames - 1 : std::numeric_limits<std::int64_t>::max();
@@ -72,30 +77,40 @@ void read_track(Checker& c, const json& arr, const std::string& ptr, std::option
     c.only_keys(*obj, sp, {"frame", "azimuth_deg", "altitude_deg"});
     effects::LightSample s;
     std::optional<std::int64_t> frame;
-    if (const json* p = c.member(*obj, sp, "frame")) frame = c.integer(*p, sp + "/frame", 0, hi, frame_range_text(frames));
+    if (const json* p = c.member(*obj, sp, "frame"))
+      frame = c.integer(*p, sp + "/frame", 0, hi, frame_range_text(frames));
     const std::size_t before = c.problems();
     read_direction(c, *obj, sp, s.direction);
     const bool direction_ok = c.problems() == before;
     if (frame) s.frame = *frame;
     if (frame && previous && s.frame <= previous->frame)
-      c.error(sp + "/frame", "frame " + std::to_string(s.frame) + " is not after the previous sample's " +
-                                 std::to_string(previous->frame) + " (a track's frames strictly increase)");
+      c.error(sp + "/frame",
+              "frame " + std::to_string(s.frame) + " is not after the previous sample's " +
+                  std::to_string(previous->frame) + " (a track's frames strictly increase)");
     if (direction_ok && previous &&
-        effects::angle_between(effects::to_unit(previous->direction), effects::to_unit(s.direction)) * effects::kRadToDeg >=
+        effects::angle_between(effects::to_unit(previous->direction),
+                               effects::to_unit(s.direction)) *
+                effects::kRadToDeg >=
             kAntipodalDeg)
-      c.error(sp, "this sample and the previous one point in opposite directions: the great circle "
-                  "between them is not unique (add a sample in between)");
+      c.error(sp,
+              "this sample and the previous one point in opposite directions: the great circle "
+              "between them is not unique (add a sample in between)");
     out.push_back(s);
-    if (frame && direction_ok) previous = s;
-    else previous.reset();
+    if (frame && direction_ok)
+      previous = s;
+    else
+      previous.reset();
   }
 }
 
-void read_light(Checker& c, const json& v, const std::string& ptr, std::optional<std::int64_t> frames,
-                effects::FlareLight& out) {
+void read_light(Checker& c, const json& v, const std::string& ptr,
+                std::optional<std::int64_t> frames, effects::FlareLight& out) {
   if (v.is_string()) {
-    if (v.get<std::string>() == "auto") out = effects::AutoLight{};
-    else c.error(ptr, "unknown light \"" + v.get<std::string>() + "\" (expected \"auto\", a direction object or a track)");
+    if (v.get<std::string>() == "auto")
+      out = effects::AutoLight{};
+    else
+      c.error(ptr, "unknown light \"" + v.get<std::string>() +
+                       "\" (expected \"auto\", a direction object or a track)");
   } else if (v.is_object()) {
     c.only_keys(v, ptr, {"azimuth_deg", "altitude_deg"});
     effects::Direction d;
@@ -106,8 +121,10 @@ void read_light(Checker& c, const json& v, const std::string& ptr, std::optional
     read_track(c, v, ptr, frames, track);
     out = std::move(track);
   } else {
-    c.error(ptr, std::string("expected a direction object, a track (array of {\"frame\", \"azimuth_deg\", "
-                             "\"altitude_deg\"}) or \"auto\", found ") + detail::type_name(v));
+    c.error(ptr, std::string(
+                     "expected a direction object, a track (array of {\"frame\", \"azimuth_deg\", "
+                     "\"altitude_deg\"}) or \"auto\", found ") +
+                     detail::type_name(v));
   }
 }
 
@@ -117,28 +134,33 @@ void read_settings(Checker& c, const json& v, const std::string& ptr, effects::F
   c.only_keys(*obj, ptr, {"fade_deg", "ramp_deg", "rings", "plane_m"});
   std::optional<double> fade, ramp;
   if (const json* p = c.member(*obj, ptr, "fade_deg", false))
-    if ((fade = c.number(*p, ptr + "/fade_deg", {effects::kFlareFadeMinDeg, effects::kFlareFadeMaxDeg, true, false})))
+    if ((fade = c.number(*p, ptr + "/fade_deg",
+                         {effects::kFlareFadeMinDeg, effects::kFlareFadeMaxDeg, true, false})))
       out.fade_deg = *fade;
   if (const json* p = c.member(*obj, ptr, "ramp_deg", false))
     if ((ramp = c.number(*p, ptr + "/ramp_deg", {0.0, effects::kFlareRampMaxDeg, false, false})))
       out.ramp_deg = *ramp;
   if (const json* p = c.member(*obj, ptr, "rings", false))
-    if (auto i = c.integer(*p, ptr + "/rings", 0, effects::kMaxFlareRings, "[0, " + std::to_string(effects::kMaxFlareRings) + "]"))
+    if (auto i = c.integer(*p, ptr + "/rings", 0, effects::kMaxFlareRings,
+                           "[0, " + std::to_string(effects::kMaxFlareRings) + "]"))
       out.rings = static_cast<int>(*i);
   if (const json* p = c.member(*obj, ptr, "plane_m", false))
-    if (auto d = c.number(*p, ptr + "/plane_m", {effects::kFlarePlaneMinM, effects::kFlarePlaneMaxM, false, false}))
+    if (auto d = c.number(*p, ptr + "/plane_m",
+                          {effects::kFlarePlaneMinM, effects::kFlarePlaneMaxM, false, false}))
       out.plane_m = *d;
   // Only when both values are fine on their own (or defaults): otherwise that is the problem.
-  const bool fade_ok = fade || !obj->contains("fade_deg"), ramp_ok = ramp || !obj->contains("ramp_deg");
+  const bool fade_ok = fade || !obj->contains("fade_deg"),
+             ramp_ok = ramp || !obj->contains("ramp_deg");
   if (fade_ok && ramp_ok && out.fade_deg + 0.5 * out.ramp_deg > effects::kFlareFadeOuterMaxDeg)
-    c.error(ptr + (obj->contains("ramp_deg") ? "/ramp_deg" : "/fade_deg"),
-            "fade_deg + ramp_deg / 2 = " + detail::num(out.fade_deg + 0.5 * out.ramp_deg) + " exceeds " +
-                detail::num(effects::kFlareFadeOuterMaxDeg) +
-                " (the flare must vanish before the light leaves the half-space in front of the gaze)");
+    c.error(
+        ptr + (obj->contains("ramp_deg") ? "/ramp_deg" : "/fade_deg"),
+        "fade_deg + ramp_deg / 2 = " + detail::num(out.fade_deg + 0.5 * out.ramp_deg) +
+            " exceeds " + detail::num(effects::kFlareFadeOuterMaxDeg) +
+            " (the flare must vanish before the light leaves the half-space in front of the gaze)");
 }
 
-void read_keyframes(Checker& c, const json& v, const std::string& ptr, std::optional<std::int64_t> frames,
-                    std::vector<effects::Keyframe>& out) {
+void read_keyframes(Checker& c, const json& v, const std::string& ptr,
+                    std::optional<std::int64_t> frames, std::vector<effects::Keyframe>& out) {
   if (!v.is_array()) {
     c.error(ptr, std::string("expected an array, found ") + detail::type_name(v));
     return;
@@ -156,7 +178,8 @@ void read_keyframes(Checker& c, const json& v, const std::string& ptr, std::opti
     c.only_keys(*params, pp, {"intensity"});
     const effects::ParamSpec& spec = effects::kFlareIntensitySpec;
     if (const json* p = c.member(*params, pp, "intensity"))
-      if (auto d = c.number(*p, pp + "/intensity", {spec.min, spec.max, false, false})) k.params[0] = *d;
+      if (auto d = c.number(*p, pp + "/intensity", {spec.min, spec.max, false, false}))
+        k.params[0] = *d;
   }
 }
 
@@ -192,26 +215,32 @@ nlohmann::ordered_json flare_to_json(const effects::FlareEffect& f) {
 
 namespace detail {
 
-void read_flare(Checker& c, const json& entry, const std::string& ptr, std::optional<std::int64_t> frames,
-                effects::FlareEffect& out) {
+void read_flare(Checker& c, const json& entry, const std::string& ptr,
+                std::optional<std::int64_t> frames, effects::FlareEffect& out) {
   // is_flare_entry chose this reader: entry is an object with "type": "flare".
   c.only_keys(entry, ptr, {"type", "style", "light", "settings", "interpolation", "keyframes"});
   if (const json* p = c.member(entry, ptr, "style")) {
     if (auto s = c.string(*p, ptr + "/style")) {
-      if (auto style = effects::flare_style_from_name(*s)) out.style = *style;
-      else c.error(ptr + "/style", "unknown flare style \"" + *s + "\" (expected headset or directional)");
+      if (auto style = effects::flare_style_from_name(*s))
+        out.style = *style;
+      else
+        c.error(ptr + "/style",
+                "unknown flare style \"" + *s + "\" (expected headset or directional)");
     }
   }
   // Missing settings take the style's defaults (plane_m differs between the styles).
   out.settings = effects::default_flare_settings(out.style);
-  if (const json* p = c.member(entry, ptr, "light")) read_light(c, *p, ptr + "/light", frames, out.light);
-  if (const json* p = c.member(entry, ptr, "settings", false)) read_settings(c, *p, ptr + "/settings", out.settings);
+  if (const json* p = c.member(entry, ptr, "light"))
+    read_light(c, *p, ptr + "/light", frames, out.light);
+  if (const json* p = c.member(entry, ptr, "settings", false))
+    read_settings(c, *p, ptr + "/settings", out.settings);
   if (const json* p = c.member(entry, ptr, "interpolation", false)) {
     effects::InterpolationSettings s;
     read_interpolation_settings(c, *p, ptr + "/interpolation", s);
     out.interpolation = s;
   }
-  if (const json* p = c.member(entry, ptr, "keyframes")) read_keyframes(c, *p, ptr + "/keyframes", frames, out.keyframes);
+  if (const json* p = c.member(entry, ptr, "keyframes"))
+    read_keyframes(c, *p, ptr + "/keyframes", frames, out.keyframes);
 }
 
 }  // namespace detail

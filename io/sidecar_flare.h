@@ -4,8 +4,8 @@
 /// writing in the documented key order.
 ///
 /// {"type": "flare", "style": "headset" | "directional",
-///  "light": {"azimuth_deg", "altitude_deg"} | [{"frame", "azimuth_deg", "altitude_deg"}, ...] | "auto",
-///  "settings": {"fade_deg", "ramp_deg", "rings", "plane_m"}   (optional, each field too),
+///  "light": {"azimuth_deg", "altitude_deg"} | [{"frame", "azimuth_deg", "altitude_deg"}, ...] |
+///  "auto", "settings": {"fade_deg", "ramp_deg", "rings", "plane_m"}   (optional, each field too),
 ///  "interpolation": {...}                                      (optional, as for any effect),
 ///  "keyframes": [{"azimuth_deg", "altitude_deg", "frame", "params": {"intensity"}}, ...]}
 #pragma once

@@ -249,9 +249,12 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
       for (std::size_t i = 0; i < p->size(); ++i) {
         const std::string ep = "/effects/" + std::to_string(i);
         // Extension types (several may coexist) have readers of their own.
-        if (is_flare_entry((*p)[i])) read_flare(c, (*p)[i], ep, frames, out.flares.emplace_back());
-        else if (is_grain_entry((*p)[i])) read_grain(c, (*p)[i], ep, frames, out.grains.emplace_back());
-        else read_effect(c, (*p)[i], ep, frames, seen, out.effects.emplace_back());
+        if (is_flare_entry((*p)[i]))
+          read_flare(c, (*p)[i], ep, frames, out.flares.emplace_back());
+        else if (is_grain_entry((*p)[i]))
+          read_grain(c, (*p)[i], ep, frames, out.grains.emplace_back());
+        else
+          read_effect(c, (*p)[i], ep, frames, seen, out.effects.emplace_back());
       }
     }
   }

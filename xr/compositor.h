@@ -4,16 +4,15 @@
 /// modes; offscreen readback.
 ///
 /// Effects see only the video; the world-space layers and then the UI quads are composited after
-/// them, so a panel is never blurred, vignetted or flared. Everything renders into textures; the mirror
-/// window (or a test) reads them. The eye buffers are float (RGBA16F by default): no 8-bit
+/// them, so a panel is never blurred, vignetted or flared. Everything renders into textures; the
+/// mirror window (or a test) reads them. The eye buffers are float (RGBA16F by default): no 8-bit
 /// rounding happens before the panel.
 #pragma once
 
 #include <array>
 #include <memory>
-#include <span>
-
 #include <opencv2/core.hpp>
+#include <span>
 
 #include "effects/effect_types.h"
 #include "xr/blur_method.h"

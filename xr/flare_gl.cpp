@@ -1,9 +1,10 @@
 /// @file
 /// @brief FlareGl: one quad per flare element, additive blending into the float eye buffer.
+#include "xr/flare_gl.h"
+
 #include <epoxy/gl.h>
 
 #include "effects/flare_shaders.h"
-#include "xr/flare_gl.h"
 #include "xr/gl_program.h"
 
 namespace vdfx::xr {
@@ -36,7 +37,9 @@ void FlareGl::set_layouts(std::vector<effects::FlareLayout> layouts) {
   impl_->layouts = std::move(layouts);
 }
 
-const std::vector<effects::FlareLayout>& FlareGl::layouts() const { return impl_->layouts; }
+const std::vector<effects::FlareLayout>& FlareGl::layouts() const {
+  return impl_->layouts;
+}
 
 void FlareGl::draw(const RenderView& view, int, int, int) {
   Impl& m = *impl_;

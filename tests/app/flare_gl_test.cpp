@@ -21,7 +21,8 @@ namespace {
 std::string flare_entry(const std::string& style, const std::string& light, double intensity) {
   std::ostringstream s;
   s << R"(,
-    {"type": "flare", "style": ")" << style << R"(", "light": )" << light << R"(,
+    {"type": "flare", "style": ")"
+    << style << R"(", "light": )" << light << R"(,
      "keyframes": [{"azimuth_deg": 0.0, "altitude_deg": 0.0, "frame": 0, "params": {"intensity": )"
     << intensity << "}}]}";
   return s.str();
@@ -31,8 +32,9 @@ TEST(FlareGpu, RenderGpuMatchesTheCpuPathPerStyle) {
   const auto dir = test_dir();
   write_test_panorama(dir);
   for (const char* style : {"directional", "headset"}) {
-    write_text(dir / "s.vdfx.json",
-               exposure_sidecar(flare_entry(style, R"({"azimuth_deg": 12.0, "altitude_deg": 8.0})", 0.6)));
+    write_text(
+        dir / "s.vdfx.json",
+        exposure_sidecar(flare_entry(style, R"({"azimuth_deg": 12.0, "altitude_deg": 8.0})", 0.6)));
     for (const std::string eye : {"left", "right"}) {
       const std::string common = "--view 4,2 --hmd generic90 --size 240x266 --eye " + eye + " ";
       const cv::Mat cpu = render(dir, common, "cpu.png");
@@ -51,8 +53,8 @@ TEST(FlareGpu, RenderGpuMatchesTheCpuPathPerStyle) {
 TEST(FlareGpu, PlayDrawsThePlayersFlaresIntoBothEyesUnlessUnaltered) {
   std::vector<std::int64_t> times;
   for (std::int64_t k = 0; k < 4; ++k) times.push_back(k * 33'333'333);
-  auto video = std::make_unique<io::VideoSource>(std::make_unique<test::FakeDecoder>(10, 64, 32, 0.25, nullptr),
-                                                 io::VideoSourceOptions{});
+  auto video = std::make_unique<io::VideoSource>(
+      std::make_unique<test::FakeDecoder>(10, 64, 32, 0.25, nullptr), io::VideoSourceOptions{});
   auto input = xr::create_replay_backend(test::still_head_recording(times), {});
   io::Sidecar sc = test::one_effect_sidecar(effects::EffectType::Exposure, {{0, 0, {0.0}}});
   effects::FlareEffect flare;
@@ -63,7 +65,8 @@ TEST(FlareGpu, PlayDrawsThePlayersFlaresIntoBothEyesUnlessUnaltered) {
   Player player(sc, video->properties());
   FrameLoopOptions o = test::small_hidden_loop();
   o.script = [](std::int64_t n) {
-    return n == 2 ? std::vector<xr::DesktopEvent>{xr::KeyEvent{xr::Key::U, true}} : std::vector<xr::DesktopEvent>{};
+    return n == 2 ? std::vector<xr::DesktopEvent>{xr::KeyEvent{xr::Key::U, true}}
+                  : std::vector<xr::DesktopEvent>{};
   };
   std::vector<std::array<double, 2>> peaks;
   o.on_frame = [&](xr::Compositor& c, std::int64_t) {
@@ -81,8 +84,10 @@ TEST(FlareGpu, PlayDrawsThePlayersFlaresIntoBothEyesUnlessUnaltered) {
   const double grey = 64.0 / 255.0;
   for (int n = 0; n < 4; ++n) {
     for (int e = 0; e < 2; ++e) {
-      if (n >= 2) EXPECT_NEAR(peaks[n][e], grey, 1e-3) << "unaltered frame " << n;
-      else EXPECT_GT(peaks[n][e], grey + 0.5) << "frame " << n << " eye " << e;
+      if (n >= 2)
+        EXPECT_NEAR(peaks[n][e], grey, 1e-3) << "unaltered frame " << n;
+      else
+        EXPECT_GT(peaks[n][e], grey + 0.5) << "frame " << n << " eye " << e;
     }
   }
 }

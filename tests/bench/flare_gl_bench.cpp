@@ -43,7 +43,8 @@ effects::FlareLayout layout(effects::FlareStyle style, int rings) {
   effects::FlareSettings s = effects::default_flare_settings(style);
   s.rings = rings;
   const Pose h = head_at(kLook);
-  return *effects::layout_flare(style, s, {position_of(h), rotation_of(h)}, effects::to_unit(kLight), 1.0);
+  return *effects::layout_flare(style, s, {position_of(h), rotation_of(h)},
+                                effects::to_unit(kLight), 1.0);
 }
 
 /// The play frame's left eye (bench::PlayEye) and the flare layer.
@@ -108,7 +109,9 @@ void BM_FlareLayout(benchmark::State& s) {
   const effects::HeadPose head{position_of(h), rotation_of(h)};
   const effects::FlareSettings settings;
   const Eigen::Vector3d l = effects::to_unit(kLight);
-  for (auto _ : s) benchmark::DoNotOptimize(effects::layout_flare(effects::FlareStyle::Directional, settings, head, l, 1.0));
+  for (auto _ : s)
+    benchmark::DoNotOptimize(
+        effects::layout_flare(effects::FlareStyle::Directional, settings, head, l, 1.0));
 }
 
 /// CPU, once per video frame with an auto light: the brightest-region measurement of a 3840 x
@@ -119,7 +122,8 @@ void BM_FlareAutoLightMeasure(benchmark::State& s) {
   s.SetLabel("3840x1920 RGB8");
 }
 
-#define VDFX_GL_BENCH(fn) BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
+#define VDFX_GL_BENCH(fn) \
+  BENCHMARK(fn)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
 VDFX_GL_BENCH(BM_GlFlareEye)->Arg(0)->Arg(1)->Arg(2)->MinTime(2.0);  // none, directional, headset
 VDFX_GL_BENCH(BM_GlFlareLayerRings)->Arg(0)->Arg(2)->Arg(6)->Arg(12)->Arg(16);
 BENCHMARK(BM_FlareLayout);

@@ -29,7 +29,8 @@ cv::Mat synthetic_sky(int w, const std::vector<Disc>& discs) {
       const Direction d = from_equirect_uv({(i + 0.5) / w, (j + 0.5) / h});
       double v = d.altitude_deg > 0 ? 0.55 - 0.3 * d.altitude_deg / 90.0
                                     : 0.25 + 0.08 * std::sin(0.3 * i) * std::cos(0.2 * j);
-      cv::Vec3f c(static_cast<float>(0.8 * v), static_cast<float>(0.9 * v), static_cast<float>(1.1 * v));
+      cv::Vec3f c(static_cast<float>(0.8 * v), static_cast<float>(0.9 * v),
+                  static_cast<float>(1.1 * v));
       for (const Disc& disc : discs) {
         const double a = angle_between(to_unit(d), to_unit(disc.centre)) * kRadToDeg;
         const double t = std::clamp((disc.radius_deg + 0.25 - a) / 0.5, 0.0, 1.0);
@@ -88,7 +89,8 @@ TEST(AutoLight, NoLightWithoutABrightRegion) {
 
 TEST(AutoLight, TheBrighterOfTwoLightsWinsUnpulledByTheOther) {
   const Direction sun{-50.0, 30.0}, lamp{60.0, 10.0};
-  const auto light = find_brightest_region(synthetic_sky(1024, {{sun, 2.5, 4.0}, {lamp, 2.5, 1.0}}));
+  const auto light =
+      find_brightest_region(synthetic_sky(1024, {{sun, 2.5, 4.0}, {lamp, 2.5, 1.0}}));
   ASSERT_TRUE(light);
   EXPECT_LT(deg_between(*light, to_unit(sun)), 0.5);
 }
@@ -121,9 +123,11 @@ TEST(AutoLight, SmoothingAveragesJitterAndAJumpRestartsTheFit) {
   AutoLightTracker tracker;
   for (int f = 0; f < 5; ++f) {
     const double jitter = (f % 2 ? 0.6 : -0.6);
-    tracker.observe(f, synthetic_sky(1024, {{{sun.azimuth_deg + jitter, sun.altitude_deg}, 3.0, 1.0}}));
+    tracker.observe(
+        f, synthetic_sky(1024, {{{sun.azimuth_deg + jitter, sun.altitude_deg}, 3.0, 1.0}}));
   }
-  const double raw = deg_between(*find_brightest_region(synthetic_sky(1024, {{{9.4, 20.0}, 3.0, 1.0}})), to_unit(sun));
+  const double raw = deg_between(
+      *find_brightest_region(synthetic_sky(1024, {{{9.4, 20.0}, 3.0, 1.0}})), to_unit(sun));
   const double fitted = deg_between(*tracker.light(4), to_unit(sun));
   std::cout << "jitter +-0.6 deg: raw " << raw << " deg, fitted " << fitted << " deg\n";
   EXPECT_LT(fitted, 0.5 * raw);

@@ -78,8 +78,10 @@ TEST(FlareLayout, GlareAtTheLightRingsOnTheLineThroughTheViewCentre) {
       EXPECT_NEAR((e.centre - C).norm() / scale, ring_table()[static_cast<std::size_t>(i)].s, 1e-9);
       // In the plane, and of constant angular size: radius / plane distance = tan(alpha).
       EXPECT_NEAR((e.centre - C).dot(layout->normal), 0.0, 1e-12 * layout->plane_distance);
-      EXPECT_NEAR(e.radius / layout->plane_distance,
-                  std::tan(ring_table()[static_cast<std::size_t>(i)].angular_radius_deg * kDegToRad), 1e-12);
+      EXPECT_NEAR(
+          e.radius / layout->plane_distance,
+          std::tan(ring_table()[static_cast<std::size_t>(i)].angular_radius_deg * kDegToRad),
+          1e-12);
     }
     // Some rings lie before the view centre, some beyond it.
     bool before = false, beyond = false;
@@ -95,7 +97,8 @@ TEST(FlareLayout, RingsSpreadAsTheGazeMovesAwayFromTheLight) {
   const Eigen::Vector3d l = to_unit({0.0, 0.0});
   double previous = 0.0;
   for (double gaze_az : {1.0, 4.0, 8.0, 12.0}) {
-    const auto layout = layout_flare(FlareStyle::Directional, {}, head_looking_at({gaze_az, 0.0}, {0, 0, 0}), l, 1.0);
+    const auto layout = layout_flare(FlareStyle::Directional, {},
+                                     head_looking_at({gaze_az, 0.0}, {0, 0, 0}), l, 1.0);
     ASSERT_TRUE(layout);
     // Angular spread (seen from the head) between the first and the last ring.
     const Eigen::Vector3d a = layout->elements[2].centre, b = layout->elements.back().centre;
@@ -120,8 +123,9 @@ TEST(FlareLayout, FadeIsZeroBeyondFullInsideMonotonicBetween) {
   FlareSettings s;
   s.rings = 0;
   const Eigen::Vector3d l = to_unit({0.0, 0.0});
-  const Eigen::Vector3d full = flare_at_ray(*layout_flare(FlareStyle::Directional, s, head_looking_at({1.0, 0.0}, {0, 0, 0}), l, 1.0),
-                                            Eigen::Vector3d::Zero(), l);
+  const Eigen::Vector3d full = flare_at_ray(
+      *layout_flare(FlareStyle::Directional, s, head_looking_at({1.0, 0.0}, {0, 0, 0}), l, 1.0),
+      Eigen::Vector3d::Zero(), l);
   ASSERT_GT(full.sum(), 0.5);
   double previous = full.sum();
   for (double theta = 0.0; theta <= 30.0; theta += 0.125) {
@@ -204,7 +208,9 @@ TEST(FlareRender, GlareLandsOnTheLightsProjectionInEachEye) {
       cv::Mat g;
       cv::extractChannel(img, g, 1);
       const Eigen::Vector2d c = test_images::half_max_centroid(g);
-      const Eigen::Vector3d target = style == FlareStyle::Directional ? Eigen::Vector3d(l) : Eigen::Vector3d(layout->light_point - eye);
+      const Eigen::Vector3d target = style == FlareStyle::Directional
+                                         ? Eigen::Vector3d(l)
+                                         : Eigen::Vector3d(layout->light_point - eye);
       const auto expected = cam.project(target);
       ASSERT_TRUE(expected);
       EXPECT_NEAR(c.x(), expected->x(), 0.2) << static_cast<int>(style) << " eye " << ex;

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
 #include <opencv2/imgproc.hpp>
 
 #include "effects/view_camera.h"
@@ -42,7 +41,8 @@ TEST(FlareSet, IntensityIsTheKeyframesRbfAtTheGazeClampedToItsRange) {
   ASSERT_EQ(left.size(), 1u);
   EXPECT_NEAR(left[0].intensity, 3.0, 1e-9);
   // Where the RBF itself overshoots the range, the intensity is clamped to 0..4.
-  const std::vector<Keyframe> steep_kfs{{{-1.0, 0.0}, 0, {4.0}}, {{1.0, 0.0}, 0, {0.0}}, {{0.0, 30.0}, 0, {2.0}}};
+  const std::vector<Keyframe> steep_kfs{
+      {{-1.0, 0.0}, 0, {4.0}}, {{1.0, 0.0}, 0, {0.0}}, {{0.0, 30.0}, 0, {2.0}}};
   const InterpolationSettings smooth{1.5, 1.0};  // overshoots between keyframes 0 and 4
   const FlareSet steep({flare(Direction{0.0, 0.0}, steep_kfs)}, smooth, 30.0);
   const RbfInterpolator raw(steep_kfs, 1, smooth, 30.0, {0.0});

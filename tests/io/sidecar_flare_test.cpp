@@ -1,12 +1,13 @@
 /// @file
 /// @brief Sidecar flare entries: the guide's example, defaults, every field's validation with its
 /// pointer and reason, coexisting flares, and exact round trips.
+#include "io/sidecar_flare.h"
+
 #include <gtest/gtest.h>
 
 #include <functional>
 
 #include "io/sidecar.h"
-#include "io/sidecar_flare.h"
 #include "io/sidecar_validate.h"
 #include "tests/io/sidecar_cases.h"
 #include "tests/test_files.h"
@@ -83,11 +84,14 @@ using test::BrokenCase;
 const BrokenCase kBroken[] = {
     {"style_unknown", [](json& j) { j["effects"][1]["style"] = "anamorphic"; }, "/effects/1/style",
      "unknown flare style \"anamorphic\" (expected headset or directional)"},
-    {"style_missing", [](json& j) { j["effects"][1].erase("style"); }, "/effects/1", "missing field \"style\""},
-    {"style_not_string", [](json& j) { j["effects"][1]["style"] = 1; }, "/effects/1/style", "expected a string"},
+    {"style_missing", [](json& j) { j["effects"][1].erase("style"); }, "/effects/1",
+     "missing field \"style\""},
+    {"style_not_string", [](json& j) { j["effects"][1]["style"] = 1; }, "/effects/1/style",
+     "expected a string"},
     {"unknown_field", [](json& j) { j["effects"][1]["colour"] = "red"; }, "/effects/1/colour",
      "unknown field \"colour\""},
-    {"light_missing", [](json& j) { j["effects"][1].erase("light"); }, "/effects/1", "missing field \"light\""},
+    {"light_missing", [](json& j) { j["effects"][1].erase("light"); }, "/effects/1",
+     "missing field \"light\""},
     {"light_azimuth_range", [](json& j) { j["effects"][1]["light"]["azimuth_deg"] = 181.0; },
      "/effects/1/light/azimuth_deg", "out of range (-180, 180]"},
     {"light_altitude_range", [](json& j) { j["effects"][1]["light"]["altitude_deg"] = -90.5; },
@@ -106,8 +110,8 @@ const BrokenCase kBroken[] = {
      "/effects/2/light/1/frame", "not after the previous sample's 0"},
     {"track_frame_past_end", [](json& j) { j["effects"][2]["light"][1]["frame"] = 300; },
      "/effects/2/light/1/frame", "out of range [0, 300)"},
-    {"track_sample_not_object", [](json& j) { j["effects"][2]["light"][0] = 3; }, "/effects/2/light/0",
-     "expected an object"},
+    {"track_sample_not_object", [](json& j) { j["effects"][2]["light"][0] = 3; },
+     "/effects/2/light/0", "expected an object"},
     {"track_sample_unknown_field", [](json& j) { j["effects"][2]["light"][0]["roll"] = 0; },
      "/effects/2/light/0/roll", "unknown field"},
     {"track_sample_azimuth", [](json& j) { j["effects"][2]["light"][0]["azimuth_deg"] = -180.0; },
@@ -128,10 +132,14 @@ const BrokenCase kBroken[] = {
      "/effects/1/settings/fade_deg", "out of range (0, 80]"},
     {"ramp_negative", [](json& j) { j["effects"][1]["settings"]["ramp_deg"] = -1.0; },
      "/effects/1/settings/ramp_deg", "out of range [0, 40]"},
-    {"fade_plus_ramp", [](json& j) { j["effects"][1]["settings"]["fade_deg"] = 80.0; j["effects"][1]["settings"]["ramp_deg"] = 12.0; },
+    {"fade_plus_ramp",
+     [](json& j) {
+       j["effects"][1]["settings"]["fade_deg"] = 80.0;
+       j["effects"][1]["settings"]["ramp_deg"] = 12.0;
+     },
      "/effects/1/settings/ramp_deg", "fade_deg + ramp_deg / 2 = 86 exceeds 85"},
-    {"rings_big", [](json& j) { j["effects"][1]["settings"]["rings"] = 17; }, "/effects/1/settings/rings",
-     "out of range [0, 16]"},
+    {"rings_big", [](json& j) { j["effects"][1]["settings"]["rings"] = 17; },
+     "/effects/1/settings/rings", "out of range [0, 16]"},
     {"rings_fraction", [](json& j) { j["effects"][1]["settings"]["rings"] = 2.5; },
      "/effects/1/settings/rings", "expected an integer"},
     {"plane_small", [](json& j) { j["effects"][1]["settings"]["plane_m"] = 0.005; },
@@ -146,9 +154,11 @@ const BrokenCase kBroken[] = {
      "/effects/1/keyframes", "expected an array"},
     {"intensity_big", [](json& j) { j["effects"][1]["keyframes"][0]["params"]["intensity"] = 4.5; },
      "/effects/1/keyframes/0/params/intensity", "out of range [0, 4]"},
-    {"intensity_negative", [](json& j) { j["effects"][2]["keyframes"][1]["params"]["intensity"] = -0.1; },
+    {"intensity_negative",
+     [](json& j) { j["effects"][2]["keyframes"][1]["params"]["intensity"] = -0.1; },
      "/effects/2/keyframes/1/params/intensity", "out of range [0, 4]"},
-    {"intensity_missing", [](json& j) { j["effects"][1]["keyframes"][0]["params"].erase("intensity"); },
+    {"intensity_missing",
+     [](json& j) { j["effects"][1]["keyframes"][0]["params"].erase("intensity"); },
      "/effects/1/keyframes/0/params", "missing field \"intensity\""},
     {"param_unknown", [](json& j) { j["effects"][1]["keyframes"][0]["params"]["stops"] = 1.0; },
      "/effects/1/keyframes/0/params/stops", "unknown field \"stops\" (expected: intensity)"},
@@ -196,12 +206,13 @@ Sidecar flare_sidecar() {
   s.effects = {exposure};
   s.flares.push_back(awkward_flare(effects::Direction{-179.99999999999997, 89.999999999999986},
                                    effects::FlareStyle::Directional));
-  s.flares.push_back(awkward_flare(std::vector<effects::LightSample>{{0, {1.0 / 3.0, -2.0 / 3.0}},
-                                                                     {1, {120.0, 0.0}},
-                                                                     {299, {-60.0, 45.0}}},
-                                   effects::FlareStyle::Headset));
+  s.flares.push_back(awkward_flare(
+      std::vector<effects::LightSample>{
+          {0, {1.0 / 3.0, -2.0 / 3.0}}, {1, {120.0, 0.0}}, {299, {-60.0, 45.0}}},
+      effects::FlareStyle::Headset));
   s.flares.push_back(awkward_flare(effects::AutoLight{}, effects::FlareStyle::Directional));
-  s.flares.back().interpolation = effects::InterpolationSettings{0.25, 999.0, effects::AngularDistance::Geodesic};
+  s.flares.back().interpolation =
+      effects::InterpolationSettings{0.25, 999.0, effects::AngularDistance::Geodesic};
   s.flares.back().keyframes.clear();
   return s;
 }

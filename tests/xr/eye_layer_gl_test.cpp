@@ -77,11 +77,11 @@ TEST_F(EyeLayerGlTest, LayersComeAfterTheEffectsBeforeTheQuadsInOrderPerEye) {
     const cv::Vec3f b = img.at<cv::Vec3f>(y, x);
     return cv::Vec3f(b[2], b[1], b[0]);
   };
-  EXPECT_EQ(rgb_at(2, 2), cv::Vec3f(0, 0, 0));          // vignetted video
-  EXPECT_NEAR(rgb_at(15, 15)[2], 0.6f, 1e-3);           // first layer only
-  EXPECT_NEAR(rgb_at(65, 65)[0], 0.9f, 1e-3);           // second layer only
-  EXPECT_NEAR(rgb_at(35, 35)[0], 0.9f, 1e-3);           // overlap: the second drawn last
-  EXPECT_NEAR(rgb_at(kW / 2, kH / 2)[1], 1.0f, 1e-3);   // the panel covers both
+  EXPECT_EQ(rgb_at(2, 2), cv::Vec3f(0, 0, 0));         // vignetted video
+  EXPECT_NEAR(rgb_at(15, 15)[2], 0.6f, 1e-3);          // first layer only
+  EXPECT_NEAR(rgb_at(65, 65)[0], 0.9f, 1e-3);          // second layer only
+  EXPECT_NEAR(rgb_at(35, 35)[0], 0.9f, 1e-3);          // overlap: the second drawn last
+  EXPECT_NEAR(rgb_at(kW / 2, kH / 2)[1], 1.0f, 1e-3);  // the panel covers both
   EXPECT_NEAR(rgb_at(kW / 2, kH / 2)[0], 0.0f, 1e-3);
   // Once per eye, with that eye's view and the eye buffer's size.
   ASSERT_EQ(first.calls.size(), 2u);

@@ -3,6 +3,8 @@
 /// measured in rendered eye images at the generic and the off-centre profile (glare at the
 /// light's projection, rings collinear with it and the view centre, ring disparity equal to that
 /// of a point on the 5 cm plane), and golden screenshots of both styles on the sunrise panorama.
+#include "xr/flare_gl.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -13,11 +15,10 @@
 #include "effects/flare_render.h"
 #include "effects/view_renderer.h"
 #include "gl_test_support.h"
-#include "golden_bgr.h"
+#include "tests/golden_bgr.h"
 #include "tests/image_centroid.h"
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
-#include "xr/flare_gl.h"
 #include "xr/session.h"
 
 namespace vdfx::xr {
@@ -34,7 +35,9 @@ Pose head_at(const Direction& look, double roll_deg = 0.0) {
   return p;
 }
 
-effects::HeadPose head_pose(const Pose& p) { return {position_of(p), rotation_of(p)}; }
+effects::HeadPose head_pose(const Pose& p) {
+  return {position_of(p), rotation_of(p)};
+}
 
 FlareLayout layout(FlareStyle style, const Pose& head, const Direction& light, int rings = 6,
                    double intensity = 1.0) {
@@ -50,11 +53,13 @@ struct Rig {
   HmdProfile profile;
   int w = 0, h = 0;
   std::array<RenderView, 2> views;
-  Rig(const std::string& name, const Pose& head, double scale = 1.0) : profile(load_hmd_profile(name)) {
+  Rig(const std::string& name, const Pose& head, double scale = 1.0)
+      : profile(load_hmd_profile(name)) {
     const auto ev = locate_eye_views(head, profile);
     w = static_cast<int>(std::lround(ev[0].width * scale));
     h = static_cast<int>(std::lround(ev[0].height * scale));
-    for (int e = 0; e < 2; ++e) views[static_cast<std::size_t>(e)] = render_view(ev[static_cast<std::size_t>(e)]);
+    for (int e = 0; e < 2; ++e)
+      views[static_cast<std::size_t>(e)] = render_view(ev[static_cast<std::size_t>(e)]);
   }
 };
 
@@ -68,7 +73,8 @@ std::array<cv::Mat, 2> render_gl(const Rig& rig, const std::vector<FlareLayout>&
   c.eye_format = TexFormat::RGBA32F;
   c.distortion.method = DistortionMethod::None;
   Compositor comp(c);
-  comp.set_video_frame(video_bgr.empty() ? cv::Mat(32, 64, CV_32FC3, cv::Scalar::all(0)) : video_bgr);
+  comp.set_video_frame(video_bgr.empty() ? cv::Mat(32, 64, CV_32FC3, cv::Scalar::all(0))
+                                         : video_bgr);
   FlareGl flare;
   flare.set_layouts(layouts);
   std::array<EyeLayer*, 1> layers{&flare};
@@ -88,7 +94,9 @@ cv::Mat energy(const cv::Mat& rgb) {
 }
 
 /// The glare's centroid: its core above half its peak.
-Eigen::Vector2d glare_centroid(const cv::Mat& rgb) { return test_images::half_max_centroid(energy(rgb)); }
+Eigen::Vector2d glare_centroid(const cv::Mat& rgb) {
+  return test_images::half_max_centroid(energy(rgb));
+}
 
 /// Pixel of a world point seen by an eye (nullopt behind it).
 std::optional<Eigen::Vector2d> pixel_of(const Rig& rig, int eye, const Eigen::Vector3d& p) {
@@ -101,13 +109,16 @@ bool fully_visible(const Rig& rig, int eye, const FlareLayout& l, const effects:
   const double r = effects::element_support(el) * el.radius;
   for (int k = 0; k < 16; ++k) {
     const double a = k * effects::kPi / 8;
-    const auto px = pixel_of(rig, eye, el.centre + r * (std::cos(a) * l.axis_u + std::sin(a) * l.axis_v));
-    if (!px || px->x() < 1 || px->y() < 1 || px->x() > rig.w - 1 || px->y() > rig.h - 1) return false;
+    const auto px =
+        pixel_of(rig, eye, el.centre + r * (std::cos(a) * l.axis_u + std::sin(a) * l.axis_v));
+    if (!px || px->x() < 1 || px->y() < 1 || px->x() > rig.w - 1 || px->y() > rig.h - 1)
+      return false;
   }
   return true;
 }
 
-double distance_to_line(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+double distance_to_line(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                        const Eigen::Vector2d& b) {
   const Eigen::Vector2d u = (b - a).normalized();
   const Eigen::Vector2d d = p - a;
   return std::abs(d.x() * u.y() - d.y() * u.x());
@@ -125,7 +136,8 @@ TEST_F(FlareGlTest, MatchesTheCpuReferencePerStyleWithinTwoLevels) {
   const cv::Mat video_bgr = test::sunrise_float();
   cv::Mat video_rgb;
   cv::cvtColor(video_bgr, video_rgb, cv::COLOR_BGR2RGB);
-  const effects::EquirectSampler sampler(video_rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
+  const effects::EquirectSampler sampler(
+      video_rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
   const Pose head = head_at({30.0, 3.0}, 5.0);
   const Rig rig("generic90", head, 0.5);
   for (const FlareStyle style : {FlareStyle::Directional, FlareStyle::Headset}) {
@@ -142,8 +154,9 @@ TEST_F(FlareGlTest, MatchesTheCpuReferencePerStyleWithinTwoLevels) {
         cv::min(cv::max(a, 0.0), 1.0, a);
         cv::min(cv::max(b, 0.0), 1.0, b);
         const test::ErrorStats err = test::compare(a, b);
-        std::cout << effects::flare_style_name(style) << (with_video ? " + video" : " alone") << ", eye " << e
-                  << ": max " << err.max * 255 << "/255, mean " << err.mean * 255 << "/255\n";
+        std::cout << effects::flare_style_name(style) << (with_video ? " + video" : " alone")
+                  << ", eye " << e << ": max " << err.max * 255 << "/255, mean " << err.mean * 255
+                  << "/255\n";
         EXPECT_LE(err.max * 255, 2.0) << effects::flare_style_name(style) << " eye " << e;
         // The flare is really there (a test of nothing would pass too).
         if (!with_video) {
@@ -158,8 +171,11 @@ TEST_F(FlareGlTest, MatchesTheCpuReferencePerStyleWithinTwoLevels) {
 
 /// Glare and ring geometry of one flare in one eye's rendered image; returns the number of rings
 /// measured (those fully inside the image).
-int check_geometry(const Rig& rig, int eye, const FlareLayout& l, const Eigen::Vector3d& glare_target_dir) {
-  const std::string where = rig.profile.name + " " + std::string(effects::flare_style_name(l.style)) + " eye " + std::to_string(eye);
+int check_geometry(const Rig& rig, int eye, const FlareLayout& l,
+                   const Eigen::Vector3d& glare_target_dir) {
+  const std::string where = rig.profile.name + " " +
+                            std::string(effects::flare_style_name(l.style)) + " eye " +
+                            std::to_string(eye);
   // The glare alone (core and halo): its core's centroid at the target's projection.
   FlareLayout glare = l;
   glare.elements.resize(2);
@@ -169,7 +185,8 @@ int check_geometry(const Rig& rig, int eye, const FlareLayout& l, const Eigen::V
   EXPECT_TRUE(expected) << where;
   if (!expected) return 0;
   const double glare_err = (g - *expected).norm();
-  EXPECT_LT(glare_err, 1.0) << where << ": glare at " << g.transpose() << ", expected " << expected->transpose();
+  EXPECT_LT(glare_err, 1.0) << where << ": glare at " << g.transpose() << ", expected "
+                            << expected->transpose();
   // Each ring alone: its centroid on the line through the glare and the view centre (B).
   const auto b = pixel_of(rig, eye, l.view_point);
   EXPECT_TRUE(b) << where;
@@ -177,14 +194,15 @@ int check_geometry(const Rig& rig, int eye, const FlareLayout& l, const Eigen::V
   double worst = 0.0;
   for (std::size_t i = 2; i < l.elements.size(); ++i) {
     if (!fully_visible(rig, eye, l, l.elements[i])) continue;
-    const Eigen::Vector2d c = test_images::weighted_centroid(energy(render_gl(rig, {only_element(l, i)})[static_cast<std::size_t>(eye)]));
+    const Eigen::Vector2d c = test_images::weighted_centroid(
+        energy(render_gl(rig, {only_element(l, i)})[static_cast<std::size_t>(eye)]));
     const double off = distance_to_line(c, g, *b);
     worst = std::max(worst, off);
     EXPECT_LT(off, 1.0) << where << " ring " << i - 2;
     ++measured;
   }
-  std::cout << where << ": glare " << glare_err << " px from the light's projection, rings (" << measured
-            << ") at most " << worst << " px off the line\n";
+  std::cout << where << ": glare " << glare_err << " px from the light's projection, rings ("
+            << measured << ") at most " << worst << " px off the line\n";
   return measured;
 }
 
@@ -231,11 +249,13 @@ TEST_F(FlareGlTest, HeadsetRingDisparityIsThatOfAPointOnTheFiveCentimetrePlane) 
   ASSERT_EQ(l.plane_distance, 0.05);
   int measured = 0;
   for (std::size_t i = 2; i < l.elements.size(); ++i) {
-    if (!fully_visible(rig, 0, l, l.elements[i]) || !fully_visible(rig, 1, l, l.elements[i])) continue;
+    if (!fully_visible(rig, 0, l, l.elements[i]) || !fully_visible(rig, 1, l, l.elements[i]))
+      continue;
     const auto images = render_gl(rig, {only_element(l, i)});
     const Eigen::Vector2d left = test_images::weighted_centroid(energy(images[0])),
                           right = test_images::weighted_centroid(energy(images[1]));
-    const Eigen::Vector2d expected = *pixel_of(rig, 0, l.elements[i].centre) - *pixel_of(rig, 1, l.elements[i].centre);
+    const Eigen::Vector2d expected =
+        *pixel_of(rig, 0, l.elements[i].centre) - *pixel_of(rig, 1, l.elements[i].centre);
     const Eigen::Vector2d measured_disparity = left - right;
     std::cout << "ring " << i - 2 << ": disparity " << measured_disparity.x() << " px (plane point "
               << expected.x() << " px)\n";
@@ -249,7 +269,8 @@ TEST_F(FlareGlTest, HeadsetRingDisparityIsThatOfAPointOnTheFiveCentimetrePlane) 
   const FlareLayout far = layout(FlareStyle::Directional, head, {2.0, 9.0});
   const auto images = render_gl(rig, {only_element(far, 0)});
   EXPECT_LT(std::abs((glare_centroid(images[0]) - glare_centroid(images[1])).x() -
-                     (*pixel_of(rig, 0, far.light_point) - *pixel_of(rig, 1, far.light_point)).x()), 1.0);
+                     (*pixel_of(rig, 0, far.light_point) - *pixel_of(rig, 1, far.light_point)).x()),
+            1.0);
 }
 
 TEST_F(FlareGlTest, GoldenScreenshotsOfBothStylesOnTheSunrise) {
@@ -258,15 +279,18 @@ TEST_F(FlareGlTest, GoldenScreenshotsOfBothStylesOnTheSunrise) {
   const Pose head = head_at({27.0, 1.0});
   const Rig rig("generic90", head, 0.4);
   for (const FlareStyle style : {FlareStyle::Directional, FlareStyle::Headset}) {
-    const auto eyes = render_gl(rig, {layout(style, head, {35.9, 6.2}, 6, 1.0)}, test::sunrise_float());
+    const auto eyes =
+        render_gl(rig, {layout(style, head, {35.9, 6.2}, 6, 1.0)}, test::sunrise_float());
     cv::Mat both;
     cv::hconcat(eyes[0], eyes[1], both);
-    both = both(cv::Rect(0, both.rows * 5 / 16, both.cols, both.rows * 3 / 8)).clone();  // the horizon band
+    both = both(cv::Rect(0, both.rows * 5 / 16, both.cols, both.rows * 3 / 8))
+               .clone();  // the horizon band
     cv::min(cv::max(both, 0.0), 1.0, both);
     cv::Mat bgr8;
     cv::cvtColor(both, both, cv::COLOR_RGB2BGR);
     both.convertTo(bgr8, CV_8UC3, 255.0);
-    const std::string r = test::compare_with_golden(bgr8, "flare_" + std::string(effects::flare_style_name(style)), 8.0, 0.5);
+    const std::string r = test_images::compare_with_golden(
+        bgr8, "xr", "flare_" + std::string(effects::flare_style_name(style)), 8.0, 0.5);
     EXPECT_TRUE(r.empty()) << r;
   }
 }

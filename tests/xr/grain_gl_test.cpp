@@ -11,7 +11,7 @@
 #include "effects/grain_render.h"
 #include "effects/grain_shaders.h"
 #include "gl_test_support.h"
-#include "golden_bgr.h"
+#include "tests/golden_bgr.h"
 #include "xr/compositor.h"
 #include "xr/gl_texture.h"
 
@@ -272,8 +272,8 @@ TEST_F(GrainGlTest, GoldenScreenshotsOfEachStyleOnTheSunrise) {
     }
     cv::Mat both;
     cv::hconcat(eyes[0], eyes[1], both);
-    const std::string r = test::compare_with_golden(
-        both, "grain_" + std::string(effects::grain_style_name(look.style)), 8.0, 0.5);
+    const std::string r = test_images::compare_with_golden(
+        both, "xr", "grain_" + std::string(effects::grain_style_name(look.style)), 8.0, 0.5);
     EXPECT_TRUE(r.empty()) << r;
   }
 }

@@ -93,7 +93,8 @@ TEST(RenderView, ProjectionPutsWorldPointsOnTheirPixels) {
     for (const double n : {1e-3, 0.05}) {
       for (const double f : {100.0, 0.0 /* infinite */}) {
         const Eigen::Matrix4d m = v.projection(n, f) * v.world_to_eye();
-        for (const auto& px : {Eigen::Vector2d(3.5, 7.25), Eigen::Vector2d(c.width - 1.0, c.height * 0.5)}) {
+        for (const auto& px :
+             {Eigen::Vector2d(3.5, 7.25), Eigen::Vector2d(c.width - 1.0, c.height * 0.5)}) {
           for (const double dist : {0.05, 2.0, 90.0}) {
             const Eigen::Vector3d p = v.position + dist * cam.ray(px.x(), px.y());
             const Eigen::Vector4d clip = m * p.homogeneous();
