@@ -2,6 +2,7 @@
 /// @brief The shader grain styles on the CPU, operation for operation as the GLSL.
 #include "effects/grain_render.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -39,22 +40,35 @@ std::optional<float> shader_grain_fragment(const ShaderGrainUniforms& u, const P
   Eigen::Vector3f d = m.col(0) * tx + m.col(1) * ty - m.col(2);
   d = d * (1.0f / std::sqrt(d.dot(d)));
   const Eigen::Vector3f& e = u.eye;
+  // The pixel's angular size (tangent step over the ray's length, the larger of its two axes).
+  const float pixel_rad =
+      (t[1] - t[0]) / static_cast<float>(width) / std::sqrt(1.0f + tx * tx + ty * ty);
   Eigen::Vector3f lattice;
+  float cells_per_pixel;
   if (u.style == 0) {
     if (!(d.z() < 0.0f)) return std::nullopt;  // the plane is not ahead
     const float s = (-u.distance - e.z()) / d.z();
     const Eigen::Vector3f q = e + d * s;
     lattice = Eigen::Vector3f(q.x() * u.inv_cell, q.y() * u.inv_cell, 0.0f);
+    cells_per_pixel = s * pixel_rad / -d.z() * u.inv_cell;  // oblique on the plane off axis
   } else {
     const float b = d.dot(e), c = e.dot(e) - u.distance * u.distance;
     const float disc = b * b - c;
     if (!(disc >= 0.0f)) return std::nullopt;  // the eye is outside and misses it
     const float s = -b + std::sqrt(disc);
     lattice = (e + d * s) * u.inv_cell;
+    cells_per_pixel = s * pixel_rad * u.inv_cell;
   }
+  // Band limit: an octave fades out between 0.5 and 1 lattice cells per pixel, where a pixel
+  // could only sample it as aliased moire, not as grain.
+  const float w1 = std::clamp(2.0f - 2.0f * cells_per_pixel, 0.0f, 1.0f);
+  const float w2 = std::clamp(2.0f - 4.0f * cells_per_pixel, 0.0f, 1.0f);
   const Eigen::Vector3f p1 = lattice + u.offset1;
   const Eigen::Vector3f p2 = lattice * 2.0f + u.offset2;
-  const float g = noise(p1.x(), p1.y(), p1.z()) + u.octave2 * noise(p2.x(), p2.y(), p2.z());
+  // An octave at weight 0 is not evaluated (coarse eyes pay nothing for grain they cannot show).
+  const float n1 = w1 > 0.0f ? noise(p1.x(), p1.y(), p1.z()) : 0.0f;
+  const float n2 = w2 > 0.0f ? noise(p2.x(), p2.y(), p2.z()) : 0.0f;
+  const float g = w1 * n1 + u.octave2 * w2 * n2;
   return std::max(-1.0f, u.gain * g);
 }
 

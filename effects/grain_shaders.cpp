@@ -64,22 +64,30 @@ void main() {
   vec3 d = u_eye_to_grain[0] * tx + u_eye_to_grain[1] * ty - u_eye_to_grain[2];
   d = d * (1.0 / sqrt(dot(d, d)));
   vec3 e = u_eye;
+  float pixel_rad = (u_tan.y - u_tan.x) / u_viewport.x / sqrt(1.0 + tx * tx + ty * ty);
   vec3 lattice;
+  float cells_per_pixel;
   if (u_style == 0) {
     if (!(d.z < 0.0)) discard;
     float s = (-u_distance - e.z) / d.z;
     vec3 q = e + d * s;
     lattice = vec3(q.x * u_inv_cell, q.y * u_inv_cell, 0.0);
+    cells_per_pixel = s * pixel_rad / -d.z * u_inv_cell;
   } else {
     float b = dot(d, e), c = dot(e, e) - u_distance * u_distance;
     float disc = b * b - c;
     if (!(disc >= 0.0)) discard;
     float s = -b + sqrt(disc);
     lattice = (e + d * s) * u_inv_cell;
+    cells_per_pixel = s * pixel_rad * u_inv_cell;
   }
+  float w1 = clamp(2.0 - 2.0 * cells_per_pixel, 0.0, 1.0);
+  float w2 = clamp(2.0 - 4.0 * cells_per_pixel, 0.0, 1.0);
   vec3 p1 = lattice + u_offset1;
   vec3 p2 = lattice * 2.0 + u_offset2;
-  float g = perlin(p1) + u_octave2 * perlin(p2);
+  float n1 = w1 > 0.0 ? perlin(p1) : 0.0;
+  float n2 = w2 > 0.0 ? perlin(p2) : 0.0;
+  float g = w1 * n1 + u_octave2 * w2 * n2;
   float s = max(-1.0, u_gain * g);
   frag = vec4(vec3(s * u_floor), 0.0);
   frag_scale = vec4(vec3(1.0 + s), 1.0);

@@ -29,19 +29,20 @@ std::string grain_entry(const std::string& style, double intensity, double size,
 TEST(GrainCommands, RenderDrawsShaderGrainAndNothingAtIntensityZero) {
   const auto dir = test_dir();
   write_test_panorama(dir);
-  const std::string common = "--view 4,2 --fov 90 --size 200x120 ";
+  // 30 degrees over 200 px and grain of size 2 (8 mrad cells, 3 px): resolved, not band-limited.
+  const std::string common = "--view 4,2 --fov 30 --size 200x120 ";
   write_text(dir / "s.vdfx.json", exposure_sidecar());
   const cv::Mat plain = render(dir, common, "plain.png");
   for (const char* style : {"surface", "headset"}) {
-    write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry(style, 0.0, 1.0)));
+    write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry(style, 0.0, 2.0)));
     EXPECT_EQ(cv::norm(plain, render(dir, common, "off.png"), cv::NORM_INF), 0.0) << style;
-    write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry(style, 0.8, 1.0)));
+    write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry(style, 0.8, 2.0)));
     const cv::Mat on = render(dir, common, "on.png");
     EXPECT_GT(mean_abs_diff(on, plain), 3.0) << style;
     // The same sidecar renders the same grain (seed, frame and display time fix it).
     EXPECT_EQ(cv::norm(on, render(dir, common, "again.png"), cv::NORM_INF), 0.0) << style;
     // Another seed, another pattern of about the same strength.
-    write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry(style, 0.8, 1.0, 5)));
+    write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry(style, 0.8, 2.0, 5)));
     const cv::Mat other = render(dir, common, "other.png");
     EXPECT_GT(mean_abs_diff(on, other), 2.0) << style;
   }

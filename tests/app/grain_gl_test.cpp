@@ -21,13 +21,13 @@ namespace vdfx::app::testing {
 namespace {
 
 std::string grain_entry(const std::string& style, double intensity,
-                        const std::string& settings = "{}") {
+                        const std::string& settings = "{}", double size = 1.0) {
   std::ostringstream s;
   s << R"(,
     {"type": "grain", "style": ")"
     << style << R"(", "seed": 11, "settings": )" << settings << R"(,
      "keyframes": [{"azimuth_deg": 0.0, "altitude_deg": 0.0, "frame": 0, "params": {"intensity": )"
-    << intensity << R"(, "size": 1.0}}]})";
+    << intensity << R"(, "size": )" << size << "}}]}";
   return s.str();
 }
 
@@ -35,7 +35,8 @@ TEST(GrainGpu, RenderGpuMatchesTheCpuPathForTheShaderStyles) {
   const auto dir = test_dir();
   write_test_panorama(dir);
   for (const char* style : {"surface", "headset"}) {
-    write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry(style, 0.7)));
+    // Eyes at a sixth of generic90's size: size 4 keeps the grain resolved (16 mrad cells).
+    write_text(dir / "s.vdfx.json", exposure_sidecar(grain_entry(style, 0.7, "{}", 4.0)));
     for (const std::string eye : {"left", "right"}) {
       const std::string common = "--view 4,2 --hmd generic90 --size 240x266 --eye " + eye + " ";
       const cv::Mat cpu = render(dir, common, "cpu.png");
@@ -81,10 +82,11 @@ TEST(GrainGpu, PlayChangesTheGrainOnRefreshBoundariesOnlyAndNotWhileUnaltered) {
   io::Sidecar sc = test::one_effect_sidecar(effects::EffectType::Exposure, {{0, 0, {0.0}}});
   effects::GrainEffect g;
   g.style = effects::GrainStyle::Surface;
-  g.keyframes.push_back({{0.0, 0.0}, 0, {1.0, 1.0}});
+  g.keyframes.push_back({{0.0, 0.0}, 0, {1.0, 4.0}});  // 16 mrad cells: 5 px at half size
   sc.grains.push_back(g);
   Player player(sc, video->properties());
   FrameLoopOptions o = test::small_hidden_loop();
+  o.eye_scale = 0.5;  // grain finer than the pixels would be band-limited away
   o.script = [](std::int64_t n) {
     return n == 10 ? std::vector<xr::DesktopEvent>{xr::KeyEvent{xr::Key::U, true}}
                    : std::vector<xr::DesktopEvent>{};

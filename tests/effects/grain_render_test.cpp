@@ -14,7 +14,9 @@
 namespace vdfx::effects {
 namespace {
 
-GrainFrame frame(GrainStyle style, double intensity, const HeadPose& head, double size = 1.0) {
+// Size 2 by default: at kFov's density (667 px per tangent unit, 1.5 mrad per pixel) a lattice
+// cell is 5 px wide, so no octave is band-limited and the grain is exactly world-fixed.
+GrainFrame frame(GrainStyle style, double intensity, const HeadPose& head, double size = 2.0) {
   GrainEffect e;
   e.style = style;
   e.seed = 17;
@@ -30,7 +32,7 @@ Eigen::Matrix3d yaw(double deg) {
   return Eigen::AngleAxisd(-deg * kDegToRad, Eigen::Vector3d::UnitY()).toRotationMatrix();
 }
 
-const TanRect kFov{-0.8, 0.7, 0.75, -0.75};
+const TanRect kFov{-0.16, 0.14, 0.12, -0.12};
 
 /// Grain modulation s at a fractional fragment position of a 200x160 eye.
 float at(const GrainFrame& f, const Eigen::Matrix3d& eye_rot, const Eigen::Vector3d& eye, double fx,
@@ -70,7 +72,7 @@ TEST(GrainRender, HeadsetNoiseIsEvaluatedOnThePlaneAheadOfTheHead) {
 
 TEST(GrainRender, SurfaceGrainStaysPutInTheWorldWhenTheHeadTurns) {
   HeadPose a, b;
-  b.orientation = yaw(20);
+  b.orientation = yaw(5);
   const GrainFrame fa = frame(GrainStyle::Surface, 0.5, a), fb = frame(GrainStyle::Surface, 0.5, b);
   const ViewCamera cam_a = ViewCamera::from_tangents(a.orientation, kFov, 200, 160);
   const ViewCamera cam_b = ViewCamera::from_tangents(b.orientation, kFov, 200, 160);
@@ -116,9 +118,10 @@ TEST(GrainRender, HeadsetGrainIsFixedToTheHead) {
 }
 
 /// Mean change and mean difference of horizontal neighbours of a layer rendered on grey.
-std::pair<double, double> texture_stats(const GrainFrame& f, const Eigen::Matrix3d& rot) {
+std::pair<double, double> texture_stats(const GrainFrame& f, const Eigen::Matrix3d& rot,
+                                        const TanRect& fov = kFov) {
   cv::Mat img(160, 200, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5));
-  composite_shader_grain(img, f, rot, Eigen::Vector3d::Zero(), kFov);
+  composite_shader_grain(img, f, rot, Eigen::Vector3d::Zero(), fov);
   double level = 0, step = 0;
   for (int j = 0; j < img.rows; ++j)
     for (int i = 1; i < img.cols; ++i) {
@@ -171,6 +174,32 @@ TEST(GrainRender, IntensityScalesTheLayerAndZeroLeavesTheImage) {
   EXPECT_THROW(composite_shader_grain(img, cloud, Eigen::Matrix3d::Identity(),
                                       Eigen::Vector3d::Zero(), kFov),
                std::invalid_argument);
+}
+
+TEST(GrainRender, GrainFinerThanAPixelFadesInsteadOfAliasing) {
+  // The same grain (size 1, sphere 10 m: 4 mrad cells) seen at falling pixel densities: each
+  // octave fades out between 0.5 and 1 lattice cells per pixel, so coarse eyes get less grain,
+  // never a moire of undersampled noise; past 1 cell per pixel for both octaves, none at all.
+  HeadPose h;
+  const GrainFrame f = frame(GrainStyle::Surface, 0.5, h, 1.0);
+  double previous = 1e9;
+  for (double scale : {1.0, 2.0, 3.0, 4.0, 6.0}) {
+    const TanRect fov{kFov.left * scale, kFov.right * scale, kFov.up * scale, kFov.down * scale};
+    const double level = texture_stats(f, Eigen::Matrix3d::Identity(), fov).first;
+    // 1.5 mrad per pixel at scale 1: 0.375 cells per pixel; scale 4: 1.5 at the centre, 1.3 in
+    // the corners (where pixels span smaller angles), nothing left.
+    if (scale >= 4.0)
+      EXPECT_EQ(level, 0.0) << scale;
+    else
+      EXPECT_GT(level, 0.0) << scale;
+    EXPECT_LE(level, previous) << scale;
+    previous = level;
+  }
+  // At scale 1 the second octave is half faded (0.375 cells per pixel for octave 1, 0.75 for
+  // octave 2): less grain than the same grain at twice the size, where neither fades.
+  const double full =
+      texture_stats(frame(GrainStyle::Surface, 0.5, h, 2.0), Eigen::Matrix3d::Identity()).first;
+  EXPECT_LT(texture_stats(f, Eigen::Matrix3d::Identity()).first, full);
 }
 
 }  // namespace
