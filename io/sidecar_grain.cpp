@@ -95,9 +95,7 @@ void read_keyframes(Checker& c, const json& v, const std::string& ptr,
 }  // namespace
 
 bool is_grain_entry(const nlohmann::json& entry) {
-  if (!entry.is_object()) return false;
-  const auto t = entry.find("type");
-  return t != entry.end() && t->is_string() && t->get<std::string>() == kGrainTypeName;
+  return detail::has_type(entry, kGrainTypeName);
 }
 
 nlohmann::ordered_json grain_to_json(const effects::GrainEffect& g) {
@@ -118,15 +116,10 @@ nlohmann::ordered_json grain_to_json(const effects::GrainEffect& g) {
   const auto& specs = effects::grain_param_specs();
   ordered kfs = ordered::array();
   for (const effects::Keyframe& k : g.keyframes) {
-    ordered kj;
-    kj["azimuth_deg"] = k.direction.azimuth_deg;
-    kj["altitude_deg"] = k.direction.altitude_deg;
-    kj["frame"] = k.frame;
     ordered params;
     for (std::size_t j = 0; j < specs.size(); ++j)
       params[std::string(specs[j].name)] = j < k.params.size() ? k.params[j] : specs[j].neutral;
-    kj["params"] = std::move(params);
-    kfs.push_back(std::move(kj));
+    kfs.push_back(keyframe_to_json(k, std::move(params)));
   }
   e["keyframes"] = std::move(kfs);
   return e;
