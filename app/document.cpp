@@ -15,6 +15,7 @@ Document::Document(io::Sidecar sidecar, DocumentOptions options)
     : video_(sidecar.video),
       defaults_(sidecar.interpolation),
       flares_(std::move(sidecar.flares)),
+      grains_(std::move(sidecar.grains)),
       options_(options) {
   std::array<std::vector<effects::Keyframe>, effects::kEffectCount> loaded;
   for (auto& track : sidecar.effects) {
@@ -32,6 +33,7 @@ io::Sidecar Document::sidecar() const {
   s.video = video_;
   s.interpolation = defaults_;
   s.flares = flares_;
+  s.grains = grains_;
   for (const auto& spec : effects::all_effect_specs()) {
     const auto i = idx(spec.type);
     if (sets_[i]->keyframes().empty() && !overrides_[i]) continue;

@@ -5,8 +5,8 @@
 /// Every edit goes through here, becomes one undo step (or part of an open group) and notifies
 /// the change listener (autosave). The sidecar written is rebuilt from the keyframe sets, with
 /// the effects in the stack's order (blur, tint, exposure, saturation, contrast, vignette); an
-/// effect is written when it has keyframes or its own interpolation settings. Flares are carried
-/// through unchanged.
+/// effect is written when it has keyframes or its own interpolation settings. Flares and grain
+/// are carried through unchanged.
 #pragma once
 
 #include <array>
@@ -112,6 +112,7 @@ class Document {
   /// The sidecar's flares, kept as read and written back unchanged (the editor does not edit
   /// them yet; a save must not drop them).
   std::vector<effects::FlareEffect> flares_;
+  std::vector<effects::GrainEffect> grains_;  //!< likewise the grain effects
   DocumentOptions options_;
   std::array<std::unique_ptr<effects::KeyframeSet>, effects::kEffectCount> sets_;
   std::array<std::optional<effects::InterpolationSettings>, effects::kEffectCount> overrides_;

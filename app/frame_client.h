@@ -4,8 +4,8 @@
 ///
 /// Order per frame: desktop events (on_desktop_event) -> update(input at the display time) ->
 /// the loop fetches info.video_frame from the decoder -> params(head forward, shown frame) unless
-/// unaltered() -> flares(head pose, shown frame) unless unaltered() -> quads() -> both eyes
-/// rendered -> mirror.
+/// unaltered() -> flares(head pose, shown frame) and grains(head pose, display time, shown frame)
+/// unless unaltered() -> quads() -> both eyes rendered -> mirror.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +17,7 @@
 #include "effects/effect_types.h"
 #include "effects/flare_layout.h"
 #include "io/picture.h"
+#include "effects/grain_layout.h"
 #include "xr/actions.h"
 #include "xr/input_events.h"
 #include "xr/session.h"
@@ -69,6 +70,15 @@ class FrameClient {
                                                    std::int64_t video_frame,
                                                    const io::Picture* picture) {
     (void)head_in_local, (void)video_frame, (void)picture;
+    return {};
+  }
+  /// This frame's grain layers for the head pose (LOCAL) at a display time and video frame,
+  /// laid out once and drawn into both eyes after the flares (docs/grain.md). The display time
+  /// picks the grain pattern (one per refresh_ms); the frame, with the head's direction, the
+  /// keyframed intensity and size.
+  virtual std::vector<effects::GrainFrame> grains(const xr::Pose& head_in_local,
+                                                  std::int64_t display_time_ns, std::int64_t video_frame) {
+    (void)head_in_local, (void)display_time_ns, (void)video_frame;
     return {};
   }
   /// UI panels, composited after the effects (never blurred or tinted).

@@ -26,6 +26,7 @@
 #include "io/video_source.h"
 #include "xr/compositor.h"
 #include "xr/flare_gl.h"
+#include "xr/grain_gl.h"
 #include "xr/gl_context.h"
 #include "xr/input_backend.h"
 #include "xr/param_grid.h"
@@ -76,6 +77,7 @@ struct FrameLoop::Impl {
   std::unique_ptr<GlfwInputGlue> glue;
   std::unique_ptr<xr::Compositor> compositor;
   std::unique_ptr<xr::FlareGl> flare;  //!< the client's flares, drawn after the effects
+  std::unique_ptr<xr::GrainGl> grain;  //!< the client's grain, drawn after the flares
   xr::MirrorMode mirror = xr::MirrorMode::Desktop;
   std::optional<glm::dvec2> cursor;  //!< the last cursor position the window reported
 
@@ -109,6 +111,7 @@ struct FrameLoop::Impl {
     cc.blur = o.blur;
     compositor = std::make_unique<xr::Compositor>(cc);
     flare = std::make_unique<xr::FlareGl>();
+    grain = std::make_unique<xr::GrainGl>();
     mirror = o.mirror;
   }
 
@@ -298,7 +301,12 @@ struct FrameLoop::Impl {
                                             : client.flares(in.head, param_frame,
                                                             shown ? &shown->picture : nullptr));
       stats.add_cpu("flares", ms_since(flares_t0));
-      const std::array<xr::EyeLayer*, 1> layers{flare.get()};
+      // Grain: laid out once per frame (pattern from the display time), drawn into both eyes.
+      const auto grains_t0 = Clock::now();
+      grain->set_layers(client.unaltered() ? std::vector<effects::GrainFrame>{}
+                                           : client.grains(in.head, t, param_frame));
+      stats.add_cpu("grains", ms_since(grains_t0));
+      const std::array<xr::EyeLayer*, 2> layers{flare.get(), grain.get()};
 
       const std::vector<xr::QuadLayer> quads = client.quads();
       if (mirror == xr::MirrorMode::Desktop) {

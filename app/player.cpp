@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "app/flare_set_of.h"
+#include "app/grain_set_of.h"
 #include "effects/effect_shaders.h"
 #include "io/input_error.h"
 
@@ -29,6 +30,7 @@ effects::StackInterpolator make_interpolator(const io::Sidecar& s) {
 Player::Player(const io::Sidecar& sidecar, const io::VideoProperties& video, PlayerOptions options)
     : interp_(make_interpolator(sidecar)),
       flares_(flare_set_of(sidecar)),
+      grains_(grain_set_of(sidecar)),
       playhead_(video.fps, std::max<std::int64_t>(video.frames, 1), options.loop),
       options_(options),
       mode_(options.mode) {
@@ -104,6 +106,12 @@ std::vector<effects::FlareLayout> Player::flares(const xr::Pose& head, std::int6
     observed_frame_ = frame;
   }
   return flares_.layouts({xr::position_of(head), xr::rotation_of(head)}, frame);
+}
+
+std::vector<effects::GrainFrame> Player::grains(const xr::Pose& head, std::int64_t display_time_ns,
+                                                std::int64_t frame) {
+  if (grains_.empty()) return {};
+  return grains_.layout({xr::position_of(head), xr::rotation_of(head)}, display_time_ns, frame);
 }
 
 std::string Player::status_line() const {
