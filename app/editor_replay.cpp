@@ -3,17 +3,22 @@
 #include "app/editor_replay.h"
 
 #include <cstdio>
+#include <utility>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "app/editor.h"
+#include "app/editor_layers.h"
 #include "effects/equirect_sampler.h"
+#include "effects/flare_render.h"
+#include "effects/grain_render.h"
 #include "effects/view_renderer.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
 #include "io/recording.h"
 #include "ui/interaction.h"
 #include "xr/input_backend.h"
+#include "xr/render_view.h"
 
 namespace vdfx::app {
 
@@ -118,6 +123,8 @@ ReplayResult run_replay(const ReplayOptions& o) {
       shots.push_back((timeline.size() - 1) * static_cast<std::size_t>(k) / static_cast<std::size_t>(n));
   }
   std::size_t next_shot = 0;
+  EditorLayers layers;  // the document's flares and grain, drawn into the frames
+  bool told_volumetric = false;
   for (std::size_t i = 0; i < timeline.size(); ++i) {
     editor.update(backend->poll(timeline[i]), timeline[i]);
     while (next_shot < shots.size() && shots[next_shot] == i) {
@@ -130,7 +137,24 @@ ReplayResult run_replay(const ReplayOptions& o) {
       effects::EquirectSampler sampler(image);
       const auto camera = effects::ViewCamera::from_horizontal_fov({editor.view_direction(), 0.0}, o.hfov_deg,
                                                                    o.width, o.height);
-      cv::Mat rgb8 = effects::to_rgb8(effects::render_view(sampler, camera, editor.current_params()));
+      cv::Mat rendered = effects::render_view(sampler, camera, editor.current_params());
+      // Flares and grain as the editor's window draws them: laid out from the head, drawn after
+      // the effects (the head looks along the view, as the camera does).
+      const xr::RenderView view = xr::RenderView::look_at(editor.view_direction(), 0.0, o.hfov_deg, o.width, o.height);
+      const glm::dvec3 p = editor.input().head.position;
+      const effects::HeadPose head{Eigen::Vector3d(p.x, p.y, p.z), view.orientation};
+      layers.update(editor);
+      if (layers.flares().uses_auto_light()) layers.flares().observe(frame, image);
+      effects::add_flares(rendered, camera, head.position, layers.flares().layouts(head, frame));
+      for (const effects::GrainFrame& g : layers.grains().layout(head, timeline[i], frame)) {
+        if (!effects::is_volumetric(g.style)) {
+          effects::composite_shader_grain(rendered, g, view.orientation, head.position, view.tangents());
+        } else if (!std::exchange(told_volumetric, true)) {
+          result.messages.push_back("grain style " + std::string(effects::grain_style_name(g.style)) +
+                                    " is drawn on the GPU only: not in the replay's frames");
+        }
+      }
+      cv::Mat rgb8 = effects::to_rgb8(rendered);
       overlay_panels(rgb8, camera, editor.input().head.position,
                      editor.panels());
       cv::Mat bgr;
