@@ -9,6 +9,7 @@ namespace vdfx::app {
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> list = {
+      {"bench", "the speed-against-error report of every accuracy knob", cmd_bench},
       {"devices", "list HID input devices (gamepads, SpaceMouse) and their ids for --input hid:", cmd_devices},
       {"edit", "the in-headset editor (no VIDEO: the bundled demo)", cmd_edit},
       {"eval", "print the interpolated parameters of every effect at given views", cmd_eval},

@@ -24,6 +24,7 @@ const std::vector<Command>& commands();
 /// Runs `vdfx ARGS...` (without the program name), mapping exceptions to exit codes.
 int run_main(const Args& args);
 
+int cmd_bench(const Args& args);
 int cmd_devices(const Args& args);
 int cmd_edit(const Args& args);
 int cmd_eval(const Args& args);

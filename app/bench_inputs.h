@@ -1,0 +1,43 @@
+/// @file
+/// @brief Inputs shared by `vdfx bench` and the Google Benchmark targets (tests/bench/): seeded
+/// random keyframes, the synthetic 4K equirect frame, the real CC0 panorama, the generic90 eye's
+/// lens and a grid of points over its panel. Deterministic, so figures of two runs compare.
+#pragma once
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "effects/keyframe.h"
+#include "effects/lens_model.h"
+
+namespace vdfx::app::bench {
+
+/// `n` keyframes of `dim` parameters in [0, 4], directions uniform on the sphere, frames uniform
+/// in [0, max_frame], from a seeded generator.
+std::vector<effects::Keyframe> random_keyframes(int n, int dim, std::uint64_t seed,
+                                                std::int64_t max_frame = 3000);
+
+/// A 3840 x 1920 CV_8UC3 BGR equirect (a common 4K 360 video size): sawtooth ramps of periods
+/// 36, 85 and 1024 texels, whose 255 -> 0 wraps are worst-case steps for filters. Built once.
+const cv::Mat& synthetic_frame();
+
+/// Blender's CC0 `sunrise.exr` (blender-data) as CV_32FC3 RGB with its HDR values, or seeded
+/// uniform noise in [0, 1] of the same 1024 x 512 size when the file is missing (then
+/// `*from_file` is false). Built once.
+const cv::Mat& sunrise_rgb(bool* from_file = nullptr);
+
+/// A size x size CV_32FC3 image of seeded uniform noise in [0, 1].
+cv::Mat noise_image(int size);
+
+/// The generic90 profile's left eye: panel viewport, FOV and lens (1440 x 1600).
+const effects::EyeLens& generic90_left_lens();
+
+/// 4096 panel points of generic90's left eye on a 64 x 64 grid over the whole viewport, in
+/// normalised lens coordinates (tangent / R), as OpenCV's undistortPoints takes them.
+const std::vector<cv::Point2d>& lens_grid_points();
+
+/// Pixels of generic90's left eye image per normalised lens unit (horizontally).
+double lens_px_per_unit();
+
+}  // namespace vdfx::app::bench
