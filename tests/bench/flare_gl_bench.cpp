@@ -16,6 +16,8 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "app/bench_flare_setup.h"
+#include "app/bench_inputs.h"
 #include "effects/auto_light.h"
 #include "effects/effect_shaders.h"
 #include "effects/flare_layout.h"
@@ -32,31 +34,10 @@ namespace {
 using namespace vdfx;
 using namespace vdfx::xr;
 
-cv::Mat synthetic_frame() {
-  cv::Mat frame(1920, 3840, CV_8UC3);
-  frame.forEach<cv::Vec3b>([](cv::Vec3b& p, const int* pos) {
-    p = cv::Vec3b(static_cast<uchar>((pos[1] * 7) & 255), static_cast<uchar>((pos[0] * 3) & 255),
-                  static_cast<uchar>(((pos[0] + pos[1]) / 4) & 255));
-  });
-  return frame;
-}
-
-Pose head_at(const effects::Direction& look) {
-  Pose p;
-  p.position = {0.0, 1.6, 0.0};
-  p.orientation = glm::quat_cast(camera_rotation(look, 0.0));
-  return p;
-}
-
-// The gaze 8 degrees from the light: the whole flare, rings spread over the view.
-const effects::Direction kLook{20.0, 5.0}, kLight{27.0, 9.0};
+using app::bench::synthetic_frame;
 
 effects::FlareLayout layout(effects::FlareStyle style, int rings) {
-  effects::FlareSettings s = effects::default_flare_settings(style);
-  s.rings = rings;
-  const Pose h = head_at(kLook);
-  return *effects::layout_flare(style, s, {position_of(h), rotation_of(h)},
-                                effects::to_unit(kLight), 1.0);
+  return app::bench::flare_layout(style, rings);
 }
 
 struct Fixture {
@@ -89,7 +70,7 @@ Fixture& fixture() {
     f.comp = std::make_unique<Compositor>(c);
     f.comp->set_video_frame(synthetic_frame());
     f.flare = std::make_unique<FlareGl>();
-    const auto views = locate_eye_views(head_at(kLook), profile);
+    const auto views = locate_eye_views(app::bench::flare_head(), profile);
     for (int e = 0; e < 2; ++e)
       f.eyes[static_cast<std::size_t>(e)] = render_view(views[static_cast<std::size_t>(e)]);
     f.params.exposure_stops = 0.5;
@@ -157,10 +138,10 @@ void BM_GlFlareLayerRings(benchmark::State& s) {
 
 /// CPU, once per frame: the layout of one flare from the head pose.
 void BM_FlareLayout(benchmark::State& s) {
-  const Pose h = head_at(kLook);
+  const Pose h = app::bench::flare_head();
   const effects::HeadPose head{position_of(h), rotation_of(h)};
   const effects::FlareSettings settings;
-  const Eigen::Vector3d l = effects::to_unit(kLight);
+  const Eigen::Vector3d l = effects::to_unit(app::bench::kFlareLight);
   for (auto _ : s)
     benchmark::DoNotOptimize(
         effects::layout_flare(effects::FlareStyle::Directional, settings, head, l, 1.0));

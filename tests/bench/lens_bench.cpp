@@ -10,41 +10,17 @@
 #include <opencv2/calib3d.hpp>
 #include <vector>
 
+#include "app/bench_inputs.h"
 #include "effects/distortion_mesh.h"
-#include "xr/hmd_profile.h"
 
 namespace {
 
 using vdfx::effects::EyeLens;
 using vdfx::effects::InverseMethod;
 
-const EyeLens& eye() {
-  static const EyeLens e = vdfx::xr::load_hmd_profile("generic90").eye_lens(vdfx::xr::Eye::Left);
-  return e;
-}
-
-/// 4096 panel points on a 64 x 64 grid over the whole viewport, in normalised lens coordinates.
-const std::vector<cv::Point2d>& points() {
-  static const std::vector<cv::Point2d> pts = [] {
-    std::vector<cv::Point2d> out;
-    const double R = eye().lens.params().radius;
-    for (int j = 0; j < 64; ++j) {
-      for (int i = 0; i < 64; ++i) {
-        const Eigen::Vector2d t =
-            eye().pixel_to_tan({(i + 0.5) / 64.0 * eye().width, (j + 0.5) / 64.0 * eye().height});
-        out.emplace_back(t.x() / R, t.y() / R);
-      }
-    }
-    return out;
-  }();
-  return pts;
-}
-
-/// Pixels of the eye image per normalised lens unit (horizontal).
-double px_per_unit() {
-  const auto& e = eye();
-  return e.lens.params().radius * e.width / (e.fov.right - e.fov.left);
-}
+const EyeLens& eye() { return vdfx::app::bench::generic90_left_lens(); }
+const std::vector<cv::Point2d>& points() { return vdfx::app::bench::lens_grid_points(); }
+double px_per_unit() { return vdfx::app::bench::lens_px_per_unit(); }
 
 cv::Point2d invert(const cv::Point2d& p, InverseMethod method) {
   const double r_d = std::hypot(p.x, p.y);
