@@ -11,6 +11,7 @@
 #include "app/bench_gl.h"
 #include "effects/effect_shaders.h"
 #include "effects/effect_stack.h"
+#include "effects/gaussian_blur.h"
 #include "xr/effect_stack_gl.h"
 
 namespace vdfx::app::bench {
@@ -91,6 +92,20 @@ const cv::Mat& blur_reference(bool quick, double sigma_deg) {
   return ref;
 }
 
+/// OpenCV's GaussianBlur of the same eye image on the CPU (one thread), the blur peer of the
+/// CPU knob, for scale: median of 3, once per sigma.
+double opencv_blur_s(bool quick, double sigma_deg) {
+  static std::map<std::pair<bool, double>, double> cache;
+  auto it = cache.find({quick, sigma_deg});
+  if (it != cache.end()) return it->second;
+  const BenchEye eye = bench_eye(quick);
+  const double fx = eye.width / (eye.view.tan_right - eye.view.tan_left);
+  const double sigma = effects::sigma_px_from_deg(sigma_deg, fx);
+  cv::Mat out;
+  const TimeStats t = measure({[&] { out = effects::blur_opencv(eye_input_bgr(quick), sigma, sigma); }}, {0.0, 3, 3});
+  return cache[{quick, sigma_deg}] = t.median_s;
+}
+
 std::string deg(double d) {
   char b[32];
   std::snprintf(b, sizeof b, "%g deg", d);
@@ -124,6 +139,7 @@ void add_effects_gl_knobs(Registry& r, bool quick) {
         p.blur_sigma_deg = s;
         stack_case(row, ctx, p, m, blur_reference(ctx.quick, s));
         row.series = deg(s);
+        row.add("opencv_cpu_s", opencv_blur_s(ctx.quick, s));
       });
     }
   }

@@ -77,7 +77,7 @@ void write_markdown(std::ostream& out, const Report& rep) {
       << "- command: `" << rep.command << "`" << (rep.quick ? " (quick: fewer settings, smaller images)" : "")
       << "\n- machine: " << m.cpu << ", " << m.physical_cores << " cores (" << m.logical_cpus
       << " logical CPUs); GL: " << m.gl_renderer << (m.gl_version.empty() ? "" : ", " + m.gl_version)
-      << "\n- build: " << m.build << "; CPU rows single-threaded (OpenCV too)"
+      << "\n- build: " << m.build << "; CPU rows single-threaded (OpenCV too), GL rows on the driver's own threads"
       << "\n- started " << m.date_utc << ", took " << format_time(rep.wall_s)
       << "; load average (1 / 5 / 15 min) " << load_text(m.load_start) << " at the start, "
       << load_text(m.load_end) << " at the end\n\n"
@@ -85,7 +85,8 @@ void write_markdown(std::ostream& out, const Report& rep) {
          "setting is timed interleaved with its peer, so the ratio holds even on a busy machine.\n"
          "Rows marked * are on the knob's Pareto front (no other setting of the same series, e.g.\n"
          "the same sigma, is both faster and more accurate); knobs whose settings are sizes or\n"
-         "different jobs (N, one effect each) have none.\n";
+         "different jobs (N, one effect each) have none. docs/bench.md explains every knob, column\n"
+         "and the JSON schema.\n";
   for (const Knob& k : rep.knobs) {
     out << "\n## " << k.id << ": " << k.title << "\n\n"
         << "Time per " << k.per << "; error in " << k.error_unit << " against " << k.reference
@@ -106,6 +107,8 @@ void write_markdown(std::ostream& out, const Report& rep) {
           << format_time(r.peer_time.median_s) << " | " << format_number(r.ratio()) << " | "
           << format_number(r.error.max) << " | " << format_number(r.error.rms) << " | " << notes << " |\n";
     }
+    if (const auto it = rep.plot_links.find(k.id); it != rep.plot_links.end())
+      out << "\n![" << k.id << ": time against error](" << it->second << ")\n";
   }
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <limits>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -89,6 +90,8 @@ struct Report {
   std::vector<Knob> knobs;   //!< those with at least one row, in run order
   std::vector<Row> rows;
   double wall_s = 0.0;       //!< the whole run
+  //! Knob id -> its plot, relative to where the markdown is written (images in --markdown).
+  std::map<std::string, std::string> plot_links;
 };
 
 /// Marks the rows of knobs with alternatives that no other ok row of the same knob and series

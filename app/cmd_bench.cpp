@@ -77,9 +77,9 @@ void check_output(const std::string& path, const char* option) {
                          " does not exist");
 }
 
+/// The end of a row's progress line (its start, knob and setting, is printed before it runs).
 std::string progress_text(const Row& r) {
   std::ostringstream s;
-  s << r.knob << " " << r.setting << ": ";
   if (r.status != RowStatus::Ok) {
     s << to_string(r.status) << " (" << r.reason << ")";
   } else {
@@ -167,6 +167,10 @@ int cmd_bench(const Args& args) {
       row.setting = selected[i].c->setting;
       row.peer = knob.peer;
       row.reference = knob.reference;
+      if (terminal) {
+        std::cerr << "[" << i + 1 << "/" << selected.size() << "] " << row.knob << " " << row.setting << ": ";
+        std::cerr.flush();
+      }
       if (selected[i].c->gl && !gl.ready(report.machine)) {
         row.status = RowStatus::Skipped;
         row.reason = "needs GL: " + gl.error;
@@ -182,8 +186,7 @@ int cmd_bench(const Args& args) {
       double load[3];
       read_load(load);
       row.load1 = load[0];
-      if (terminal)
-        std::cerr << "[" << i + 1 << "/" << selected.size() << "] " << progress_text(row) << "\n";
+      if (terminal) std::cerr << progress_text(row) << std::endl;
       if (report.knobs.empty() || report.knobs.back().id != knob.id) report.knobs.push_back(knob);
       report.rows.push_back(std::move(row));
     }
@@ -196,7 +199,6 @@ int cmd_bench(const Args& args) {
   std::ostringstream md;
   write_markdown(md, report);
   std::cout << md.str();
-  if (!md_path.empty()) io::write_file_atomic(md_path, md.str());
   if (!json_path.empty()) io::write_file_atomic(json_path, to_json(report).dump(2) + "\n");
   if (!csv_path.empty()) {
     std::ostringstream c;
@@ -204,6 +206,19 @@ int cmd_bench(const Args& args) {
     io::write_file_atomic(csv_path, c.str());
   }
   if (!plot_dir.empty()) write_plots(report, {plot_dir, png.width, png.height});
+  if (!md_path.empty()) {
+    if (!plot_dir.empty()) {  // the file shows the plots, linked relative to its own folder
+      const auto md_dir = std::filesystem::absolute(md_path).parent_path();
+      for (const Knob& k : report.knobs) {
+        const auto png_path = std::filesystem::absolute(plot_dir) / (k.id + ".png");
+        if (std::filesystem::exists(png_path))
+          report.plot_links[k.id] = std::filesystem::relative(png_path, md_dir).generic_string();
+      }
+    }
+    std::ostringstream file;
+    write_markdown(file, report);
+    io::write_file_atomic(md_path, file.str());
+  }
 
   int failed = 0;
   for (const Row& r : report.rows) failed += r.status == RowStatus::Failed ? 1 : 0;
