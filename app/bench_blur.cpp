@@ -35,7 +35,8 @@ cv::Vec3d reference_at(const cv::Mat& src, cv::Point at, const std::vector<doubl
     const int y = std::clamp(at.y + dy, 0, src.rows - 1);
     for (int dx = -r; dx <= r; ++dx) {
       const int x = std::clamp(at.x + dx, 0, src.cols - 1);
-      const long double k = static_cast<long double>(w[static_cast<std::size_t>(dy + r)]) * w[static_cast<std::size_t>(dx + r)];
+      const long double k = static_cast<long double>(w[static_cast<std::size_t>(dy + r)]) *
+                            w[static_cast<std::size_t>(dx + r)];
       const cv::Vec3f& c = src.at<cv::Vec3f>(y, x);
       for (int ch = 0; ch < 3; ++ch) acc[ch] += k * c[ch];
     }
@@ -72,7 +73,8 @@ void blur_case(Row& row, const Context& ctx, BlurFn fn, double sigma_deg, bool i
     row.time = row.peer_time = measure(subject, ctx.budget);
   } else {
     cv::Mat peer_out;
-    const auto t = measure_pair(subject, {[&] { peer_out = effects::blur_opencv(src, sigma, sigma); }}, ctx.budget);
+    const auto t = measure_pair(
+        subject, {[&] { peer_out = effects::blur_opencv(src, sigma, sigma); }}, ctx.budget);
     row.time = t.subject;
     row.peer_time = t.peer;
   }
@@ -93,7 +95,8 @@ std::string deg(double d) {
 }  // namespace
 
 void add_blur_knobs(Registry& r, bool quick) {
-  r.knob({kKnob, "Gaussian blur on the CPU, one thread: exact 2-D, separable (the reference path), OpenCV",
+  r.knob({kKnob,
+          "Gaussian blur on the CPU, one thread: exact 2-D, separable (the reference path), OpenCV",
           "view", "8-bit steps", "direct 2-D Gaussian sum in long double at 4160 sampled pixels",
           "OpenCV GaussianBlur, same kernel", PlotError::Max, false});
   struct Method {
@@ -111,10 +114,11 @@ void add_blur_knobs(Registry& r, bool quick) {
                                   {"OpenCV", effects::blur_opencv, {0.25, 0.5, 2}, true}};
   for (const Method& m : methods)
     for (const double s : m.sigmas)
-      r.add(kKnob, std::string(m.name) + " " + deg(s), [fn = m.fn, s, peer = m.peer](Row& row, const Context& ctx) {
-        blur_case(row, ctx, fn, s, peer);
-        row.series = deg(s);
-      });
+      r.add(kKnob, std::string(m.name) + " " + deg(s),
+            [fn = m.fn, s, peer = m.peer](Row& row, const Context& ctx) {
+              blur_case(row, ctx, fn, s, peer);
+              row.series = deg(s);
+            });
 }
 
 }  // namespace vdfx::app::bench

@@ -59,15 +59,20 @@ struct EffectCase {
 const std::vector<EffectCase>& effect_cases() {
   static const std::vector<EffectCase> cases = {
       {"blur 1 deg", [](StackParams& p) { p.blur_sigma_deg = 1.0; }},
-      {"tint", [](StackParams& p) { p.set(EffectType::Tint, std::vector<double>{1.3, 1.0, 0.7}); }},
+      {"tint",
+       [](StackParams& p) {
+         p.set(EffectType::Tint, std::vector<double>{1.3, 1.0, 0.7});
+       }},
       {"exposure +1", [](StackParams& p) { p.exposure_stops = 1.0; }},
       {"saturation 1.5", [](StackParams& p) { p.saturation = 1.5; }},
       {"contrast 1.3", [](StackParams& p) { p.contrast = 1.3; }},
-      {"vignette 30/20", [](StackParams& p) {
+      {"vignette 30/20",
+       [](StackParams& p) {
          p.vignette_radius_deg = 30;
          p.vignette_falloff_deg = 20;
        }},
-      {"full stack", [](StackParams& p) {
+      {"full stack",
+       [](StackParams& p) {
          p.blur_sigma_deg = 1.0;
          p.set(EffectType::Tint, std::vector<double>{1.2, 1.0, 0.8});
          p.exposure_stops = 0.5;
@@ -102,7 +107,8 @@ double opencv_blur_s(bool quick, double sigma_deg) {
   const double fx = eye.width / (eye.view.tan_right - eye.view.tan_left);
   const double sigma = effects::sigma_px_from_deg(sigma_deg, fx);
   cv::Mat out;
-  const TimeStats t = measure({[&] { out = effects::blur_opencv(eye_input_bgr(quick), sigma, sigma); }}, {0.0, 3, 3});
+  const TimeStats t = measure(
+      {[&] { out = effects::blur_opencv(eye_input_bgr(quick), sigma, sigma); }}, {0.0, 3, 3});
   return cache[{quick, sigma_deg}] = t.median_s;
 }
 
@@ -116,8 +122,9 @@ std::string deg(double d) {
 
 void add_effects_gl_knobs(Registry& r, bool quick) {
   const std::string ref = "CPU reference in double (effects::apply_stack) on the same input";
-  r.knob({"gl.effects", "each effect and the whole stack on the GPU (generic90 eye, synthetic 4K frame)",
-          "eye", "8-bit steps", ref, kCopyFloor, PlotError::Max, true, false});
+  r.knob({"gl.effects",
+          "each effect and the whole stack on the GPU (generic90 eye, synthetic 4K frame)", "eye",
+          "8-bit steps", ref, kCopyFloor, PlotError::Max, true, false});
   for (const EffectCase& c : effect_cases()) {
     r.add("gl.effects", c.name, [set = c.set](Row& row, const Context& ctx) {
       StackParams p;
@@ -131,16 +138,18 @@ void add_effects_gl_knobs(Registry& r, bool quick) {
 
   r.knob({"blur.gl", "Gaussian blur on the GPU: exact separable against the pyramid", "eye",
           "8-bit steps", ref, kCopyFloor, PlotError::Max, true});
-  const std::vector<double> sigmas = quick ? std::vector<double>{1, 4} : std::vector<double>{0.5, 1, 2, 4};
+  const std::vector<double> sigmas =
+      quick ? std::vector<double>{1, 4} : std::vector<double>{0.5, 1, 2, 4};
   for (const xr::BlurMethod m : {xr::BlurMethod::Exact, xr::BlurMethod::Pyramid}) {
     for (const double s : sigmas) {
-      r.add("blur.gl", std::string(xr::blur_method_name(m)) + " " + deg(s), [m, s](Row& row, const Context& ctx) {
-        StackParams p;
-        p.blur_sigma_deg = s;
-        stack_case(row, ctx, p, m, blur_reference(ctx.quick, s));
-        row.series = deg(s);
-        row.add("opencv_cpu_s", opencv_blur_s(ctx.quick, s));
-      });
+      r.add("blur.gl", std::string(xr::blur_method_name(m)) + " " + deg(s),
+            [m, s](Row& row, const Context& ctx) {
+              StackParams p;
+              p.blur_sigma_deg = s;
+              stack_case(row, ctx, p, m, blur_reference(ctx.quick, s));
+              row.series = deg(s);
+              row.add("opencv_cpu_s", opencv_blur_s(ctx.quick, s));
+            });
     }
   }
 }

@@ -54,8 +54,13 @@ PairTimes time_eye(const Context& ctx, const effects::FlareLayout& flare) {
   xr::FlareGl with, without;
   with.set_layouts({flare});
   const std::array<xr::EyeLayer*, 1> lw{&with}, lo{&without};
-  return measure_pair(gl_timed([&] { comp.render_eye(0, {eye.view, params, mask, false, lw}); }),
-                      gl_timed([&] { comp.render_eye(0, {eye.view, params, mask, false, lo}); }), ctx.budget);
+  return measure_pair(gl_timed([&] {
+                        comp.render_eye(0, {eye.view, params, mask, false, lw});
+                      }),
+                      gl_timed([&] {
+                        comp.render_eye(0, {eye.view, params, mask, false, lo});
+                      }),
+                      ctx.budget);
 }
 
 /// The flare alone (black video, no distortion, float eye buffer) against the CPU reference.
@@ -90,24 +95,27 @@ void add_flare_knobs(Registry& r, bool quick) {
     int rings;
   };
   const std::vector<Setting> settings =
-      quick ? std::vector<Setting>{{effects::FlareStyle::Directional, 6}, {effects::FlareStyle::Headset, 6}}
+      quick ? std::vector<Setting>{{effects::FlareStyle::Directional, 6},
+                                   {effects::FlareStyle::Headset, 6}}
             : std::vector<Setting>{{effects::FlareStyle::Directional, 0},
                                    {effects::FlareStyle::Directional, 6},
                                    {effects::FlareStyle::Directional, 16},
                                    {effects::FlareStyle::Headset, 6}};
   for (const Setting& s : settings) {
-    r.add(kKnob, std::string(effects::flare_style_name(s.style)) + ", " + std::to_string(s.rings) + " rings",
-          [s](Row& row, const Context& ctx) {
-            const effects::FlareLayout flare = flare_layout(s.style, s.rings);
-            const PairTimes t = time_eye(ctx, flare);
-            row.time = t.subject;
-            row.peer_time = t.peer;
-            double mean = 0.0;
-            row.error = flare_error(ctx, flare, &mean);
-            row.add("mean_error", mean);
-            const Eye eye = left_eye(ctx.quick);
-            row.note = std::to_string(eye.width) + "x" + std::to_string(eye.height) + " eye";
-          });
+    r.add(
+        kKnob,
+        std::string(effects::flare_style_name(s.style)) + ", " + std::to_string(s.rings) + " rings",
+        [s](Row& row, const Context& ctx) {
+          const effects::FlareLayout flare = flare_layout(s.style, s.rings);
+          const PairTimes t = time_eye(ctx, flare);
+          row.time = t.subject;
+          row.peer_time = t.peer;
+          double mean = 0.0;
+          row.error = flare_error(ctx, flare, &mean);
+          row.add("mean_error", mean);
+          const Eye eye = left_eye(ctx.quick);
+          row.note = std::to_string(eye.width) + "x" + std::to_string(eye.height) + " eye";
+        });
   }
 }
 

@@ -56,7 +56,9 @@ Input& input(bool quick) {
 
 }  // namespace
 
-void on_gl_release(std::function<void()> release) { releases().push_back(std::move(release)); }
+void on_gl_release(std::function<void()> release) {
+  releases().push_back(std::move(release));
+}
 
 void release_gl_caches() {
   for (auto& r : releases()) r();
@@ -83,8 +85,12 @@ BenchEye bench_eye(bool quick) {
   return e;
 }
 
-const xr::GlTexture& eye_input(bool quick) { return input(quick).texture; }
-const cv::Mat& eye_input_bgr(bool quick) { return input(quick).bgr; }
+const xr::GlTexture& eye_input(bool quick) {
+  return input(quick).texture;
+}
+const cv::Mat& eye_input_bgr(bool quick) {
+  return input(quick).bgr;
+}
 
 Timed copy_floor(bool quick) {
   Input& in = input(quick);
@@ -95,8 +101,10 @@ Timed copy_floor(bool quick) {
 ErrorStats steps_error(const cv::Mat& a, const cv::Mat& b, double* mean) {
   const auto bgr = [](const cv::Mat& m) {
     cv::Mat out;
-    if (m.channels() == 4) cv::cvtColor(m, out, cv::COLOR_BGRA2BGR);
-    else out = m;
+    if (m.channels() == 4)
+      cv::cvtColor(m, out, cv::COLOR_BGRA2BGR);
+    else
+      out = m;
     out.convertTo(out, CV_64FC3);
     cv::min(cv::max(out, 0.0), 1.0, out);
     return out;

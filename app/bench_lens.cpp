@@ -41,8 +41,10 @@ ErrorStats error_px(const std::vector<cv::Point2d>& got) {
   double worst = 0.0, sum2 = 0.0;
   for (std::size_t k = 0; k < got.size(); ++k) {
     const double r_d = std::hypot(pts[k].x, pts[k].y);
-    const double s = r_d > 0.0 ? static_cast<double>(exact_root(generic90_left_lens().lens, r_d) / r_d) : 1.0;
-    const double e = std::hypot(got[k].x - pts[k].x * s, got[k].y - pts[k].y * s) * lens_px_per_unit();
+    const double s =
+        r_d > 0.0 ? static_cast<double>(exact_root(generic90_left_lens().lens, r_d) / r_d) : 1.0;
+    const double e =
+        std::hypot(got[k].x - pts[k].x * s, got[k].y - pts[k].y * s) * lens_px_per_unit();
     worst = std::max(worst, e);
     sum2 += e * e;
   }
@@ -58,22 +60,24 @@ void opencv_undistort(std::vector<cv::Point2d>& out, int iterations) {
   if (iterations == 0) {
     cv::undistortPoints(lens_grid_points(), out, K, D);
   } else {
-    cv::undistortPoints(lens_grid_points(), out, K, D, cv::noArray(), cv::noArray(),
-                        cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, iterations, 1e-15));
+    cv::undistortPoints(
+        lens_grid_points(), out, K, D, cv::noArray(), cv::noArray(),
+        cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, iterations, 1e-15));
   }
 }
 
 constexpr const char* kKnob = "lens.inverse";
 
-void inverse_case(Row& row, const Context& ctx, std::function<void(std::vector<cv::Point2d>&)> method,
-                  bool is_peer) {
+void inverse_case(Row& row, const Context& ctx,
+                  std::function<void(std::vector<cv::Point2d>&)> method, bool is_peer) {
   std::vector<cv::Point2d> out(lens_grid_points().size()), peer_out;
   const double units = static_cast<double>(out.size());
   const Timed subject{[&] { method(out); }, units};
   if (is_peer) {
     row.time = row.peer_time = measure(subject, ctx.budget);
   } else {
-    const auto t = measure_pair(subject, {[&] { opencv_undistort(peer_out, 0); }, units}, ctx.budget);
+    const auto t =
+        measure_pair(subject, {[&] { opencv_undistort(peer_out, 0); }, units}, ctx.budget);
     row.time = t.subject;
     row.peer_time = t.peer;
   }
@@ -84,7 +88,9 @@ void inverse_case(Row& row, const Context& ctx, std::function<void(std::vector<c
 }  // namespace
 
 void add_lens_knobs(Registry& r, bool /*quick*/) {
-  r.knob({kKnob, "inverse of the radial lens model per point, generic90 (c1 0.22, c2 0.24), 4096 points over the panel",
+  r.knob({kKnob,
+          "inverse of the radial lens model per point, generic90 (c1 0.22, c2 0.24), 4096 points "
+          "over the panel",
           "point", "px (eye image)", "root by long-double bisection",
           "OpenCV undistortPoints, default 5 iterations", PlotError::Max, false});
   const auto ours = [](InverseMethod m) {
@@ -100,10 +106,12 @@ void add_lens_knobs(Registry& r, bool /*quick*/) {
     inverse_case(row, ctx, ours(InverseMethod::Newton), false);
   });
   r.add(kKnob, "OpenCV 5 iterations", [](Row& row, const Context& ctx) {
-    inverse_case(row, ctx, [](std::vector<cv::Point2d>& out) { opencv_undistort(out, 0); }, true);
+    inverse_case(
+        row, ctx, [](std::vector<cv::Point2d>& out) { opencv_undistort(out, 0); }, true);
   });
   r.add(kKnob, "OpenCV 20 iterations", [](Row& row, const Context& ctx) {
-    inverse_case(row, ctx, [](std::vector<cv::Point2d>& out) { opencv_undistort(out, 20); }, false);
+    inverse_case(
+        row, ctx, [](std::vector<cv::Point2d>& out) { opencv_undistort(out, 20); }, false);
   });
 }
 

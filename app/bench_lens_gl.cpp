@@ -33,7 +33,8 @@ PairTimes time_predistort(const Context& ctx, const xr::DistortionSettings& subj
   const effects::LensModel& lens = generic90_left_lens().lens;
   const xr::GlTexture& src = eye_input(ctx.quick);
   return measure_pair(gl_timed([&] { d.predistort(src, panel, eye.view, lens, subject); }),
-                      gl_timed([&] { d.predistort(src, panel, eye.view, lens, peer); }), ctx.budget);
+                      gl_timed([&] { d.predistort(src, panel, eye.view, lens, peer); }),
+                      ctx.budget);
 }
 
 /// How far each of R and B lands, as the wearer sees it through the lens, from where the image
@@ -49,7 +50,8 @@ ErrorStats lca_error(bool correct) {
       for (const int c : {0, 2}) {
         const auto panel = e.lens.view_to_panel(t_u, c);
         if (!panel) continue;
-        const auto seen = e.lens.source_for_panel(*panel, c, correct, effects::InverseMethod::Newton);
+        const auto seen =
+            e.lens.source_for_panel(*panel, c, correct, effects::InverseMethod::Newton);
         if (!seen) continue;
         const double err = (e.tan_to_pixel(*seen) - e.tan_to_pixel(t_u)).norm();
         worst = std::max(worst, err);
@@ -67,7 +69,8 @@ void add_lens_gl_knobs(Registry& r, bool quick) {
   r.knob({"lens.mesh", "lens pre-distortion by an N x N mesh, generic90 left eye", "eye",
           "px (eye image)", "exact per-pixel map (Newton) at every pixel, all channels",
           "per-pixel pre-distortion on the GPU (Newton, 8 iterations)", PlotError::Max, true});
-  const std::vector<int> ns = quick ? std::vector<int>{9, 33, 65} : std::vector<int>{5, 9, 17, 33, 65};
+  const std::vector<int> ns =
+      quick ? std::vector<int>{9, 33, 65} : std::vector<int>{5, 9, 17, 33, 65};
   for (const int n : ns) {
     r.add("lens.mesh", "N=" + std::to_string(n), [n](Row& row, const Context& ctx) {
       const xr::DistortionSettings mesh{xr::DistortionMethod::Mesh, n, 0, true, false};

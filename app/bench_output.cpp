@@ -41,7 +41,8 @@ std::string load_text(const double l[3]) {
 
 std::string extras_text(const Row& r) {
   std::string s;
-  for (const auto& [name, value] : r.extra) s += (s.empty() ? "" : ", ") + name + " " + format_number(value);
+  for (const auto& [name, value] : r.extra)
+    s += (s.empty() ? "" : ", ") + name + " " + format_number(value);
   if (!r.note.empty()) s += (s.empty() ? "" : "; ") + r.note;
   return s;
 }
@@ -66,7 +67,9 @@ nlohmann::ordered_json number_or_null(double v) {
 }
 
 nlohmann::ordered_json time_json(const TimeStats& t) {
-  return {{"median_s", number_or_null(t.median_s)}, {"p90_s", number_or_null(t.p90_s)}, {"samples", t.samples}};
+  return {{"median_s", number_or_null(t.median_s)},
+          {"p90_s", number_or_null(t.p90_s)},
+          {"samples", t.samples}};
 }
 
 }  // namespace
@@ -74,10 +77,12 @@ nlohmann::ordered_json time_json(const TimeStats& t) {
 void write_markdown(std::ostream& out, const Report& rep) {
   const Machine& m = rep.machine;
   out << "# vdfx bench: speed against error\n\n"
-      << "- command: `" << rep.command << "`" << (rep.quick ? " (quick: fewer settings, smaller images)" : "")
-      << "\n- machine: " << m.cpu << ", " << m.physical_cores << " cores (" << m.logical_cpus
-      << " logical CPUs); GL: " << m.gl_renderer << (m.gl_version.empty() ? "" : ", " + m.gl_version)
-      << "\n- build: " << m.build << "; CPU rows single-threaded (OpenCV too), GL rows on the driver's own threads"
+      << "- command: `" << rep.command << "`"
+      << (rep.quick ? " (quick: fewer settings, smaller images)" : "") << "\n- machine: " << m.cpu
+      << ", " << m.physical_cores << " cores (" << m.logical_cpus
+      << " logical CPUs); GL: " << m.gl_renderer
+      << (m.gl_version.empty() ? "" : ", " + m.gl_version) << "\n- build: " << m.build
+      << "; CPU rows single-threaded (OpenCV too), GL rows on the driver's own threads"
       << "\n- started " << m.date_utc << ", took " << format_time(rep.wall_s)
       << "; load average (1 / 5 / 15 min) " << load_text(m.load_start) << " at the start, "
       << load_text(m.load_end) << " at the end\n\n"
@@ -85,7 +90,8 @@ void write_markdown(std::ostream& out, const Report& rep) {
          "setting is timed interleaved with its peer, so the ratio holds even on a busy machine.\n"
          "Rows marked * are on the knob's Pareto front (no other setting of the same series, e.g.\n"
          "the same sigma, is both faster and more accurate); knobs whose settings are sizes or\n"
-         "different jobs (N, one effect each) have none. docs/bench.md explains every knob, column\n"
+         "different jobs (N, one effect each) have none. docs/bench.md explains every knob, "
+         "column\n"
          "and the JSON schema.\n";
   for (const Knob& k : rep.knobs) {
     out << "\n## " << k.id << ": " << k.title << "\n\n"
@@ -102,10 +108,12 @@ void write_markdown(std::ostream& out, const Report& rep) {
       }
       std::string notes = extras_text(r);
       if (r.peer != k.peer) notes = "peer: " + r.peer + (notes.empty() ? "" : "; " + notes);
-      if (r.reference != k.reference) notes = "reference: " + r.reference + (notes.empty() ? "" : "; " + notes);
+      if (r.reference != k.reference)
+        notes = "reference: " + r.reference + (notes.empty() ? "" : "; " + notes);
       out << " | " << format_time(r.time.median_s) << " | " << format_time(r.time.p90_s) << " | "
           << format_time(r.peer_time.median_s) << " | " << format_number(r.ratio()) << " | "
-          << format_number(r.error.max) << " | " << format_number(r.error.rms) << " | " << notes << " |\n";
+          << format_number(r.error.max) << " | " << format_number(r.error.rms) << " | " << notes
+          << " |\n";
     }
     if (const auto it = rep.plot_links.find(k.id); it != rep.plot_links.end())
       out << "\n![" << k.id << ": time against error](" << it->second << ")\n";
@@ -113,21 +121,23 @@ void write_markdown(std::ostream& out, const Report& rep) {
 }
 
 void write_csv(std::ostream& out, const Report& rep) {
-  out << "knob,setting,series,status,per,median_s,p90_s,samples,peer,peer_median_s,peer_p90_s,ratio,"
+  out << "knob,setting,series,status,per,median_s,p90_s,samples,peer,peer_median_s,peer_p90_s,"
+         "ratio,"
          "error_max,error_rms,error_unit,reference,pareto,load1,extra,note,reason\n";
   for (const Row& r : rep.rows) {
     const Knob* k = nullptr;
     for (const Knob& kk : rep.knobs)
       if (kk.id == r.knob) k = &kk;
     std::string extra;
-    for (const auto& [name, value] : r.extra) extra += (extra.empty() ? "" : ";") + name + "=" + csv(value);
-    out << csv(r.knob) << "," << csv(r.setting) << "," << csv(r.series) << "," << to_string(r.status) << ","
-        << csv(k ? k->per : "") << "," << csv(r.time.median_s) << "," << csv(r.time.p90_s) << ","
-        << r.time.samples << "," << csv(r.peer) << "," << csv(r.peer_time.median_s) << ","
-        << csv(r.peer_time.p90_s) << "," << csv(r.ratio()) << "," << csv(r.error.max) << ","
-        << csv(r.error.rms) << "," << csv(k ? k->error_unit : "") << "," << csv(r.reference) << ","
-        << (r.pareto ? "true" : "false") << "," << csv(r.load1) << "," << csv(extra) << ","
-        << csv(r.note) << "," << csv(r.reason) << "\n";
+    for (const auto& [name, value] : r.extra)
+      extra += (extra.empty() ? "" : ";") + name + "=" + csv(value);
+    out << csv(r.knob) << "," << csv(r.setting) << "," << csv(r.series) << ","
+        << to_string(r.status) << "," << csv(k ? k->per : "") << "," << csv(r.time.median_s) << ","
+        << csv(r.time.p90_s) << "," << r.time.samples << "," << csv(r.peer) << ","
+        << csv(r.peer_time.median_s) << "," << csv(r.peer_time.p90_s) << "," << csv(r.ratio())
+        << "," << csv(r.error.max) << "," << csv(r.error.rms) << "," << csv(k ? k->error_unit : "")
+        << "," << csv(r.reference) << "," << (r.pareto ? "true" : "false") << "," << csv(r.load1)
+        << "," << csv(extra) << "," << csv(r.note) << "," << csv(r.reason) << "\n";
   }
 }
 
@@ -146,10 +156,12 @@ nlohmann::ordered_json to_json(const Report& rep) {
                   {"gl_version", m.gl_version},
                   {"build", m.build},
                   {"date_utc", m.date_utc},
-                  {"load_start", {number_or_null(m.load_start[0]), number_or_null(m.load_start[1]),
-                                  number_or_null(m.load_start[2])}},
-                  {"load_end", {number_or_null(m.load_end[0]), number_or_null(m.load_end[1]),
-                                number_or_null(m.load_end[2])}}};
+                  {"load_start",
+                   {number_or_null(m.load_start[0]), number_or_null(m.load_start[1]),
+                    number_or_null(m.load_start[2])}},
+                  {"load_end",
+                   {number_or_null(m.load_end[0]), number_or_null(m.load_end[1]),
+                    number_or_null(m.load_end[2])}}};
   nlohmann::ordered_json knobs = nlohmann::ordered_json::array();
   for (const Knob& k : rep.knobs)
     knobs.push_back({{"id", k.id},
@@ -170,13 +182,19 @@ nlohmann::ordered_json to_json(const Report& rep) {
                     {"setting", r.setting},
                     {"series", r.series},
                     {"status", to_string(r.status)},
-                    {"reason", r.reason.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.reason)},
+                    {"reason", r.reason.empty() ? nlohmann::ordered_json(nullptr)
+                                                : nlohmann::ordered_json(r.reason)},
                     {"time", time_json(r.time)},
-                    {"peer", {{"name", r.peer}, {"median_s", number_or_null(r.peer_time.median_s)},
-                              {"p90_s", number_or_null(r.peer_time.p90_s)}, {"samples", r.peer_time.samples}}},
+                    {"peer",
+                     {{"name", r.peer},
+                      {"median_s", number_or_null(r.peer_time.median_s)},
+                      {"p90_s", number_or_null(r.peer_time.p90_s)},
+                      {"samples", r.peer_time.samples}}},
                     {"ratio", number_or_null(r.ratio())},
-                    {"error", {{"max", number_or_null(r.error.max)}, {"rms", number_or_null(r.error.rms)},
-                               {"reference", r.reference}}},
+                    {"error",
+                     {{"max", number_or_null(r.error.max)},
+                      {"rms", number_or_null(r.error.rms)},
+                      {"reference", r.reference}}},
                     {"extra", std::move(extra)},
                     {"note", r.note},
                     {"pareto", r.pareto},

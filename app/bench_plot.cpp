@@ -2,13 +2,13 @@
 /// @brief gnuplot scripts for the bench plots, and running gnuplot on them.
 #include "app/bench_plot.h"
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fcntl.h>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -23,7 +23,8 @@ int run_gnuplot(const std::vector<std::string>& args, const std::filesystem::pat
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
   posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
   posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
   std::vector<char*> argv;
   std::vector<std::string> all{"gnuplot"};
@@ -61,13 +62,18 @@ struct Axis {
 
 /// A time unit that keeps the values between about 0.1 and 1000.
 Axis time_axis(const std::vector<double>& t) {
-  const double lo = *std::min_element(t.begin(), t.end()), hi = *std::max_element(t.begin(), t.end());
+  const double lo = *std::min_element(t.begin(), t.end()),
+               hi = *std::max_element(t.begin(), t.end());
   Axis a;
   const double ref = std::sqrt(lo * hi);
-  if (ref < 1e-6) a = {false, 1e9, "ns"};
-  else if (ref < 1e-3) a = {false, 1e6, "us"};
-  else if (ref < 1.0) a = {false, 1e3, "ms"};
-  else a = {false, 1.0, "s"};
+  if (ref < 1e-6)
+    a = {false, 1e9, "ns"};
+  else if (ref < 1e-3)
+    a = {false, 1e6, "us"};
+  else if (ref < 1.0)
+    a = {false, 1e3, "ms"};
+  else
+    a = {false, 1.0, "s"};
   a.log = lo > 0 && hi / lo > 20.0;
   return a;
 }
@@ -96,8 +102,9 @@ std::vector<std::string> wrap(const std::string& text, std::size_t width) {
   return lines;
 }
 
-std::string script_for(const Knob& k, const std::vector<const Row*>& rows, const std::filesystem::path& data,
-                       const std::filesystem::path& png, const PlotOptions& o) {
+std::string script_for(const Knob& k, const std::vector<const Row*>& rows,
+                       const std::filesystem::path& data, const std::filesystem::path& png,
+                       const PlotOptions& o) {
   std::vector<double> ts, es;
   for (const Row* r : rows) {
     ts.push_back(r->time.median_s);
@@ -108,8 +115,8 @@ std::string script_for(const Knob& k, const std::vector<const Row*>& rows, const
   bool shared_peer = true;
   std::vector<double> peer_t;
   for (const Row* r : rows) {
-    shared_peer = shared_peer && r->peer == rows.front()->peer && r->series == rows.front()->series &&
-                  std::isfinite(r->peer_time.median_s);
+    shared_peer = shared_peer && r->peer == rows.front()->peer &&
+                  r->series == rows.front()->series && std::isfinite(r->peer_time.median_s);
     peer_t.push_back(r->peer_time.median_s);
   }
   std::vector<double> all_t = ts;
@@ -163,13 +170,16 @@ std::string script_for(const Knob& k, const std::vector<const Row*>& rows, const
   }
   if (front.empty()) d << "NaN NaN\n";  // keeps the block, and so the next blocks' indices
   d << "\n\n";
-  if (shared_peer) d << peer_s * x.scale << " " << e_lo << "\n" << peer_s * x.scale << " " << e_hi << "\n";
-  else d << "NaN NaN\n";
+  if (shared_peer)
+    d << peer_s * x.scale << " " << e_lo << "\n" << peer_s * x.scale << " " << e_hi << "\n";
+  else
+    d << "NaN NaN\n";
   d << "\n\n";
   std::vector<bool> below(pts.size(), false);
   for (std::size_t i = 0; i < pts.size(); ++i)
     for (std::size_t j = 0; j < i; ++j) {
-      const double dx = axis_pos(pts[i].t, t_lo, t_hi, x.log) - axis_pos(pts[j].t, t_lo, t_hi, x.log);
+      const double dx =
+          axis_pos(pts[i].t, t_lo, t_hi, x.log) - axis_pos(pts[j].t, t_lo, t_hi, x.log);
       const double dy = axis_pos(pts[i].e, e_lo > 0 ? e_lo : 1e-300, e_hi, ylog) -
                         axis_pos(pts[j].e, e_lo > 0 ? e_lo : 1e-300, e_hi, ylog);
       if (!below[j] && std::abs(dx) < 0.25 && std::abs(dy) < 0.08) below[i] = true;
@@ -187,30 +197,38 @@ std::string script_for(const Knob& k, const std::vector<const Row*>& rows, const
   d.close();
 
   std::string title = k.id;
-  for (const std::string& line : wrap(k.title, static_cast<std::size_t>(o.width / 7))) title += "\\n" + line;
+  for (const std::string& line : wrap(k.title, static_cast<std::size_t>(o.width / 7)))
+    title += "\\n" + line;
   std::replace(title.begin(), title.end(), '"', '\'');
   std::ostringstream s;
-  s << "set terminal pngcairo size " << o.width << "," << o.height << " font 'DejaVu Sans,9' noenhanced\n"
+  s << "set terminal pngcairo size " << o.width << "," << o.height
+    << " font 'DejaVu Sans,9' noenhanced\n"
     << "set output " << quoted(png.string()) << "\n"
     << "set title \"" << title << "\"\n"
     << "set xlabel " << quoted("median time per " + k.per + " (" + x.unit + ")") << "\n"
-    << "set ylabel " << quoted(std::string(k.plot_error == PlotError::Rms ? "RMS" : "max") +
-                               " error (" + k.error_unit + ")") << "\n"
+    << "set ylabel "
+    << quoted(std::string(k.plot_error == PlotError::Rms ? "RMS" : "max") + " error (" +
+              k.error_unit + ")")
+    << "\n"
     << "set grid\nset key outside bottom center horizontal\n"
     << "set offsets graph 0.05, graph 0.3, graph 0.1, graph 0.1\n";
   if (x.log) s << "set logscale x\n";
   if (ylog) {
     s << "set logscale y\nset format y '%.0e'\n";
-    if (zeros) s << "set label 1 'error 0 drawn at the bottom, marked (0)' at graph 0.01, graph 0.03 font ',8'\n";
+    if (zeros)
+      s << "set label 1 'error 0 drawn at the bottom, marked (0)' at graph 0.01, graph 0.03 font "
+           "',8'\n";
   } else if (pos_hi == 0.0) {
     s << "set yrange [-1:1]\n";
   }
-  s << "plot " << quoted(data.string()) << " index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'settings', \\\n"
+  s << "plot " << quoted(data.string())
+    << " index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'settings', \\\n"
     << "  '' index 3 using 1:2:3 with labels left offset char 0.7,0.6 font ',8' notitle, \\\n"
     << "  '' index 4 using 1:2:3 with labels left offset char 0.7,-0.7 font ',8' notitle";
   if (k.alternatives)
     s << ", \\\n  '' index 1 using 1:2 with lines lw 2 lc rgb '#d62728' title "
-      << quoted(std::string("Pareto front") + (rows.front()->series.empty() ? "" : " (per series)"));
+      << quoted(std::string("Pareto front") +
+                (rows.front()->series.empty() ? "" : " (per series)"));
   if (shared_peer)
     s << ", \\\n  '' index 2 using 1:2 with lines dt 2 lw 1.5 lc rgb '#555555' title "
       << quoted("peer: " + rows.front()->peer);
@@ -221,7 +239,8 @@ std::string script_for(const Knob& k, const std::vector<const Row*>& rows, const
 }  // namespace
 
 std::string gnuplot_problem() {
-  const auto log = std::filesystem::temp_directory_path() / ("vdfx-gnuplot-check-" + std::to_string(getpid()) + ".txt");
+  const auto log = std::filesystem::temp_directory_path() /
+                   ("vdfx-gnuplot-check-" + std::to_string(getpid()) + ".txt");
   const int rc = run_gnuplot({"-e", "set terminal pngcairo"}, log);
   const std::string out = read_text(log);
   std::filesystem::remove(log);
@@ -232,7 +251,8 @@ std::string gnuplot_problem() {
 
 std::vector<std::filesystem::path> write_plots(const Report& report, const PlotOptions& o) {
   std::filesystem::create_directories(o.dir);
-  const auto work = std::filesystem::temp_directory_path() / ("vdfx-bench-plot-" + std::to_string(getpid()));
+  const auto work =
+      std::filesystem::temp_directory_path() / ("vdfx-bench-plot-" + std::to_string(getpid()));
   std::filesystem::create_directories(work);
   std::vector<std::filesystem::path> written;
   for (const Knob& k : report.knobs) {
@@ -243,7 +263,8 @@ std::vector<std::filesystem::path> write_plots(const Report& report, const PlotO
         rows.push_back(&r);
     if (rows.empty()) continue;
     const auto png = o.dir / (k.id + ".png");
-    const auto data = work / (k.id + ".dat"), script = work / (k.id + ".gp"), log = work / (k.id + ".log");
+    const auto data = work / (k.id + ".dat"), script = work / (k.id + ".gp"),
+               log = work / (k.id + ".log");
     std::ofstream(script) << script_for(k, rows, data, png, o);
     if (run_gnuplot({script.string()}, log) != 0 || !std::filesystem::exists(png)) {
       const std::string msg = read_text(log);

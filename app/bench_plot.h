@@ -15,7 +15,7 @@ namespace vdfx::app::bench {
 
 struct PlotOptions {
   std::filesystem::path dir;
-  int width = 720;   //!< PNG size in pixels
+  int width = 720;  //!< PNG size in pixels
   int height = 480;
 };
 

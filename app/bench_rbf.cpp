@@ -108,7 +108,8 @@ ErrorStats stats_of(const std::vector<double>& e) {
 template <class Eval>
 ErrorStats reproduction(const std::vector<Keyframe>& k, const Eval& eval) {
   std::vector<double> e;
-  for (const Keyframe& kf : k) e.push_back(eval(effects::to_unit(kf.direction), kf.frame) - kf.params[0]);
+  for (const Keyframe& kf : k)
+    e.push_back(eval(effects::to_unit(kf.direction), kf.frame) - kf.params[0]);
   return stats_of(e);
 }
 
@@ -120,12 +121,13 @@ std::shared_ptr<const DenseSolution> dense_for(int n) {
 }
 
 void add_solve(Registry& r, bool quick) {
-  r.knob({"rbf.solve", "full RBF solve against the keyframe count N (one parameter, frames 0..3000)",
-          "solve", "parameter units (values 0..4)",
-          "the keyframe values (reproduction at every keyframe)",
-          "dense partial-pivot LU of the whole saddle system (textbook)", PlotError::Max, false, false});
-  const std::vector<int> ns = quick ? std::vector<int>{10, 100, 1000}
-                                    : std::vector<int>{10, 100, 300, 1000, 3000, 5000};
+  r.knob({"rbf.solve",
+          "full RBF solve against the keyframe count N (one parameter, frames 0..3000)", "solve",
+          "parameter units (values 0..4)", "the keyframe values (reproduction at every keyframe)",
+          "dense partial-pivot LU of the whole saddle system (textbook)", PlotError::Max, false,
+          false});
+  const std::vector<int> ns =
+      quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 300, 1000, 3000, 5000};
   for (const int n : ns) {
     r.add("rbf.solve", "N=" + std::to_string(n), [n](Row& row, const Context& ctx) {
       const auto k = random_keyframes(n, 1, 4);
@@ -135,15 +137,15 @@ void add_solve(Registry& r, bool quick) {
       row.time = times.subject;
       row.peer_time = times.peer;
       const RbfInterpolator rbf(k, 1, {}, kFps);
-      row.error = reproduction(k, [&](const Eigen::Vector3d& u, std::int64_t f) {
-        return rbf.evaluate(u, f)[0];
-      });
+      row.error = reproduction(
+          k, [&](const Eigen::Vector3d& u, std::int64_t f) { return rbf.evaluate(u, f)[0]; });
       const auto dense = dense_for(n);
       row.add("condition", rbf.diagnostics().condition_estimate);
       row.add("peer_max_error", reproduction(k, [&](const Eigen::Vector3d& u, std::int64_t f) {
                                   return dense_evaluate(*dense, u, f);
                                 }).max);
-      row.note = std::string("solver: ") + std::string(effects::to_string(rbf.diagnostics().method));
+      row.note =
+          std::string("solver: ") + std::string(effects::to_string(rbf.diagnostics().method));
     });
   }
 }
@@ -152,7 +154,8 @@ void add_eval(Registry& r, bool quick) {
   r.knob({"rbf.eval", "evaluation of one effect at a view against N", "view",
           "parameter units (values 0..4)",
           "interpolant of a dense LU solve of the whole system, evaluated term by term",
-          "that reference's term-by-term evaluation (std::pow per centre)", PlotError::Max, false, false});
+          "that reference's term-by-term evaluation (std::pow per centre)", PlotError::Max, false,
+          false});
   const std::vector<int> ns =
       quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 5000};
   for (const int n : ns) {
@@ -162,25 +165,27 @@ void add_eval(Registry& r, bool quick) {
       const auto dense = dense_for(n);
       const Views v = random_views(k, 256);
       const double units = static_cast<double>(v.unit.size());
-      const auto times = measure_pair(
-          {[&] {
-             double out = 0.0;
-             for (std::size_t i = 0; i < v.unit.size(); ++i) rbf.evaluate_into(v.unit[i], v.frame[i], &out);
-             g_sink = out;
-           },
-           units},
-          {[&] {
-             double s = 0.0;
-             for (std::size_t i = 0; i < v.unit.size(); ++i) s += dense_evaluate(*dense, v.unit[i], v.frame[i]);
-             g_sink = s;
-           },
-           units},
-          ctx.budget);
+      const auto times = measure_pair({[&] {
+                                         double out = 0.0;
+                                         for (std::size_t i = 0; i < v.unit.size(); ++i)
+                                           rbf.evaluate_into(v.unit[i], v.frame[i], &out);
+                                         g_sink = out;
+                                       },
+                                       units},
+                                      {[&] {
+                                         double s = 0.0;
+                                         for (std::size_t i = 0; i < v.unit.size(); ++i)
+                                           s += dense_evaluate(*dense, v.unit[i], v.frame[i]);
+                                         g_sink = s;
+                                       },
+                                       units},
+                                      ctx.budget);
       row.time = times.subject;
       row.peer_time = times.peer;
       std::vector<double> e;
       for (std::size_t i = 0; i < v.unit.size(); ++i)
-        e.push_back(rbf.evaluate(v.unit[i], v.frame[i])[0] - dense_evaluate(*dense, v.unit[i], v.frame[i]));
+        e.push_back(rbf.evaluate(v.unit[i], v.frame[i])[0] -
+                    dense_evaluate(*dense, v.unit[i], v.frame[i]));
       row.error = stats_of(e);
       row.add("condition", rbf.diagnostics().condition_estimate);
       row.note = "256 random views inside the frame span";
@@ -193,7 +198,8 @@ void add_incremental(Registry& r, bool quick) {
           "parameter units (values 0..4)",
           "a full solve of the same N + 1 keyframes (256 random views and every keyframe)",
           "that full solve of N + 1 keyframes", PlotError::Max, false, false});
-  const std::vector<int> ns = quick ? std::vector<int>{100, 1000} : std::vector<int>{100, 1000, 3000};
+  const std::vector<int> ns =
+      quick ? std::vector<int>{100, 1000} : std::vector<int>{100, 1000, 3000};
   for (const int n : ns) {
     r.add("rbf.add", "N=" + std::to_string(n), [n](Row& row, const Context& ctx) {
       effects::KeyframeSetOptions opt;
@@ -212,7 +218,8 @@ void add_incremental(Registry& r, bool quick) {
            },
            1.0,
            [&] {  // back to N (untimed); an add that replaced a keyframe changed nothing to undo
-             if (set.keyframes().size() > static_cast<std::size_t>(n)) set.remove(set.keyframes().size() - 1);
+             if (set.keyframes().size() > static_cast<std::size_t>(n))
+               set.remove(set.keyframes().size() - 1);
            }},
           {[&] { g_sink = RbfInterpolator(with_one, 1, {}, kFps).diagnostics().max_residual; }},
           ctx.budget);
@@ -224,9 +231,11 @@ void add_incremental(Registry& r, bool quick) {
       const Views v = random_views(set.keyframes(), 256);
       std::vector<double> e;
       for (std::size_t j = 0; j < v.unit.size(); ++j)
-        e.push_back(inc->evaluate(v.unit[j], v.frame[j])[0] - ref.evaluate(v.unit[j], v.frame[j])[0]);
+        e.push_back(inc->evaluate(v.unit[j], v.frame[j])[0] -
+                    ref.evaluate(v.unit[j], v.frame[j])[0]);
       for (const Keyframe& kf : set.keyframes())
-        e.push_back(inc->evaluate(kf.direction, kf.frame)[0] - ref.evaluate(kf.direction, kf.frame)[0]);
+        e.push_back(inc->evaluate(kf.direction, kf.frame)[0] -
+                    ref.evaluate(kf.direction, kf.frame)[0]);
       row.error = stats_of(e);
       const auto st = set.stats();
       row.add("full_solve_fallbacks", full);
@@ -249,7 +258,8 @@ double grid_stops(const xr::ParamGrid& g, const Eigen::Vector3d& unit) {
   const int i0 = ((static_cast<int>(fx) % g.width) + g.width) % g.width, i1 = (i0 + 1) % g.width;
   const int j0 = static_cast<int>(fy), j1 = std::min(j0 + 1, g.height - 1);
   const auto s = [&](int i, int j) { return g.at(i, j).exposure_stops; };
-  return (1 - ay) * ((1 - ax) * s(i0, j0) + ax * s(i1, j0)) + ay * ((1 - ax) * s(i0, j1) + ax * s(i1, j1));
+  return (1 - ay) * ((1 - ax) * s(i0, j0) + ax * s(i1, j0)) +
+         ay * ((1 - ax) * s(i0, j1) + ax * s(i1, j1));
 }
 
 /// An exposure field of 30 keyframes at frame 0 (stops in [-2, 2]) and the rays of an eye.
@@ -272,56 +282,64 @@ const GridFixture& grid_fixture(bool quick) {
   f.h = quick ? 400 : 800;
   const xr::RenderView eye = xr::RenderView::look_at({30.0, 10.0}, 0.0, 100.0, f.w, f.h);
   for (int y = 0; y < f.h; ++y)
-    for (int x = 0; x < f.w; ++x) f.rays.push_back(eye.world_ray(x + 0.5, y + 0.5, f.w, f.h).normalized());
+    for (int x = 0; x < f.w; ++x)
+      f.rays.push_back(eye.world_ray(x + 0.5, y + 0.5, f.w, f.h).normalized());
   return f;
 }
 
 void add_grid(Registry& r, bool quick) {
-  r.knob({"rbf.grid", "per-pixel mode: parameters baked on an equirect grid, read bilinearly per pixel",
-          "view", "stops (exposure)", "exact RBF evaluation at every pixel's own ray",
+  r.knob({"rbf.grid",
+          "per-pixel mode: parameters baked on an equirect grid, read bilinearly per pixel", "view",
+          "stops (exposure)", "exact RBF evaluation at every pixel's own ray",
           "that exact evaluation at every pixel (CPU)", PlotError::Max, false});
   const std::vector<std::pair<int, int>> sizes =
       quick ? std::vector<std::pair<int, int>>{{64, 32}, {256, 128}, {1024, 512}}
-            : std::vector<std::pair<int, int>>{{16, 8}, {64, 32}, {128, 64}, {256, 128}, {512, 256}, {1024, 512}};
+            : std::vector<std::pair<int, int>>{{16, 8},    {64, 32},   {128, 64},
+                                               {256, 128}, {512, 256}, {1024, 512}};
   for (const auto& [gw, gh] : sizes) {
-    r.add("rbf.grid", std::to_string(gw) + "x" + std::to_string(gh), [gw, gh](Row& row, const Context& ctx) {
-      const GridFixture& f = grid_fixture(ctx.quick);
-      const auto at = [&](const effects::Direction& d) { return f.stack->evaluate(d, 0); };
-      const auto times = measure_pair(
-          {[&] {
-             const xr::ParamGrid g = xr::bake_param_grid(at, gw, gh);
-             double s = 0.0;
-             for (const auto& ray : f.rays) s += grid_stops(g, ray);
-             g_sink = s;
-           }},
-          {[&] {
-             double s = 0.0;
-             for (const auto& ray : f.rays) s += f.stack->evaluate(ray, 0).exposure_stops;
-             g_sink = s;
-           }},
-          ctx.budget);
-      row.time = times.subject;
-      row.peer_time = times.peer;
-      const xr::ParamGrid g = xr::bake_param_grid(at, gw, gh);
-      std::vector<double> e;
-      for (const auto& ray : f.rays) e.push_back(grid_stops(g, ray) - f.stack->evaluate(ray, 0).exposure_stops);
-      row.error = stats_of(e);
-      row.note = "CPU bake + lookups for a " + std::to_string(f.w) + "x" + std::to_string(f.h) +
-                 " eye (100 deg); 30 exposure keyframes, stops in [-2, 2]";
-    });
+    r.add(
+        "rbf.grid", std::to_string(gw) + "x" + std::to_string(gh),
+        [gw, gh](Row& row, const Context& ctx) {
+          const GridFixture& f = grid_fixture(ctx.quick);
+          const auto at = [&](const effects::Direction& d) { return f.stack->evaluate(d, 0); };
+          const auto times = measure_pair({[&] {
+                                            const xr::ParamGrid g = xr::bake_param_grid(at, gw, gh);
+                                            double s = 0.0;
+                                            for (const auto& ray : f.rays) s += grid_stops(g, ray);
+                                            g_sink = s;
+                                          }},
+                                          {[&] {
+                                            double s = 0.0;
+                                            for (const auto& ray : f.rays)
+                                              s += f.stack->evaluate(ray, 0).exposure_stops;
+                                            g_sink = s;
+                                          }},
+                                          ctx.budget);
+          row.time = times.subject;
+          row.peer_time = times.peer;
+          const xr::ParamGrid g = xr::bake_param_grid(at, gw, gh);
+          std::vector<double> e;
+          for (const auto& ray : f.rays)
+            e.push_back(grid_stops(g, ray) - f.stack->evaluate(ray, 0).exposure_stops);
+          row.error = stats_of(e);
+          row.note = "CPU bake + lookups for a " + std::to_string(f.w) + "x" + std::to_string(f.h) +
+                     " eye (100 deg); 30 exposure keyframes, stops in [-2, 2]";
+        });
   }
 }
 
 /// A solve with other interpolation settings, timed beside the default ones.
 void conditioning_case(Row& row, const Context& ctx, const std::vector<Keyframe>& k,
-                       const effects::InterpolationSettings& s, const effects::InterpolationSettings& peer) {
+                       const effects::InterpolationSettings& s,
+                       const effects::InterpolationSettings& peer) {
   const auto times = measure_pair(
       {[&] { g_sink = RbfInterpolator(k, 1, s, kFps).diagnostics().max_residual; }},
       {[&] { g_sink = RbfInterpolator(k, 1, peer, kFps).diagnostics().max_residual; }}, ctx.budget);
   row.time = times.subject;
   row.peer_time = times.peer;
   const RbfInterpolator rbf(k, 1, s, kFps);
-  row.error = reproduction(k, [&](const Eigen::Vector3d& u, std::int64_t f) { return rbf.evaluate(u, f)[0]; });
+  row.error = reproduction(
+      k, [&](const Eigen::Vector3d& u, std::int64_t f) { return rbf.evaluate(u, f)[0]; });
   row.add("condition", rbf.diagnostics().condition_estimate);
   row.note = std::string("solver: ") + std::string(effects::to_string(rbf.diagnostics().method));
 }
@@ -334,9 +352,11 @@ std::string short_number(double v) {
 
 void add_exponent(Registry& r, bool quick) {
   const int n = quick ? 100 : 300;
-  r.knob({"rbf.exponent", "kernel exponent alpha (phi = d^alpha; 2: thin plate), N = " + std::to_string(n) +
-                              " keyframes over frames 0..300",
-          "solve", "parameter units (values 0..4)", "the keyframe values (reproduction at every keyframe)",
+  r.knob({"rbf.exponent",
+          "kernel exponent alpha (phi = d^alpha; 2: thin plate), N = " + std::to_string(n) +
+              " keyframes over frames 0..300",
+          "solve", "parameter units (values 0..4)",
+          "the keyframe values (reproduction at every keyframe)",
           "the solve with alpha = 1 (the default)", PlotError::Max, false});
   const std::vector<double> alphas = quick ? std::vector<double>{0.5, 1, 1.99, 2, 3}
                                            : std::vector<double>{0.25, 0.5, 1, 1.5, 1.99, 2, 3};
@@ -351,12 +371,14 @@ void add_exponent(Registry& r, bool quick) {
 
 void add_time_scale(Registry& r, bool quick) {
   const int n = quick ? 100 : 300;
-  r.knob({"rbf.time_scale", "time scale D (1 s of video weighs like D degrees), N = " + std::to_string(n) +
-                                " keyframes over frames 0..3000 at 30 fps",
-          "solve", "parameter units (values 0..4)", "the keyframe values (reproduction at every keyframe)",
+  r.knob({"rbf.time_scale",
+          "time scale D (1 s of video weighs like D degrees), N = " + std::to_string(n) +
+              " keyframes over frames 0..3000 at 30 fps",
+          "solve", "parameter units (values 0..4)",
+          "the keyframe values (reproduction at every keyframe)",
           "the solve with the author's default D = 2", PlotError::Max, false});
-  const std::vector<double> ds = quick ? std::vector<double>{0.1, 2, 1375}
-                                       : std::vector<double>{0.1, 2, 20, 1375, 13751};
+  const std::vector<double> ds =
+      quick ? std::vector<double>{0.1, 2, 1375} : std::vector<double>{0.1, 2, 20, 1375, 13751};
   for (const double d : ds) {
     r.add("rbf.time_scale", "D=" + short_number(d), [d, n](Row& row, const Context& ctx) {
       effects::InterpolationSettings s, peer;

@@ -32,20 +32,20 @@ const char* to_string(RowStatus s);
 
 /// One measured setting of a knob.
 struct Row {
-  std::string knob;      //!< Knob::id
-  std::string setting;   //!< e.g. "N=1000", "mesh 65", "pyramid 2 deg"
-  std::string series;    //!< settings of one series are alternatives to each other (e.g. one sigma)
+  std::string knob;     //!< Knob::id
+  std::string setting;  //!< e.g. "N=1000", "mesh 65", "pyramid 2 deg"
+  std::string series;   //!< settings of one series are alternatives to each other (e.g. one sigma)
   RowStatus status = RowStatus::Ok;
-  std::string reason;    //!< why a row was skipped or failed
+  std::string reason;  //!< why a row was skipped or failed
   TimeStats time;
-  std::string peer;      //!< what was timed beside it (the knob's peer unless a row says else)
+  std::string peer;  //!< what was timed beside it (the knob's peer unless a row says else)
   TimeStats peer_time;
   ErrorStats error;
   std::string reference;  //!< what the error is measured against (the knob's unless overridden)
   std::string note;       //!< anything else a reader needs (solver method, input used)
   std::vector<std::pair<std::string, double>> extra;  //!< more figures: condition, mean error...
-  bool pareto = false;   //!< on its knob's (series') time / error Pareto front
-  double load1 = kNaN;   //!< 1-minute load average when the row finished
+  bool pareto = false;  //!< on its knob's (series') time / error Pareto front
+  double load1 = kNaN;  //!< 1-minute load average when the row finished
 
   /// time.median / peer_time.median (NaN when either is missing).
   double ratio() const;
@@ -67,29 +67,29 @@ struct Knob {
   bool needs_gl = false;
   //! true: the settings are alternatives for one job (a Pareto front per series is marked);
   //! false: they are problem sizes or different jobs (N, one effect each), no front.
-  bool alternatives = true;   //!< every row needs a GL context (skipped with the reason without one)
+  bool alternatives = true;  //!< every row needs a GL context (skipped with the reason without one)
 };
 
 /// The machine the report was made on.
 struct Machine {
-  std::string cpu;           //!< /proc/cpuinfo model name
+  std::string cpu;  //!< /proc/cpuinfo model name
   int logical_cpus = 0;
   int physical_cores = 0;
-  std::string gl_renderer;   //!< GL_RENDERER, or why there is none
+  std::string gl_renderer;  //!< GL_RENDERER, or why there is none
   std::string gl_version;
-  std::string build;         //!< build type and instruction-set floor
-  std::string date_utc;      //!< ISO 8601, when the run started
+  std::string build;                          //!< build type and instruction-set floor
+  std::string date_utc;                       //!< ISO 8601, when the run started
   double load_start[3] = {kNaN, kNaN, kNaN};  //!< /proc/loadavg 1, 5, 15 minutes
   double load_end[3] = {kNaN, kNaN, kNaN};
 };
 
 struct Report {
-  std::string command;       //!< the command line that made it
+  std::string command;  //!< the command line that made it
   bool quick = false;
   Machine machine;
-  std::vector<Knob> knobs;   //!< those with at least one row, in run order
+  std::vector<Knob> knobs;  //!< those with at least one row, in run order
   std::vector<Row> rows;
-  double wall_s = 0.0;       //!< the whole run
+  double wall_s = 0.0;  //!< the whole run
   //! Knob id -> its plot, relative to where the markdown is written (images in --markdown).
   std::map<std::string, std::string> plot_links;
 };

@@ -24,8 +24,12 @@ constexpr const char* kKnob = "sampling.poles";
 const effects::Direction kLook{0.0, 80.0};
 constexpr double kFov = 90.0;
 
-int view_size(bool quick) { return quick ? 256 : 512; }
-int supersampling(bool quick) { return quick ? 12 : 16; }
+int view_size(bool quick) {
+  return quick ? 256 : 512;
+}
+int supersampling(bool quick) {
+  return quick ? 12 : 16;
+}
 
 /// The synthetic frame as the CPU sampler takes it: RGB float in [0, 1].
 const cv::Mat& frame_rgb() {
@@ -41,12 +45,15 @@ const cv::Mat& frame_rgb() {
 const effects::EquirectSampler& sampler(effects::SampleFilter f) {
   static std::map<effects::SampleFilter, std::unique_ptr<effects::EquirectSampler>> cache;
   auto& s = cache[f];
-  if (!s) s = std::make_unique<effects::EquirectSampler>(frame_rgb(), effects::SamplerOptions{f, effects::PoleRows::Clamp});
+  if (!s)
+    s = std::make_unique<effects::EquirectSampler>(
+        frame_rgb(), effects::SamplerOptions{f, effects::PoleRows::Clamp});
   return *s;
 }
 
 effects::ViewCamera camera(bool quick) {
-  return effects::ViewCamera::from_horizontal_fov({kLook, 0.0}, kFov, view_size(quick), view_size(quick));
+  return effects::ViewCamera::from_horizontal_fov({kLook, 0.0}, kFov, view_size(quick),
+                                                  view_size(quick));
 }
 
 /// Each pixel's average over k x k bilinear level-0 samples spread over its area (RGB).
@@ -64,7 +71,8 @@ const cv::Mat& reference(bool quick) {
       for (int a = 0; a < k; ++a)
         sum += s.sample(cam.ray(pos[1] + (a + 0.5) / k, pos[0] + (b + 0.5) / k).normalized());
     sum /= k * k;
-    px = cv::Vec3f(static_cast<float>(sum.x()), static_cast<float>(sum.y()), static_cast<float>(sum.z()));
+    px = cv::Vec3f(static_cast<float>(sum.x()), static_cast<float>(sum.y()),
+                   static_cast<float>(sum.z()));
   });
   return ref;
 }
@@ -102,7 +110,8 @@ void cpu_case(Row& row, const Context& ctx, bool ripmap) {
       sampler(ripmap ? effects::SampleFilter::AreaAware : effects::SampleFilter::Bilinear);
   if (ripmap) row.add("ripmap_build_s", now_s() - t0);  // once per frame, not in the view time
   cv::Mat out;
-  const auto t = measure_pair({[&] { out = effects::sample_view(s, cam); }}, {[&] { remap.run(); }}, ctx.budget);
+  const auto t = measure_pair({[&] { out = effects::sample_view(s, cam); }}, {[&] { remap.run(); }},
+                              ctx.budget);
   row.time = t.subject;
   row.peer_time = t.peer;
   double mean = 0.0;
@@ -126,7 +135,8 @@ void gl_case(Row& row, const Context& ctx, xr::LodMode lod) {
   const xr::GlTarget target(n, n, xr::TexFormat::RGBA32F), copy(n, n, xr::TexFormat::RGBA16F);
   xr::EffectStackGl copier;
   const auto t = measure_pair(gl_timed([&] { video.render(target, view, lod); }),
-                              gl_timed([&] { copier.apply(target.texture(), copy, {}, 0, view); }), ctx.budget);
+                              gl_timed([&] { copier.apply(target.texture(), copy, {}, 0, view); }),
+                              ctx.budget);
   row.time = t.subject;
   row.peer_time = t.peer;
   row.peer = "plain textured copy of the view";
@@ -142,7 +152,9 @@ void gl_case(Row& row, const Context& ctx, xr::LodMode lod) {
 
 void add_sampling_knobs(Registry& r, bool quick) {
   const std::string n = std::to_string(view_size(quick));
-  r.knob({kKnob, "equirect sampling looking 80 deg up (" + n + "x" + n + " view, 90 deg FOV, synthetic 3840x1920 frame)",
+  r.knob({kKnob,
+          "equirect sampling looking 80 deg up (" + n + "x" + n +
+              " view, 90 deg FOV, synthetic 3840x1920 frame)",
           "view", "8-bit steps",
           "box filter over each pixel (" + std::to_string(supersampling(quick)) + "x" +
               std::to_string(supersampling(quick)) + " bilinear samples)",
@@ -150,9 +162,12 @@ void add_sampling_knobs(Registry& r, bool quick) {
   r.add(kKnob, "CPU bilinear", [](Row& row, const Context& ctx) { cpu_case(row, ctx, false); });
   r.add(kKnob, "CPU ripmap", [](Row& row, const Context& ctx) { cpu_case(row, ctx, true); });
   r.add(kKnob, "OpenCV remap", remap_case);
-  r.add_gl(kKnob, "GL base level", [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Base); });
-  r.add_gl(kKnob, "GL analytic LOD", [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Analytic); });
-  r.add_gl(kKnob, "GL derivatives LOD", [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Derivatives); });
+  r.add_gl(kKnob, "GL base level",
+           [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Base); });
+  r.add_gl(kKnob, "GL analytic LOD",
+           [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Analytic); });
+  r.add_gl(kKnob, "GL derivatives LOD",
+           [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Derivatives); });
 }
 
 }  // namespace vdfx::app::bench

@@ -8,8 +8,12 @@
 
 namespace vdfx::app::bench {
 
-Budget quick_budget() { return {0.15, 3, 40}; }
-Budget full_budget() { return {0.5, 5, 200}; }
+Budget quick_budget() {
+  return {0.15, 3, 40};
+}
+Budget full_budget() {
+  return {0.5, 5, 200};
+}
 
 double now_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();

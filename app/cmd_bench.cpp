@@ -101,12 +101,14 @@ int cmd_bench(const Args& args) {
   bool quick = false, list = false;
   std::string filter, json_path, csv_path, md_path, plot_dir, plot_size = "720x480";
   cli.add_flag("--quick", quick, "fewer settings and smaller images (about 2 minutes on 2 cores)");
-  cli.add_option("--filter", filter, "only rows whose KNOB/SETTING matches this regular expression");
+  cli.add_option("--filter", filter,
+                 "only rows whose KNOB/SETTING matches this regular expression");
   cli.add_flag("--list", list, "list the knobs and settings (after --quick and --filter) and exit");
   cli.add_option("--json", json_path, "also write the report as JSON (docs/bench.schema.json)");
   cli.add_option("--csv", csv_path, "also write the rows as CSV");
   cli.add_option("--markdown", md_path, "also write the markdown report to this file");
-  cli.add_option("--plot", plot_dir, "write one PNG per knob (time against error) into this folder");
+  cli.add_option("--plot", plot_dir,
+                 "write one PNG per knob (time against error) into this folder");
   cli.add_option("--plot-size", plot_size, "size of each PNG, WxH pixels (default 720x480)");
   if (auto code = parse_cli(cli, args)) return *code;
 
@@ -116,7 +118,8 @@ int cmd_bench(const Args& args) {
     pattern = std::regex(filter.empty() ? std::string(".") : filter, std::regex::ECMAScript);
     png = parse_size(plot_size);
   } catch (const std::regex_error& e) {
-    std::cerr << "vdfx bench: --filter '" << filter << "' is not a regular expression: " << e.what() << "\n";
+    std::cerr << "vdfx bench: --filter '" << filter << "' is not a regular expression: " << e.what()
+              << "\n";
     return kExitUsage;
   } catch (const CLI::ValidationError& e) {
     std::cerr << "vdfx bench: --plot-size " << e.what() << "\n";
@@ -168,7 +171,8 @@ int cmd_bench(const Args& args) {
       row.peer = knob.peer;
       row.reference = knob.reference;
       if (terminal) {
-        std::cerr << "[" << i + 1 << "/" << selected.size() << "] " << row.knob << " " << row.setting << ": ";
+        std::cerr << "[" << i + 1 << "/" << selected.size() << "] " << row.knob << " "
+                  << row.setting << ": ";
         std::cerr.flush();
       }
       if (selected[i].c->gl && !gl.ready(report.machine)) {
@@ -223,7 +227,8 @@ int cmd_bench(const Args& args) {
   int failed = 0;
   for (const Row& r : report.rows) failed += r.status == RowStatus::Failed ? 1 : 0;
   if (failed) {
-    std::cerr << "vdfx bench: " << failed << " row(s) failed (a bug; their reasons are in the report)\n";
+    std::cerr << "vdfx bench: " << failed
+              << " row(s) failed (a bug; their reasons are in the report)\n";
     return kExitInternal;
   }
   return kExitOk;

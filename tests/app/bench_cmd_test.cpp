@@ -42,7 +42,8 @@ std::string schema_problem(const std::filesystem::path& json) {
   char buf[4096];
   while (fgets(buf, sizeof buf, pipe)) out += buf;
   const int status = pclose(pipe);
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? std::string() : (out.empty() ? "failed" : out);
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? std::string()
+                                                       : (out.empty() ? "failed" : out);
 }
 
 /// Width and height from a PNG's signature and IHDR chunk; {-1, -1} when it is no PNG.
@@ -51,7 +52,8 @@ std::pair<int, int> png_size(const std::filesystem::path& p) {
   const std::string sig = "\x89PNG\r\n\x1a\n";
   if (b.size() < 24 || b.compare(0, 8, sig) != 0 || b.compare(12, 4, "IHDR") != 0) return {-1, -1};
   const auto be32 = [&](std::size_t at) {
-    return (static_cast<unsigned char>(b[at]) << 24) | (static_cast<unsigned char>(b[at + 1]) << 16) |
+    return (static_cast<unsigned char>(b[at]) << 24) |
+           (static_cast<unsigned char>(b[at + 1]) << 16) |
            (static_cast<unsigned char>(b[at + 2]) << 8) | static_cast<unsigned char>(b[at + 3]);
   };
   return {static_cast<int>(be32(16)), static_cast<int>(be32(20))};
@@ -59,10 +61,10 @@ std::pair<int, int> png_size(const std::filesystem::path& p) {
 
 TEST(BenchCommand, QuickReportOnTwoCheapKnobsFollowsItsSchemaWithPlotsOfTheRequestedSize) {
   const auto dir = test_dir();
-  const auto r = run_vdfx("bench --quick --filter '^(lens\\.inverse|rbf\\.solve/N=(10|100)$)' --json " +
-                          (dir / "r.json").string() + " --csv " + (dir / "r.csv").string() +
-                          " --markdown " + (dir / "r.md").string() + " --plot " + (dir / "plots").string() +
-                          " --plot-size 400x300");
+  const auto r = run_vdfx(
+      "bench --quick --filter '^(lens\\.inverse|rbf\\.solve/N=(10|100)$)' --json " +
+      (dir / "r.json").string() + " --csv " + (dir / "r.csv").string() + " --markdown " +
+      (dir / "r.md").string() + " --plot " + (dir / "plots").string() + " --plot-size 400x300");
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   EXPECT_EQ(schema_problem(dir / "r.json"), "");
@@ -112,7 +114,8 @@ TEST(BenchCommand, QuickReportOnTwoCheapKnobsFollowsItsSchemaWithPlotsOfTheReque
 
 TEST(BenchCommand, TheSchemaRejectsANegativeErrorAndAMissingPeer) {
   const auto dir = test_dir();
-  const auto r = run_vdfx("bench --quick --filter '^rbf\\.solve/N=10$' --json " + (dir / "r.json").string());
+  const auto r =
+      run_vdfx("bench --quick --filter '^rbf\\.solve/N=10$' --json " + (dir / "r.json").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   auto j = nlohmann::json::parse(read_file(dir / "r.json"));
   ASSERT_EQ(schema_problem(dir / "r.json"), "");
@@ -127,8 +130,9 @@ TEST(BenchCommand, TheSchemaRejectsANegativeErrorAndAMissingPeer) {
 
 TEST(BenchCommand, GlRowsWithoutADisplayAreListedAsSkippedWithTheReason) {
   const auto dir = test_dir();
-  const auto r = run_vdfx("bench --quick --filter '^lens\\.lca/' --json " + (dir / "r.json").string(),
-                          "env -u DISPLAY -u WAYLAND_DISPLAY ");
+  const auto r =
+      run_vdfx("bench --quick --filter '^lens\\.lca/' --json " + (dir / "r.json").string(),
+               "env -u DISPLAY -u WAYLAND_DISPLAY ");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(schema_problem(dir / "r.json"), "");
   const auto j = nlohmann::json::parse(read_file(dir / "r.json"));
@@ -186,7 +190,8 @@ TEST(BenchTiming, MedianP90AndInterleavedSamplesPerUnit) {
   EXPECT_EQ(b::p90_of({4}), 4);
   int subject = 0, peer = 0, resets = 0;
   const b::Budget budget{0.0, 4, 10};
-  const auto t = b::measure_pair({[&] { ++subject; }, 1000.0, [&] { ++resets; }}, {[&] { ++peer; }}, budget);
+  const auto t =
+      b::measure_pair({[&] { ++subject; }, 1000.0, [&] { ++resets; }}, {[&] { ++peer; }}, budget);
   EXPECT_EQ(t.subject.samples, 4);  // the warm-up is not a sample
   EXPECT_EQ(subject, 5);
   EXPECT_EQ(peer, 5);
