@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/bench_inputs.h"
+#include "app/bench_output.h"
 #include "app/bench_registry.h"
 #include "effects/gaussian_blur.h"
 
@@ -86,12 +87,6 @@ void blur_case(Row& row, const Context& ctx, BlurFn fn, double sigma_deg, bool i
   row.note = std::to_string(size) + "x" + std::to_string(size) + " noise, 90 deg FOV";
 }
 
-std::string deg(double d) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g deg", d);
-  return b;
-}
-
 }  // namespace
 
 void add_blur_knobs(Registry& r, bool quick) {
@@ -114,10 +109,10 @@ void add_blur_knobs(Registry& r, bool quick) {
                                   {"OpenCV", effects::blur_opencv, {0.25, 0.5, 2}, true}};
   for (const Method& m : methods)
     for (const double s : m.sigmas)
-      r.add(kKnob, std::string(m.name) + " " + deg(s),
+      r.add(kKnob, std::string(m.name) + " " + setting_degrees(s),
             [fn = m.fn, s, peer = m.peer](Row& row, const Context& ctx) {
               blur_case(row, ctx, fn, s, peer);
-              row.series = deg(s);
+              row.series = setting_degrees(s);
             });
 }
 

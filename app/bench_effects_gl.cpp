@@ -9,6 +9,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "app/bench_gl.h"
+#include "app/bench_inputs.h"
+#include "app/bench_output.h"
 #include "effects/effect_shaders.h"
 #include "effects/effect_stack.h"
 #include "effects/gaussian_blur.h"
@@ -73,13 +75,8 @@ const std::vector<EffectCase>& effect_cases() {
        }},
       {"full stack",
        [](StackParams& p) {
+         p = colour_params();
          p.blur_sigma_deg = 1.0;
-         p.set(EffectType::Tint, std::vector<double>{1.2, 1.0, 0.8});
-         p.exposure_stops = 0.5;
-         p.saturation = 1.3;
-         p.contrast = 1.2;
-         p.vignette_radius_deg = 30;
-         p.vignette_falloff_deg = 20;
        }},
   };
   return cases;
@@ -112,12 +109,6 @@ double opencv_blur_s(bool quick, double sigma_deg) {
   return cache[{quick, sigma_deg}] = t.median_s;
 }
 
-std::string deg(double d) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g deg", d);
-  return b;
-}
-
 }  // namespace
 
 void add_effects_gl_knobs(Registry& r, bool quick) {
@@ -142,12 +133,12 @@ void add_effects_gl_knobs(Registry& r, bool quick) {
       quick ? std::vector<double>{1, 4} : std::vector<double>{0.5, 1, 2, 4};
   for (const xr::BlurMethod m : {xr::BlurMethod::Exact, xr::BlurMethod::Pyramid}) {
     for (const double s : sigmas) {
-      r.add("blur.gl", std::string(xr::blur_method_name(m)) + " " + deg(s),
+      r.add("blur.gl", std::string(xr::blur_method_name(m)) + " " + setting_degrees(s),
             [m, s](Row& row, const Context& ctx) {
               StackParams p;
               p.blur_sigma_deg = s;
               stack_case(row, ctx, p, m, blur_reference(ctx.quick, s));
-              row.series = deg(s);
+              row.series = setting_degrees(s);
               row.add("opencv_cpu_s", opencv_blur_s(ctx.quick, s));
             });
     }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
@@ -95,6 +96,37 @@ const std::vector<cv::Point2d>& lens_grid_points() {
 double lens_px_per_unit() {
   const effects::EyeLens& e = generic90_left_lens();
   return e.lens.params().radius * e.width / (e.fov.right - e.fov.left);
+}
+
+cv::Point2d undistort_point(const cv::Point2d& p, effects::InverseMethod method) {
+  const double r_d = std::hypot(p.x, p.y);
+  const auto r_u = generic90_left_lens().lens.inverse(r_d, method);
+  const double s = (r_u && r_d > 0.0) ? *r_u / r_d : 1.0;
+  return {p.x * s, p.y * s};
+}
+
+void opencv_undistort_grid(std::vector<cv::Point2d>& out, int iterations) {
+  const cv::Mat K = cv::Mat::eye(3, 3, CV_64F);
+  const auto& p = generic90_left_lens().lens.params();
+  const cv::Mat D = (cv::Mat_<double>(1, 4) << p.c1, p.c2, 0.0, 0.0);
+  if (iterations == 0) {
+    cv::undistortPoints(lens_grid_points(), out, K, D);
+  } else {
+    cv::undistortPoints(
+        lens_grid_points(), out, K, D, cv::noArray(), cv::noArray(),
+        cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, iterations, 1e-15));
+  }
+}
+
+effects::StackParams colour_params() {
+  effects::StackParams p;
+  p.set(effects::EffectType::Tint, std::vector<double>{1.2, 1.0, 0.7});
+  p.exposure_stops = 0.5;
+  p.saturation = 1.3;
+  p.contrast = 1.2;
+  p.vignette_radius_deg = 30;
+  p.vignette_falloff_deg = 20;
+  return p;
 }
 
 }  // namespace vdfx::app::bench

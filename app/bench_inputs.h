@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "effects/effect_types.h"
 #include "effects/keyframe.h"
 #include "effects/lens_model.h"
 
@@ -39,5 +40,17 @@ const std::vector<cv::Point2d>& lens_grid_points();
 
 /// Pixels of generic90's left eye image per normalised lens unit (horizontally).
 double lens_px_per_unit();
+
+/// A panel point (normalised lens coordinates) undistorted by generic90's left lens.
+cv::Point2d undistort_point(const cv::Point2d& p, effects::InverseMethod method);
+
+/// The peer: OpenCV's iterative undistortion of lens_grid_points() with the same radial model
+/// (k1 = c1, k2 = c2, an identity camera matrix); iterations 0: OpenCV's default (5), else up to
+/// that many with a 1e-15 tolerance.
+void opencv_undistort_grid(std::vector<cv::Point2d>& out, int iterations);
+
+/// Every colour effect active at a moderate setting (tint, exposure, saturation, contrast,
+/// vignette), no blur: the colour stack the benchmarks time.
+effects::StackParams colour_params();
 
 }  // namespace vdfx::app::bench

@@ -3,7 +3,6 @@
 /// closed form (Mallon-Whelan) and bracketed Newton, with OpenCV's undistortPoints as the peer,
 /// each against the root found by long-double bisection, in eye pixels over generic90's panel.
 #include <cmath>
-#include <opencv2/calib3d.hpp>
 #include <vector>
 
 #include "app/bench_inputs.h"
@@ -28,13 +27,6 @@ long double exact_root(const effects::LensModel& lens, double r_d) {
   return 0.5L * (lo + hi);
 }
 
-cv::Point2d invert(const cv::Point2d& p, InverseMethod method) {
-  const double r_d = std::hypot(p.x, p.y);
-  const auto r_u = generic90_left_lens().lens.inverse(r_d, method);
-  const double s = (r_u && r_d > 0.0) ? *r_u / r_d : 1.0;
-  return {p.x * s, p.y * s};
-}
-
 /// Error of undistorted points against the exact roots, in eye pixels.
 ErrorStats error_px(const std::vector<cv::Point2d>& got) {
   const auto& pts = lens_grid_points();
@@ -51,21 +43,6 @@ ErrorStats error_px(const std::vector<cv::Point2d>& got) {
   return {worst, std::sqrt(sum2 / static_cast<double>(got.size()))};
 }
 
-/// OpenCV's iterative undistortion with the same radial model (k1 = c1, k2 = c2, identity camera
-/// matrix); iterations 0: OpenCV's default (5), else up to that many with a 1e-15 tolerance.
-void opencv_undistort(std::vector<cv::Point2d>& out, int iterations) {
-  const cv::Mat K = cv::Mat::eye(3, 3, CV_64F);
-  const auto& p = generic90_left_lens().lens.params();
-  const cv::Mat D = (cv::Mat_<double>(1, 4) << p.c1, p.c2, 0.0, 0.0);
-  if (iterations == 0) {
-    cv::undistortPoints(lens_grid_points(), out, K, D);
-  } else {
-    cv::undistortPoints(
-        lens_grid_points(), out, K, D, cv::noArray(), cv::noArray(),
-        cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, iterations, 1e-15));
-  }
-}
-
 constexpr const char* kKnob = "lens.inverse";
 
 void inverse_case(Row& row, const Context& ctx,
@@ -77,7 +54,7 @@ void inverse_case(Row& row, const Context& ctx,
     row.time = row.peer_time = measure(subject, ctx.budget);
   } else {
     const auto t =
-        measure_pair(subject, {[&] { opencv_undistort(peer_out, 0); }, units}, ctx.budget);
+        measure_pair(subject, {[&] { opencv_undistort_grid(peer_out, 0); }, units}, ctx.budget);
     row.time = t.subject;
     row.peer_time = t.peer;
   }
@@ -96,7 +73,7 @@ void add_lens_knobs(Registry& r, bool /*quick*/) {
   const auto ours = [](InverseMethod m) {
     return [m](std::vector<cv::Point2d>& out) {
       const auto& pts = lens_grid_points();
-      for (std::size_t k = 0; k < out.size(); ++k) out[k] = invert(pts[k], m);
+      for (std::size_t k = 0; k < out.size(); ++k) out[k] = undistort_point(pts[k], m);
     };
   };
   r.add(kKnob, "closed form", [ours](Row& row, const Context& ctx) {
@@ -107,11 +84,11 @@ void add_lens_knobs(Registry& r, bool /*quick*/) {
   });
   r.add(kKnob, "OpenCV 5 iterations", [](Row& row, const Context& ctx) {
     inverse_case(
-        row, ctx, [](std::vector<cv::Point2d>& out) { opencv_undistort(out, 0); }, true);
+        row, ctx, [](std::vector<cv::Point2d>& out) { opencv_undistort_grid(out, 0); }, true);
   });
   r.add(kKnob, "OpenCV 20 iterations", [](Row& row, const Context& ctx) {
     inverse_case(
-        row, ctx, [](std::vector<cv::Point2d>& out) { opencv_undistort(out, 20); }, false);
+        row, ctx, [](std::vector<cv::Point2d>& out) { opencv_undistort_grid(out, 20); }, false);
   });
 }
 

@@ -7,11 +7,18 @@
 
 namespace vdfx::app::bench {
 
-std::string format_number(double v) {
-  if (!std::isfinite(v)) return "-";
+std::string format_number(double v, int digits, const char* missing) {
+  if (!std::isfinite(v)) return missing;
   char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
   return b;
+}
+
+std::string setting_number(double v) {
+  return format_number(v, 6);
+}
+std::string setting_degrees(double v) {
+  return setting_number(v) + " deg";
 }
 
 std::string format_time(double s) {
@@ -56,10 +63,7 @@ std::string csv(const std::string& s) {
 }
 
 std::string csv(double v) {
-  if (!std::isfinite(v)) return "";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
+  return format_number(v, 6, "");
 }
 
 nlohmann::ordered_json number_or_null(double v) {

@@ -5,12 +5,14 @@
 /// the exponent and time scale (conditioning and keyframe reproduction).
 #include <Eigen/LU>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <random>
 #include <string>
 
 #include "app/bench_inputs.h"
+#include "app/bench_output.h"
 #include "app/bench_registry.h"
 #include "effects/coords.h"
 #include "effects/keyframe_set.h"
@@ -344,50 +346,64 @@ void conditioning_case(Row& row, const Context& ctx, const std::vector<Keyframe>
   row.note = std::string("solver: ") + std::string(effects::to_string(rbf.diagnostics().method));
 }
 
-std::string short_number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
+/// A knob of solves under other interpolation settings, each timed beside `peer` settings:
+/// conditioning and keyframe reproduction (exponent, time scale).
+struct ConditioningKnob {
+  std::string id, title, peer, label;  //!< label: the setting's name before its value
+  std::string title_end;               //!< after the keyframe count in the title
+  std::vector<double> values;
+  std::int64_t max_frame;
+  std::uint64_t seed;
+  std::function<void(effects::InterpolationSettings&, double)> set;
+  effects::InterpolationSettings peer_settings;
+  bool report_time_scale = false;  //!< add the contract's c to each row
+};
+
+void add_conditioning(Registry& r, bool quick, const ConditioningKnob& k) {
+  const int n = quick ? 100 : 300;
+  r.knob({k.id,
+          k.title + ", N = " + std::to_string(n) + " keyframes over frames 0.." +
+              std::to_string(k.max_frame) + k.title_end,
+          "solve", "parameter units (values 0..4)",
+          "the keyframe values (reproduction at every keyframe)", k.peer, PlotError::Max, false});
+  for (const double v : k.values) {
+    r.add(k.id, k.label + "=" + setting_number(v), [k, v, n](Row& row, const Context& ctx) {
+      effects::InterpolationSettings s;
+      k.set(s, v);
+      conditioning_case(row, ctx, random_keyframes(n, 1, k.seed, k.max_frame), s, k.peer_settings);
+      if (k.report_time_scale) row.add("time_scale_c", s.time_scale);
+    });
+  }
 }
 
 void add_exponent(Registry& r, bool quick) {
-  const int n = quick ? 100 : 300;
-  r.knob({"rbf.exponent",
-          "kernel exponent alpha (phi = d^alpha; 2: thin plate), N = " + std::to_string(n) +
-              " keyframes over frames 0..300",
-          "solve", "parameter units (values 0..4)",
-          "the keyframe values (reproduction at every keyframe)",
-          "the solve with alpha = 1 (the default)", PlotError::Max, false});
-  const std::vector<double> alphas = quick ? std::vector<double>{0.5, 1, 1.99, 2, 3}
-                                           : std::vector<double>{0.25, 0.5, 1, 1.5, 1.99, 2, 3};
-  for (const double a : alphas) {
-    r.add("rbf.exponent", "alpha=" + short_number(a), [a, n](Row& row, const Context& ctx) {
-      effects::InterpolationSettings s;
-      s.exponent = a;
-      conditioning_case(row, ctx, random_keyframes(n, 1, 7, 300), s, {});
-    });
-  }
+  add_conditioning(r, quick,
+                   {"rbf.exponent",
+                    "kernel exponent alpha (phi = d^alpha; 2: thin plate)",
+                    "the solve with alpha = 1 (the default)",
+                    "alpha",
+                    "",
+                    quick ? std::vector<double>{0.5, 1, 1.99, 2, 3}
+                          : std::vector<double>{0.25, 0.5, 1, 1.5, 1.99, 2, 3},
+                    300,
+                    7,
+                    [](effects::InterpolationSettings& s, double a) { s.exponent = a; },
+                    {}});
 }
 
 void add_time_scale(Registry& r, bool quick) {
-  const int n = quick ? 100 : 300;
-  r.knob({"rbf.time_scale",
-          "time scale D (1 s of video weighs like D degrees), N = " + std::to_string(n) +
-              " keyframes over frames 0..3000 at 30 fps",
-          "solve", "parameter units (values 0..4)",
-          "the keyframe values (reproduction at every keyframe)",
-          "the solve with the author's default D = 2", PlotError::Max, false});
-  const std::vector<double> ds =
-      quick ? std::vector<double>{0.1, 2, 1375} : std::vector<double>{0.1, 2, 20, 1375, 13751};
-  for (const double d : ds) {
-    r.add("rbf.time_scale", "D=" + short_number(d), [d, n](Row& row, const Context& ctx) {
-      effects::InterpolationSettings s, peer;
-      s.time_scale = effects::time_scale_from_deg_per_s(d);
-      peer.time_scale = effects::kAuthorTimeScale;
-      conditioning_case(row, ctx, random_keyframes(n, 1, 8, 3000), s, peer);
-      row.add("time_scale_c", s.time_scale);
-    });
-  }
+  effects::InterpolationSettings peer;
+  peer.time_scale = effects::kAuthorTimeScale;
+  add_conditioning(
+      r, quick,
+      {"rbf.time_scale", "time scale D (1 s of video weighs like D degrees)",
+       "the solve with the author's default D = 2", "D", " at 30 fps",
+       quick ? std::vector<double>{0.1, 2, 1375} : std::vector<double>{0.1, 2, 20, 1375, 13751},
+       3000, 8,
+       [](effects::InterpolationSettings& s, double d) {
+         s.time_scale = effects::time_scale_from_deg_per_s(d);
+       },
+       peer, true});
 }
 
 }  // namespace

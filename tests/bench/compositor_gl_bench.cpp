@@ -99,13 +99,7 @@ void BM_GlVideoLayer(benchmark::State& s) {
   run(s, [lod](Fixture& f) { f.video->render(f.a, f.eye, lod); });
 }
 void BM_GlColourEffects(benchmark::State& s) {
-  effects::StackParams p;
-  p.set(effects::EffectType::Tint, std::vector<double>{1.2, 1.0, 0.8});
-  p.exposure_stops = 0.5;
-  p.saturation = 1.3;
-  p.contrast = 1.2;
-  p.vignette_radius_deg = 30;
-  p.vignette_falloff_deg = 20;
+  const effects::StackParams p = app::bench::colour_params();
   run(s, [p](Fixture& f) {
     f.stack->apply(f.a.texture(), f.b, p, effects::non_neutral_mask(p), f.eye);
   });

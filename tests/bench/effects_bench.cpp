@@ -57,16 +57,7 @@ BENCHMARK_TEMPLATE(BM_Blur, blur_separable)->Name("Effects/BlurSeparable")->Arg(
 BENCHMARK_TEMPLATE(BM_Blur, blur_opencv)->Name("Effects/BlurOpenCv")->Arg(25)->Arg(50)->Arg(200)
     ->Unit(benchmark::kMillisecond);
 
-StackParams colour_params() {
-  StackParams p;
-  p.set(EffectType::Tint, std::vector<double>{1.2, 1.0, 0.7});
-  p.exposure_stops = 0.5;
-  p.saturation = 1.3;
-  p.contrast = 1.2;
-  p.vignette_radius_deg = 30;
-  p.vignette_falloff_deg = 20;
-  return p;
-}
+using app::bench::colour_params;
 
 void BM_ColourStack(benchmark::State& state) {
   const OneThread one;
