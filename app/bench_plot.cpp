@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -151,8 +152,8 @@ std::string script_for(const Knob& k, const std::vector<const Row*>& rows,
     pts.push_back({ts[i] * x.scale, zero ? floor_e : es[i], label + (zero && ylog ? " (0)" : ""),
                    rows[i]->pareto, rows[i]->series});
   }
-  // Data blocks: 0 every setting, 1 the fronts, 2 the shared peer's time, 3 and 4 the labels
-  // drawn above and below their points (below when an earlier label sits close by).
+  // Data blocks: 0 every setting, 1 the fronts, 2 the shared peer's time, 3 to 6 the labels in
+  // each of their four places.
   std::ofstream d(data);
   d.precision(10);
   for (const Point& p : pts) d << p.t << " " << p.e << "\n";
@@ -175,19 +176,25 @@ std::string script_for(const Knob& k, const std::vector<const Row*>& rows,
   else
     d << "NaN NaN\n";
   d << "\n\n";
-  std::vector<bool> below(pts.size(), false);
-  for (std::size_t i = 0; i < pts.size(); ++i)
+  // A label goes to the first of four places (above right, below right, above left, below left)
+  // that no earlier label near its point took.
+  std::vector<int> place(pts.size(), 0);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    std::array<bool, 4> taken{};
     for (std::size_t j = 0; j < i; ++j) {
       const double dx =
           axis_pos(pts[i].t, t_lo, t_hi, x.log) - axis_pos(pts[j].t, t_lo, t_hi, x.log);
       const double dy = axis_pos(pts[i].e, e_lo > 0 ? e_lo : 1e-300, e_hi, ylog) -
                         axis_pos(pts[j].e, e_lo > 0 ? e_lo : 1e-300, e_hi, ylog);
-      if (!below[j] && std::abs(dx) < 0.25 && std::abs(dy) < 0.08) below[i] = true;
+      if (std::abs(dx) < 0.25 && std::abs(dy) < 0.08)
+        taken[static_cast<std::size_t>(place[j])] = true;
     }
-  for (const bool b : {false, true}) {
+    while (place[i] < 3 && taken[static_cast<std::size_t>(place[i])]) ++place[i];
+  }
+  for (int where = 0; where < 4; ++where) {
     bool any = false;
     for (std::size_t i = 0; i < pts.size(); ++i)
-      if (below[i] == b) {
+      if (place[i] == where) {
         d << pts[i].t << " " << pts[i].e << " \"" << pts[i].label << "\"\n";
         any = true;
       }
@@ -224,7 +231,9 @@ std::string script_for(const Knob& k, const std::vector<const Row*>& rows,
   s << "plot " << quoted(data.string())
     << " index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'settings', \\\n"
     << "  '' index 3 using 1:2:3 with labels left offset char 0.7,0.6 font ',8' notitle, \\\n"
-    << "  '' index 4 using 1:2:3 with labels left offset char 0.7,-0.7 font ',8' notitle";
+    << "  '' index 4 using 1:2:3 with labels left offset char 0.7,-0.7 font ',8' notitle, \\\n"
+    << "  '' index 5 using 1:2:3 with labels right offset char -0.7,0.6 font ',8' notitle, \\\n"
+    << "  '' index 6 using 1:2:3 with labels right offset char -0.7,-0.7 font ',8' notitle";
   if (k.alternatives)
     s << ", \\\n  '' index 1 using 1:2 with lines lw 2 lc rgb '#d62728' title "
       << quoted(std::string("Pareto front") +
