@@ -25,6 +25,8 @@ for view in "window 31,5" "desk -75,-10" "bed 75,-15" "behind -150,0"; do
     --mode pixel --out "$out/demo-$1-pixel.png"
 done
 echo "vdfx: demo views written to $out (demo-*.png: view-dependent; demo-*-pixel.png: per-pixel baseline)"
+# The baked export (docs/export.md): the panorama as a one-frame 360 video, effects per pixel.
+"$vdfx" export "$pano" --sidecar "$demo" --baked "$out/demo-baked.mp4"
 
 # The editor: the demo session (recordings/demo.vdrec.jsonl) replayed in the editor's window on
 # the bundled demo (not saved), in the desktop view it was recorded in (1280 x 720), written as

@@ -10,7 +10,6 @@
 #include "app/bench_flare_setup.h"
 #include "app/bench_gl.h"
 #include "app/bench_inputs.h"
-#include "effects/effect_shaders.h"
 #include "effects/flare_render.h"
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
@@ -28,39 +27,12 @@ struct Eye {
 
 Eye left_eye(bool quick) {
   const xr::HmdProfile profile = xr::load_hmd_profile("generic90");
-  const auto views = xr::locate_eye_views(flare_head(), profile);
+  const auto views = xr::locate_eye_views(head_at(kFlareLook), profile);
   Eye e;
   e.view = xr::render_view(views[0]);
   e.width = quick ? views[0].width / 2 : views[0].width;
   e.height = quick ? views[0].height / 2 : views[0].height;
   return e;
-}
-
-/// The eye with and without the flare, as `vdfx play` renders it.
-PairTimes time_eye(const Context& ctx, const effects::FlareLayout& flare) {
-  const Eye eye = left_eye(ctx.quick);
-  const xr::HmdProfile profile = xr::load_hmd_profile("generic90");
-  xr::CompositorConfig c;
-  c.eye_width = eye.width;
-  c.eye_height = eye.height;
-  c.lens = effects::LensModel(profile.lens);
-  c.distortion.method = xr::DistortionMethod::Mesh;
-  c.distortion.mesh_n = 65;
-  xr::Compositor comp(c);
-  comp.set_video_frame(synthetic_frame());
-  effects::StackParams params;
-  params.exposure_stops = 0.5;
-  const unsigned mask = effects::non_neutral_mask(params);
-  xr::FlareGl with, without;
-  with.set_layouts({flare});
-  const std::array<xr::EyeLayer*, 1> lw{&with}, lo{&without};
-  return measure_pair(gl_timed([&] {
-                        comp.render_eye(0, {eye.view, params, mask, false, lw});
-                      }),
-                      gl_timed([&] {
-                        comp.render_eye(0, {eye.view, params, mask, false, lo});
-                      }),
-                      ctx.budget);
 }
 
 /// The flare alone (black video, no distortion, float eye buffer) against the CPU reference.
@@ -107,7 +79,9 @@ void add_flare_knobs(Registry& r, bool quick) {
         std::string(effects::flare_style_name(s.style)) + ", " + std::to_string(s.rings) + " rings",
         [s](Row& row, const Context& ctx) {
           const effects::FlareLayout flare = flare_layout(s.style, s.rings);
-          const PairTimes t = time_eye(ctx, flare);
+          xr::FlareGl layer;
+          layer.set_layouts({flare});
+          const PairTimes t = time_play_eye(ctx, layer);
           row.time = t.subject;
           row.peer_time = t.peer;
           double mean = 0.0;

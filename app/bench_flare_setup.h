@@ -11,10 +11,8 @@ namespace vdfx::app::bench {
 
 inline const effects::Direction kFlareLook{20.0, 5.0}, kFlareLight{27.0, 9.0};
 
-/// The head at 1.6 m looking at `look`.
-xr::Pose flare_head(const effects::Direction& look = kFlareLook);
-
-/// The flare of `style` with `rings` rings for that head and kFlareLight, intensity 1.
+/// The flare of `style` with `rings` rings for a head (app/bench_inputs.h head_at) looking at
+/// kFlareLook and kFlareLight, intensity 1.
 effects::FlareLayout flare_layout(effects::FlareStyle style, int rings);
 
 }  // namespace vdfx::app::bench

@@ -12,6 +12,7 @@
 #include "app/bench_registry.h"
 #include "app/bench_report.h"
 #include "app/bench_timing.h"
+#include "xr/eye_layer.h"
 #include "xr/gl_texture.h"
 #include "xr/render_view.h"
 
@@ -37,6 +38,11 @@ const cv::Mat& eye_input_bgr(bool quick);
 /// effect: one texture read and one write per pixel).
 Timed copy_floor(bool quick);
 inline constexpr const char* kCopyFloor = "plain textured copy of the eye (memory-bound floor)";
+
+/// One eye of the frame `vdfx play` renders (generic90 left eye looking at kFlareLook, half size
+/// in a quick run; the synthetic 4K frame, exposure +0.5, mesh 65 pre-distortion) with `layer`
+/// drawn into it, timed interleaved with the same eye without it.
+PairTimes time_play_eye(const Context& ctx, xr::EyeLayer& layer);
 
 /// Max, RMS (and mean into *mean) of |a - b| over all channels in 8-bit steps (x 255), after
 /// clamping both to [0, 1]; a and b are same-size float images of 3 or 4 channels (only the

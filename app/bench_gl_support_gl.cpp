@@ -2,14 +2,19 @@
 /// @brief The GL knobs' shared eye, input, copy floor, timing and error measure.
 #include <epoxy/gl.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "app/bench_flare_setup.h"
 #include "app/bench_gl.h"
 #include "app/bench_inputs.h"
+#include "effects/effect_shaders.h"
+#include "xr/compositor.h"
 #include "xr/effect_stack_gl.h"
+#include "xr/eye_views.h"
 #include "xr/video_layer.h"
 
 namespace vdfx::app::bench {
@@ -96,6 +101,31 @@ Timed copy_floor(bool quick) {
   Input& in = input(quick);
   const BenchEye eye = bench_eye(quick);
   return gl_timed([&in, eye] { in.copier->apply(in.texture, in.copy_target, {}, 0, eye.view); });
+}
+
+PairTimes time_play_eye(const Context& ctx, xr::EyeLayer& layer) {
+  const xr::HmdProfile profile = xr::load_hmd_profile("generic90");
+  const auto views = xr::locate_eye_views(head_at(kFlareLook), profile);
+  xr::CompositorConfig c;
+  c.eye_width = ctx.quick ? views[0].width / 2 : views[0].width;
+  c.eye_height = ctx.quick ? views[0].height / 2 : views[0].height;
+  c.lens = effects::LensModel(profile.lens);
+  c.distortion.method = xr::DistortionMethod::Mesh;
+  c.distortion.mesh_n = 65;
+  xr::Compositor comp(c);
+  comp.set_video_frame(synthetic_frame());
+  effects::StackParams params;
+  params.exposure_stops = 0.5;
+  const unsigned mask = effects::non_neutral_mask(params);
+  const xr::RenderView view = xr::render_view(views[0]);
+  const std::array<xr::EyeLayer*, 1> with{&layer};
+  return measure_pair(gl_timed([&] {
+                        comp.render_eye(0, {view, params, mask, false, with});
+                      }),
+                      gl_timed([&] {
+                        comp.render_eye(0, {view, params, mask, false, {}});
+                      }),
+                      ctx.budget);
 }
 
 ErrorStats steps_error(const cv::Mat& a, const cv::Mat& b, double* mean) {

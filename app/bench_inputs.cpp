@@ -4,12 +4,14 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <glm/gtc/quaternion.hpp>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
 
 #include "effects/coords.h"
+#include "xr/eye_views.h"
 #include "xr/hmd_profile.h"
 
 namespace vdfx::app::bench {
@@ -69,6 +71,13 @@ const cv::Mat& sunrise_rgb(bool* from_file) {
   }();
   if (from_file) *from_file = loaded;
   return img;
+}
+
+xr::Pose head_at(const effects::Direction& look) {
+  xr::Pose p;
+  p.position = {0.0, 1.6, 0.0};
+  p.orientation = glm::quat_cast(xr::camera_rotation(look, 0.0));
+  return p;
 }
 
 const effects::EyeLens& generic90_left_lens() {

@@ -11,6 +11,7 @@
 #include "effects/effect_types.h"
 #include "effects/keyframe.h"
 #include "effects/lens_model.h"
+#include "xr/session.h"
 
 namespace vdfx::app::bench {
 
@@ -30,6 +31,9 @@ const cv::Mat& sunrise_rgb(bool* from_file = nullptr);
 
 /// A size x size CV_32FC3 image of seeded uniform noise in [0, 1].
 cv::Mat noise_image(int size);
+
+/// A head at standing height (1.6 m) looking at `look`.
+xr::Pose head_at(const effects::Direction& look);
 
 /// The generic90 profile's left eye: panel viewport, FOV and lens (1440 x 1600).
 const effects::EyeLens& generic90_left_lens();

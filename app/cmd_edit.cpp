@@ -151,7 +151,7 @@ int cmd_edit(const Args& args) {
   // the minimap is computed on a worker so that playing a large set never stalls a frame.
   const bool replay = loop.input.rfind("replay:", 0) == 0;
   if (replay) dopts.keyframes.async = false;
-  eo.async_visualizations = !replay;
+  eo.visuals.async = !replay;
   Editor editor(std::move(sidecar), dopts, eo);
   EditorClient client(editor, create_gl_panel_textures(), /*follow_window=*/desktop && !setup.recorded_desktop);
   if (!setup.video->properties().is_still) {

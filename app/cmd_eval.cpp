@@ -5,6 +5,7 @@
 
 #include "app/cli_util.h"
 #include "app/flare_set_of.h"
+#include "app/grain_set_of.h"
 #include "effects/stack_interpolator.h"
 #include "io/input_error.h"
 #include "io/sidecar.h"
@@ -15,7 +16,8 @@ int cmd_eval(const Args& args) {
   CLI::App cli{
       "Prints the interpolated parameters of every effect at the given views as JSON, one\n"
       "object per --at and per line. Effects without keyframes print their neutral\n"
-      "values with \"active\": false; flares print their intensity, in file order.",
+      "values with \"active\": false; flares print their intensity, grains their intensity\n"
+      "and size, each in file order.",
       "vdfx eval"};
   std::string path;
   std::vector<std::string> at_texts;
@@ -41,6 +43,7 @@ int cmd_eval(const Args& args) {
   }
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
   const effects::FlareSet flares = flare_set_of(sidecar);
+  const effects::GrainSet grains = grain_set_of(sidecar);
   for (const EvalPoint& p : points) {
     const effects::StackParams params = stack.evaluate(p.direction, p.frame);
     nlohmann::ordered_json out;
@@ -59,6 +62,15 @@ int cmd_eval(const Args& args) {
     for (std::size_t k = 0; k < flares.size(); ++k)
       fl.push_back({{"intensity", flares.intensity(k, effects::to_unit(p.direction), p.frame)}});
     out["flares"] = std::move(fl);
+    // Grain effects (any number, in file order): keyframed intensity and size at the view.
+    nlohmann::ordered_json gr = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < grains.size(); ++k) {
+      const effects::GrainParams g = grains.params(k, effects::to_unit(p.direction), p.frame);
+      gr.push_back({{"style", effects::grain_style_name(grains.effect(k).style)},
+                    {"intensity", g.intensity},
+                    {"size", g.size}});
+    }
+    out["grains"] = std::move(gr);
     std::cout << out.dump() << "\n";
   }
   return kExitOk;

@@ -29,9 +29,11 @@ int cmd_validate(const Args& args) {
     std::size_t keyframes = 0;
     for (const auto& track : report.sidecar->effects) keyframes += track.keyframes.size();
     for (const auto& flare : report.sidecar->flares) keyframes += flare.keyframes.size();
+    for (const auto& grain : report.sidecar->grains) keyframes += grain.keyframes.size();
     std::cout << path << ": valid ("
-              << report.sidecar->effects.size() + report.sidecar->flares.size() << " effects, "
-              << keyframes << " keyframes)\n";
+              << report.sidecar->effects.size() + report.sidecar->flares.size() +
+                     report.sidecar->grains.size()
+              << " effects, " << keyframes << " keyframes)\n";
   }
   return kExitOk;
 }

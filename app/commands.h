@@ -6,11 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "app/command_table.h"
+
 namespace vdfx::app {
-
-enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitInternal = 3 };
-
-using Args = std::vector<std::string>;
 
 struct Command {
   const char* name;
@@ -18,16 +16,22 @@ struct Command {
   int (*run)(const Args& args);
 };
 
-/// Every command, in the order `vdfx --help` lists them.
+/// Every command with its function, in the order `vdfx --help` lists them.
 const std::vector<Command>& commands();
 
-/// Runs `vdfx ARGS...` (without the program name), mapping exceptions to exit codes.
+/// Runs `vdfx ARGS...` (without the program name) with every command linked in (tests, the
+/// media module), mapping exceptions to exit codes.
 int run_main(const Args& args);
+
+/// The commands that need no video, image or GL library (app/commands_light.cpp); null for the
+/// others. The `vdfx` executable runs these itself and loads the media module for the others.
+CommandFn light_command(const std::string& name);
 
 int cmd_bench(const Args& args);
 int cmd_devices(const Args& args);
 int cmd_edit(const Args& args);
 int cmd_eval(const Args& args);
+int cmd_export(const Args& args);
 int cmd_hmd(const Args& args);
 int cmd_play(const Args& args);
 int cmd_render(const Args& args);

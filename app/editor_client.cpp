@@ -12,25 +12,6 @@
 
 namespace vdfx::app {
 
-void unpremultiply_flipped(const cv::Mat& src, const cv::Rect& r, cv::Mat& out) {
-  const int h = src.rows;
-  for (int y = r.y; y < r.y + r.height; ++y) {
-    const auto* s = src.ptr<cv::Vec4b>(y);
-    auto* d = out.ptr<cv::Vec4b>(h - 1 - y);
-    for (int x = r.x; x < r.x + r.width; ++x) {
-      const cv::Vec4b p = s[x];
-      const int a = p[3];
-      if (a == 255 || a == 0) {
-        d[x] = p;  // opaque: already straight; transparent: colour irrelevant (premultiplied 0)
-        continue;
-      }
-      // Round to nearest; premultiplied colour never exceeds alpha, so the result is <= 255.
-      for (int c = 0; c < 3; ++c) d[x][c] = static_cast<uchar>(std::min(255, (p[c] * 255 + a / 2) / a));
-      d[x][3] = p[3];
-    }
-  }
-}
-
 EditorClient::EditorClient(Editor& editor, std::unique_ptr<PanelTextures> textures, bool follow_window)
     : editor_(editor), textures_(std::move(textures)), follow_window_(follow_window) {}
 
@@ -56,35 +37,20 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
   info.video_paused = !editor_.playing();
   info.video_loop = true;  // the editor's playhead wraps (or stops) itself; the decoder follows it
 
-  // Compiled-in effects: those with keyframes, plus the one being previewed.
+  // Compiled-in effects: those with keyframes, plus the one being placed.
   const Document& doc = editor_.document();
   unsigned mask = 0;
-  std::vector<double> key = {static_cast<double>(doc.revision()), editor_.previewing() ? 1.0 : 0.0,
-                             editor_.unaltered() ? 1.0 : 0.0};
-  for (const auto& spec : effects::all_effect_specs()) {
+  for (const auto& spec : effects::all_effect_specs())
     if (!doc.keyframes(spec.type).empty()) mask |= effects::shader_bit(spec.type);
-    // A finished asynchronous solve changes the answers without an edit.
-    key.push_back(static_cast<double>(doc.keyframe_set(spec.type).solution_version()));
-  }
-  if (editor_.previewing()) {
-    const effects::EffectType e = editor_.current_effect();
-    mask |= effects::shader_bit(e);
-    // The preview follows the view centre, the frame and the chosen values.
-    key.insert(key.end(), {editor_.view_direction().azimuth_deg, editor_.view_direction().altitude_deg,
-                           static_cast<double>(editor_.frame()), static_cast<double>(e)});
-    const auto& chosen = doc.params(e);
-    key.insert(key.end(), chosen.begin(), chosen.end());
-  }
-  if (editor_.grabbing()) {
-    // The held keyframe follows the view and the playhead before the move is committed.
-    key.push_back(2.0);
-    if (const auto k = editor_.selected_preview())
-      key.insert(key.end(), {k->direction.azimuth_deg, k->direction.altitude_deg, static_cast<double>(k->frame),
-                             static_cast<double>(*editor_.selected_keyframe())});
-  }
+  const PendingEdit* pending = doc.pending();
+  if (pending) mask |= effects::shader_bit(pending->effect());
   active_ = mask;
-  if (key != revision_key_) {
-    revision_key_ = std::move(key);
+  // params() answers differently after an edit, a finished asynchronous solve, a move of the
+  // pending keyframe, or the unaltered switch.
+  const AnswersKey key{doc.revision(), doc.solutions_version(), pending ? pending->version() : 0,
+                       pending != nullptr, editor_.unaltered()};
+  if (!(key == answers_)) {
+    answers_ = key;
     ++revision_;
   }
 }
@@ -102,9 +68,9 @@ std::vector<xr::QuadLayer> EditorClient::quads() {
     ui::Panel& p = *panels[i];
     if (!p.visible()) continue;
     Slot& s = slots_[i];
-    const bool fresh = s.panel != &p || s.texture == 0 || s.straight.cols != p.texture_width() ||
-                       s.straight.rows != p.texture_height();
-    std::vector<cv::Rect> regions;  // in the panel's pixels (top-down)
+    const bool fresh = s.panel != &p || s.texture == 0 || s.width != p.texture_width() ||
+                       s.height != p.texture_height();
+    std::vector<cv::Rect> regions;  // in the texture's pixels
     if (!fresh) {
       for (const ui::Rect& r : p.dirty_rects())
         regions.emplace_back(static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.w),
@@ -114,19 +80,20 @@ std::vector<xr::QuadLayer> EditorClient::quads() {
     const bool foreign = p.render_count() != s.render_count;
     const cv::Mat& tex = p.texture();  // renders when dirty
     if (fresh || foreign || p.render_count() != s.render_count) {
+      // The panel's own pixels go up as they are: premultiplied, first row at the quad's top.
       const cv::Rect whole(0, 0, tex.cols, tex.rows);
-      if (fresh) s.straight.create(tex.rows, tex.cols, CV_8UC4);
       if (fresh || foreign) regions = {whole};
-      std::vector<cv::Rect> flipped;
+      std::vector<cv::Rect> inside;
       for (cv::Rect r : regions) {
         r &= whole;
         if (r.empty()) continue;
-        unpremultiply_flipped(tex, r, s.straight);
-        flipped.emplace_back(r.x, tex.rows - r.y - r.height, r.width, r.height);
+        inside.push_back(r);
         uploaded_pixels_ += r.area();
       }
-      s.texture = textures_->upload(i, s.straight, fresh ? std::vector<cv::Rect>{} : flipped);
+      s.texture = textures_->upload(i, tex, fresh ? std::vector<cv::Rect>{} : inside);
       s.panel = &p;
+      s.width = tex.cols;
+      s.height = tex.rows;
       s.render_count = p.render_count();
       ++uploads_;
     }
@@ -144,7 +111,7 @@ std::vector<xr::QuadLayer> EditorClient::quads() {
 namespace {
 
 /// A disc (ring_width 0) or a ring, white with a dark outline so it reads on any video;
-/// straight alpha, anti-aliased, size x size.
+/// premultiplied alpha, anti-aliased, size x size.
 cv::Mat mark_image(int size, double ring_width) {
   cv::Mat img(size, size, CV_8UC4);
   const double c = 0.5 * size, outer = 0.5 * size - 1.0;
@@ -155,19 +122,21 @@ cv::Mat mark_image(int size, double ring_width) {
       const double cover = std::clamp(outer - d + 0.5, 0.0, 1.0) * std::clamp(d - inner + 0.5, 0.0, 1.0);
       const double edge = 0.18 * size;  // dark outline on both edges
       const bool dark = outer - d < edge || (ring_width > 0.0 && d - inner < edge);
-      const uchar v = dark ? 20 : 250;
-      img.at<cv::Vec4b>(y, x) = {v, v, v, static_cast<uchar>(std::lround(255.0 * cover))};
+      const double v = (dark ? 20.0 : 250.0) * cover;  // premultiplied
+      img.at<cv::Vec4b>(y, x) = {static_cast<uchar>(std::lround(v)), static_cast<uchar>(std::lround(v)),
+                                 static_cast<uchar>(std::lround(v)), static_cast<uchar>(std::lround(255.0 * cover))};
     }
   return img;
 }
 
-/// A soft line seen across: alpha peaks in the middle column.
+/// A soft line seen across: alpha peaks in the middle column (premultiplied).
 cv::Mat ray_image() {
   cv::Mat img(4, 16, CV_8UC4);
   for (int y = 0; y < img.rows; ++y)
     for (int x = 0; x < img.cols; ++x) {
-      const double t = 1.0 - std::abs(x + 0.5 - 8.0) / 8.0;
-      img.at<cv::Vec4b>(y, x) = {120, 200, 255, static_cast<uchar>(std::lround(200.0 * t * t))};
+      const double t = 1.0 - std::abs(x + 0.5 - 8.0) / 8.0, a = 200.0 / 255.0 * t * t;
+      img.at<cv::Vec4b>(y, x) = {static_cast<uchar>(std::lround(120 * a)), static_cast<uchar>(std::lround(200 * a)),
+                                 static_cast<uchar>(std::lround(255 * a)), static_cast<uchar>(std::lround(255 * a))};
     }
   return img;
 }
@@ -198,8 +167,7 @@ void EditorClient::add_pointer_quads(std::vector<xr::QuadLayer>& out) {
   if (!textures_) return;
   const std::size_t base = 1000;  // texture slots after the panels'
   if (!pointer_textures_[0]) {
-    cv::Mat dot = mark_image(64, 0.0), ring = mark_image(64, 12.0), ray = ray_image();
-    for (cv::Mat* m : {&dot, &ring, &ray}) cv::flip(*m, *m, 0);  // bottom-up, as GL textures
+    const cv::Mat dot = mark_image(64, 0.0), ring = mark_image(64, 12.0), ray = ray_image();
     pointer_textures_ = {texture_of(base, dot), texture_of(base + 1, ring), texture_of(base + 2, ray)};
   }
   const xr::InputState& in = editor_.input();

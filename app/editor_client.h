@@ -6,10 +6,9 @@
 /// preview included; quads() turns the editor's panels into quad layers in LOCAL space (the
 /// panels' world is the input's LOCAL space; both face their local +z, like OpenXR quads).
 ///
-/// Panel textures: a panel's CPU image (premultiplied RGBA8, row 0 at the top) is uploaded only
-/// when the panel re-rendered, and then only its damaged rectangles. The compositor blends quads
-/// with straight alpha (GL_SRC_ALPHA, 1 - src alpha) and samples row 0 at the quad's bottom, so
-/// the client keeps a straight-alpha, bottom-up copy of each panel and uploads from it.
+/// Panel textures: a panel's CPU image (premultiplied RGBA8, row 0 at the top) is uploaded as it
+/// is, only when the panel re-rendered, and then only its damaged rectangles: the compositor's
+/// quads are premultiplied with their first row at the top (OpenXR's quad-layer convention).
 #pragma once
 
 #include <array>
@@ -27,7 +26,8 @@
 namespace vdfx::app {
 
 /// Where panel images go: GL textures in the window (create_gl_panel_textures), a recorder in
-/// tests. Images are straight-alpha RGBA8, bottom row first (GL's texture orientation).
+/// tests. Images are premultiplied RGBA8, first row at the top of the quad (the compositor's
+/// quad convention, xr::QuadLayer).
 class PanelTextures {
  public:
   virtual ~PanelTextures() = default;
@@ -42,10 +42,6 @@ class PanelTextures {
 /// GL textures with mipmaps (panels are seen much smaller than their pixel size). Needs a current
 /// GL context at upload and release; throws std::runtime_error in a build without OpenGL.
 std::unique_ptr<PanelTextures> create_gl_panel_textures();
-
-/// Premultiplied RGBA8 (row 0 at the top) -> straight alpha, rows reversed, for the rectangle `r`
-/// of `premultiplied` into `out` (same size, allocated by the caller).
-void unpremultiply_flipped(const cv::Mat& premultiplied, const cv::Rect& r, cv::Mat& out);
 
 /// How the client draws the pointers and the placement reticle in the scene (quads composited
 /// with the panels, never touched by the effects).
@@ -88,20 +84,26 @@ class EditorClient : public FrameClient {
 
  private:
   void add_pointer_quads(std::vector<xr::QuadLayer>& out);
-  unsigned texture_of(std::size_t slot, const cv::Mat& straight_bottom_up);
+  unsigned texture_of(std::size_t slot, const cv::Mat& premultiplied);
 
   struct Slot {
     const ui::Panel* panel = nullptr;
     int render_count = -1;  //!< the panel's render_count() at the last upload
     unsigned texture = 0;
-    cv::Mat straight;       //!< straight alpha, bottom-up
+    int width = 0, height = 0;  //!< the texture's size at the last upload
   };
   Editor& editor_;
   std::unique_ptr<PanelTextures> textures_;
   std::vector<Slot> slots_;
   unsigned active_ = 0;
   std::uint64_t revision_ = 0;
-  std::vector<double> revision_key_;
+  /// What params() depends on; revision_ moves when it changes.
+  struct AnswersKey {
+    std::uint64_t document = ~0ull, solutions = 0, pending = 0;
+    bool pending_exists = false, unaltered = false;
+    bool operator==(const AnswersKey&) const = default;
+  };
+  AnswersKey answers_;
   int uploads_ = 0;
   std::int64_t uploaded_pixels_ = 0;
   bool follow_window_ = false;

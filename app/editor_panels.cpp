@@ -32,16 +32,6 @@ xr::Pose offset(glm::dvec3 p, double tilt_deg = 0.0) {
 constexpr int kEffectW = 1000, kEffectH = 1500;
 constexpr int kTimelineW = 2000, kTimelineH = 1200;
 
-// Desktop layout (layout pixels, drawn at desktop_ui_scale()).
-constexpr int kDeskEffectW = 800, kDeskEffectH = 1600;
-constexpr int kDeskTimelineW = 2310, kDeskTimelineH = 560;
-constexpr int kDeskViewsW = 800, kDeskViewsH = 1040;
-constexpr int kDeskHudW = 1500, kDeskHudH = 110;
-constexpr int kDeskMargin = 12;            //!< screen pixels between panels and the window edge
-constexpr double kDeskDistanceM = 1.0;     //!< head-locked quads at this depth
-/// Layout pixels the Desktop layout needs across and down the window at scale 1.
-constexpr double kDeskLayoutW = 3200.0, kDeskLayoutH = 1800.0;
-
 std::string title_case(std::string_view s) {
   std::string n(s);
   if (!n.empty()) n[0] = static_cast<char>(n[0] - 'a' + 'A');
@@ -49,24 +39,6 @@ std::string title_case(std::string_view s) {
 }
 
 }  // namespace
-
-double desktop_ui_scale(const DesktopViewport& v) {
-  const double s = std::min(v.width / kDeskLayoutW, v.height / kDeskLayoutH);
-  return std::clamp(s, 0.25, 1.0);
-}
-
-PanelPlacement desktop_placement(const DesktopViewport& v, const ScreenRect& r, double distance_m,
-                                 glm::dvec2* size_m) {
-  // The desktop camera's tangents (xr::desktop_view): square pixels, centred.
-  const double tx = std::tan(0.5 * glm::radians(v.hfov_deg));
-  const double ty = tx * v.height / v.width;
-  const auto tan_x = [&](double px) { return -tx + px / v.width * 2.0 * tx; };
-  const auto tan_y = [&](double py) { return ty - py / v.height * 2.0 * ty; };
-  const double cx = tan_x(r.x + 0.5 * r.w), cy = tan_y(r.y + 0.5 * r.h);
-  if (size_m)
-    *size_m = {(tan_x(r.x + r.w) - tan_x(r.x)) * distance_m, (tan_y(r.y) - tan_y(r.y + r.h)) * distance_m};
-  return {Anchor::Head, offset({cx * distance_m, cy * distance_m, -distance_m})};
-}
 
 std::string effect_widget_id(EffectType type) { return std::string(effects::effect_name(type)); }
 
@@ -79,7 +51,6 @@ EditorPanels::EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_
     effect_place = {Anchor::LeftHand, offset({0.05, 0.16, -0.05}, -20.0)};
     timeline_place = {Anchor::RightHand, offset({-0.05, 0.12, -0.05}, -20.0)};
   } else {
-    build_effect_panel(fonts, kDeskEffectW, kDeskEffectH, glm::dvec2(0.2, 0.4));
     build_desktop_panels(fonts, frame_count);
     set_viewport(viewport);
   }
@@ -100,13 +71,14 @@ void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, 
   menu = &p.add<MenuList>("effect_menu", names, static_cast<int>(EffectType::Exposure), t.row_height);
   menu->set_rect(col.next(6 * t.row_height + 16));
   effect_widget_rect_ = col.next(330);
-  effect_widgets[0] = &p.add<Slider1D>("blur", "Blur", Axis{0.0, 10.0, 0.1, "%.1f", "\u00b0", ""}, 0.0, 0.0);
-  effect_widgets[1] = &p.add<ColourWheel>("tint", "Tint");
-  effect_widgets[2] = &p.add<Slider1D>("exposure", "Exposure", Axis{-8.0, 8.0, 0.1, "%+.1f", " stops", ""}, 0.0, 0.0);
-  effect_widgets[3] = &p.add<Slider1D>("saturation", "Saturation", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
-  effect_widgets[4] = &p.add<Slider1D>("contrast", "Contrast", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
-  effect_widgets[5] = &p.add<Pad2D>("vignette", "Vignette", Axis{0.0, 180.0, 1.0, "%.0f", "\u00b0", "radius"},
-                                    Axis{0.01, 180.0, 1.0, "%.0f", "\u00b0", "falloff"}, glm::dvec2(180.0, 0.01));
+  blur = &p.add<Slider1D>("blur", "Blur", Axis{0.0, 10.0, 0.1, "%.1f", "\u00b0", ""}, 0.0, 0.0);
+  tint = &p.add<ColourWheel>("tint", "Tint");
+  exposure = &p.add<Slider1D>("exposure", "Exposure", Axis{-8.0, 8.0, 0.1, "%+.1f", " stops", ""}, 0.0, 0.0);
+  saturation = &p.add<Slider1D>("saturation", "Saturation", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
+  contrast = &p.add<Slider1D>("contrast", "Contrast", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
+  vignette = &p.add<Pad2D>("vignette", "Vignette", Axis{0.0, 180.0, 1.0, "%.0f", "\u00b0", "radius"},
+                           Axis{0.01, 180.0, 1.0, "%.0f", "\u00b0", "falloff"}, glm::dvec2(180.0, 0.01));
+  effect_widgets = {blur, tint, exposure, saturation, contrast, vignette};
   const Rect row = col.next(t.row_height);
   undo = &p.add<Button>("undo", "\u2190 Undo");
   undo->set_rect(split_cols(row, 2, 0, t.gap));
@@ -165,23 +137,20 @@ void EditorPanels::add_visualizations(ui::Panel& p, ui::Stack& col, double toggl
   minimap->set_rect(minimap_rect_);
 }
 
-namespace {
 /// The top row of the timeline: play, previous / next keyframe, the time label.
-void transport_row(ui::Panel& p, ui::Stack& col, ui::Button*& play, ui::Button*& prev, ui::Button*& next,
-                   ui::Label*& time) {
+void EditorPanels::add_transport_row(ui::Panel& p, ui::Stack& col) {
   using namespace ui;
   const Theme& t = p.theme();
   Stack top(col.next(t.row_height), t.gap, Stack::Axis::Horizontal);
   play = &p.add<Button>("play", "", Icon::Play);
   play->set_rect(top.next(120));
-  prev = &p.add<Button>("prev_key", "\u2190 Key");
-  prev->set_rect(top.next(220));
-  next = &p.add<Button>("next_key", "Key \u2192");
-  next->set_rect(top.next(220));
+  prev_key = &p.add<Button>("prev_key", "\u2190 Key");
+  prev_key->set_rect(top.next(220));
+  next_key = &p.add<Button>("next_key", "Key \u2192");
+  next_key->set_rect(top.next(220));
   time = &p.add<Label>("time", "", Label::Role::Body, Align::Right, true);
   time->set_rect(top.rest());
 }
-}  // namespace
 
 void EditorPanels::build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames) {
   using namespace ui;
@@ -189,68 +158,38 @@ void EditorPanels::build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts
   Panel& p = *timeline;
   const Theme& t = p.theme();
   Stack col(Rect{0, 0, kTimelineW, kTimelineH}.inset(40.0), t.gap);
-  transport_row(p, col, play, prev_key, next_key, time);
+  add_transport_row(p, col);
   strip = &p.add<TimelineStrip>("strip", static_cast<int>(frames));
   strip->set_rect(col.next(220));
   add_visualizations(p, col, t.row_height, false);
 }
 
-void EditorPanels::build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames) {
-  using namespace ui;
-  timeline = std::make_unique<Panel>(kTimelinePanelId, kDeskTimelineW, kDeskTimelineH, glm::dvec2(0.5, 0.12), fonts);
-  {
-    Panel& p = *timeline;
-    Stack col(Rect{0, 0, kDeskTimelineW, kDeskTimelineH}.inset(40.0), p.theme().gap);
-    transport_row(p, col, play, prev_key, next_key, time);
-    strip = &p.add<TimelineStrip>("strip", static_cast<int>(frames));
-    strip->set_rect(col.rest());
-  }
-  views = std::make_unique<Panel>(kViewsPanelId, kDeskViewsW, kDeskViewsH, glm::dvec2(0.2, 0.26), fonts);
-  {
-    Panel& p = *views;
-    Stack col(Rect{0, 0, kDeskViewsW, kDeskViewsH}.inset(40.0), p.theme().gap);
-    add_visualizations(p, col, p.theme().row_height, true);
-  }
-  hud = std::make_unique<Panel>(kHudPanelId, kDeskHudW, kDeskHudH, glm::dvec2(0.4, 0.03), fonts);
-  {
-    Panel& p = *hud;
-    const Rect inner = Rect{0, 0, kDeskHudW, kDeskHudH}.inset(24.0, 10.0);
-    hud_line = &p.add<Label>("hud_line", "", Label::Role::Small, Align::Centre);
-    hud_line->set_rect(split_rows(inner, 2, 0, 2.0));
-    hud_message = &p.add<Label>("hud_message", "", Label::Role::Small, Align::Centre, true);
-    hud_message->set_rect(split_rows(inner, 2, 1, 2.0));
+void EditorPanels::show_values(EffectType type, std::span<const double> v) {
+  ui::Widget* w = effect_widgets[static_cast<std::size_t>(type)];
+  if (w->pressed()) return;  // it shows its own value while dragged
+  switch (type) {
+    case EffectType::Tint: {
+      const glm::dvec2 hs = ui::hue_sat_from_tint_gain({v[0], v[1], v[2]});
+      if (glm::length(hs - glm::dvec2(tint->hue(), tint->sat())) > 1e-6) tint->set_hue_sat(hs.x, hs.y);
+      break;
+    }
+    case EffectType::Vignette: vignette->set_value({v[0], v[1]}); break;
+    case EffectType::Blur: blur->set_value(v[0]); break;
+    case EffectType::Exposure: exposure->set_value(v[0]); break;
+    case EffectType::Saturation: saturation->set_value(v[0]); break;
+    case EffectType::Contrast: contrast->set_value(v[0]); break;
   }
 }
 
-void EditorPanels::set_viewport(const DesktopViewport& v) {
-  viewport_ = v;
-  if (layout != PanelLayout::Desktop) return;
-  const double s = desktop_ui_scale(v);
-  const auto put = [&](ui::Panel& p, PanelPlacement& place, const ScreenRect& r) {
-    glm::dvec2 size;
-    const PanelPlacement want = desktop_placement(v, r, kDeskDistanceM, &size);
-    if (place.anchor != Anchor::World) place = want;  // a locked timeline stays where it is
-    p.set_size_m(size);
-    p.set_render_scale(s);
-  };
-  put(*effect, effect_place, screen_rect(kEffectPanelId));
-  put(*timeline, timeline_place, screen_rect(kTimelinePanelId));
-  put(*views, views_place, screen_rect(kViewsPanelId));
-  put(*hud, hud_place, screen_rect(kHudPanelId));
-}
-
-ScreenRect EditorPanels::screen_rect(std::string_view id) const {
-  if (layout != PanelLayout::Desktop) return {};
-  const DesktopViewport& v = viewport_;
-  const double s = desktop_ui_scale(v);
-  const auto px = [&](int layout_px) { return static_cast<int>(std::lround(layout_px * s)); };
-  const int m = kDeskMargin;
-  if (id == kEffectPanelId) return {m, m, px(kDeskEffectW), px(kDeskEffectH)};
-  if (id == kTimelinePanelId)
-    return {v.width - m - px(kDeskTimelineW), v.height - m - px(kDeskTimelineH), px(kDeskTimelineW), px(kDeskTimelineH)};
-  if (id == kViewsPanelId) return {v.width - m - px(kDeskViewsW), m, px(kDeskViewsW), px(kDeskViewsH)};
-  if (id == kHudPanelId) return {(v.width - px(kDeskHudW)) / 2, m, px(kDeskHudW), px(kDeskHudH)};
-  return {};
+std::vector<double> EditorPanels::values_of(EffectType type, const ui::Event& e) {
+  switch (type) {
+    case EffectType::Tint: {
+      const Eigen::Vector3d g = ui::tint_gain_from_hue_sat(e.new_value.x, e.new_value.y);
+      return {g[0], g[1], g[2]};
+    }
+    case EffectType::Vignette: return {e.new_value.x, e.new_value.y};
+    default: return {e.new_value.x};
+  }
 }
 
 void EditorPanels::show_effect(EffectType type) {

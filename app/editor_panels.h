@@ -23,6 +23,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -94,6 +95,13 @@ class EditorPanels {
   ScreenRect screen_rect(std::string_view panel_id) const;
   /// Shows only the current effect's widget and selects it in the menu.
   void show_effect(effects::EffectType type);
+  /// Shows an effect's values (flat, EffectSpec layout) on its widget; a widget the pointer holds
+  /// keeps its own value, and the wheel keeps its hue and saturation unless the gains moved
+  /// them (tint normalisation would nudge a held wheel).
+  void show_values(effects::EffectType type, std::span<const double> values);
+  /// The values (flat, EffectSpec layout) an event of effect `type`'s widget sets: the slider's
+  /// value, the pad's two, the wheel's hue and saturation as normalised tint gains.
+  static std::vector<double> values_of(effects::EffectType type, const ui::Event& event);
   /// Every panel, in hit-test order.
   std::vector<ui::Panel*> all();
   /// The panel with this id, or null.
@@ -115,6 +123,13 @@ class EditorPanels {
   ui::MenuList* menu = nullptr;
   //! One widget per effect, indexed by EffectType; only the current one has a rectangle.
   std::array<ui::Widget*, effects::kEffectCount> effect_widgets{};
+  // The same, typed.
+  ui::Slider1D* blur = nullptr;
+  ui::ColourWheel* tint = nullptr;
+  ui::Slider1D* exposure = nullptr;
+  ui::Slider1D* saturation = nullptr;
+  ui::Slider1D* contrast = nullptr;
+  ui::Pad2D* vignette = nullptr;
   ui::Button* undo = nullptr;
   ui::Button* redo = nullptr;
   ui::Button* delete_nearest = nullptr;  //!< deletes the selected keyframe, else the nearest
@@ -147,6 +162,7 @@ class EditorPanels {
   void build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames);
   void build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames);
   void add_visualizations(ui::Panel& p, ui::Stack& col, double toggles_h, bool stacked);
+  void add_transport_row(ui::Panel& p, ui::Stack& col);
 
   DesktopViewport viewport_;
   ui::Rect effect_widget_rect_;

@@ -26,6 +26,7 @@
 #include "io/video_source.h"
 #include "xr/compositor.h"
 #include "xr/flare_gl.h"
+#include "xr/grain_gl.h"
 #include "xr/gl_context.h"
 #include "xr/input_backend.h"
 #include "xr/param_grid.h"
@@ -65,11 +66,6 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-effects::Direction head_direction(const xr::InputState& in) {
-  const glm::dvec3 f = xr::forward(in.head);
-  return effects::from_unit(Eigen::Vector3d(f.x, f.y, f.z));
-}
-
 }  // namespace
 
 struct FrameLoop::Impl {
@@ -81,6 +77,7 @@ struct FrameLoop::Impl {
   std::unique_ptr<GlfwInputGlue> glue;
   std::unique_ptr<xr::Compositor> compositor;
   std::unique_ptr<xr::FlareGl> flare;  //!< the client's flares, drawn after the effects
+  std::unique_ptr<xr::GrainGl> grain;  //!< the client's grain, drawn after the flares
   xr::MirrorMode mirror = xr::MirrorMode::Desktop;
   std::optional<glm::dvec2> cursor;  //!< the last cursor position the window reported
 
@@ -114,6 +111,7 @@ struct FrameLoop::Impl {
     cc.blur = o.blur;
     compositor = std::make_unique<xr::Compositor>(cc);
     flare = std::make_unique<xr::FlareGl>();
+    grain = std::make_unique<xr::GrainGl>();
     mirror = o.mirror;
   }
 
@@ -135,9 +133,7 @@ struct FrameLoop::Impl {
   /// Uploads the shown frame as it is decoded.
   void upload(FrameLoopStats& stats) {
     const auto t0 = Clock::now();
-    cv::Mat bgr;
-    cv::cvtColor(shown->image, bgr, cv::COLOR_RGB2BGR);
-    compositor->set_video_frame(bgr);
+    compositor->set_video_frame(shown->picture);  // as decoded: the GPU converts Y'CbCr
     stats.add_cpu("upload", ms_since(t0));
     uploaded_any = true;
   }
@@ -261,7 +257,7 @@ struct FrameLoop::Impl {
       FrameInfo info;
       info.loop_frame = n;
       info.display_time_ns = t;
-      info.head_forward = head_direction(in);
+      info.head_forward = xr::forward_direction(in.head);
       info.shown_video_frame = shown ? shown->index : -1;
       client.update(in, t, info);
       if (info.request_exit) quit = true;
@@ -303,9 +299,14 @@ struct FrameLoop::Impl {
       const auto flares_t0 = Clock::now();
       flare->set_layouts(client.unaltered() ? std::vector<effects::FlareLayout>{}
                                             : client.flares(in.head, param_frame,
-                                                            shown ? shown->image : cv::Mat()));
+                                                            shown ? &shown->picture : nullptr));
       stats.add_cpu("flares", ms_since(flares_t0));
-      const std::array<xr::EyeLayer*, 1> layers{flare.get()};
+      // Grain: laid out once per frame (pattern from the display time), drawn into both eyes.
+      const auto grains_t0 = Clock::now();
+      grain->set_layers(client.unaltered() ? std::vector<effects::GrainFrame>{}
+                                           : client.grains(in.head, t, param_frame));
+      stats.add_cpu("grains", ms_since(grains_t0));
+      const std::array<xr::EyeLayer*, 2> layers{flare.get(), grain.get()};
 
       const std::vector<xr::QuadLayer> quads = client.quads();
       if (mirror == xr::MirrorMode::Desktop) {

@@ -2,12 +2,15 @@
 /// @brief Player: playhead, keys, and the sidecar's interpolated effects.
 #include "app/player.h"
 
+#include "io/ycbcr.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "app/flare_set_of.h"
+#include "app/grain_set_of.h"
 #include "effects/effect_shaders.h"
 #include "io/input_error.h"
 
@@ -27,6 +30,7 @@ effects::StackInterpolator make_interpolator(const io::Sidecar& s) {
 Player::Player(const io::Sidecar& sidecar, const io::VideoProperties& video, PlayerOptions options)
     : interp_(make_interpolator(sidecar)),
       flares_(flare_set_of(sidecar)),
+      grains_(grain_set_of(sidecar)),
       playhead_(video.fps, std::max<std::int64_t>(video.frames, 1), options.loop),
       options_(options),
       mode_(options.mode) {
@@ -94,10 +98,20 @@ effects::StackParams Player::params(const effects::Direction& direction, std::in
 }
 
 std::vector<effects::FlareLayout> Player::flares(const xr::Pose& head, std::int64_t frame,
-                                                 const cv::Mat& frame_rgb) {
+                                                 const io::Picture* picture) {
   if (flares_.empty()) return {};
-  if (flares_.uses_auto_light() && !frame_rgb.empty()) flares_.observe(frame, frame_rgb);
+  // An auto light looks at each video frame once (converted to RGB on the CPU only then).
+  if (flares_.uses_auto_light() && picture && frame != observed_frame_) {
+    flares_.observe(frame, io::to_rgb(*picture, io::PixelFormat::RgbF32));
+    observed_frame_ = frame;
+  }
   return flares_.layouts({xr::position_of(head), xr::rotation_of(head)}, frame);
+}
+
+std::vector<effects::GrainFrame> Player::grains(const xr::Pose& head, std::int64_t display_time_ns,
+                                                std::int64_t frame) {
+  if (grains_.empty()) return {};
+  return grains_.layout({xr::position_of(head), xr::rotation_of(head)}, display_time_ns, frame);
 }
 
 std::string Player::status_line() const {

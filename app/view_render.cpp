@@ -6,9 +6,11 @@
 #include <stdexcept>
 
 #include "app/flare_set_of.h"
+#include "app/grain_set_of.h"
 #include "effects/distortion_mesh.h"
 #include "effects/effect_shaders.h"
 #include "effects/flare_render.h"
+#include "effects/grain_render.h"
 #include "effects/stack_interpolator.h"
 #include "effects/view_camera.h"
 #include "io/frame_decoder.h"
@@ -16,6 +18,7 @@
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
 #include "xr/flare_gl.h"
+#include "xr/grain_gl.h"
 #include "xr/gl_context.h"
 #include "xr/param_grid.h"
 #include "xr/render_view.h"
@@ -148,7 +151,23 @@ std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input
   return flares.layouts(head, frame);
 }
 
+/// The sidecar's grain layers for a head pose at `frame`, at the request's display time (by
+/// default the frame's own start, so a frame always shows the same grain: docs/grain.md).
+std::vector<effects::GrainFrame> view_grains(const io::Sidecar& sidecar, const effects::HeadPose& head,
+                                             const RenderRequest& r) {
+  if (sidecar.grains.empty()) return {};
+  effects::GrainSet grains = grain_set_of(sidecar);
+  const std::int64_t t = r.display_time_ns.value_or(effects::frame_display_time_ns(r.frame, sidecar.video.fps));
+  return grains.layout(head, t, r.frame);
+}
+
 }  // namespace
+
+std::optional<std::size_t> first_gpu_only_grain(const io::Sidecar& sidecar) {
+  for (std::size_t i = 0; i < sidecar.grains.size(); ++i)
+    if (effects::is_volumetric(sidecar.grains[i].style)) return i;
+  return std::nullopt;
+}
 
 cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
                        const RenderRequest& r) {
@@ -169,6 +188,7 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
                     Eigen::Vector3d((r.eye == xr::Eye::Left ? -0.5 : 0.5) * r.hmd->ipd_m, 0.0, 0.0);
   const std::vector<effects::FlareLayout> flares =
       view_flares(input, sidecar, equirect, head, r.frame);
+  const std::vector<effects::GrainFrame> grains = view_grains(sidecar, head, r);
 
   if (r.gpu) {
     auto context = xr::GlContext::create({});
@@ -180,7 +200,9 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
     options.blur = r.blur;
     xr::FlareGl flare_layer;
     flare_layer.set_layouts(flares);
-    const std::array<xr::EyeLayer*, 1> layers{&flare_layer};
+    xr::GrainGl grain_layer;
+    grain_layer.set_layers(grains);
+    const std::array<xr::EyeLayer*, 2> layers{&flare_layer, &grain_layer};
     options.layers = layers;
     unsigned mask = effects::non_neutral_mask(view_params);
     std::optional<xr::ParamGrid> grid;
@@ -211,6 +233,12 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
     rendered = effects::render_view(sampler, camera, at, effects::RenderMode::Pixel);
   }
   effects::add_flares(rendered, camera, view.position, flares);
+  for (const effects::GrainFrame& g : grains) {
+    if (effects::is_volumetric(g.style))
+      throw std::invalid_argument("grain style " + std::string(effects::grain_style_name(g.style)) +
+                                  " renders on the GPU only (--gpu)");
+    effects::composite_shader_grain(rendered, g, view.orientation, view.position, view.tangents());
+  }
   if (eye && r.distortion.method != xr::DistortionMethod::None)
     rendered = predistort_cpu(rendered, eye->lens, r.distortion);
   return effects::to_rgb8(rendered);

@@ -31,7 +31,14 @@ struct RenderRequest {
   std::optional<xr::HmdProfile> hmd;
   xr::Eye eye = xr::Eye::Left;
   xr::DistortionSettings distortion{xr::DistortionMethod::None};
+  /// Display time that picks the grain pattern (docs/grain.md); default the frame's start,
+  /// effects::frame_display_time_ns(frame, fps).
+  std::optional<std::int64_t> display_time_ns;
 };
+
+/// Index (in Sidecar::grains) of the first grain effect with no CPU reference (a volumetric
+/// style: object_cloud, free_cloud), which `vdfx render` draws only with --gpu.
+std::optional<std::size_t> first_gpu_only_grain(const io::Sidecar& sidecar);
 
 /// Frame `frame` of a video or still as RGB float, display-encoded. Throws io::InputError naming
 /// the file when it is missing, unreadable, or has no such frame.

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "effects/flare.h"
+#include "effects/head_pose.h"
 
 namespace vdfx::effects {
 
@@ -85,13 +86,6 @@ std::span<const RingSpec> ring_table();  //!< kMaxFlareRings rows
 /// Glare core and halo: angular radii and levels.
 inline constexpr double kGlareCoreDeg = 4.0;
 inline constexpr double kGlareHaloDeg = 18.0;
-
-/// The head (cyclopean) pose: position and head-to-world rotation (columns: right, up, back).
-struct HeadPose {
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d forward() const { return -orientation.col(2); }
-};
 
 /// The layout of one flare, or nullopt when it adds nothing (intensity x fade is 0, or the light
 /// is not in front of the gaze). `light` need not be normalised (non-zero).

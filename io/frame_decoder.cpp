@@ -14,7 +14,7 @@ std::unique_ptr<FrameDecoder> open_frame_decoder(const std::filesystem::path& pa
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path.string() + ": is a folder, not a video or image");
   if (is_still_image_path(path)) return create_still_decoder(path, options);
-  return create_opencv_decoder(path, options);
+  return create_libav_decoder(path, options);
 }
 
 }  // namespace vdfx::io

@@ -5,6 +5,7 @@
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/sidecar_flare.h"
+#include "io/sidecar_grain.h"
 #include "io/sidecar_validate.h"
 
 namespace vdfx::io {
@@ -50,6 +51,7 @@ ordered ordered_document(const Sidecar& s) {
     effects_json.push_back(std::move(e));
   }
   for (const effects::FlareEffect& f : s.flares) effects_json.push_back(flare_to_json(f));
+  for (const effects::GrainEffect& g : s.grains) effects_json.push_back(grain_to_json(g));
   doc["effects"] = std::move(effects_json);
   return doc;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "effects/flare.h"
+#include "effects/grain.h"
 #include "effects/keyframe.h"
 
 namespace vdfx::io {
@@ -32,6 +33,9 @@ struct Sidecar {
   /// "type": "flare" entries of "effects", in file order (any number; written after the stack
   /// effects: a flare is drawn after the whole stack whatever its place in the file).
   std::vector<effects::FlareEffect> flares;
+  /// "type": "grain" entries, in file order (any number; written after the flares: grain is
+  /// drawn after the stack and the flare whatever its place in the file).
+  std::vector<effects::GrainEffect> grains;
   bool operator==(const Sidecar&) const = default;
 };
 

@@ -158,6 +158,14 @@ class Checker {
   std::vector<Problem>& out_;
 };
 
+/// True when an "effects" entry is an object whose "type" is the string `type` (which reader
+/// takes it: the extension types have readers of their own).
+inline bool has_type(const json& entry, const char* type) {
+  if (!entry.is_object()) return false;
+  const auto t = entry.find("type");
+  return t != entry.end() && t->is_string() && t->get<std::string>() == type;
+}
+
 /// An effect's "interpolation" override object (format 1's checks).
 void read_interpolation_settings(Checker& c, const json& v, const std::string& ptr,
                                  effects::InterpolationSettings& out);

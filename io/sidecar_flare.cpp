@@ -185,11 +185,7 @@ void read_keyframes(Checker& c, const json& v, const std::string& ptr,
 
 }  // namespace
 
-bool is_flare_entry(const nlohmann::json& entry) {
-  if (!entry.is_object()) return false;
-  const auto t = entry.find("type");
-  return t != entry.end() && t->is_string() && t->get<std::string>() == kFlareTypeName;
-}
+bool is_flare_entry(const nlohmann::json& entry) { return detail::has_type(entry, kFlareTypeName); }
 
 nlohmann::ordered_json flare_to_json(const effects::FlareEffect& f) {
   ordered e;

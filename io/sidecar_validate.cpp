@@ -13,6 +13,7 @@
 #include "io/json_text.h"
 #include "io/sidecar_checker.h"
 #include "io/sidecar_flare.h"
+#include "io/sidecar_grain.h"
 
 namespace vdfx::io {
 
@@ -157,7 +158,7 @@ std::string known_types() {
   std::string s;
   for (const auto& spec : effects::all_effect_specs())
     s += (s.empty() ? "" : ", ") + std::string(spec.name);
-  return s + ", " + kFlareTypeName;
+  return s + ", " + kFlareTypeName + ", " + kGrainTypeName;
 }
 
 void read_effect(Checker& c, const json& v, const std::string& ptr, std::optional<std::int64_t> frames,
@@ -258,6 +259,8 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
         // Extension types (several may coexist) have readers of their own.
         if (is_flare_entry((*p)[i]))
           read_flare(c, (*p)[i], ep, frames, out.flares.emplace_back());
+        else if (is_grain_entry((*p)[i]))
+          read_grain(c, (*p)[i], ep, frames, out.grains.emplace_back());
         else
           read_effect(c, (*p)[i], ep, frames, seen, out.effects.emplace_back());
       }

@@ -57,7 +57,7 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
                                    double dt) {
   std::vector<Event> events;
   auto emit = [&](const Ref& r, EventKind k, glm::dvec2 o, glm::dvec2 n) {
-    events.push_back({r.panel, r.widget, k, o, n});
+    events.push_back({r.panel, r.widget, k, o, n, widget_of(panels, r)});
   };
   // Runs a change on a widget and reports ValueChanged if its value moved.
   auto change = [&](const Ref& r, Widget& w, auto&& fn) {
@@ -68,6 +68,7 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
 
   // 1. Trigger with hysteresis.
   const bool was_down = down_;
+  was_down_ = down_;
   if (!down_ && in.trigger > settings_.press_threshold) down_ = true;
   else if (down_ && in.trigger < settings_.release_threshold) down_ = false;
 

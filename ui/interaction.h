@@ -72,6 +72,9 @@ class Pointer {
 
   /// Trigger state after hysteresis.
   bool trigger_down() const { return down_; }
+  /// The trigger went down / up in the last update.
+  bool trigger_pressed() const { return down_ && !was_down_; }
+  bool trigger_released() const { return !down_ && was_down_; }
   /// Current hit (nullopt when the ray misses every panel).
   const std::optional<PanelHit>& hit() const { return hit_; }
   /// Panel and widget ids under the pointer / held / focused ("" when none).
@@ -93,6 +96,7 @@ class Pointer {
 
   PointerSettings settings_;
   bool down_ = false;
+  bool was_down_ = false;  //!< down_ before the last update
   std::optional<PanelHit> hit_;
   Ref hover_, press_, focus_;
   glm::dvec2 drag_start_value_{0.0};

@@ -33,12 +33,16 @@ enum class EventKind {
 /// Values are two numbers wide so one event type fits every widget: Slider1D (value, 0),
 /// Pad2D (x, y), ColourWheel (hue_deg, sat), Toggle (0/1, 0), MenuList (index, 0),
 /// TimelineStrip (frame, 0). A DragBegin/DragEnd pair brackets one undo step.
+class Widget;
+
 struct Event {
   std::string panel;
   std::string widget;
   EventKind kind = EventKind::Clicked;
   glm::dvec2 old_value{0.0};
   glm::dvec2 new_value{0.0};
+  /// The widget itself: programs match events against the widgets they hold (typed), not ids.
+  const Widget* source = nullptr;
 };
 
 struct DrawContext {

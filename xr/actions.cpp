@@ -96,6 +96,11 @@ InputState neutral_input_state(std::int64_t t_ns) {
 
 glm::dvec3 forward(const Pose& pose) { return glm::normalize(pose.orientation * glm::dvec3(0.0, 0.0, -1.0)); }
 
+effects::Direction forward_direction(const Pose& pose) {
+  const glm::dvec3 f = forward(pose);
+  return effects::from_unit(Eigen::Vector3d(f.x, f.y, f.z));
+}
+
 glm::dquat look_rotation(double azimuth_deg, double altitude_deg) {
   // Yaw about +y (a positive angle turns -z towards -x, i.e. left, hence the minus), then pitch
   // about the turned +x (a positive angle lifts -z towards +y).

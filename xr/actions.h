@@ -26,6 +26,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "effects/coords.h"
 #include "xr/pose.h"
 
 namespace vdfx::xr {
@@ -126,6 +127,8 @@ InputState neutral_input_state(std::int64_t t_ns);
 
 /// The forward direction (-z) of a pose, unit length.
 glm::dvec3 forward(const Pose& pose);
+/// Where a pose looks, as the contract's azimuth and altitude (the head's view direction).
+effects::Direction forward_direction(const Pose& pose);
 
 /// Orientation looking at azimuth/altitude (degrees, contract conventions: azimuth positive to the
 /// right, altitude positive up), no roll.

@@ -58,6 +58,8 @@ class Compositor {
   ~Compositor();
 
   void set_video_frame(const cv::Mat& equirect);
+  /// A decoded frame as it is (Y'CbCr converted on the GPU: VideoLayerGl::set_frame).
+  void set_video_frame(const io::Picture& picture);
   /// Per-pixel mode's parameter grid (uploaded as float textures; used by eyes with per_pixel).
   void set_param_grid(const ParamGrid& grid);
   /// Renders one eye (0 left, 1 right). Quads are placed with Session::to_local(head_in_local).

@@ -22,7 +22,7 @@ void main() {
   const vec2 corners[6] = vec2[6](vec2(-0.5, -0.5), vec2(0.5, -0.5), vec2(0.5, 0.5),
                                   vec2(-0.5, -0.5), vec2(0.5, 0.5), vec2(-0.5, 0.5));
   vec2 c = corners[gl_VertexID];
-  v_uv = c + 0.5;
+  v_uv = vec2(c.x + 0.5, 0.5 - c.y);  // the texture's first row at the quad's top
   gl_Position = u_mvp * vec4(c, 0.0, 1.0);
 }
 )";
@@ -106,7 +106,7 @@ void Compositor::Impl::quads(const GlTarget& target, const RenderView& view,
   if (layers.empty()) return;
   target.bind();
   glEnable(GL_BLEND);
-  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over" (OpenXR's quad layers)
   quad_program.use();
   glBindVertexArray(vao);
   glActiveTexture(GL_TEXTURE0);
@@ -145,6 +145,7 @@ Compositor::~Compositor() {
 }
 
 void Compositor::set_video_frame(const cv::Mat& equirect) { impl_->video.set_frame(equirect); }
+void Compositor::set_video_frame(const io::Picture& picture) { impl_->video.set_frame(picture); }
 void Compositor::set_param_grid(const ParamGrid& grid) { impl_->stack.set_param_grid(grid); }
 
 void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLayer> quads,

@@ -51,12 +51,8 @@ struct Fixture {
   void step(const xr::InputState& in) { client.update(sync.sync(in), in.t_ns, info); }
 };
 
-// What the GL texture must show: the panel, straight alpha, bottom row first.
-cv::Mat expected_texture(ui::Panel& p) {
-  cv::Mat out(p.texture_height(), p.texture_width(), CV_8UC4);
-  unpremultiply_flipped(p.texture(), {0, 0, p.texture_width(), p.texture_height()}, out);
-  return out;
-}
+// What the GL texture must show: the panel's own pixels (premultiplied, first row at the top).
+cv::Mat expected_texture(ui::Panel& p) { return p.texture(); }
 
 TEST(EditClient, QuadsAtPanelPosesUploadOnlyWhenPanelsRerender) {
   Fixture f;
@@ -186,27 +182,6 @@ TEST(EditClient, PlayheadReachesTheLoop) {
   f.step(test::looking(0.0, 0.0, 1));
   EXPECT_EQ(f.info.video_frame, 42);
   EXPECT_NE(f.client.status_line().find("42"), std::string::npos);
-}
-
-struct UnpremultiplyCase {
-  cv::Vec4b premultiplied, straight;
-};
-
-TEST(EditClient, UnpremultiplyFlipped) {
-  const UnpremultiplyCase cases[] = {
-      {{255, 128, 0, 255}, {255, 128, 0, 255}},  // opaque: unchanged
-      {{0, 0, 0, 0}, {0, 0, 0, 0}},              // transparent
-      {{64, 32, 0, 128}, {128, 64, 0, 128}},     // half: colour doubled (rounded)
-      {{10, 10, 10, 10}, {255, 255, 255, 10}},   // faint white
-  };
-  for (const auto& c : cases) {
-    cv::Mat src(2, 1, CV_8UC4, cv::Scalar(1, 2, 3, 255));
-    src.at<cv::Vec4b>(0, 0) = c.premultiplied;  // top row
-    cv::Mat out(2, 1, CV_8UC4, cv::Scalar(0, 0, 0, 0));
-    unpremultiply_flipped(src, {0, 0, 1, 1}, out);
-    EXPECT_EQ(out.at<cv::Vec4b>(1, 0), c.straight);            // lands in the bottom row
-    EXPECT_EQ(out.at<cv::Vec4b>(0, 0), cv::Vec4b(0, 0, 0, 0));  // outside the rectangle: untouched
-  }
 }
 
 }  // namespace

@@ -44,7 +44,7 @@ class GrabMinimap : public ::testing::TestWithParam<Case> {};
 
 TEST_P(GrabMinimap, FieldFollowsTheHeldKeyframe) {
   EditorOptions eo;
-  eo.async_visualizations = GetParam().async;
+  eo.visuals.async = GetParam().async;
   Editor ed(forty_keyframes(), DocumentOptions{{.async = false}}, eo);
   ed.seek(30);
   std::int64_t t = 0;

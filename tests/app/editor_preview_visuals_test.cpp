@@ -64,7 +64,7 @@ class PreviewVisuals : public ::testing::TestWithParam<Case> {
  protected:
   void SetUp() override {
     EditorOptions eo;
-    eo.async_visualizations = GetParam().async;
+    eo.visuals.async = GetParam().async;
     ed_ = std::make_unique<Editor>(thirty_keyframes(), DocumentOptions{{.async = false}}, eo);
     ed_->seek(kFrame);
   }

@@ -151,7 +151,7 @@ TEST(FlarePlayer, FlaresAreLaidOutForTheHeadPoseAndNeedAFrameForAnAutoLight) {
   Player player(*r.sidecar, video);
   xr::Pose head;
   head.position = {0.0, 1.6, 0.0};
-  const auto layouts = player.flares(head, 0, cv::Mat());
+  const auto layouts = player.flares(head, 0, nullptr);
   ASSERT_EQ(layouts.size(), 1u);
   EXPECT_LT(
       (layouts[0].light_point - (Eigen::Vector3d(0, 1.6, 0) + 100.0 * effects::to_unit({5.0, 0.0})))
@@ -159,15 +159,16 @@ TEST(FlarePlayer, FlaresAreLaidOutForTheHeadPoseAndNeedAFrameForAnAutoLight) {
       1e-9);
   // Looking away beyond the fade: nothing.
   head.orientation = glm::angleAxis(glm::radians(60.0), glm::dvec3(0, 1, 0));
-  EXPECT_TRUE(player.flares(head, 0, cv::Mat()).empty());
+  EXPECT_TRUE(player.flares(head, 0, nullptr).empty());
 
   const io::SidecarReport a =
       io::validate_sidecar_text(flare_sidecar("directional", R"("auto")", 1.0), "s");
   Player auto_player(*a.sidecar, video);
-  EXPECT_TRUE(auto_player.flares({}, 0, cv::Mat()).empty());  // no frame yet: no light
-  cv::Mat frame(128, 256, CV_8UC3, cv::Scalar::all(40));
-  cv::circle(frame, cv::Point(128, 64), 2, cv::Scalar::all(255), cv::FILLED);
-  EXPECT_EQ(auto_player.flares({}, 0, frame).size(), 1u);
+  EXPECT_TRUE(auto_player.flares({}, 0, nullptr).empty());  // no frame yet: no light
+  io::Picture frame;  // an RGB picture, as a still decodes
+  frame.rgb = cv::Mat(128, 256, CV_8UC3, cv::Scalar::all(40));
+  cv::circle(frame.rgb, cv::Point(128, 64), 2, cv::Scalar::all(255), cv::FILLED);
+  EXPECT_EQ(auto_player.flares({}, 0, &frame).size(), 1u);
 }
 
 }  // namespace

@@ -72,14 +72,7 @@ TEST(FlareGpu, PlayDrawsThePlayersFlaresIntoBothEyesUnlessUnaltered) {
   flare.keyframes.push_back({{0.0, 0.0}, 0, {1.0}});
   sc.flares.push_back(flare);
   Player player(sc, video->properties());
-  FrameLoopOptions o;
-  o.profile = xr::load_hmd_profile("generic90");
-  o.eye_scale = 0.1;
-  o.window_width = 160;
-  o.window_height = 90;
-  o.visible = false;
-  o.mirror = xr::MirrorMode::PreDistorted;  // both eyes are rendered (and read below)
-  o.decode_timeout = std::chrono::seconds(5);
+  FrameLoopOptions o = test::small_hidden_loop();
   o.script = [](std::int64_t n) {
     return n == 2 ? std::vector<xr::DesktopEvent>{xr::KeyEvent{xr::Key::U, true}}
                   : std::vector<xr::DesktopEvent>{};

@@ -97,7 +97,11 @@ TEST(PointingGl, APressAtTheDrawnCentreOfEveryWidgetHitsItInEveryMirrorMode) {
   std::vector<xr::QuadLayer> quads;
   for (std::size_t i = 0; i < panels.size(); ++i) {
     textures.emplace_back(images[i].cols, images[i].rows, xr::TexFormat::RGBA8);
-    textures.back().upload(images[i]);
+    // Quads take their texture's first row as their top; GlTexture::upload puts an image's last
+    // row first (GL's image convention), so the image goes up flipped.
+    cv::Mat first_row_first;
+    cv::flip(images[i], first_row_first, 0);
+    textures.back().upload(first_row_first);
     textures.back().set_sampling(false, false);  // exact colours: no blending between ids
     xr::QuadLayer q;
     q.pose = panels[i]->pose();

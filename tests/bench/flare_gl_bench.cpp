@@ -17,11 +17,11 @@
 #include <vector>
 
 #include "app/bench_flare_setup.h"
-#include "app/bench_inputs.h"
 #include "effects/auto_light.h"
 #include "effects/effect_shaders.h"
 #include "effects/flare_layout.h"
 #include "gl_bench_support.h"
+#include "play_eye_fixture.h"
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
 #include "xr/flare_gl.h"
@@ -34,52 +34,25 @@ namespace {
 using namespace vdfx;
 using namespace vdfx::xr;
 
-using app::bench::synthetic_frame;
+using bench::head_at;
+using bench::synthetic_frame;
+
+const effects::Direction kLook = app::bench::kFlareLook, kLight = app::bench::kFlareLight;
 
 effects::FlareLayout layout(effects::FlareStyle style, int rings) {
   return app::bench::flare_layout(style, rings);
 }
 
-struct Fixture {
-  std::unique_ptr<GlContext> ctx;
-  std::string error;
-  std::unique_ptr<Compositor> comp;
+/// The play frame's left eye (bench::PlayEye) and the flare layer.
+struct Fixture : bench::PlayEye {
   std::unique_ptr<FlareGl> flare;
-  std::array<RenderView, 2> eyes;
-  effects::StackParams params;
-  unsigned mask = 0;
-  double frame_ms = 0.0;  //!< left eye without a flare, median of 7
+  Fixture() : PlayEye(head_at(kLook)) {
+    if (ctx) flare = std::make_unique<FlareGl>();
+  }
 };
 
 Fixture& fixture() {
-  static Fixture fx = [] {
-    Fixture f;
-    try {
-      f.ctx = GlContext::create();
-    } catch (const GlError& e) {
-      f.error = e.what();
-      return f;
-    }
-    const HmdProfile profile = load_hmd_profile("generic90");
-    CompositorConfig c;
-    c.eye_width = profile.eye(Eye::Left).width;
-    c.eye_height = profile.eye(Eye::Left).height;
-    c.lens = effects::LensModel(profile.lens);
-    c.distortion.method = DistortionMethod::Mesh;
-    c.distortion.mesh_n = 65;
-    f.comp = std::make_unique<Compositor>(c);
-    f.comp->set_video_frame(synthetic_frame());
-    f.flare = std::make_unique<FlareGl>();
-    const auto views = locate_eye_views(app::bench::flare_head(), profile);
-    for (int e = 0; e < 2; ++e)
-      f.eyes[static_cast<std::size_t>(e)] = render_view(views[static_cast<std::size_t>(e)]);
-    f.params.exposure_stops = 0.5;
-    f.mask = effects::non_neutral_mask(f.params);
-    const auto eye = [&] { f.comp->render_eye(0, {f.eyes[0], f.params, f.mask}); };
-    eye();  // compiles the shaders
-    f.frame_ms = bench::median_wall_ms(7, eye);
-    return f;
-  }();
+  static Fixture fx;
   return fx;
 }
 
@@ -109,19 +82,9 @@ void BM_GlFlareEye(benchmark::State& s) {
   const std::array<EyeLayer*, 1> layers{f.flare.get()};
   const auto eye = [&](bool with) {
     f.flare->set_layouts(with ? flares : std::vector<effects::FlareLayout>{});
-    return finished_wall_ms([&] {
-      f.comp->render_eye(0, {f.eyes[0], f.params, f.mask, false, layers});
-    });
+    return f.left_eye_ms(layers);
   };
-  eye(true);
-  std::vector<double> with, without;
-  for (auto _ : s) {
-    without.push_back(eye(false));
-    with.push_back(eye(true));
-    s.SetIterationTime(with.back() * 1e-3);
-  }
-  s.counters["without_ms"] = bench::median(without);
-  s.counters["x_no_flare"] = bench::median(with) / bench::median(without);
+  bench::interleaved_eye(s, eye, "x_no_flare");
 }
 
 /// The flare layer alone (into the eye buffer), directional style, against the ring count.
@@ -138,10 +101,10 @@ void BM_GlFlareLayerRings(benchmark::State& s) {
 
 /// CPU, once per frame: the layout of one flare from the head pose.
 void BM_FlareLayout(benchmark::State& s) {
-  const Pose h = app::bench::flare_head();
+  const Pose h = head_at(kLook);
   const effects::HeadPose head{position_of(h), rotation_of(h)};
   const effects::FlareSettings settings;
-  const Eigen::Vector3d l = effects::to_unit(app::bench::kFlareLight);
+  const Eigen::Vector3d l = effects::to_unit(kLight);
   for (auto _ : s)
     benchmark::DoNotOptimize(
         effects::layout_flare(effects::FlareStyle::Directional, settings, head, l, 1.0));

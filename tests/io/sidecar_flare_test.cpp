@@ -9,6 +9,7 @@
 
 #include "io/sidecar.h"
 #include "io/sidecar_validate.h"
+#include "tests/io/sidecar_cases.h"
 #include "tests/test_files.h"
 
 namespace vdfx::io {
@@ -77,12 +78,7 @@ TEST(SidecarFlare, GuideExampleReadsAsWrittenAndFlaresCoexist) {
   EXPECT_TRUE(c.keyframes.empty());
 }
 
-struct BrokenCase {
-  const char* name;
-  std::function<void(json&)> mutate;
-  const char* pointer;
-  const char* message;
-};
+using test::BrokenCase;
 
 // Index 1 is the directional flare, 2 the headset flare on a track.
 const BrokenCase kBroken[] = {
@@ -174,26 +170,9 @@ const BrokenCase kBroken[] = {
      "/effects/1/keyframes/0/azimuth_deg", "out of range"},
 };
 
-void PrintTo(const BrokenCase& c, std::ostream* os) {
-  *os << c.name;
-}
-
 class SidecarFlareBroken : public ::testing::TestWithParam<BrokenCase> {};
 
-TEST_P(SidecarFlareBroken, ReportsPointerAndReason) {
-  const BrokenCase& c = GetParam();
-  json j = json::parse(kValid);
-  c.mutate(j);
-  std::vector<Problem> problems;
-  parse_sidecar(j, "f.vdfx.json", problems);
-  bool found = false;
-  std::string all;
-  for (const Problem& p : problems) {
-    found = found || (p.pointer == c.pointer && p.message.find(c.message) != std::string::npos);
-    all += p.to_string() + "\n";
-  }
-  EXPECT_TRUE(found) << "expected at " << c.pointer << ": " << c.message << "\ngot:\n" << all;
-}
+TEST_P(SidecarFlareBroken, ReportsPointerAndReason) { EXPECT_TRUE(test::reports_as_expected(kValid, GetParam())); }
 
 INSTANTIATE_TEST_SUITE_P(Cases, SidecarFlareBroken, ::testing::ValuesIn(kBroken),
                          [](const auto& info) { return std::string(info.param.name); });
@@ -240,16 +219,7 @@ Sidecar flare_sidecar() {
 
 TEST(SidecarFlare, RoundTripIsExact) {
   const auto dir = test_files::fresh_dir("io/flare_round_trip");
-  const Sidecar s = flare_sidecar();
-  std::vector<Problem> problems;
-  parse_sidecar(to_json(s), "mem", problems);
-  ASSERT_TRUE(problems.empty()) << problems[0].to_string();
-
-  write_sidecar(dir / "a.vdfx.json", s);
-  const Sidecar back = read_sidecar(dir / "a.vdfx.json");
-  EXPECT_EQ(back, s);
-  write_sidecar(dir / "b.vdfx.json", back);
-  EXPECT_EQ(test_files::slurp(dir / "a.vdfx.json"), test_files::slurp(dir / "b.vdfx.json"));
+  test::expect_exact_round_trip(flare_sidecar(), dir);
 }
 
 TEST(SidecarFlare, WrittenInTheGuidesKeyOrderAfterTheStackEffects) {

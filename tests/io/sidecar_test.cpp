@@ -126,7 +126,7 @@ const BrokenCase kBroken[] = {
      "expected an array"},
     {"effect_not_object", [](json& j) { j["effects"][0] = 3; }, "/effects/0", "expected an object"},
     {"unknown_type", [](json& j) { j["effects"][0]["type"] = "sparkle"; }, "/effects/0/type",
-     "unknown effect type \"sparkle\" (known: blur, tint, exposure, saturation, contrast, vignette, flare)"},
+     "unknown effect type \"sparkle\" (known: blur, tint, exposure, saturation, contrast, vignette, flare, grain)"},
     {"type_twice", [](json& j) { j["effects"][2]["type"] = "exposure"; j["effects"][2]["keyframes"] = json::array(); },
      "/effects/2/type", "appears twice (first at /effects/0)"},
     {"missing_type", [](json& j) { j["effects"][0].erase("type"); }, "/effects/0",
