@@ -39,8 +39,8 @@ Registry build_registry(bool quick) {
   add_sampling_knobs(r, quick);
   add_effects_gl_knobs(r, quick);
   add_flare_knobs(r, quick);
-  // Areas still being built elsewhere register here when they land, one line each:
-  //   add_grain_knobs(r, quick);   app/bench_grain_gl.cpp: grain per style against the eye without
+  add_grain_knobs(r, quick);
+  // Areas still to come register here, one line each:
   //   add_decode_knobs(r, quick);  app/bench_decode.cpp: decode against the plain demux loop
   //   add_export_knobs(r, quick);  app/bench_export.cpp: export against the bare encoder
   return r;

@@ -144,6 +144,36 @@ TEST(BenchCommand, GlRowsWithoutADisplayAreListedAsSkippedWithTheReason) {
   EXPECT_NE(r.output.find("skipped: needs GL"), std::string::npos) << r.output;
 }
 
+// The grain knob (GL, run under Xvfb like every GL test): a shader style's GPU layer against the
+// CPU reference is well under one 8-bit step while the grain itself moves the image by several
+// steps (so the comparison compares something); a volumetric style has no reference, says so,
+// and its null errors pass the schema.
+TEST(BenchCommand, GrainRowsCompareTheShaderStylesAndNameTheMissingReference) {
+  const auto dir = test_dir();
+  const auto r = run_vdfx("bench --quick --filter '^grain/' --json " + (dir / "r.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(schema_problem(dir / "r.json"), "");
+  const auto j = nlohmann::json::parse(read_file(dir / "r.json"));
+  ASSERT_EQ(j["rows"].size(), 2u);
+  const auto extra = [](const nlohmann::json& row, const char* name) {
+    return row["extra"].contains(name) ? row["extra"][name].get<double>() : -1.0;
+  };
+  for (const auto& row : j["rows"]) {
+    SCOPED_TRACE(row.dump());
+    ASSERT_EQ(row["status"], "ok");
+    EXPECT_GT(row["time"]["median_s"].get<double>(), 0.0);
+    EXPECT_GT(row["peer"]["median_s"].get<double>(), 0.0);
+    if (row["setting"] == "surface") {
+      EXPECT_LT(row["error"]["max"].get<double>(), 1.0);
+      EXPECT_GT(extra(row, "grain_rms_steps"), 2.0);
+    } else {
+      EXPECT_EQ(row["setting"], "object_cloud");
+      EXPECT_EQ(row["error"]["reference"].get<std::string>().rfind("none", 0), 0u);
+      EXPECT_TRUE(row["error"]["max"].is_null());
+    }
+  }
+}
+
 TEST(BenchCommand, UsageAndInputErrorsUseTheContractsExitCodes) {
   const auto dir = test_dir();
   EXPECT_EQ(run_vdfx("bench --filter '('").exit_code, 2);
