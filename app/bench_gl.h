@@ -9,6 +9,7 @@
 #include <functional>
 #include <opencv2/core.hpp>
 
+#include "app/bench_error.h"
 #include "app/bench_registry.h"
 #include "app/bench_report.h"
 #include "app/bench_timing.h"
@@ -43,11 +44,6 @@ inline constexpr const char* kCopyFloor = "plain textured copy of the eye (memor
 /// in a quick run; the synthetic 4K frame, exposure +0.5, mesh 65 pre-distortion) with `layer`
 /// drawn into it, timed interleaved with the same eye without it.
 PairTimes time_play_eye(const Context& ctx, xr::EyeLayer& layer);
-
-/// Max, RMS (and mean into *mean) of |a - b| over all channels in 8-bit steps (x 255), after
-/// clamping both to [0, 1]; a and b are same-size float images of 3 or 4 channels (only the
-/// first 3 count).
-ErrorStats steps_error(const cv::Mat& a, const cv::Mat& b, double* mean = nullptr);
 
 /// Runs `release` when release_gl_caches() is called (before the GL context is destroyed).
 void on_gl_release(std::function<void()> release);
