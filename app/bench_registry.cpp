@@ -40,9 +40,9 @@ Registry build_registry(bool quick) {
   add_effects_gl_knobs(r, quick);
   add_flare_knobs(r, quick);
   add_grain_knobs(r, quick);
-  // Areas still to come register here, one line each:
-  //   add_decode_knobs(r, quick);  app/bench_decode.cpp: decode against the plain demux loop
-  //   add_export_knobs(r, quick);  app/bench_export.cpp: export against the bare encoder
+  add_decode_knobs(r, quick);
+  add_export_knobs(r, quick);
+  // A new area registers here: one line, its function in its own file (app/bench_registry.h).
   return r;
 }
 

@@ -4,7 +4,7 @@
 /// Each area registers its knobs in its own file (app/bench_rbf.cpp, bench_lens.cpp, ...) through
 /// one function listed in build_registry(); a case fills its row (time, peer time, error, extras).
 /// Adding a knob is a Knob and one add() per setting; adding an area is one more file and one
-/// line in build_registry() (video decode and the exports go there as they land).
+/// line in build_registry().
 #pragma once
 
 #include <functional>
@@ -61,6 +61,8 @@ void add_sampling_knobs(Registry& r, bool quick);    // app/bench_sampling_gl.cp
 void add_effects_gl_knobs(Registry& r, bool quick);  // app/bench_effects_gl.cpp
 void add_flare_knobs(Registry& r, bool quick);       // app/bench_flare_gl.cpp
 void add_grain_knobs(Registry& r, bool quick);       // app/bench_grain_gl.cpp
+void add_decode_knobs(Registry& r, bool quick);      // app/bench_decode.cpp
+void add_export_knobs(Registry& r, bool quick);      // app/bench_export.cpp
 
 /// Every knob with the settings of a quick or a full run, in report order.
 Registry build_registry(bool quick);

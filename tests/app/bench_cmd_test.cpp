@@ -174,6 +174,30 @@ TEST(BenchCommand, GrainRowsCompareTheShaderStylesAndNameTheMissingReference) {
   }
 }
 
+// The video knobs (a generated clip): vdfx's decode path hands on exactly the code values
+// FFmpeg's plain loop decodes, every frame in order; the baked export's grid stays within one
+// 8-bit step of the exact per-pixel render (with a step above 1: the grid is what is compared).
+TEST(BenchCommand, VideoRowsDecodeWhatFFmpegDecodesAndBakeWithinOneStep) {
+  const auto dir = test_dir();
+  const auto r = run_vdfx("bench --quick --filter '^video\\.' --json " + (dir / "r.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(schema_problem(dir / "r.json"), "");
+  const auto j = nlohmann::json::parse(read_file(dir / "r.json"));
+  ASSERT_EQ(j["rows"].size(), 2u);
+  for (const auto& row : j["rows"]) {
+    SCOPED_TRACE(row.dump());
+    ASSERT_EQ(row["status"], "ok");
+    EXPECT_GT(row["peer"]["median_s"].get<double>(), 0.0);
+    if (row["knob"] == "video.decode") {
+      EXPECT_EQ(row["error"]["max"].get<double>(), 0.0);
+    } else {
+      EXPECT_EQ(row["knob"], "video.export");
+      EXPECT_LT(row["error"]["max"].get<double>(), 1.0);
+      EXPECT_GT(row["extra"]["param_step"].get<double>(), 1.0);  // a grid, not the reference
+    }
+  }
+}
+
 TEST(BenchCommand, UsageAndInputErrorsUseTheContractsExitCodes) {
   const auto dir = test_dir();
   EXPECT_EQ(run_vdfx("bench --filter '('").exit_code, 2);
