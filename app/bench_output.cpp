@@ -2,6 +2,7 @@
 /// @brief Markdown, CSV and JSON forms of a bench report.
 #include "app/bench_output.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -86,10 +87,19 @@ void write_markdown(std::ostream& out, const Report& rep) {
       << ", " << m.physical_cores << " cores (" << m.logical_cpus
       << " logical CPUs); GL: " << m.gl_renderer
       << (m.gl_version.empty() ? "" : ", " + m.gl_version) << "\n- build: " << m.build
-      << "; CPU rows single-threaded (OpenCV too), GL rows on the driver's own threads"
+      << "; CPU rows single-threaded (OpenCV too), GL rows on the driver's own threads, video "
+         "rows on the decoder's, the export's and x264's"
       << "\n- started " << m.date_utc << ", took " << format_time(rep.wall_s)
       << "; load average (1 / 5 / 15 min) " << load_text(m.load_start) << " at the start, "
-      << load_text(m.load_end) << " at the end\n\n"
+      << load_text(m.load_end) << " at the end\n";
+  // A load above the CPU count means other work shared the machine: say so where it is read.
+  const double peak_load = std::max(m.load_start[0], m.load_end[0]);
+  if (m.logical_cpus > 0 && peak_load > m.logical_cpus)
+    out << "- **shared machine**: the 1-minute load (up to " << format_number(peak_load)
+        << ") exceeded the " << m.logical_cpus
+        << " logical CPUs, so other work ran beside this one: absolute times are inflated and "
+           "noisy, the ratios to the interleaved peers are what to compare\n";
+  out << "\n"
       << "Times are medians (and 90th percentiles) of wall-clock samples per unit of work; each\n"
          "setting is timed interleaved with its peer, so the ratio holds even on a busy machine.\n"
          "Rows marked * are on the knob's Pareto front (no other setting of the same series, e.g.\n"
