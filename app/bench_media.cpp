@@ -165,9 +165,7 @@ std::int64_t export_clip(const fs::path& clip, const FrameRenderer& render, cons
 }
 
 FrameRenderer baked_renderer(const effects::StackInterpolator& stack) {
-  return [&stack](const io::Picture& p, std::int64_t k) {
-    return io::rgb_to_ycbcr(render_baked(io::to_rgb(p, io::PixelFormat::RgbF32), stack, k), {});
-  };
+  return baked_frame_renderer(stack, {}, {});
 }
 
 FrameRenderer unchanged_renderer() {

@@ -193,11 +193,11 @@ int cmd_export(const Args& args) {
     ps.view_layers = [&](cv::Mat& rgb, const cv::Mat& equirect, const xr::RenderView& view, std::int64_t k) {
       layers->draw(rgb, equirect, view, k);
     };
-  const FrameRenderer render = [&](const io::Picture& src, std::int64_t k) {
-    const cv::Mat rgb = io::to_rgb(src, io::PixelFormat::RgbF32);
-    if (baked) return io::rgb_to_ycbcr(render_baked(rgb, stack, k, bo), es.ycbcr);
-    return io::rgb_to_ycbcr(render_path_frame(rgb, stack, path_view(head, k, props.fps), k, ps), es.ycbcr);
-  };
+  const FrameRenderer render =
+      baked ? baked_frame_renderer(stack, bo, es.ycbcr) : [&](const io::Picture& src, std::int64_t k) {
+        const cv::Mat rgb = io::to_rgb(src, io::PixelFormat::RgbF32);
+        return io::rgb_to_ycbcr(render_path_frame(rgb, stack, path_view(head, k, props.fps), k, ps), es.ycbcr);
+      };
 
   // Signals only set a flag from here on; the guard outlives the temporary file, so the file is
   // gone before the signal is raised again.

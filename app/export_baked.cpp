@@ -10,6 +10,7 @@
 
 #include "effects/coords.h"
 #include "effects/equirect_blur.h"
+#include "io/ycbcr.h"
 
 namespace vdfx::app {
 namespace {
@@ -78,20 +79,69 @@ bool baked_drops_effects(const effects::StackInterpolator& stack) {
   return stack.active(EffectType::Vignette);
 }
 
-cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& stack,
-                     std::int64_t frame, const BakedOptions& options) {
-  const int w = equirect.cols, h = equirect.rows;
-  const int step = baked_param_step(options, w);
-  const std::vector<int> gx = grid_positions(w, step, false), gy = grid_positions(h, step, true);
-  const int cols = static_cast<int>(gx.size());
-  // The exact interpolant on the grid.
-  std::vector<double> grid(gx.size() * gy.size() * kFields);
+BakedGridCache::Grid BakedGridCache::find(const std::vector<std::int64_t>& key) const {
+  const std::lock_guard lock(mutex_);
+  return key == key_ ? grid_ : nullptr;
+}
+
+void BakedGridCache::store(std::vector<std::int64_t> key, Grid grid) {
+  const std::lock_guard lock(mutex_);
+  key_ = std::move(key);
+  grid_ = std::move(grid);
+}
+
+namespace {
+
+/// The exact parameters at the grid's pixels (flattened, kFields per entry, row by row), from the
+/// cache when the frame every active effect evaluates at is the one it was computed for.
+BakedGridCache::Grid parameter_grid(const effects::StackInterpolator& stack, std::int64_t frame, int w, int h,
+                                    int step, const std::vector<int>& gx, const std::vector<int>& gy,
+                                    BakedGridCache* cache) {
+  std::vector<std::int64_t> key{w, h, step};
+  for (int t = 0; t < effects::kEffectCount; ++t)
+    if (const auto* rbf = stack.interpolator(static_cast<EffectType>(t))) key.push_back(rbf->effective_frame(frame));
+  if (cache)
+    if (auto hit = cache->find(key)) return hit;
+  const std::size_t cols = gx.size();
+  auto grid = std::make_shared<std::vector<double>>(cols * gy.size() * kFields);
   cv::parallel_for_(cv::Range(0, static_cast<int>(gy.size())), [&](const cv::Range& r) {
     for (int j = r.start; j < r.end; ++j)
-      for (int i = 0; i < cols; ++i)
-        flatten(stack.evaluate(pixel_direction(gx[static_cast<std::size_t>(i)], gy[static_cast<std::size_t>(j)], w, h), frame),
-                &grid[(static_cast<std::size_t>(j) * gx.size() + static_cast<std::size_t>(i)) * kFields]);
+      for (std::size_t i = 0; i < cols; ++i)
+        flatten(stack.evaluate(pixel_direction(gx[i], gy[static_cast<std::size_t>(j)], w, h), frame),
+                &(*grid)[(static_cast<std::size_t>(j) * cols + i) * kFields]);
   });
+  if (cache) cache->store(std::move(key), grid);
+  return grid;
+}
+
+}  // namespace
+
+cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& stack,
+                     std::int64_t frame, const BakedOptions& options) {
+  cv::Mat out = equirect.clone();
+  render_baked_into(out, stack, frame, options);
+  return out;
+}
+
+FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, BakedOptions options,
+                                   const io::YcbcrInfo& out) {
+  auto cache = std::make_shared<BakedGridCache>();
+  options.cache = cache.get();
+  return [&stack, options, out, cache](const io::Picture& source, std::int64_t frame) {
+    thread_local cv::Mat rgb;  // each render thread's frame buffer, reused
+    io::to_rgb(source, io::PixelFormat::RgbF32, rgb);
+    render_baked_into(rgb, stack, frame, options);
+    return io::rgb_to_ycbcr(rgb, out);
+  };
+}
+
+void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, std::int64_t frame,
+                       const BakedOptions& options) {
+  const int w = rgb.cols, h = rgb.rows;
+  const int step = baked_param_step(options, w);
+  const std::vector<int> gx = grid_positions(w, step, false), gy = grid_positions(h, step, true);
+  const BakedGridCache::Grid grid_ptr = parameter_grid(stack, frame, w, h, step, gx, gy, options.cache);
+  const std::vector<double>& grid = *grid_ptr;
   const Axis ax = axis_weights(w, gx, true), ay = axis_weights(h, gy, false);
   // Bilinear, split: the two grid rows around image row y are blended once per row, then each
   // pixel blends two neighbouring entries of that row.
@@ -114,7 +164,6 @@ cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& 
   };
 
   // Blur first (the contract's order), each pixel with its own sigma, on the sphere.
-  cv::Mat src = equirect;
   if (stack.active(EffectType::Blur)) {
     cv::Mat sigma(h, w, CV_32FC1);
     cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& r) {
@@ -128,27 +177,23 @@ cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& 
         }
       }
     });
-    src = effects::blur_equirect_varying(equirect, sigma);
+    rgb = effects::blur_equirect_varying(rgb, sigma);
   }
   const ColourMask mask{stack.active(EffectType::Tint) || stack.active(EffectType::Exposure),
                         stack.active(EffectType::Saturation), stack.active(EffectType::Contrast)};
-  if (!mask.any()) return src.data == equirect.data ? equirect.clone() : src;
-  cv::Mat out(h, w, CV_32FC3);
+  if (!mask.any()) return;
   cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& r) {
     float f[kFields];
     std::vector<float> row;
     for (int y = r.start; y < r.end; ++y) {
       grid_row(y, row);
-      const cv::Vec3f* in = src.ptr<cv::Vec3f>(y);
-      cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
+      cv::Vec3f* px = rgb.ptr<cv::Vec3f>(y);
       for (int x = 0; x < w; ++x) {
         params_at(row, x, f);
-        o[x] = in[x];
-        apply_colour_pixel(&o[x][0], f + 1, mask);
+        apply_colour_pixel(&px[x][0], f + 1, mask);
       }
     }
   });
-  return out;
 }
 
 }  // namespace vdfx::app

@@ -16,15 +16,40 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <mutex>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
+#include "app/export_pipeline.h"
 #include "effects/stack_interpolator.h"
+#include "io/picture.h"
 
 namespace vdfx::app {
 
+class BakedGridCache;
+
 struct BakedOptions {
   int param_step = 0;  //!< 0: automatic (the grid at most 512 columns: 1 up to 512-wide video)
+  /// Where the parameter grid of one frame is kept for the next (null: computed every frame).
+  BakedGridCache* cache = nullptr;
+};
+
+/// The last parameter grid, reused while every effect's interpolant evaluates at the same frame
+/// (held outside its keyframes' frame span, docs/interpolation.md): a sidecar whose keyframes
+/// share one frame computes its grid once per export. Safe to share between render threads.
+class BakedGridCache {
+ public:
+  using Grid = std::shared_ptr<const std::vector<double>>;
+  /// The grid stored under `key`, or null.
+  Grid find(const std::vector<std::int64_t>& key) const;
+  void store(std::vector<std::int64_t> key, Grid grid);
+
+ private:
+  mutable std::mutex mutex_;
+  std::vector<std::int64_t> key_;
+  Grid grid_;
 };
 
 /// The step `options` resolves to for a video `width` pixels wide.
@@ -71,5 +96,16 @@ inline void apply_colour_pixel(float* c, const float* p, const ColourMask& m) {
 /// Renders frame `frame` of an equirect (CV_32FC3 RGB, display-encoded): unclamped CV_32FC3.
 cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& stack,
                      std::int64_t frame, const BakedOptions& options = {});
+/// The same in place: `rgb` becomes the rendered frame (its buffer is reused unless a blur needs
+/// a new one).
+void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, std::int64_t frame,
+                       const BakedOptions& options = {});
+
+/// `vdfx export --baked`'s frame renderer: decoded picture -> RGB float (one buffer per render
+/// thread, reused: no fresh 4K float image, and its page faults, per frame) -> render_baked_into
+/// -> Y'CbCr in `out`'s layout, with one BakedGridCache for the whole export. `stack` must outlive
+/// the renderer.
+FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, BakedOptions options,
+                                   const io::YcbcrInfo& out);
 
 }  // namespace vdfx::app

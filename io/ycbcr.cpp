@@ -66,7 +66,10 @@ void convert_rows(const Picture& p, const AffineMap3& map, const ChromaTaps& col
   std::array<float, 3> o{};
   for (int i = 0; i < 9; ++i) m[i] = static_cast<float>(map.m[i]);
   for (int i = 0; i < 3; ++i) o[i] = static_cast<float>(map.offset[i]);
-  const int w = p.planes[0].cols;
+  const int w = p.planes[0].cols, cw = p.planes[1].cols;
+  // Per row: the two chroma rows around it blended once (cw samples, vectorised), then each
+  // pixel blends two neighbours of that row: bilinear, in the other order of the separable lerps.
+  std::vector<float> cb_row(static_cast<std::size_t>(cw)), cr_row(static_cast<std::size_t>(cw));
   for (int y = range.start; y < range.end; ++y) {
     const T* py = p.planes[0].ptr<T>(y);
     const T* u0 = p.planes[1].ptr<T>(rows.i0[y]);
@@ -74,16 +77,16 @@ void convert_rows(const Picture& p, const AffineMap3& map, const ChromaTaps& col
     const T* v0 = p.planes[2].ptr<T>(rows.i0[y]);
     const T* v1 = p.planes[2].ptr<T>(rows.i1[y]);
     const float fy = rows.f[y];
+    for (int j = 0; j < cw; ++j) {
+      cb_row[j] = u0[j] + fy * (static_cast<float>(u1[j]) - u0[j]);
+      cr_row[j] = v0[j] + fy * (static_cast<float>(v1[j]) - v0[j]);
+    }
     Out* dst = out.ptr<Out>(y);
     for (int x = 0; x < w; ++x) {
       const int a = cols.i0[x], b = cols.i1[x];
       const float fx = cols.f[x];
-      const float cb0 = u0[a] + fx * (static_cast<float>(u0[b]) - u0[a]);
-      const float cb1 = u1[a] + fx * (static_cast<float>(u1[b]) - u1[a]);
-      const float cr0 = v0[a] + fx * (static_cast<float>(v0[b]) - v0[a]);
-      const float cr1 = v1[a] + fx * (static_cast<float>(v1[b]) - v1[a]);
-      const float cb = cb0 + fy * (cb1 - cb0);
-      const float cr = cr0 + fy * (cr1 - cr0);
+      const float cb = cb_row[a] + fx * (cb_row[b] - cb_row[a]);
+      const float cr = cr_row[a] + fx * (cr_row[b] - cr_row[a]);
       const float yy = py[x];
       for (int c = 0; c < 3; ++c) {
         const float v = std::clamp(m[3 * c] * yy + m[3 * c + 1] * cb + m[3 * c + 2] * cr + o[c], 0.0f, 1.0f);
@@ -95,19 +98,18 @@ void convert_rows(const Picture& p, const AffineMap3& map, const ChromaTaps& col
 }
 
 template <typename T>
-cv::Mat convert(const Picture& p, PixelFormat format) {
+void convert(const Picture& p, PixelFormat format, cv::Mat& out) {
   const YcbcrInfo& info = p.ycbcr;
   const int w = p.planes[0].cols, h = p.planes[0].rows;
   const ChromaTaps cols = chroma_taps(w, p.planes[1].cols, info.log2_chroma_w, info.chroma_x, true);
   const ChromaTaps rows = chroma_taps(h, p.planes[1].rows, info.log2_chroma_h, info.chroma_y, false);
   const AffineMap3 map = ycbcr_to_rgb_map(info);
-  cv::Mat out(h, w, format == PixelFormat::Rgb8 ? CV_8UC3 : CV_32FC3);
+  out.create(h, w, format == PixelFormat::Rgb8 ? CV_8UC3 : CV_32FC3);
   // Rows are independent: OpenCV's pool splits them (serial when called from inside a pool task).
   cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& r) {
     if (format == PixelFormat::Rgb8) convert_rows<T, cv::Vec3b>(p, map, cols, rows, out, r);
     else convert_rows<T, cv::Vec3f>(p, map, cols, rows, out, r);
   });
-  return out;
 }
 
 /// Taps of the tent filter that makes chroma sample j (centred on its siting, half-width one
@@ -212,21 +214,26 @@ AffineMap3 rgb_to_ycbcr_map(const YcbcrInfo& info) {
 }
 
 cv::Mat to_rgb(const Picture& p, PixelFormat format) {
+  cv::Mat out;
+  to_rgb(p, format, out);
+  return out;
+}
+
+void to_rgb(const Picture& p, PixelFormat format, cv::Mat& out) {
   if (p.empty()) throw std::invalid_argument("to_rgb: empty picture");
   if (!p.is_ycbcr()) {
-    cv::Mat out;
     const bool want8 = format == PixelFormat::Rgb8;
-    if (want8 == (p.rgb.depth() == CV_8U)) return p.rgb.clone();
-    if (want8) p.rgb.convertTo(out, CV_8UC3, 255.0);  // rounds to nearest, saturates
+    if (want8 == (p.rgb.depth() == CV_8U)) p.rgb.copyTo(out);
+    else if (want8) p.rgb.convertTo(out, CV_8UC3, 255.0);  // rounds to nearest, saturates
     else p.rgb.convertTo(out, CV_32FC3, 1.0 / 255.0);
-    return out;
+    return;
   }
   const int depth = p.planes[0].depth();
   for (const cv::Mat& plane : p.planes)
     if (plane.empty() || plane.depth() != depth || plane.channels() != 1)
       throw std::invalid_argument("to_rgb: Y'CbCr planes must be one-channel 8- or 16-bit, all alike");
-  if (depth == CV_8U) return convert<std::uint8_t>(p, format);
-  if (depth == CV_16U) return convert<std::uint16_t>(p, format);
+  if (depth == CV_8U) return convert<std::uint8_t>(p, format, out);
+  if (depth == CV_16U) return convert<std::uint16_t>(p, format, out);
   throw std::invalid_argument("to_rgb: unsupported plane depth");
 }
 

@@ -45,6 +45,8 @@ AffineMap3 rgb_to_ycbcr_map(const YcbcrInfo& info);
 /// The CPU reference conversion: a picture (Y'CbCr or RGB) as RGB in `format`, clamped to [0, 1]
 /// (8-bit: rounded to nearest). An RGB picture is only converted to `format`.
 cv::Mat to_rgb(const Picture& picture, PixelFormat format);
+/// The same into `out`, whose buffer is reused when it has the size and type already.
+void to_rgb(const Picture& picture, PixelFormat format, cv::Mat& out);
 
 /// Encodes an RGB image (CV_32FC3 in [0, 1], clamped first, or CV_8UC3) as a Y'CbCr picture in
 /// `info`'s layout (bit_depth 8 only): luma per pixel, chroma from R'G'B' averaged over each
