@@ -101,3 +101,47 @@ TEST(ExportBaked, TheVignetteIsLeftOut) {
 
 }  // namespace
 }  // namespace vdfx::app
+
+namespace vdfx::app {
+namespace {
+
+/// Exposure keyframes at frames 10 and 20: held (the same field) before 10 and after 20.
+effects::StackInterpolator timed_stack() {
+  effects::EffectTrack tr;
+  tr.type = effects::EffectType::Exposure;
+  tr.keyframes = {{{0, 0}, 10, {1.0}}, {{180, 0}, 10, {-1.0}}, {{0, 0}, 20, {-1.0}}, {{180, 0}, 20, {1.0}}};
+  return effects::StackInterpolator({tr}, effects::InterpolationSettings{}, 30.0);
+}
+
+TEST(ExportBaked, GridCacheReusesTheGridOnlyWhileTheEvaluatedFrameIsTheSame) {
+  const auto stack = timed_stack();
+  const cv::Mat grey(32, 64, CV_32FC3, cv::Scalar(0.25, 0.25, 0.25));
+  BakedGridCache cache;
+  BakedOptions cached;
+  cached.cache = &cache;
+  const auto same = [&](std::int64_t frame) {
+    cv::Mat d;
+    cv::absdiff(render_baked(grey, stack, frame, cached), render_baked(grey, stack, frame), d);
+    double worst = 0.0;
+    cv::minMaxLoc(d.reshape(1), nullptr, &worst);
+    return worst;
+  };
+  // Frames 0..9 all evaluate at frame 10 (held): the cached grid of frame 0 serves frame 5.
+  EXPECT_EQ(same(0), 0.0);
+  const std::vector<std::int64_t> key_held{64, 32, 1, 10};
+  EXPECT_NE(cache.find(key_held), nullptr);
+  EXPECT_EQ(same(5), 0.0);
+  // Inside the span every frame has its own field; the cache must not hand out frame 5's.
+  EXPECT_EQ(same(15), 0.0);
+  EXPECT_EQ(cache.find(key_held), nullptr) << "frame 15 replaced the held grid";
+  EXPECT_EQ(same(25), 0.0);  // held at 20
+  // And the fields really differ (so the comparisons above could fail).
+  cv::Mat a = render_baked(grey, stack, 0), b = render_baked(grey, stack, 25), d;
+  cv::absdiff(a, b, d);
+  double worst = 0.0;
+  cv::minMaxLoc(d.reshape(1), nullptr, &worst);
+  EXPECT_GT(worst, 0.2);
+}
+
+}  // namespace
+}  // namespace vdfx::app
