@@ -4,6 +4,8 @@
 
 #include <tuple>
 
+#include "effects/glsl_common.h"
+
 namespace vdfx::effects {
 
 unsigned non_neutral_mask(const StackParams& p) {
@@ -89,13 +91,13 @@ std::string stack_fragment_source(const StackShader& v) {
   def("HAS_VIGNETTE", has(EffectType::Vignette));
   def("PER_PIXEL", v.per_pixel);
   s += "#define BLUR_MODE " + std::to_string(static_cast<int>(v.blur)) + "\n";
+  s += glsl::kConstants;
+  s += glsl::kPinhole;
+  s += glsl::kEquirect;
   s += R"(out vec4 frag;
 uniform sampler2D u_src;
 uniform int u_margin;  // the source is larger than the target by this many pixels on each side
-uniform vec4 u_tan;
-uniform vec2 u_size;
 uniform vec2 u_centre_tan;
-const float PI = 3.14159265358979;
 #if BLUR_MODE == 1
 uniform sampler2D u_taps;
 uniform int u_tap_count;
@@ -123,14 +125,13 @@ uniform float u_contrast;
 uniform vec2 u_vignette;
 #endif
 void main() {
-  vec2 q = gl_FragCoord.xy / u_size;
-  vec3 ray = vec3(mix(u_tan.x, u_tan.y, q.x), mix(u_tan.z, u_tan.w, q.y), -1.0);
+  vec3 ray = pinhole_ray();
   vec2 pc = gl_FragCoord.xy + vec2(float(u_margin));  // this pixel's centre in the source
 #if PER_PIXEL
   // This pixel's parameters: the grid along its own world ray (t = 1 - v, gl_texture.h); the
   // grid textures repeat in s (azimuth wraps) and clamp in t.
   vec3 d = u_rot * ray;
-  vec2 uv = vec2(0.5 + atan(d.x, -d.z) / (2.0 * PI), 0.5 + atan(d.y, length(d.xz)) / PI);
+  vec2 uv = equirect_uv(d);
   vec4 g0 = textureLod(u_grid0, uv, 0.0);
   vec4 g1 = textureLod(u_grid1, uv, 0.0);
   // Bilinear gains are renormalised (contract: tint never changes brightness).

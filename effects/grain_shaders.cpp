@@ -3,6 +3,8 @@
 /// styles (as effects/grain_render.cpp) and the particle quads.
 #include "effects/grain_shaders.h"
 
+#include "effects/glsl_common.h"
+
 namespace vdfx::effects {
 namespace {
 
@@ -52,19 +54,19 @@ uniform vec3 u_offset1;
 uniform vec3 u_offset2;
 uniform float u_octave2;
 uniform float u_gain;
-uniform vec4 u_tan;
-uniform vec2 u_viewport;
 uniform float u_floor;
 // Dual-source blending (ONE, SRC1_COLOR): out = frag + dst * frag_scale.
 layout(location = 0, index = 0) out vec4 frag;
 layout(location = 0, index = 1) out vec4 frag_scale;
 void main() {
-  float tx = u_tan.x + (gl_FragCoord.x / u_viewport.x) * (u_tan.y - u_tan.x);
-  float ty = u_tan.z + (gl_FragCoord.y / u_viewport.y) * (u_tan.w - u_tan.z);
+  // The pinhole's tangent (glsl_common.h) written out operation for operation as
+  // effects/grain_render.cpp does in float, which the GL-vs-CPU tests hold it to.
+  float tx = u_tan.x + (gl_FragCoord.x / u_size.x) * (u_tan.y - u_tan.x);
+  float ty = u_tan.z + (gl_FragCoord.y / u_size.y) * (u_tan.w - u_tan.z);
   vec3 d = u_eye_to_grain[0] * tx + u_eye_to_grain[1] * ty - u_eye_to_grain[2];
   d = d * (1.0 / sqrt(dot(d, d)));
   vec3 e = u_eye;
-  float pixel_rad = (u_tan.y - u_tan.x) / u_viewport.x / sqrt(1.0 + tx * tx + ty * ty);
+  float pixel_rad = (u_tan.y - u_tan.x) / u_size.x / sqrt(1.0 + tx * tx + ty * ty);
   vec3 lattice;
   float cells_per_pixel;
   if (u_style == 0) {
@@ -190,7 +192,7 @@ void main() {
 }  // namespace
 
 std::string grain_shader_fragment_source() {
-  return std::string(kNoise) + kShaderStyles;
+  return std::string(glsl::kPinhole) + kNoise + kShaderStyles;
 }
 std::string grain_particle_vertex_source() {
   return kParticleVertex;

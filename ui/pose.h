@@ -1,9 +1,9 @@
 /// @file
-/// @brief The UI uses the runtime's pose type (xr/pose.h).
+/// @brief The UI uses the shared pose type (math/pose.h), not xr/ (which would bring GL and GLFW).
 #pragma once
 
-#include "xr/pose.h"
+#include "math/pose.h"
 
 namespace vdfx::ui {
-using Pose = xr::Pose;
+using math::Pose;
 }  // namespace vdfx::ui

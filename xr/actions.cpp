@@ -9,8 +9,6 @@ namespace vdfx::xr {
 
 namespace {
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
-
 using Getter = std::function<ActionValue(const InputState&)>;
 
 std::vector<std::pair<std::string, Getter>> build_table() {
@@ -92,20 +90,6 @@ InputState neutral_input_state(std::int64_t t_ns) {
   s.t_ns = t_ns;
   s.head.position = {0.0, kDefaultEyeHeight, 0.0};
   return s;
-}
-
-glm::dvec3 forward(const Pose& pose) { return glm::normalize(pose.orientation * glm::dvec3(0.0, 0.0, -1.0)); }
-
-effects::Direction forward_direction(const Pose& pose) {
-  const glm::dvec3 f = forward(pose);
-  return effects::from_unit(Eigen::Vector3d(f.x, f.y, f.z));
-}
-
-glm::dquat look_rotation(double azimuth_deg, double altitude_deg) {
-  // Yaw about +y (a positive angle turns -z towards -x, i.e. left, hence the minus), then pitch
-  // about the turned +x (a positive angle lifts -z towards +y).
-  return glm::angleAxis(-azimuth_deg * kDegToRad, glm::dvec3(0, 1, 0)) *
-         glm::angleAxis(altitude_deg * kDegToRad, glm::dvec3(1, 0, 0));
 }
 
 std::optional<ActionValue> get_action(const InputState& state, std::string_view path) {

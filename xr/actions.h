@@ -125,15 +125,6 @@ class ActionSync {
 /// Nothing tracked, nothing pressed, head at (0, eye height, 0) looking down -z.
 InputState neutral_input_state(std::int64_t t_ns);
 
-/// The forward direction (-z) of a pose, unit length.
-glm::dvec3 forward(const Pose& pose);
-/// Where a pose looks, as the contract's azimuth and altitude (the head's view direction).
-effects::Direction forward_direction(const Pose& pose);
-
-/// Orientation looking at azimuth/altitude (degrees, contract conventions: azimuth positive to the
-/// right, altitude positive up), no roll.
-glm::dquat look_rotation(double azimuth_deg, double altitude_deg);
-
 using ActionValue = std::variant<bool, double, glm::dvec2, Pose>;
 
 /// The value at an action path, or nullopt for an unknown path.

@@ -1,12 +1,12 @@
 /// @file
 /// @brief The simulated headset's compositor: per eye, video layer -> effect stack -> world-space
-/// layers (flare, grain: xr/eye_layer.h) -> quad layers -> lens pre-distortion -> panel; mirror
+/// layers (flare, grain: xr/eye_layer.h) -> quad layers -> lens pre-distortion -> display; mirror
 /// modes; offscreen readback.
 ///
 /// Effects see only the video; the world-space layers and then the UI quads are composited after
-/// them, so a panel is never blurred, vignetted or flared. Everything renders into textures; the
+/// them, so a UI panel is never blurred, vignetted or flared. Everything renders into textures; the
 /// mirror window (or a test) reads them. The eye buffers are float (RGBA16F by default): no 8-bit
-/// rounding happens before the panel.
+/// rounding happens before the display image.
 #pragma once
 
 #include <array>
@@ -27,7 +27,7 @@
 namespace vdfx::xr {
 
 struct CompositorConfig {
-  int eye_width = 1440, eye_height = 1600;  //!< per eye, eye buffer and panel
+  int eye_width = 1440, eye_height = 1600;  //!< per eye, eye buffer and display image
   TexFormat eye_format = TexFormat::RGBA16F;
   LodMode lod = LodMode::Analytic;
   DistortionSettings distortion;
@@ -67,7 +67,7 @@ class Compositor {
                   const Pose& head_in_local = {});
   /// Renders the desktop view (MirrorMode::Desktop): `in.view` is the cyclopean pinhole
   /// (xr::desktop_view); video and effects are rendered at video_scale of width x height and
-  /// scaled up, then the quads are drawn at the full width x height (sharp panel text), no lens.
+  /// scaled up, then the quads are drawn at the full width x height (sharp UI panel text), no lens.
   void render_desktop(const EyeInput& in, int width, int height, double video_scale,
                       std::span<const QuadLayer> quads = {}, const Pose& head_in_local = {});
   /// Draws the mirror into `target` (or the default framebuffer when null): the desktop view
@@ -78,10 +78,10 @@ class Compositor {
 
   /// Undistorted eye buffer (effects and quads), CV_32FC4 BGRA, upright.
   cv::Mat read_eye_buffer(int eye) const;
-  /// Pre-distorted panel image, CV_32FC4 BGRA, upright.
-  cv::Mat read_panel(int eye) const;
+  /// Pre-distorted display image (what the headset's display shows), CV_32FC4 BGRA, upright.
+  cv::Mat read_display(int eye) const;
   const GlTarget& eye_buffer(int eye) const;
-  const GlTarget& panel(int eye) const;
+  const GlTarget& display(int eye) const;
   /// Per-stage GPU times of the frames rendered since the last call (gpu_timing on).
   std::vector<StageTime> stage_times();
   const CompositorConfig& config() const { return config_; }

@@ -46,7 +46,7 @@ struct Compositor::Impl {
   GlProgram quad_program;
   unsigned vao = 0;
   std::array<GlTarget, 3> video_out, eye_buffer;  //!< per slot: video (with margin), effects
-  std::array<GlTarget, 2> panel, seen;
+  std::array<GlTarget, 2> display, seen;  //!< per eye: pre-distorted image, seen through lens
   GlTarget desktop;  //!< the desktop view at window size: scaled-up effects, then the quads
   std::array<RenderView, 3> views;
   std::array<int, 3> margin{0, 0, 0};  //!< pixels of video rendered around each slot's view
@@ -134,7 +134,7 @@ Compositor::Compositor(CompositorConfig config)
   for (int e = 0; e < 2; ++e) {
     impl_->video_out[e] = GlTarget(w, h, config_.eye_format);
     impl_->eye_buffer[e] = GlTarget(w, h, config_.eye_format);
-    impl_->panel[e] = GlTarget(w, h, config_.eye_format);
+    impl_->display[e] = GlTarget(w, h, config_.eye_format);
   }
   impl_->quad_program = GlProgram::build("quad_layer", kQuadVertex, kQuadFragment);
   glGenVertexArrays(1, &impl_->vao);
@@ -161,7 +161,7 @@ void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLay
     if (t) m.timer.stop();
   }
   if (t) m.timer.start(tag + "distortion");
-  m.distortion.predistort(m.eye_buffer[eye].texture(), m.panel[eye], in.view, config_.lens,
+  m.distortion.predistort(m.eye_buffer[eye].texture(), m.display[eye], in.view, config_.lens,
                           config_.distortion);
   if (t) m.timer.stop();
 }
@@ -208,10 +208,10 @@ void Compositor::draw_mirror(MirrorMode mode, const GlTarget* target, int width,
     blit(m.eye_buffer[0], ew, eh, mirror_eye_rect(mode, 0, ew, eh, width, height));
   } else {
     for (int e = 0; e < 2; ++e) {
-      const GlTarget* src = &m.panel[e];
+      const GlTarget* src = &m.display[e];
       if (mode == MirrorMode::ThroughTheLens) {
         if (!m.seen[e]) m.seen[e] = GlTarget(ew, eh, config_.eye_format);
-        m.distortion.through_lens(m.panel[e].texture(), m.seen[e], m.views[e], config_.lens);
+        m.distortion.through_lens(m.display[e].texture(), m.seen[e], m.views[e], config_.lens);
         src = &m.seen[e];
       }
       blit(*src, ew, eh, mirror_eye_rect(mode, e, ew, eh, width, height));
@@ -223,9 +223,9 @@ void Compositor::draw_mirror(MirrorMode mode, const GlTarget* target, int width,
 cv::Mat Compositor::read_desktop() const { return impl_->desktop.read_float(); }
 
 cv::Mat Compositor::read_eye_buffer(int eye) const { return impl_->eye_buffer.at(eye).read_float(); }
-cv::Mat Compositor::read_panel(int eye) const { return impl_->panel.at(eye).read_float(); }
+cv::Mat Compositor::read_display(int eye) const { return impl_->display.at(eye).read_float(); }
 const GlTarget& Compositor::eye_buffer(int eye) const { return impl_->eye_buffer.at(eye); }
-const GlTarget& Compositor::panel(int eye) const { return impl_->panel.at(eye); }
+const GlTarget& Compositor::display(int eye) const { return impl_->display.at(eye); }
 std::vector<StageTime> Compositor::stage_times() { return impl_->timer.collect(); }
 
 cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int width, int height,
@@ -243,7 +243,7 @@ cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int wid
   comp.set_video_frame(equirect);
   if (o.param_grid) comp.set_param_grid(*o.param_grid);
   comp.render_eye(0, {view, params, active_effects, o.param_grid != nullptr, o.layers});
-  return to_bgr8(comp.read_panel(0));
+  return to_bgr8(comp.read_display(0));
 }
 
 }  // namespace vdfx::xr

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "effects/distortion_mesh.h"
+#include "effects/glsl_common.h"
 #include "xr/distortion_gl.h"
 #include "xr/gl_context.h"
 #include "xr/gl_program.h"
@@ -14,10 +15,10 @@
 namespace vdfx::xr {
 namespace {
 
-// Shared GLSL: the lens model and the tangent <-> texture mapping of one eye.
+// GLSL of the three lens passes: the lens model and the tangent -> texture mapping of one eye
+// (after the shared pinhole, effects/glsl_common.h: u_tan spans the eye buffer and the display
+// image alike).
 constexpr const char* kLensGlsl = R"(
-uniform vec4 u_tan;       // left, right, down, up tangents of eye buffer and panel
-uniform vec2 u_size;      // target size in pixels
 uniform vec2 u_centre;    // optical centre, tangent units (the optical axis: 0, 0)
 uniform vec2 u_coef;      // c1, c2 (on radii normalised by u_norm_radius)
 uniform float u_norm_radius;  // R of effects::LensParams
@@ -25,10 +26,6 @@ uniform vec3 u_scale;     // per-channel radial scale s_c
 uniform float u_ru_max;   // largest normalised r_u where the model still increases
 uniform float u_rd_max;   // f(u_ru_max)
 float lens_forward(float r) { float r2 = r * r; return r * (1.0 + r2 * (u_coef.x + u_coef.y * r2)); }
-vec2 tan_at_fragment() {
-  vec2 q = gl_FragCoord.xy / u_size;
-  return vec2(mix(u_tan.x, u_tan.y, q.x), mix(u_tan.z, u_tan.w, q.y));
-}
 vec2 tan_to_uv(vec2 t) {
   return vec2((t.x - u_tan.x) / (u_tan.y - u_tan.x), (t.y - u_tan.z) / (u_tan.w - u_tan.z));
 }
@@ -220,7 +217,7 @@ struct DistortionGl::Impl {
 };
 
 DistortionGl::DistortionGl() : impl_(std::make_unique<Impl>()) {
-  const std::string lens = kLensGlsl;
+  const std::string lens = std::string(effects::glsl::kPinhole) + kLensGlsl;
   impl_->pixel = GlProgram::build("predistort_pixel", fullscreen_vertex_source(), lens + kPixelFragment);
   impl_->mesh = GlProgram::build("predistort_mesh", kMeshVertex, lens + kMeshFragment);
   impl_->through =

@@ -75,8 +75,7 @@ glm::dmat3 camera_rotation(const effects::Direction& look, double roll_deg) {
 
 EyeCamera eye_camera(const Pose& head, const HmdProfile& profile, Eye eye) {
   EyeCamera cam;
-  const glm::dvec3 f = head.orientation * glm::dvec3(0.0, 0.0, -1.0);
-  cam.look = effects::from_unit(Eigen::Vector3d(f.x, f.y, f.z));
+  cam.look = forward_direction(head);
   // Roll: the head's up axis measured in the roll-free camera frame of the same look direction.
   const glm::dmat3 r0 = camera_rotation(cam.look, 0.0);
   const glm::dvec3 up = head.orientation * glm::dvec3(0.0, 1.0, 0.0);

@@ -51,7 +51,7 @@ struct GrainGl::Impl {
     glUniform1f(loc("u_gain"), u.gain);
     glUniform1f(loc("u_floor"), u.floor);
     glUniform4f(loc("u_tan"), u.tangents[0], u.tangents[1], u.tangents[2], u.tangents[3]);
-    glUniform2f(loc("u_viewport"), static_cast<float>(width), static_cast<float>(height));
+    glUniform2f(loc("u_size"), static_cast<float>(width), static_cast<float>(height));
     glBindVertexArray(empty_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ++stats.shader_draws;

@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "effects/coords.h"
+
 namespace vdfx::xr {
 
 namespace {
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+using effects::kDegToRad;
 constexpr double kMaxPitchDeg = 89.0;
 
 // Fixed hand offsets in the head frame (metres) for hands no device positions.

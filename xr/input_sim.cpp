@@ -15,14 +15,15 @@
 #include <set>
 #include <sstream>
 
+#include "effects/coords.h"
 #include "xr/input_backend.h"
 
 namespace vdfx::xr {
 
 namespace {
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+using effects::kDegToRad;
+using effects::kRadToDeg;
 constexpr double kMaxPitchDeg = 89.0;
 const glm::dvec3 kOffHandOffset{0.2, -0.3, -0.3};  // head frame, mirrored in x for the left hand
 

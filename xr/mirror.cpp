@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "effects/coords.h"
 #include "xr/eye_views.h"
 #include "xr/session.h"
 
@@ -12,7 +13,7 @@ namespace vdfx::xr {
 
 namespace {
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+using effects::kDegToRad;
 
 effects::EyeLens eye_lens(const MirrorGeometry& g, int eye) {
   effects::EyeLens e;

@@ -1,30 +1,12 @@
 /// @file
-/// @brief Rigid poses (GLM, double precision): heads, eyes, controllers and panels.
-///
-/// One type for all of xr/ and ui/. Axes are OpenXR's (+x right, +y up, -z forward).
+/// @brief The runtime's pose type and pose helpers: math/pose.h, named in xr/.
 #pragma once
 
-#include <glm/gtc/quaternion.hpp>
-#include <glm/vec3.hpp>
+#include "math/pose.h"
 
 namespace vdfx::xr {
-
-/// Maps local coordinates to world: world = position + orientation * local.
-struct Pose {
-  glm::dvec3 position{0.0};                    //!< metres
-  glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  //!< unit, glm order (w, x, y, z)
-
-  glm::dvec3 transform(const glm::dvec3& local) const { return position + orientation * local; }
-  glm::dvec3 rotate(const glm::dvec3& local) const { return orientation * local; }
-  Pose inverse() const {
-    const glm::dquat inv = glm::conjugate(orientation);
-    return {inv * -position, inv};
-  }
-  /// this * local: apply local first, then this.
-  Pose operator*(const Pose& local) const {
-    return {transform(local.position), glm::normalize(orientation * local.orientation)};
-  }
-  bool operator==(const Pose&) const = default;
-};
-
+using math::forward;
+using math::forward_direction;
+using math::look_rotation;
+using math::Pose;
 }  // namespace vdfx::xr

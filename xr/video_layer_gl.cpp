@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
+#include "effects/glsl_common.h"
 #include "io/ycbcr.h"
 #include "xr/gl_context.h"
 #include "xr/gl_program.h"
@@ -17,10 +18,9 @@
 namespace vdfx::xr {
 namespace {
 
+// After the shared constants, pinhole and equirect mapping (effects/glsl_common.h).
 constexpr const char* kFragment = R"(out vec4 frag;
 uniform sampler2D u_equirect;
-uniform vec4 u_tan;      // left, right, down, up tangents
-uniform vec2 u_size;     // target size in pixels
 uniform mat3 u_rot;      // eye -> world
 uniform int u_lod_mode;  // 0 analytic, 1 hardware derivatives, 2 base level
 // Y'CbCr source (u_ycbcr = 1): planes uploaded top row first (v, not t), converted per sample.
@@ -30,12 +30,6 @@ uniform vec2 u_chroma_scale, u_chroma_offset;  // luma (u, v) -> chroma (u, v), 
 uniform float u_code_scale;  // normalised texel -> code value (255 or 65535)
 uniform mat3 u_m;            // code values -> R'G'B' (io/ycbcr.h)
 uniform vec3 u_offset;
-const float PI = 3.14159265358979;
-
-vec2 ray_uv(vec3 d) {
-  // t = 1 - v: the texture's origin is the bottom row (gl_texture.h).
-  return vec2(0.5 + atan(d.x, -d.z) / (2.0 * PI), 0.5 + atan(d.y, length(d.xz)) / PI);
-}
 
 // (du, dv) for a change e of the (unnormalised) ray d; see video_layer.h for the formulas.
 vec2 uv_differential(vec3 d, vec3 e) {
@@ -65,9 +59,8 @@ vec3 sample_video(vec2 uv, vec2 gx, vec2 gy, bool base) {
 }
 
 void main() {
-  vec2 q = gl_FragCoord.xy / u_size;
-  vec3 d = u_rot * vec3(mix(u_tan.x, u_tan.y, q.x), mix(u_tan.z, u_tan.w, q.y), -1.0);
-  vec2 uv = ray_uv(d);
+  vec3 d = u_rot * pinhole_ray();
+  vec2 uv = equirect_uv(d);
   vec3 c;
   if (u_lod_mode == 0) {
     vec3 ex = u_rot[0] * ((u_tan.y - u_tan.x) / u_size.x);
@@ -145,7 +138,10 @@ struct VideoLayerGl::Impl {
 };
 
 VideoLayerGl::VideoLayerGl() : impl_(std::make_unique<Impl>()) {
-  impl_->program = GlProgram::build("video_layer", fullscreen_vertex_source(), kFragment);
+  namespace glsl = effects::glsl;
+  const std::string fragment =
+      std::string(glsl::kConstants) + glsl::kPinhole + glsl::kEquirect + kFragment;
+  impl_->program = GlProgram::build("video_layer", fullscreen_vertex_source(), fragment);
   glGenVertexArrays(1, &impl_->vao);
 }
 

@@ -92,8 +92,8 @@ TEST_F(CompositorGlTest, MirrorModesShowPanelsTheWearersViewAndOneEye) {
   GlTarget mirror(2 * kW, kH, TexFormat::RGBA16F);
   comp.draw_mirror(MirrorMode::PreDistorted, &mirror, 2 * kW, kH);
   const cv::Mat m = mirror.read_float();
-  EXPECT_LE(test::compare(m(cv::Rect(0, 0, kW, kH)), comp.read_panel(0)).max, 1e-3);
-  EXPECT_LE(test::compare(m(cv::Rect(kW, 0, kW, kH)), comp.read_panel(1)).max, 1e-3);
+  EXPECT_LE(test::compare(m(cv::Rect(0, 0, kW, kH)), comp.read_display(0)).max, 1e-3);
+  EXPECT_LE(test::compare(m(cv::Rect(kW, 0, kW, kH)), comp.read_display(1)).max, 1e-3);
   // Through the lens: the wearer sees the undistorted eye buffer again (centre region).
   comp.draw_mirror(MirrorMode::ThroughTheLens, &mirror, 2 * kW, kH);
   const cv::Rect centre(kW / 4, kH / 4, kW / 2, kH / 2);
@@ -101,7 +101,7 @@ TEST_F(CompositorGlTest, MirrorModesShowPanelsTheWearersViewAndOneEye) {
   const test::ErrorStats e = test::compare(test::bgr_clamped(seen)(centre),
                                            test::bgr_clamped(comp.read_eye_buffer(0))(centre));
   EXPECT_LT(e.mean, 1.5 / 255);
-  EXPECT_GT(test::compare(comp.read_panel(0)(centre), comp.read_eye_buffer(0)(centre)).mean, 2.0 / 255);
+  EXPECT_GT(test::compare(comp.read_display(0)(centre), comp.read_eye_buffer(0)(centre)).mean, 2.0 / 255);
   GlTarget single(kW, kH, TexFormat::RGBA16F);
   comp.draw_mirror(MirrorMode::SingleEye, &single, kW, kH);
   EXPECT_LE(test::compare(single.read_float(), comp.read_eye_buffer(0)).max, 1e-3);

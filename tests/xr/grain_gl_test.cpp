@@ -274,7 +274,7 @@ TEST_F(GrainGlTest, GoldenScreenshotsOfEachStyleOnTheSunrise) {
       v.tan_down = -0.5 * h / f;
       v.tan_up = 0.5 * h / f;
       comp.render_eye(k, {v, {}, 0, false, layers});
-      eyes[k] = to_bgr8(comp.read_panel(k));
+      eyes[k] = to_bgr8(comp.read_display(k));
     }
     cv::Mat both;
     cv::hconcat(eyes[0], eyes[1], both);
