@@ -2,7 +2,7 @@
 /// @brief The runtime's pose type and pose helpers: math/pose.h, named in xr/.
 #pragma once
 
-#include "math/pose.h"
+#include "xr/math/pose.h"
 
 namespace vdfx::xr {
 using math::forward;
