@@ -76,11 +76,11 @@ EvalPoint parse_eval_point(const std::string& text) {
   return p;
 }
 
-ImageSize parse_size(const std::string& text) {
-  const auto v = split_numbers(text, 'x', "--size");
+ImageSize parse_size(const std::string& text, const std::string& option) {
+  const auto v = split_numbers(text, 'x', option.c_str());
   if (v.size() != 2 || v[0] < 1 || v[1] < 1 || v[0] > 16384 || v[1] > 16384 ||
       v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
-    throw CLI::ValidationError("--size", "'" + text + "': expected WxH, whole numbers 1..16384");
+    throw CLI::ValidationError(option, "'" + text + "': expected WxH, whole numbers 1..16384");
   return {static_cast<int>(v[0]), static_cast<int>(v[1])};
 }
 

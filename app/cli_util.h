@@ -35,6 +35,7 @@ struct ImageSize {
 /// Each throws CLI::ValidationError (a usage error) with the offending text.
 ViewSpec parse_view(const std::string& text);  //!< "AZ,ALT" or "AZ,ALT,ROLL"
 EvalPoint parse_eval_point(const std::string& text);  //!< "AZ,ALT,FRAME"
-ImageSize parse_size(const std::string& text);  //!< "WxH"
+/// "WxH"; a CLI::ValidationError names `option` (the option the text came from).
+ImageSize parse_size(const std::string& text, const std::string& option);
 
 }  // namespace vdfx::app

@@ -101,7 +101,7 @@ int cmd_export(const Args& args) {
     if (fs::equivalent(out, video, ec))
       throw CLI::ValidationError("export", "the output would overwrite the input video");
     if (!frames_text.empty()) range = parse_frames(frames_text);
-    view_size = parse_size(size_text);
+    view_size = parse_size(size_text, "--size");
     if (baked && (cli.count("--fov") || cli.count("--size")))
       throw CLI::ValidationError("export", "--fov and --size go with --path (a baked video keeps the video's size)");
     if (!baked && cli.count("--param-step")) throw CLI::ValidationError("--param-step", "goes with --baked");

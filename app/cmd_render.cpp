@@ -71,7 +71,7 @@ int cmd_render(const Args& args) {
     }
     request.distortion.correct_lca = !no_lca;
     if (!size_text.empty()) {
-      const ImageSize s = parse_size(size_text);
+      const ImageSize s = parse_size(size_text, "--size");
       request.width = s.width;
       request.height = s.height;
     }
@@ -90,12 +90,7 @@ int cmd_render(const Args& args) {
     request.blur = *blur;
     if (!gpu && request.blur != xr::BlurMethod::Exact)
       throw CLI::ValidationError("--blur", "the CPU reference blur is exact; pyramid needs --gpu");
-    ImageSize bake;
-    try {
-      bake = parse_size(bake_text);
-    } catch (const CLI::ValidationError&) {
-      throw CLI::ValidationError("--bake", "'" + bake_text + "': expected WxH, whole numbers 1..16384");
-    }
+    const ImageSize bake = parse_size(bake_text, "--bake");
     request.bake_width = bake.width;
     request.bake_height = bake.height;
   } catch (const CLI::ValidationError& e) {

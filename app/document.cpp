@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "effects/interpolation_check.h"
 #include "io/input_error.h"
 
 namespace vdfx::app {
@@ -196,12 +197,8 @@ void Document::set_params(EditTarget t, std::vector<double> params) {
 
 void Document::set_interpolation(EditTarget t, const effects::InterpolationSettings& settings) {
   const std::string name(t.name());
-  if (!(settings.exponent > effects::kExponentMin && settings.exponent < effects::kExponentMax))
-    throw io::InputError(name + ": exponent " + std::to_string(settings.exponent) +
-                         " outside (0, 4)");
-  if (!(settings.time_scale > effects::kTimeScaleMin && settings.time_scale <= effects::kTimeScaleMax))
-    throw io::InputError(name + ": time scale " +
-                         std::to_string(settings.time_scale) + " outside (0, 1000]");
+  if (const auto problem = effects::interpolation_problem(settings))
+    throw io::InputError(name + ": " + *problem);
   if (interpolation(t) == settings && overrides_[idx(t)]) return;
   auto before = snapshot(t);
   overrides_[idx(t)] = settings;

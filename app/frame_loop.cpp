@@ -91,8 +91,10 @@ struct FrameLoop::Impl {
 
   Impl(FrameLoopOptions opts, xr::InputBackend& in, io::VideoSource& v, FrameClient& c)
       : o(std::move(opts)), input(in), video(v), client(c) {
+    // The command line checks its option; another caller passing this is a bug.
     if (!(o.eye_scale > 0.0 && o.eye_scale <= 4.0))
-      throw io::InputError("--scale must be in (0, 4], got " + std::to_string(o.eye_scale));
+      throw std::invalid_argument("FrameLoop: eye_scale must be in (0, 4], got " +
+                                  std::to_string(o.eye_scale));
     xr::GlContextOptions g;
     g.width = o.window_width;
     g.height = o.window_height;

@@ -10,13 +10,16 @@
 
 namespace vdfx::app {
 namespace {
-std::string size_problem(const std::string& text) {
-  try {
-    parse_size(text);
-    return {};
-  } catch (const CLI::ValidationError& e) {
-    return e.what();
-  }
+/// A CLI11 check of a WxH option (its message names `option`).
+auto size_check(const char* option) {
+  return [option](const std::string& text) -> std::string {
+    try {
+      parse_size(text, option);
+      return {};
+    } catch (const CLI::ValidationError& e) {
+      return e.what();
+    }
+  };
 }
 }  // namespace
 
@@ -46,7 +49,9 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
   cli.add_option("--fov", o.fov, "horizontal field of view of the desktop view, degrees")
       ->capture_default_str()
       ->check(CLI::Range(20.0, 160.0));
-  cli.add_option("--window", o.window, "window size WxH")->capture_default_str()->check(size_problem);
+  cli.add_option("--window", o.window, "window size WxH")
+      ->capture_default_str()
+      ->check(size_check("--window"));
   cli.add_flag("--hidden", o.hidden, "no visible window (offscreen; --screenshot still works)");
   cli.add_flag("--no-vsync", o.no_vsync, "do not wait for the display's vsync (live input)");
   cli.add_option("--decode-timeout", o.decode_timeout_ms,
@@ -55,7 +60,7 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
       ->check(CLI::Range(0.0, 10000.0));
   cli.add_option("--bake", o.bake, "per-pixel mode's parameter grid WxH (speed/error knob)")
       ->capture_default_str()
-      ->check(size_problem);
+      ->check(size_check("--bake"));
   cli.add_option("--blur", o.blur,
                  "GPU blur: pyramid (halvings + small residual blur, the live default) or exact "
                  "(full-resolution separable Gaussian, as vdfx render --gpu)")
@@ -67,8 +72,8 @@ LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path
   LoopSetup s;
   FrameLoopOptions& f = s.options;
   f.profile = xr::load_hmd_profile(o.hmd);
-  const ImageSize window = parse_size(o.window);
-  const ImageSize bake = parse_size(o.bake);
+  const ImageSize window = parse_size(o.window, "--window");
+  const ImageSize bake = parse_size(o.bake, "--bake");
   f.window_width = window.width;
   f.window_height = window.height;
   f.bake_width = bake.width;
@@ -104,7 +109,11 @@ LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path
   io_opts.sim.window_width = window.width;
   io_opts.sim.window_height = window.height;
   io_opts.sim.hfov_deg = o.fov;
-  s.input = xr::create_input_backend(o.input, io_opts);
+  try {
+    s.input = xr::create_input_backend(o.input, io_opts);
+  } catch (const io::InputError& e) {
+    throw io::InputError("--input: " + std::string(e.what()));  // xr/ names no options
+  }
   if (!o.record.empty()) {
     io::RecordingHeader h;
     h.hmd = f.profile.name;

@@ -41,13 +41,10 @@ class Player : public FrameClient {
   std::vector<effects::FlareLayout> flares(const xr::Pose& head_in_local, std::int64_t frame,
                                            const io::Picture* picture) override;
   unsigned active_effects() const override { return active_; }
-  bool unaltered() const override { return unaltered_key_ || unaltered_button_ || forced_unaltered_; }
+  bool unaltered() const override { return unaltered_key_ || unaltered_button_; }
   ParamMode param_mode() const override { return mode_; }
   std::string status_line() const override;
 
-  /// Programmatic switches (tests, scripts); the keys and buttons below do the same.
-  void set_param_mode(ParamMode m) { mode_ = m; }
-  void set_unaltered(bool on) { forced_unaltered_ = on; }
   const Playhead& playhead() const { return playhead_; }
   std::int64_t current_frame() const { return frame_; }
 
@@ -64,7 +61,7 @@ class Player : public FrameClient {
   PlayerOptions options_;
   ParamMode mode_;
   std::vector<xr::Key> pending_keys_;  //!< pressed since the last update (applied at its time)
-  bool unaltered_key_ = false, unaltered_button_ = false, forced_unaltered_ = false;
+  bool unaltered_key_ = false, unaltered_button_ = false;
   std::int64_t frame_ = 0;
 };
 

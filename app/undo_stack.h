@@ -52,7 +52,6 @@ class UndoStack {
   /// Opens a group; nested calls are counted. Changes until the matching end_group form one step.
   void begin_group(const std::string& label);
   void end_group();
-  bool in_group() const { return group_depth_ > 0; }
 
   bool can_undo() const { return !done_.empty(); }
   bool can_redo() const { return !undone_.empty(); }
@@ -64,7 +63,6 @@ class UndoStack {
   std::size_t redo_size() const { return undone_.size(); }
   /// Label of the step undo() would revert ("" when none).
   std::string next_undo_label() const { return done_.empty() ? "" : done_.back().label; }
-  std::string next_redo_label() const { return undone_.empty() ? "" : undone_.back().label; }
 
  private:
   std::vector<UndoStep> done_, undone_;

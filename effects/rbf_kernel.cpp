@@ -7,23 +7,15 @@
 #include <stdexcept>
 
 #include "effects/coords.h"
+#include "effects/interpolation_check.h"
 
 namespace vdfx::effects {
 
 RbfKernel RbfKernel::from(const InterpolationSettings& settings, double fps) {
+  if (const auto problem = interpolation_problem(settings))
+    throw std::invalid_argument("RbfKernel: " + *problem);
   const double a = settings.exponent;
   const double c = settings.time_scale;
-  if (!(a > kExponentMin && a < kExponentMax)) {
-    std::ostringstream s;
-    s << "RbfKernel: exponent " << a << " outside (" << kExponentMin << ", " << kExponentMax << ")";
-    throw std::invalid_argument(s.str());
-  }
-  if (!(c > kTimeScaleMin && c <= kTimeScaleMax)) {
-    std::ostringstream s;
-    s << "RbfKernel: time_scale " << c << " outside (" << kTimeScaleMin << ", " << kTimeScaleMax
-      << "]";
-    throw std::invalid_argument(s.str());
-  }
   if (!(fps > 0.0) || !std::isfinite(fps)) {
     std::ostringstream s;
     s << "RbfKernel: fps " << fps << " is not a positive number";

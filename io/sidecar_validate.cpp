@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 
+#include "effects/interpolation_check.h"
 #include "io/json_text.h"
 #include "io/sidecar_checker.h"
 #include "io/sidecar_flare.h"
@@ -33,6 +34,8 @@ std::string SidecarReport::to_string() const {
 namespace {
 
 constexpr std::int64_t kIntMax = std::numeric_limits<int>::max();
+constexpr double kDoubleMax = std::numeric_limits<double>::max();
+const Range kAnyNumber{-kDoubleMax, kDoubleMax, false, false};  // finite: Checker::number
 
 void read_video(Checker& c, const json& v, const std::string& ptr, VideoInfo& out) {
   const json* obj = c.object(v, ptr);
@@ -63,14 +66,17 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
   const json* obj = c.object(v, ptr);
   if (!obj) return;
   c.only_keys(*obj, ptr, {"exponent", "time_scale", "distance", "outside_span"});
+  // The ranges are effects/interpolation_check.h's: the RBF kernel and the editor ask it too.
   if (const json* p = c.member(*obj, ptr, "exponent"))
-    if (auto d = c.number(*p, ptr + "/exponent",
-                          {effects::kExponentMin, effects::kExponentMax, true, true}))
-      out.exponent = *d;
+    if (auto d = c.number(*p, ptr + "/exponent", kAnyNumber)) {
+      if (auto why = effects::exponent_problem(*d)) c.error(ptr + "/exponent", *why);
+      else out.exponent = *d;
+    }
   if (const json* p = c.member(*obj, ptr, "time_scale"))
-    if (auto d = c.number(*p, ptr + "/time_scale",
-                          {effects::kTimeScaleMin, effects::kTimeScaleMax, true, false}))
-      out.time_scale = *d;
+    if (auto d = c.number(*p, ptr + "/time_scale", kAnyNumber)) {
+      if (auto why = effects::time_scale_problem(*d)) c.error(ptr + "/time_scale", *why);
+      else out.time_scale = *d;
+    }
   // Extension of format 1: optional, chordal when absent (docs/sidecar.md).
   if (const json* p = c.member(*obj, ptr, "distance", /*required=*/false)) {
     if (auto s = c.string(*p, ptr + "/distance")) {

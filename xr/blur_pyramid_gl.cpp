@@ -48,11 +48,20 @@ void set_gaussian_uniforms(const GlProgram& program, double sigma, int radius, i
     const double b = i + 1 <= radius ? w[static_cast<size_t>(i + 1)] : 0.0;
     t.emplace_back(static_cast<float>(i + b / (a + b)), static_cast<float>(a + b));
   }
-  if (t.empty()) t.emplace_back(0.0f, 0.0f);
-  const cv::Mat table = cv::Mat(t, true).reshape(2, 1);
+  // The table keeps a fixed capacity (kMinTapCapacity, doubled when a radius needs more, never
+  // shrunk): the per-pixel blur sets a different radius per level, per eye and per frame, and a
+  // texture sized to each would be reallocated every time. Texels past u_tap_count stay unread.
+  const int needed = std::max<int>(1, static_cast<int>(t.size()));
+  // Allocation and upload bind the table: on its own unit, never over the caller's source.
   glActiveTexture(GL_TEXTURE0 + static_cast<unsigned>(unit));
-  if (!taps || taps.width() != table.cols) taps = GlTexture(table.cols, 1, TexFormat::RG32F);
-  taps.set_sampling(false, false);
+  if (!taps || taps.width() < needed) {
+    int capacity = std::max(taps ? taps.width() : 0, kMinTapCapacity);
+    while (capacity < needed) capacity *= 2;
+    taps = GlTexture(capacity, 1, TexFormat::RG32F);
+    taps.set_sampling(false, false);
+  }
+  t.resize(static_cast<size_t>(taps.width()), cv::Vec2f(0.0f, 0.0f));
+  const cv::Mat table = cv::Mat(t, true).reshape(2, 1);
   taps.upload(table);
   glBindTexture(GL_TEXTURE_2D, taps.id());
   glUniform1i(program.uniform("u_taps"), unit);
@@ -74,7 +83,6 @@ BlurPyramidGl::~BlurPyramidGl() {
 
 void BlurPyramidGl::set_source(const GlTexture& src) {
   src_ = &src;
-  src_id_ = src.id();
   built_ = 0;
 }
 

@@ -34,8 +34,12 @@ struct PyramidPlan {
 /// is the exact one at full resolution); GL-free.
 PyramidPlan plan_pyramid(double sigma_x, double sigma_y);
 
+/// Smallest width of a tap table texture (64 pairs: radii up to 128 px, sigma ~42 px).
+inline constexpr int kMinTapCapacity = 64;
 /// Uploads the paired-tap table of a 1-D Gaussian (sigma px, radius taps per side) into `taps`
 /// and sets u_taps (on texture unit `unit`), u_tap_count and u_centre_weight of `program`.
+/// `taps` is (re)allocated only when it is empty or narrower than the table (it then grows to
+/// kMinTapCapacity or by doubling), so a caller that keeps it allocates it about once.
 void set_gaussian_uniforms(const GlProgram& program, double sigma, int radius, int unit,
                            GlTexture& taps);
 
@@ -58,7 +62,6 @@ class BlurPyramidGl {
   void blur_separable(const GlTexture& in, double sx, double sy, GlTarget& out);
   TexFormat format_;
   const GlTexture* src_ = nullptr;
-  unsigned src_id_ = 0;
   int built_ = 0;  //!< halved levels valid for the current source
   std::vector<GlTarget> chain_, tmp_;
   GlProgram blur_1d_, downsample_;

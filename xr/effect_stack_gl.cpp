@@ -196,7 +196,6 @@ void EffectStackGl::apply_per_pixel(const GlTexture& src, const GlTarget& dst, u
   const bool blur_on = (mask & shader_bit(EffectType::Blur)) && grid_max_sigma_deg_ > 0.0;
   double tau1_deg = 0.0, ratio = level_ratio_;
   std::vector<int> scales;
-  level_sigmas_px_.clear();
   if (blur_on) {
     // Levels tau_j = tau_1 r^(j-1) from half a pixel up to the grid's largest sigma. Where that
     // would need more than kMaxBlurLevels, the levels spread wider (r grows) rather than start
@@ -212,7 +211,6 @@ void EffectStackGl::apply_per_pixel(const GlTexture& src, const GlTarget& dst, u
     pyramid_.set_source(src);
     for (int j = 0; j < n; ++j) {
       const double tau = tau1_deg * std::pow(ratio, j);
-      level_sigmas_px_.push_back(tau * per_deg_px);
       scales.push_back(pyramid_.blur(tau * per_deg.sigma_x, tau * per_deg.sigma_y, blur_method_,
                                      levels_[static_cast<std::size_t>(j)]));
     }

@@ -57,14 +57,9 @@ class EffectStackGl {
                          BlurMethod blur = BlurMethod::Exact);
   ~EffectStackGl();
 
-  void set_blur_method(BlurMethod m) { blur_method_ = m; }
-  BlurMethod blur_method() const { return blur_method_; }
   /// Per-pixel mode: ratio r > 1 between successive blur level sigmas (kOctaveLevels,
   /// kHalfOctaveLevels); throws GlError otherwise.
   void set_level_ratio(double r);
-  double level_ratio() const { return level_ratio_; }
-  /// Level sigmas (pixels at the optical centre, the larger axis) of the last apply_per_pixel.
-  const std::vector<double>& level_sigmas_px() const { return level_sigmas_px_; }
 
   /// View mode: runs the effects of `mask` (bits: effects::shader_bit) with parameters `p` from
   /// `src` into `dst`. `src` is `dst` plus `margin` pixels on every side (rendered with
@@ -93,7 +88,6 @@ class EffectStackGl {
   TexFormat scratch_format_;
   BlurMethod blur_method_;
   double level_ratio_ = kHalfOctaveLevels;
-  std::vector<double> level_sigmas_px_;
   GlProgram blur_h_;
   std::map<effects::StackShader, GlProgram> programs_;
   GlTarget scratch_;

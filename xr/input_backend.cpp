@@ -22,7 +22,7 @@ std::unique_ptr<InputBackend> create_input_backend(std::string_view spec, const 
   if (spec.starts_with("replay:") && spec.size() > 7) {
     return create_replay_backend(std::filesystem::path(std::string(spec.substr(7))), options);
   }
-  throw io::InputError("--input: unknown backend '" + std::string(spec) +
+  throw io::InputError("unknown backend '" + std::string(spec) +
                        "' (expected sim, hid, hid:VID:PID|PATH[,...] or replay:FILE)");
 }
 

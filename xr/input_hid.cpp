@@ -37,8 +37,8 @@ class HidInputBackend final : public InputBackend {
       }
       if (chosen.empty()) {
         throw io::InputError(io::hid_available()
-                                 ? "--input hid: no supported HID device found (`vdfx devices` lists them)"
-                                 : "--input hid: this build has no hidapi support");
+                                 ? "hid: no supported HID device found (`vdfx devices` lists them)"
+                                 : "hid: this build has no hidapi support");
       }
     }
     for (const std::string& sel : selectors) {
@@ -47,12 +47,12 @@ class HidInputBackend final : public InputBackend {
         for (const auto& d : devices) {
           if (d.path == sel) id = io::format_device_id(d.vendor_id, d.product_id);
         }
-        if (id.empty()) throw io::InputError("--input hid: no HID device at " + sel);
+        if (id.empty()) throw io::InputError("hid: no HID device at " + sel);
         chosen.push_back({id, sel});
       } else if (parse_device_id(sel)) {
         chosen.push_back({sel, ""});
       } else {
-        throw io::InputError("--input hid: '" + sel + "' is neither vendor:product (hex, e.g. 054c:05c4) nor a path");
+        throw io::InputError("hid: '" + sel + "' is neither vendor:product (hex, e.g. 054c:05c4) nor a path");
       }
     }
     for (const Selector& s : chosen) {

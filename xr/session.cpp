@@ -112,7 +112,6 @@ void Session::end_frame(std::int64_t display_time_ns, std::vector<QuadLayer> qua
                           " ns is not the predicted " + std::to_string(last_predicted_ns_) + " ns");
   frame_begun_ = false;
   quads_ = std::move(quad_layers);
-  ++frames_ended_;
   if (state_ == SessionState::Synchronized && !exit_requested_) {
     set_state(SessionState::Visible, display_time_ns);
     if (input_focus_) set_state(SessionState::Focused, display_time_ns);

@@ -88,7 +88,6 @@ class Session {
   /// layers for the compositor.
   void end_frame(std::int64_t display_time_ns, std::vector<QuadLayer> quad_layers);
   const std::vector<QuadLayer>& submitted_quad_layers() const { return quads_; }
-  std::int64_t frames_ended() const { return frames_ended_; }
 
   /// xrLocateViews: both eyes at `head_in_local` (the input backend's pose at the display time),
   /// in VIEW (head-locked) or LOCAL space (xr/eye_views.h does the per-eye geometry).
@@ -111,7 +110,6 @@ class Session {
   std::int64_t epoch_ns_ = 0;
   std::int64_t last_predicted_ns_ = INT64_MIN;
   bool frame_waited_ = false, frame_begun_ = false;
-  std::int64_t frames_ended_ = 0;
   std::vector<QuadLayer> quads_;
 };
 

@@ -18,7 +18,7 @@ TEST(CliUtil, ParsesEvalPointsAndSizes) {
   const EvalPoint p = parse_eval_point("30,0,75");
   EXPECT_DOUBLE_EQ(p.direction.azimuth_deg, 30.0);
   EXPECT_EQ(p.frame, 75);
-  const ImageSize s = parse_size("1280x720");
+  const ImageSize s = parse_size("1280x720", "--size");
   EXPECT_EQ(s.width, 1280);
   EXPECT_EQ(s.height, 720);
 }
@@ -30,7 +30,14 @@ const char* const kBadSizes[] = {"0x10", "10", "10x", "x10", "10x10x10", "1.5x2"
 TEST(CliUtil, RejectsMalformedValues) {
   for (const char* t : kBadViews) EXPECT_THROW(parse_view(t), CLI::ValidationError) << t;
   for (const char* t : kBadPoints) EXPECT_THROW(parse_eval_point(t), CLI::ValidationError) << t;
-  for (const char* t : kBadSizes) EXPECT_THROW(parse_size(t), CLI::ValidationError) << t;
+  for (const char* t : kBadSizes)
+    EXPECT_THROW(parse_size(t, "--window"), CLI::ValidationError) << t;
+  try {
+    parse_size("10x", "--bake");
+    ADD_FAILURE() << "accepted 10x";
+  } catch (const CLI::ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("--bake"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

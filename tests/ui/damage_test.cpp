@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include <cmath>
 #include <functional>
 
@@ -35,6 +37,8 @@ struct DamageCase {
   /// Changes applied one after the other; the incremental panel renders after each.
   std::vector<std::function<void(Panel&)>> steps;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const DamageCase& c, std::ostream* os) { *os << c.name; }
 
 void hover(Panel& p, const char* id, bool on) { p.find(id)->set_hovered(on); }
 

@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include <cstdlib>
 #include <functional>
 
@@ -150,6 +152,8 @@ struct GoldenCase {
   const char* name;
   std::function<std::unique_ptr<Panel>()> make;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.name; }
 
 const GoldenCase kCases[] = {
     {"buttons", buttons},       {"labels", labels},     {"sliders", sliders},

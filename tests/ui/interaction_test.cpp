@@ -11,6 +11,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include <cmath>
 
 namespace vdfx::ui::test {
@@ -45,6 +47,8 @@ struct AngleCase {
   double yaw_deg, pitch_deg;
   bool hits;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const AngleCase& c, std::ostream* os) { *os << c.name; }
 const AngleCase kAngles[] = {
     {"centre", 0, 0, true},       {"left_inside", -7.0, 0, true}, {"right_outside", 7.3, 0, false},
     {"above", 0, 7.3, false},     {"below_inside", 0, -7.0, true}, {"behind_viewer", 180, 0, false},

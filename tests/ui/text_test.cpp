@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include <cmath>
 
 namespace vdfx::ui::test {
@@ -19,6 +21,8 @@ struct Utf8Case {
   std::string bytes;
   std::u32string expected;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const Utf8Case& c, std::ostream* os) { *os << c.name; }
 
 const Utf8Case kUtf8Cases[] = {
     {"ascii", "az 09", U"az 09"},

@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "effects/effect_shaders.h"
+#include "effects/gaussian_blur.h"
 #include "gl_test_support.h"
 #include "xr/effect_stack_gl.h"
 #include "xr/gpu_timer.h"
@@ -37,6 +38,28 @@ TEST(PyramidPlan, HalvesWhileTheLevelSigmaStaysAboveTheMinimumAndKeepsTheVarianc
 }
 
 class BlurPyramidGlTest : public GlTest {};
+
+TEST_F(BlurPyramidGlTest, TheTapTableKeepsItsTextureWhileTheRadiusChanges) {
+  // The per-pixel blur sets one radius per level, per eye, per frame: the table must not be
+  // reallocated for each (only grown, by doubling, when a radius needs more than it holds).
+  const GlProgram p = GlProgram::build("blur_1d", fullscreen_vertex_source(),
+                                       effects::blur_1d_fragment_source());
+  p.use();
+  GlTexture taps;
+  set_gaussian_uniforms(p, 2.0, effects::gaussian_radius(2.0), 1, taps);
+  ASSERT_TRUE(taps);
+  const unsigned id = taps.id();
+  EXPECT_EQ(taps.width(), kMinTapCapacity);
+  for (double sigma : {10.0, 0.7, 40.0, 3.0}) {
+    set_gaussian_uniforms(p, sigma, effects::gaussian_radius(sigma), 1, taps);
+    EXPECT_EQ(taps.id(), id) << sigma;
+    GLint count = -1;
+    glGetUniformiv(p.id(), p.uniform("u_tap_count"), &count);
+    EXPECT_EQ(count, (effects::gaussian_radius(sigma) + 1) / 2) << sigma;
+  }
+  set_gaussian_uniforms(p, 100.0, effects::gaussian_radius(100.0), 1, taps);  // 150 pairs
+  EXPECT_EQ(taps.width(), 4 * kMinTapCapacity);
+}
 
 TEST_F(BlurPyramidGlTest, PyramidStaysCloseToTheExactBlur) {
   // 512 x 512 at 90 degrees: 4.5 px/degree, so sigma 0.5 .. 4 deg is 2.2 .. 18 px (0 .. 3

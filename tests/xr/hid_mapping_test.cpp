@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include "hid_test_data.h"
 #include "input_test_util.h"
 
@@ -55,6 +57,8 @@ struct ButtonRow {
   std::uint8_t bits;
   const char* path;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const ButtonRow& c, std::ostream* os) { *os << c.name; }
 
 // DS4 bits (see hid_parsers_test) -> the action they drive (docs/input.md).
 const ButtonRow kButtons[] = {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include "hid_test_data.h"
 
 namespace vdfx::xr {
@@ -19,6 +21,8 @@ struct PadCase {
   double lt, rt;
   std::vector<PadButton> pressed;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const PadCase& c, std::ostream* os) { *os << c.name; }
 
 void expect_pad(const GamepadState& s, const PadCase& c) {
   EXPECT_NEAR(s.left_stick[0], c.left[0], 1e-12);
@@ -94,6 +98,8 @@ struct SpaceMouseCase {
   std::array<double, 3> t, r;
   std::uint32_t buttons;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const SpaceMouseCase& c, std::ostream* os) { *os << c.name; }
 
 const SpaceMouseCase kSpaceMouse[] = {
     {"translation", {test_data::spacemouse_report(1, 350, -350, 0)}, {1, -1, 0}, {0, 0, 0}, 0},
@@ -138,6 +144,8 @@ struct GenericCase {
   std::array<double, 2> left, right;
   std::vector<PadButton> pressed;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const GenericCase& c, std::ostream* os) { *os << c.name; }
 
 const GenericCase kGeneric[] = {
     {"rest_hat_released", test_data::generic_report(0x80, 0x80, 0x80, 0x80, 0x0F, 0),

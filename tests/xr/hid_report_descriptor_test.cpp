@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include "hid_test_data.h"
 
 namespace vdfx::xr {
@@ -31,6 +33,8 @@ struct DescriptorCase {
   std::size_t input_count;
   std::vector<FieldRow> fields;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const DescriptorCase& c, std::ostream* os) { *os << c.name; }
 
 const DescriptorCase kDescriptors[] = {
     {"generic_4axes_hat_12buttons", test_data::kGenericGamepadDescriptor, false, 0x04, 4 + 1 + 12 + 8,
@@ -122,6 +126,8 @@ struct BadDescriptor {
   std::vector<std::uint8_t> bytes;
   const char* what;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const BadDescriptor& c, std::ostream* os) { *os << c.name; }
 
 const BadDescriptor kBadDescriptors[] = {
     {"truncated_item", {0x05, 0x01, 0x26, 0xFF}, "byte 2: item data runs past the end"},

@@ -3,6 +3,8 @@
 /// swap, and the bindings text.
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include "input_test_util.h"
 #include "xr/input_backend.h"
 
@@ -27,6 +29,10 @@ struct KeyRow {
   const char* path;
   double pressed_value;
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const KeyRow& c, std::ostream* os) {
+  *os << key_name(c.key) << (c.left_handed ? " (left-handed)" : "") << " -> " << c.path;
+}
 
 const KeyRow kKeys[] = {
     {Key::Space, false, "/user/hand/right/input/trigger/value", 1.0},
@@ -132,6 +138,8 @@ struct CursorRow {
   double hfov;
   double expected_angle_deg;  // between the aim ray and the view's forward direction
 };
+// gtest prints the case by its name, not as a dump of its bytes.
+void PrintTo(const CursorRow& c, std::ostream* os) { *os << c.name; }
 
 // 1280 x 720 window: tan(vfov/2) = tan(hfov/2) * 720 / 1280.
 const CursorRow kCursor[] = {
