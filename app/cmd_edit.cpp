@@ -130,7 +130,7 @@ int cmd_edit(const Args& args) {
   io::Sidecar sidecar;
   if (exists) sidecar = io::read_sidecar(load_from ? *load_from : sidecar_path);
   const fs::path v = video.empty() ? sidecar_video(sidecar_path, sidecar) : fs::path(video);
-  LoopSetup setup = prepare_loop(loop, v, true);
+  LoopSetup setup = prepare_loop(loop, v, true, {{"--sidecar", sidecar_path}});
   if (!exists) {
     const io::VideoProperties& p = setup.video->properties();
     sidecar.video = {fs::absolute(v).string(), p.fps.value(), std::max<std::int64_t>(1, p.frames), p.width,

@@ -52,7 +52,7 @@ int cmd_play(const Args& args) {
   if (auto code = parse_cli(cli, args)) return *code;
 
   const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
-  LoopSetup setup = prepare_loop(loop, video, !no_loop);
+  LoopSetup setup = prepare_loop(loop, video, !no_loop, {{"--sidecar", sidecar_path}});
   warn_mismatch(sidecar, setup.video->properties());
   PlayerOptions po;
   po.loop = !no_loop;

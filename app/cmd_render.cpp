@@ -4,13 +4,13 @@
 /// pre-distortion.
 #include <iostream>
 #include <optional>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "app/cli_util.h"
 #include "app/view_render.h"
-#include "io/atomic_file.h"
+#include "io/image_write.h"
 #include "io/input_error.h"
+#include "io/output_path.h"
 #include "io/sidecar.h"
 #include "xr/blur_method.h"
 #include "xr/hmd_profile.h"
@@ -106,15 +106,17 @@ int cmd_render(const Args& args) {
     request.hmd = xr::load_hmd_profile(hmd_name);
     request.eye = eye_text == "right" ? xr::Eye::Right : xr::Eye::Left;
   }
+  // Before any work: an --out that would destroy an input, or a device, is refused up front.
+  std::vector<io::NamedInput> inputs = {{"INPUT", input}, {"--sidecar", sidecar_path}};
+  if (request.hmd) inputs.push_back({"--hmd", request.hmd->source});
+  io::check_output_is_not_input("--out", out_path, inputs);
+  io::resolve_output_path(out_path);
 
   const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
   const cv::Mat rgb8 = render_request(input, sidecar, request);
   cv::Mat bgr;
   cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);
-  std::vector<unsigned char> png;
-  if (!cv::imencode(".png", bgr, png)) throw std::runtime_error("PNG encoding failed");
-  io::write_file_atomic(out_path, std::string_view(reinterpret_cast<const char*>(png.data()),
-                                                   png.size()));
+  io::write_png(out_path, bgr);
   std::cout << out_path << ": " << rgb8.cols << "x" << rgb8.rows << "\n";
   return kExitOk;
 }

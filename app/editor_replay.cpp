@@ -3,14 +3,15 @@
 #include "app/editor_replay.h"
 
 #include <cstdio>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "app/editor.h"
 #include "effects/equirect_sampler.h"
 #include "effects/view_renderer.h"
 #include "io/frame_decoder.h"
+#include "io/image_write.h"
 #include "io/input_error.h"
+#include "io/output_path.h"
 #include "io/recording.h"
 #include "ui/interaction.h"
 #include "xr/input_backend.h"
@@ -80,6 +81,11 @@ void overlay_panels(cv::Mat& rgb8, const effects::ViewCamera& camera, const glm:
 
 ReplayResult run_replay(const ReplayOptions& o) {
   ReplayResult result;
+  // Outputs that would destroy an input, or land on a device, are refused before any work.
+  std::vector<io::NamedInput> inputs = {{"recording", o.recording}, {"--video", o.video}};
+  if (o.sidecar_in) inputs.push_back({"--sidecar-in", *o.sidecar_in});
+  io::check_output_is_not_input("--sidecar-out", o.sidecar_out, inputs);
+  io::resolve_output_path(o.sidecar_out);
   io::Recording rec = io::read_recording(o.recording);
   for (const auto& w : rec.warnings) result.messages.push_back(w);
 
@@ -105,7 +111,11 @@ ReplayResult run_replay(const ReplayOptions& o) {
   const auto timeline = backend->timeline();
   std::vector<std::size_t> shots;
   if (o.frames_dir && !timeline.empty()) {
-    fs::create_directories(*o.frames_dir);
+    std::error_code ec;
+    fs::create_directories(*o.frames_dir, ec);
+    if (ec || !fs::is_directory(*o.frames_dir))
+      throw io::InputError("--frames " + o.frames_dir->string() + ": cannot create the folder" +
+                           (ec ? " (" + ec.message() + ")" : " (a file of that name exists)"));
     const int n = std::max(1, o.frame_images);
     for (int k = 1; k <= n; ++k)
       shots.push_back((timeline.size() - 1) * static_cast<std::size_t>(k) / static_cast<std::size_t>(n));
@@ -131,7 +141,8 @@ ReplayResult run_replay(const ReplayOptions& o) {
       char name[64];
       std::snprintf(name, sizeof name, "replay_%03zu.png", next_shot);
       const fs::path out = *o.frames_dir / name;
-      if (!cv::imwrite(out.string(), bgr)) throw io::InputError(out.string() + ": cannot write the PNG");
+      io::check_output_is_not_input("--frames", out, inputs);
+      io::write_png(out, bgr, io::OutputName::Generated);
       result.images.push_back(out);
       ++next_shot;
     }

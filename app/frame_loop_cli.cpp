@@ -18,6 +18,22 @@ std::string size_problem(const std::string& text) {
     return e.what();
   }
 }
+
+// --record and --screenshot must not destroy an input, and must be regular files (or new).
+void check_loop_outputs(const LoopCli& o, const std::filesystem::path& video_path,
+                        const std::string& profile_source,
+                        const std::vector<io::NamedInput>& other_inputs) {
+  std::vector<io::NamedInput> inputs = other_inputs;
+  inputs.push_back({"VIDEO", video_path});
+  inputs.push_back({"--hmd", profile_source});
+  if (o.input.rfind("replay:", 0) == 0) inputs.push_back({"--input replay:", o.input.substr(7)});
+  for (const auto& [role, path] : {std::pair{"--record", o.record}, {"--screenshot", o.screenshot}}) {
+    if (path.empty()) continue;
+    io::check_output_is_not_input(role, path, inputs);
+    io::resolve_output_path(path);
+  }
+}
+
 }  // namespace
 
 void add_loop_options(CLI::App& cli, LoopCli& o) {
@@ -57,10 +73,12 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
       ->check(CLI::IsMember({"exact", "pyramid"}));
 }
 
-LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video) {
+LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video,
+                       const std::vector<io::NamedInput>& other_inputs) {
   LoopSetup s;
   FrameLoopOptions& f = s.options;
   f.profile = xr::load_hmd_profile(o.hmd);
+  check_loop_outputs(o, video_path, f.profile.source, other_inputs);
   const ImageSize window = parse_size(o.window);
   const ImageSize bake = parse_size(o.bake);
   f.window_width = window.width;

@@ -2,13 +2,16 @@
 /// @brief Recording reader (validating, line-numbered errors) and incremental writer.
 #include "io/recording.h"
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "io/input_error.h"
+#include "io/output_path.h"
 
 namespace vdfx::io {
 
@@ -186,6 +189,9 @@ RecordingHeader parse_header(const Where& w, const Json& obj) {
 
 // [SECTION] Writing
 
+/// The reason a stream failed, as far as errno still tells it.
+std::string errno_text() { return errno != 0 ? std::strerror(errno) : "I/O error"; }
+
 OrderedJson pose_json(const RecordedPose& p) {
   return OrderedJson{{"q", OrderedJson::array({p.q[0], p.q[1], p.q[2], p.q[3]})},
                      {"p", OrderedJson::array({p.p[0], p.p[1], p.p[2]})}};
@@ -333,8 +339,12 @@ std::string format_hid_line(const RecordedHid& h) {
 }
 
 RecordingWriter::RecordingWriter(const std::filesystem::path& path, const RecordingHeader& header)
-    : path_(path), out_(path, std::ios::binary | std::ios::trunc) {
-  if (!out_) throw InputError(path.string() + ": cannot create the recording");
+    : path_(path) {
+  // Through a link to its file; a device or pipe is refused, never replaced or blocked on.
+  out_.open(resolve_output_path(path), std::ios::binary | std::ios::trunc);
+  if (!out_) {
+    throw InputError(path.string() + ": cannot create the recording (" + errno_text() + ")");
+  }
   write_line(format_header_line(header));
 }
 
@@ -344,7 +354,13 @@ void RecordingWriter::write(const RecordedHid& hid) { write_line(format_hid_line
 void RecordingWriter::write_line(const std::string& line) {
   out_ << line << '\n';
   out_.flush();  // a crash loses at most this line
-  if (!out_) throw std::runtime_error(path_.string() + ": write failed (disk full?)");
+  // The user chose where to record, so a full disk or a lost device is their input's problem
+  // (exit 1), named with the file; what was written before stays readable (a truncated last
+  // line is dropped by the reader).
+  if (!out_) {
+    throw InputError(path_.string() + ": cannot write the recording (" + errno_text() +
+                     "); the lines before this one were kept");
+  }
 }
 
 }  // namespace vdfx::io
