@@ -7,11 +7,13 @@
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include "io/input_error.h"
+#include "io/input_file.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -68,9 +70,8 @@ LoadedImage to_display_rgb(const cv::Mat& decoded, const ToneMapSettings& tone) 
 
 LoadedImage load_image(const std::filesystem::path& path, const ToneMapSettings& tone) {
   const std::string name = path.string();
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(name + ": no such file");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(name + ": is a folder, not an image");
+  // A regular file only: OpenCV would block forever on a named pipe with no writer.
+  check_input_file(path, std::numeric_limits<std::uintmax_t>::max(), "an image");
   if (!std::ifstream(path, std::ios::binary)) throw InputError(name + ": cannot open for reading");
   enable_openexr();
   cv::Mat decoded;

@@ -16,6 +16,11 @@ std::string json_pointer_token(std::string_view key) {
   return out;
 }
 
+std::string JsonTextError::place() const {
+  if (line == 0) return pointer.empty() ? std::string("(document)") : pointer;
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
 namespace {
 
 using json = nlohmann::json;

@@ -16,6 +16,8 @@ struct JsonTextError {
   std::size_t column = 0;  //!< 1-based, in bytes
   std::string pointer;     //!< JSON pointer of the offending member (duplicate keys)
   std::string message;
+  /// "line L, column C", or the pointer when there is no line.
+  std::string place() const;
 };
 
 struct JsonText {

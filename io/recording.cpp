@@ -7,10 +7,12 @@
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "io/input_error.h"
+#include "io/input_file.h"
 #include "io/output_path.h"
 
 namespace vdfx::io {
@@ -246,20 +248,30 @@ std::vector<std::uint8_t> from_hex(const std::string& hex) {
 }
 
 Recording parse_recording(std::istream& in, const std::string& name) {
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   Recording rec;
   rec.name = name;
-  std::size_t pos = 0;
   int line_no = 0;
   bool have_header = false;
   std::int64_t last_t = 0;
   std::optional<std::int64_t> last_sample_t;
   bool any_line = false;
-  while (pos < text.size()) {
-    const std::size_t nl = text.find('\n', pos);
-    const bool terminated = nl != std::string::npos;
-    std::string line = text.substr(pos, terminated ? nl - pos : std::string::npos);
-    pos = terminated ? nl + 1 : text.size();
+  // One line at a time, never more than the limit: a file without newlines (or /dev/zero) is
+  // refused at its first line instead of being read whole.
+  std::vector<char> buffer(kMaxRecordingLineBytes + 2);
+  while (true) {
+    in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    const bool terminated = !in.eof() && !in.fail();
+    if (in.fail() && !in.eof() && !in.bad()) {  // buffer full before a newline
+      Where{name, line_no + 1}.fail("", "line longer than " + byte_size_text(kMaxRecordingLineBytes) +
+                                            " (the limit of a recording line)");
+    }
+    if (in.bad()) Where{name, line_no + 1}.fail("", "read error");
+    if (got == 0 && !terminated) break;  // end of input
+    std::string line(buffer.data(), terminated ? got - 1 : got);
+    if (line.size() > kMaxRecordingLineBytes)
+      Where{name, line_no + 1}.fail("", "line longer than " + byte_size_text(kMaxRecordingLineBytes) +
+                                            " (the limit of a recording line)");
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const Where w{name, line_no};
@@ -307,6 +319,7 @@ Recording parse_recording(std::istream& in, const std::string& name) {
 }
 
 Recording read_recording(const std::filesystem::path& path) {
+  check_input_file(path, kMaxRecordingBytes, "a recording");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string() + ": cannot open the recording");
   return parse_recording(in, path.string());

@@ -75,6 +75,12 @@ struct Recording {
 /// Quaternions whose norm differs from 1 by more than this are rejected.
 inline constexpr double kRecordingUnitTolerance = 1e-3;
 
+/// The longest line a recording may have (a sample line is about 500 bytes, a generic gamepad's
+/// descriptor line at most about 8 KiB) and the largest recording file: about 5 hours of samples
+/// at 90 Hz. Both are read with their limit, never past it (docs/reliability.md).
+inline constexpr std::size_t kMaxRecordingLineBytes = std::size_t{1} << 20;
+inline constexpr std::uintmax_t kMaxRecordingBytes = std::uintmax_t{1} << 30;
+
 /// Reads and validates a recording; throws InputError naming the file and line of the first
 /// problem (bad JSON, header, version, types, ranges, NaN/infinity, non-unit quaternion, time
 /// order: samples strictly increasing, every line not before the one above it). A truncated last

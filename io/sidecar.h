@@ -33,6 +33,9 @@ struct Sidecar {
 
 inline constexpr const char* kSidecarFormat = "vdfx.sidecar";
 inline constexpr int kSidecarVersion = 1;
+/// The largest sidecar file read (docs/reliability.md): far above what kMaxKeyframesPerEffect
+/// keyframes in every effect take, small enough to hold in memory several times over.
+inline constexpr std::uintmax_t kMaxSidecarBytes = std::uintmax_t{64} << 20;
 
 /// Reads and validates a sidecar. Throws io::InputError listing every problem (one per line:
 /// "FILE: POINTER: what is wrong") when the file is unreadable or invalid.

@@ -5,11 +5,10 @@
 #include "io/sidecar_validate.h"
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
-#include <sstream>
 
+#include "io/input_file.h"
 #include "io/json_text.h"
 
 namespace vdfx::io {
@@ -380,28 +379,14 @@ SidecarReport validate_sidecar_text(std::string_view text, const std::string& fi
 }
 
 SidecarReport validate_sidecar_file(const std::filesystem::path& path) {
-  std::error_code dir_ec;
-  if (std::filesystem::is_directory(path, dir_ec)) {
+  std::string why;
+  const std::optional<std::string> text = try_read_input_file(path, kMaxSidecarBytes, "a sidecar", why);
+  if (!text) {
     SidecarReport r;
-    r.problems.push_back({path.string(), "", "is a folder, not a sidecar file"});
+    r.problems.push_back({path.string(), "", why});
     return r;
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    SidecarReport r;
-    std::error_code ec;
-    const bool exists = std::filesystem::exists(path, ec);
-    r.problems.push_back({path.string(), "", exists ? "cannot open the file for reading" : "no such file"});
-    return r;
-  }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) {
-    SidecarReport r;
-    r.problems.push_back({path.string(), "", "read error"});
-    return r;
-  }
-  return validate_sidecar_text(ss.str(), path.string());
+  return validate_sidecar_text(*text, path.string());
 }
 
 }  // namespace vdfx::io

@@ -5,13 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
 #include "effects/coords.h"
 #include "io/input_error.h"
+#include "io/input_file.h"
+#include "io/json_text.h"
 
 namespace vdfx::xr {
 namespace {
@@ -287,15 +288,17 @@ HmdProfile load_hmd_profile(std::string_view name_or_path) {
                            ": " + (known.empty() ? "none" : known) + ")");
     }
   }
-  std::ifstream in(path);
-  if (!in) throw io::InputError(path.string() + ": cannot open HMD profile");
-  json doc;
-  try {
-    doc = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw io::InputError(path.string() + ": not valid JSON: " + e.what());
+  // Bounded and non-blocking (a pipe or /dev/zero named as a profile is refused); the JSON is
+  // parsed like a sidecar's: line and column of a syntax error, duplicate keys refused.
+  const std::string text = io::read_input_file(path, kMaxHmdProfileBytes, "an HMD profile");
+  io::JsonText parsed = io::parse_json_text(text);
+  if (!parsed.errors.empty()) {
+    std::string msg;
+    for (const io::JsonTextError& e : parsed.errors)
+      msg += (msg.empty() ? "" : "\n") + path.string() + ": " + e.place() + ": " + e.message;
+    throw io::InputError(msg);
   }
-  return parse_hmd_profile(doc, path.string());
+  return parse_hmd_profile(parsed.value, path.string());
 }
 
 }  // namespace vdfx::xr

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -52,6 +53,9 @@ struct HmdProfile {
   /// The lens geometry of one eye, for the pre-distortion and the through-the-lens simulation.
   effects::EyeLens eye_lens(Eye e) const;
 };
+
+/// The largest profile file read (the bundled ones are about 1 KiB).
+inline constexpr std::uintmax_t kMaxHmdProfileBytes = std::uintmax_t{1} << 20;
 
 /// Where named profiles are looked up: $VDFX_HMD_PROFILE_DIR when set, else the source tree's
 /// xr/profiles (VDFX_SOURCE_DIR).

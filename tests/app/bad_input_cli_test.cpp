@@ -1,0 +1,68 @@
+/// @file
+/// @brief Issue 11 through the real executable, one test per class of bad input: the exit code
+/// of the contract (1 input, 2 usage, never 3 for the user's mistake), a message that names the
+/// file or option and the place, and no hang (every run has a time limit).
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+
+#include "command_test_util.h"
+
+namespace vdfx::app::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Without a display, under a time limit: a hang is exit 124, not a stuck test.
+CommandResult run(const std::string& args) {
+  return run_vdfx(args, "env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 ");
+}
+
+/// pano.png and s.vdfx.json in a fresh folder.
+fs::path setup() {
+  const fs::path dir = test_dir();
+  write_test_panorama(dir);
+  write_text(dir / "s.vdfx.json", exposure_sidecar());
+  return dir;
+}
+
+struct Row {
+  std::string args;
+  int exit_code;
+  std::string says;
+};
+
+void expect_rows(const std::vector<Row>& rows) {
+  for (const Row& row : rows) {
+    const CommandResult r = run(row.args);
+    EXPECT_EQ(r.exit_code, row.exit_code) << row.args << "\n" << r.output.substr(0, 2000);
+    EXPECT_NE(r.output.find(row.says), std::string::npos) << row.args << "\n"
+                                                          << r.output.substr(0, 2000);
+  }
+}
+
+TEST(BadInput, PipesDevicesAndHugeFilesAreRefusedNotWaitedOn) {
+  const fs::path dir = setup();
+  for (const char* name : {"pipe.vdfx.json", "pipe.png", "pipe.vdrec.jsonl", "pipe.json"})
+    ASSERT_EQ(::mkfifo((dir / name).c_str(), 0600), 0);
+  std::ofstream(dir / "huge.vdfx.json") << "{";
+  fs::resize_file(dir / "huge.vdfx.json", std::uintmax_t{8} << 30);  // a hole: no disk used
+  const std::string s = (dir / "s.vdfx.json").string(), pano = (dir / "pano.png").string();
+  const std::string view = " --view 0,0 --fov 90 --size 16x8 --out " + (dir / "o.png").string();
+  expect_rows({
+      {"validate /dev/zero", 1, "/dev/zero: (document): is a character device"},
+      {"validate " + (dir / "pipe.vdfx.json").string(), 1, "is a named pipe (FIFO)"},
+      {"validate " + (dir / "huge.vdfx.json").string(), 1, "is 8 GiB, more than the 64 MiB"},
+      {"render " + (dir / "pipe.png").string() + " --sidecar " + s + view, 1, "pipe.png: is a named pipe"},
+      {"render " + pano + " --sidecar " + (dir / "pipe.vdfx.json").string() + view, 1,
+       "pipe.vdfx.json: (document): is a named pipe"},
+      {"replay " + (dir / "pipe.vdrec.jsonl").string() + " --video " + pano + " --sidecar-out " +
+           (dir / "o.vdfx.json").string(),
+       1, "pipe.vdrec.jsonl: is a named pipe"},
+      {"hmd show " + (dir / "pipe.json").string(), 1, "pipe.json: is a named pipe"},
+  });
+}
+
+}  // namespace
+}  // namespace vdfx::app::testing
