@@ -76,11 +76,18 @@ EvalPoint parse_eval_point(const std::string& text) {
   return p;
 }
 
-ImageSize parse_size(const std::string& text) {
-  const auto v = split_numbers(text, 'x', "--size");
-  if (v.size() != 2 || v[0] < 1 || v[1] < 1 || v[0] > 16384 || v[1] > 16384 ||
-      v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
-    throw CLI::ValidationError("--size", "'" + text + "': expected WxH, whole numbers 1..16384");
+ImageSize parse_size(const std::string& text, const char* option, const SizeLimit& limit) {
+  const auto v = split_numbers(text, 'x', option);
+  const std::string side = std::to_string(limit.max_side);
+  if (v.size() != 2 || v[0] < 1 || v[1] < 1 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+    throw CLI::ValidationError(option, "'" + text + "': expected WxH, whole numbers 1.." + side);
+  if (v[0] > limit.max_side || v[1] > limit.max_side)
+    throw CLI::ValidationError(option, "'" + text + "': each side must be at most " + side);
+  if (v[0] * v[1] > static_cast<double>(limit.max_pixels))
+    throw CLI::ValidationError(option, "'" + text + "': " + std::to_string(std::llround(v[0] * v[1])) +
+                                           " pixels, more than the " +
+                                           std::to_string(limit.max_pixels) + " allowed (" +
+                                           limit.example + ")");
   return {static_cast<int>(v[0]), static_cast<int>(v[1])};
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/size_limits.h"
 #include "effects/coords.h"
 
 namespace vdfx::app {
@@ -35,6 +36,8 @@ struct ImageSize {
 /// Each throws CLI::ValidationError (a usage error) with the offending text.
 ViewSpec parse_view(const std::string& text);  //!< "AZ,ALT" or "AZ,ALT,ROLL"
 EvalPoint parse_eval_point(const std::string& text);  //!< "AZ,ALT,FRAME"
-ImageSize parse_size(const std::string& text);  //!< "WxH"
+/// "WxH" within `limit`; `option` names it in the message.
+ImageSize parse_size(const std::string& text, const char* option = "--size",
+                     const SizeLimit& limit = kOutputSizeLimit);
 
 }  // namespace vdfx::app

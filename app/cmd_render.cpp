@@ -71,7 +71,7 @@ int cmd_render(const Args& args) {
     }
     request.distortion.correct_lca = !no_lca;
     if (!size_text.empty()) {
-      const ImageSize s = parse_size(size_text);
+      const ImageSize s = parse_size(size_text, "--size", kOutputSizeLimit);
       request.width = s.width;
       request.height = s.height;
     }
@@ -90,12 +90,7 @@ int cmd_render(const Args& args) {
     request.blur = *blur;
     if (!gpu && request.blur != xr::BlurMethod::Exact)
       throw CLI::ValidationError("--blur", "the CPU reference blur is exact; pyramid needs --gpu");
-    ImageSize bake;
-    try {
-      bake = parse_size(bake_text);
-    } catch (const CLI::ValidationError&) {
-      throw CLI::ValidationError("--bake", "'" + bake_text + "': expected WxH, whole numbers 1..16384");
-    }
+    const ImageSize bake = parse_size(bake_text, "--bake", kBakeSizeLimit);
     request.bake_width = bake.width;
     request.bake_height = bake.height;
   } catch (const CLI::ValidationError& e) {
@@ -105,6 +100,12 @@ int cmd_render(const Args& args) {
   if (!hmd_name.empty()) {
     request.hmd = xr::load_hmd_profile(hmd_name);
     request.eye = eye_text == "right" ? xr::Eye::Right : xr::Eye::Left;
+    const xr::EyeProfile& ep = request.hmd->eye(request.eye);
+    if (size_text.empty() && std::int64_t{ep.width} * ep.height > kOutputSizeLimit.max_pixels)
+      throw io::InputError(request.hmd->source + ": the " + std::string(xr::eye_name(request.eye)) +
+                           " eye's " + std::to_string(ep.width) + "x" + std::to_string(ep.height) +
+                           " pixels are more than a render may have (" +
+                           std::to_string(kOutputSizeLimit.max_pixels) + "); give --size");
   }
   // Before any work: an --out that would destroy an input, or a device, is refused up front.
   std::vector<io::NamedInput> inputs = {{"INPUT", input}, {"--sidecar", sidecar_path}};

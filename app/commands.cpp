@@ -51,6 +51,9 @@ int run_main(const Args& args) {
     if (args[0] != c.name) continue;
     try {
       return c.run(Args(args.begin() + 1, args.end()));
+    } catch (const UsageError& e) {
+      std::cerr << "vdfx " << c.name << ": " << e.what() << "\n";
+      return kExitUsage;
     } catch (const io::InputError& e) {
       std::cerr << "vdfx " << c.name << ": " << e.what() << "\n";
       return kExitBadInput;

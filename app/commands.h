@@ -3,6 +3,7 @@
 /// code of the contract: 0 success, 1 the input was wrong, 2 usage error, 3 internal error.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,13 @@ namespace vdfx::app {
 enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitInternal = 3 };
 
 using Args = std::vector<std::string>;
+
+/// A usage error found after parsing, where only the running system can tell (an option beyond
+/// the GL implementation's largest texture): run_main reports it as exit 2, like a parse error.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct Command {
   const char* name;

@@ -10,13 +10,19 @@
 
 namespace vdfx::app {
 namespace {
-std::string size_problem(const std::string& text) {
+std::string size_problem(const std::string& text, const char* option, const SizeLimit& limit) {
   try {
-    parse_size(text);
+    parse_size(text, option, limit);
     return {};
   } catch (const CLI::ValidationError& e) {
     return e.what();
   }
+}
+std::string window_problem(const std::string& text) {
+  return size_problem(text, "--window", kOutputSizeLimit);
+}
+std::string bake_problem(const std::string& text) {
+  return size_problem(text, "--bake", kBakeSizeLimit);
 }
 
 // --record and --screenshot must not destroy an input, and must be regular files (or new).
@@ -56,7 +62,7 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
                                        "the lens), eye (left eye, undistorted)")
       ->capture_default_str()
       ->check(CLI::IsMember({"pre", "lens", "eye"}));
-  cli.add_option("--window", o.window, "window size WxH")->capture_default_str()->check(size_problem);
+  cli.add_option("--window", o.window, "window size WxH")->capture_default_str()->check(window_problem);
   cli.add_flag("--hidden", o.hidden, "no visible window (offscreen; --screenshot still works)");
   cli.add_flag("--no-vsync", o.no_vsync, "do not wait for the display's vsync (live input)");
   cli.add_option("--decode-timeout", o.decode_timeout_ms,
@@ -65,7 +71,7 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
       ->check(CLI::Range(0.0, 10000.0));
   cli.add_option("--bake", o.bake, "per-pixel mode's parameter grid WxH (speed/error knob)")
       ->capture_default_str()
-      ->check(size_problem);
+      ->check(bake_problem);
   cli.add_option("--blur", o.blur,
                  "GPU blur: pyramid (halvings + small residual blur, the live default) or exact "
                  "(full-resolution separable Gaussian, as vdfx render --gpu)")
@@ -79,8 +85,8 @@ LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path
   FrameLoopOptions& f = s.options;
   f.profile = xr::load_hmd_profile(o.hmd);
   check_loop_outputs(o, video_path, f.profile.source, other_inputs);
-  const ImageSize window = parse_size(o.window);
-  const ImageSize bake = parse_size(o.bake);
+  const ImageSize window = parse_size(o.window, "--window", kOutputSizeLimit);
+  const ImageSize bake = parse_size(o.bake, "--bake", kBakeSizeLimit);
   f.window_width = window.width;
   f.window_height = window.height;
   f.bake_width = bake.width;

@@ -4,6 +4,8 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "app/commands.h"
+#include "app/size_limits.h"
 #include "effects/distortion_mesh.h"
 #include "effects/effect_shaders.h"
 #include "effects/stack_interpolator.h"
@@ -11,6 +13,7 @@
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
 #include "xr/compositor.h"
+#include "xr/effect_stack_gl.h"
 #include "xr/eye_views.h"
 #include "xr/gl_context.h"
 #include "xr/param_grid.h"
@@ -143,6 +146,18 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
 
   if (r.gpu) {
     auto context = xr::GlContext::create({});
+    // Sizes beyond what this GL implementation takes are refused before any texture exists
+    // (they were GL errors, reported as internal).
+    const int max_side = context->max_image_side();
+    if (equirect.cols > max_side || equirect.rows > max_side)
+      throw io::InputError(input.string() + ": the frame is " + std::to_string(equirect.cols) + "x" +
+                           std::to_string(equirect.rows) + "; this GL implementation (" +
+                           context->renderer() + ") takes at most " + std::to_string(max_side) +
+                           " pixels per side (render without --gpu)");
+    if (r.bake_width > max_side || r.bake_height > max_side)
+      throw UsageError("--bake " + std::to_string(r.bake_width) + "x" + std::to_string(r.bake_height) +
+                       ": this GL implementation takes at most " + std::to_string(max_side) +
+                       " per side");
     cv::Mat bgr_in;
     cv::cvtColor(equirect, bgr_in, cv::COLOR_RGB2BGR);
     xr::GpuViewOptions options;
@@ -160,6 +175,17 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
       for (const effects::StackParams& p : grid->cells) mask |= effects::non_neutral_mask(p);
       options.param_grid = &*grid;
     }
+    effects::StackParams widest = view_params;
+    if (grid) widest.blur_sigma_deg = grid->max_blur_sigma_deg();
+    const int margin = xr::blur_margin(widest, mask, view, w, h);
+    const std::int64_t area_w = w + 2 * margin, area_h = h + 2 * margin;
+    if (area_w > max_side || area_h > max_side || area_w * area_h > kGpuRenderLimit.max_pixels)
+      throw UsageError("--size " + std::to_string(w) + "x" + std::to_string(h) + ": with the blur's margin of " +
+                       std::to_string(margin) + " pixels the GPU renders " + std::to_string(area_w) + "x" +
+                       std::to_string(area_h) + "; it takes at most " + std::to_string(max_side) +
+                       " per side (this GL implementation) and " +
+                       std::to_string(kGpuRenderLimit.max_pixels) + " pixels (" + kGpuRenderLimit.example +
+                       ") in all");
     const cv::Mat bgr = xr::render_view_gpu(bgr_in, view, w, h, view_params, mask, options);
     cv::Mat rgb;
     cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);

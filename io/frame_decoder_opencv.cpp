@@ -15,6 +15,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "io/frame_decoder.h"
+#include "io/image_source.h"
 #include "io/input_error.h"
 
 namespace vdfx::io {
@@ -33,12 +34,14 @@ class OpenCvDecoder final : public FrameDecoder {
       throw InputError(name + ": the video declares no frame rate (" + std::to_string(fps) + ")");
     if (!(count >= 1.0) || !std::isfinite(count))
       throw InputError(name + ": the video declares no frame count (stream without an index?)");
+    check_frame_size(name, w, h);  // before any frame is decoded
     props_ = {path, fps_to_rational(fps), std::llround(count), w, h, false, cap_.getBackendName()};
     // Fail now, with a clear message, rather than on the decode thread later.
     cv::Mat first;
     if (!cap_.read(first) || first.empty())
       throw InputError(name + ": cannot decode the first frame (corrupt or unsupported codec)");
     if (w <= 0 || h <= 0) {
+      check_frame_size(name, first.cols, first.rows);
       props_.width = first.cols;
       props_.height = first.rows;
     }

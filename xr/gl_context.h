@@ -48,6 +48,10 @@ class GlContext {
   /// GL_RENDERER and GL_VERSION strings, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   std::string renderer() const;
   std::string version() const;
+  /// The largest width or height of an image this implementation renders and samples: the
+  /// smallest of GL_MAX_TEXTURE_SIZE, GL_MAX_RENDERBUFFER_SIZE and GL_MAX_VIEWPORT_DIMS. Sizes
+  /// are checked against it before any texture is allocated (a larger one is a GL error).
+  int max_image_side() const;
 
  private:
   explicit GlContext(GLFWwindow* w) : window_(w) {}

@@ -11,6 +11,8 @@
 
 #include "xr/gl_context.h"
 
+#include <algorithm>
+
 namespace vdfx::xr {
 namespace {
 
@@ -100,11 +102,23 @@ std::string GlContext::version() const {
   return s ? s : "";
 }
 
+int GlContext::max_image_side() const {
+  GLint tex = 0, rb = 0;
+  GLint viewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &tex);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &rb);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  return std::min({tex, rb, viewport[0], viewport[1]});
+}
+
 void check_gl(const char* where) {
   const GLenum e = glGetError();
   if (e == GL_NO_ERROR) return;
   std::ostringstream s;
   s << "OpenGL error 0x" << std::hex << e << " after " << where;
+  // The one error a user can meet with valid options (a machine with less memory than the sizes
+  // need): say so in words.
+  if (e == GL_OUT_OF_MEMORY) s << " (GL_OUT_OF_MEMORY: the GL implementation ran out of memory)";
   throw GlError(s.str());
 }
 

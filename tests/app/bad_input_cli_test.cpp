@@ -64,5 +64,24 @@ TEST(BadInput, PipesDevicesAndHugeFilesAreRefusedNotWaitedOn) {
   });
 }
 
+TEST(BadInput, SizesBeyondTheirLimitsAreRefusedBeforeAllocating) {
+  const fs::path dir = setup();
+  cv::imwrite((dir / "wide.png").string(), cv::Mat(2, 20000, CV_8UC3, cv::Scalar(0, 0, 255)));
+  const std::string common = "render " + (dir / "pano.png").string() + " --sidecar " +
+                             (dir / "s.vdfx.json").string() + " --view 0,0 --fov 90 ";
+  const std::string out = " --out " + (dir / "o.png").string();
+  expect_rows({
+      // Options: exit 2, with the limit (were 24 GB, 8.5 GB and GL errors).
+      {common + "--size 64x32 --gpu --mode pixel --bake 16384x16384" + out, 2,
+       "--bake: '16384x16384': each side must be at most 4096"},
+      {common + "--size 16384x16384" + out, 2, "more than the 67108864 allowed (8192x8192)"},
+      {common + "--size 100000x1" + out, 2, "each side must be at most 16384"},
+      // An input frame: exit 1, naming the file (was a GL error on the GPU path).
+      {"render " + (dir / "wide.png").string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+           " --view 0,0 --fov 90 --size 16x8" + out,
+       1, "wide.png: the image is 20000x2; vdfx takes frames of at most 16384 pixels per side"},
+  });
+}
+
 }  // namespace
 }  // namespace vdfx::app::testing

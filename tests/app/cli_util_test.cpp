@@ -33,5 +33,34 @@ TEST(CliUtil, RejectsMalformedValues) {
   for (const char* t : kBadSizes) EXPECT_THROW(parse_size(t), CLI::ValidationError) << t;
 }
 
+TEST(CliUtil, SizesStayWithinTheirDocumentedLimits) {
+  // Issue 11, class 3: 16384x16384 used to be taken and allocated 8.5 GB (24 GB for --bake).
+  EXPECT_EQ(parse_size("8192x8192").width, 8192);
+  EXPECT_EQ(parse_size("16384x4096").width, 16384);
+  EXPECT_EQ(parse_size("4096x2048", "--bake", kBakeSizeLimit).height, 2048);
+  const struct {
+    const char* text;
+    const char* option;
+    SizeLimit limit;
+    const char* says;
+  } rows[] = {
+      {"16384x16384", "--size", kOutputSizeLimit, "268435456 pixels, more than the 67108864 allowed (8192x8192)"},
+      {"16385x1", "--size", kOutputSizeLimit, "each side must be at most 16384"},
+      {"100000x1", "--window", kOutputSizeLimit, "each side must be at most 16384"},
+      {"16384x16384", "--bake", kBakeSizeLimit, "each side must be at most 4096"},
+      {"4096x4096", "--bake", kBakeSizeLimit, "more than the 8388608 allowed (4096x2048)"},
+  };
+  for (const auto& row : rows) {
+    try {
+      parse_size(row.text, row.option, row.limit);
+      ADD_FAILURE() << row.text << " accepted";
+    } catch (const CLI::ValidationError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find(row.option), std::string::npos) << msg;
+      EXPECT_NE(msg.find(row.says), std::string::npos) << msg;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vdfx::app
