@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/cli_util.h"
+#include "app/view_render.h"
 #include "effects/stack_interpolator.h"
 #include "io/input_error.h"
 #include "io/sidecar.h"
@@ -40,6 +41,7 @@ int cmd_eval(const Args& args) {
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
   for (const EvalPoint& p : points) {
     const effects::StackParams params = stack.evaluate(p.direction, p.frame);
+    require_finite(params, path, p.direction, p.frame);  // never print "null"
     nlohmann::ordered_json out;
     out["at"] = {{"azimuth_deg", p.direction.azimuth_deg},
                  {"altitude_deg", p.direction.altitude_deg},

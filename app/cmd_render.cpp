@@ -63,6 +63,7 @@ int cmd_render(const Args& args) {
     request.roll_deg = view.roll_deg;
     request.mode = mode_text == "pixel" ? effects::RenderMode::Pixel : effects::RenderMode::View;
     request.gpu = gpu;
+    request.sidecar_name = sidecar_path;
     request.frame = frame;
     try {
       request.distortion = parse_distortion(distort_text);

@@ -1,6 +1,8 @@
 #include "app/view_render.h"
 
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
@@ -132,11 +134,33 @@ EyeSetup eye_setup(const RenderRequest& r) {
 
 }  // namespace
 
+void require_finite(const effects::StackParams& p, const std::string& sidecar_name,
+                    const effects::Direction& at, std::int64_t frame) {
+  const double values[] = {p.blur_sigma_deg, p.tint_gain.x(), p.tint_gain.y(), p.tint_gain.z(),
+                           p.exposure_stops, p.saturation, p.contrast, p.vignette_radius_deg,
+                           p.vignette_falloff_deg};
+  for (const double v : values) {
+    if (std::isfinite(v)) continue;
+    char where[96];
+    std::snprintf(where, sizeof where, "%.6g,%.6g,%lld", at.azimuth_deg, at.altitude_deg,
+                  static_cast<long long>(frame));
+    throw io::InputError(sidecar_name + ": the effects evaluate to a value that is not finite at " +
+                         where + " (the file's numbers are beyond what the interpolation can " +
+                         "represent); nothing was rendered");
+  }
+}
+
 cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
                        const RenderRequest& r) {
   const cv::Mat equirect = load_equirect_frame(input, r.frame);
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
-  const effects::StackParams view_params = stack.evaluate(r.look, r.frame);
+  // Every evaluation goes through this check: view mode once, per-pixel mode per cell or pixel.
+  const auto evaluate = [&](const effects::Direction& d) {
+    effects::StackParams p = stack.evaluate(d, r.frame);
+    require_finite(p, r.sidecar_name, d, r.frame);
+    return p;
+  };
+  const effects::StackParams view_params = evaluate(r.look);
 
   std::optional<EyeSetup> eye;
   if (r.hmd) eye = eye_setup(r);
@@ -169,8 +193,7 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
     if (r.mode == effects::RenderMode::Pixel) {
       // Per-pixel mode: the parameters baked on an equirect grid, read along each pixel's ray;
       // an effect neutral in every cell is not compiled in.
-      grid = xr::bake_param_grid([&](const effects::Direction& d) { return stack.evaluate(d, r.frame); },
-                                 r.bake_width, r.bake_height);
+      grid = xr::bake_param_grid(evaluate, r.bake_width, r.bake_height);
       mask = 0;
       for (const effects::StackParams& p : grid->cells) mask |= effects::non_neutral_mask(p);
       options.param_grid = &*grid;
@@ -198,9 +221,7 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
   if (r.mode == effects::RenderMode::View) {
     rendered = effects::render_view(sampler, camera, view_params);
   } else {
-    const effects::ParamsAt at = [&](const effects::Direction& d) {
-      return stack.evaluate(d, r.frame);
-    };
+    const effects::ParamsAt at = evaluate;
     rendered = effects::render_view(sampler, camera, at, effects::RenderMode::Pixel);
   }
   if (eye && r.distortion.method != xr::DistortionMethod::None)

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <opencv2/core.hpp>
 #include <optional>
+#include <string>
 
 #include "effects/lens_model.h"
 #include "effects/view_renderer.h"
@@ -31,7 +32,14 @@ struct RenderRequest {
   std::optional<xr::HmdProfile> hmd;
   xr::Eye eye = xr::Eye::Left;
   xr::DistortionSettings distortion{xr::DistortionMethod::None};
+  std::string sidecar_name;  //!< names the sidecar when its values evaluate to NaN or infinity
 };
+
+/// Throws io::InputError naming `sidecar_name` and the view when an evaluated parameter is NaN
+/// or infinite: the validator keeps the interpolation finite (docs/sidecar.md), and this is the
+/// backstop that refuses to render or print such values instead of a black image or "null".
+void require_finite(const effects::StackParams& params, const std::string& sidecar_name,
+                    const effects::Direction& at, std::int64_t frame);
 
 /// Frame `frame` of a video or still as RGB float, display-encoded. Throws io::InputError naming
 /// the file when it is missing, unreadable, or has no such frame.

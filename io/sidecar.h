@@ -33,6 +33,16 @@ struct Sidecar {
 
 inline constexpr const char* kSidecarFormat = "vdfx.sidecar";
 inline constexpr int kSidecarVersion = 1;
+/// Bounds on the RBF's time axis, checked by the validator (docs/sidecar.md, "Derived values"):
+/// one frame is 24 / fps * time_scale apart in the RBF distance. Over the whole clip that must
+/// stay at most kMaxScaledTimeSpan, where d^exponent (exponent < 4) and the solve still have
+/// 1e60 of headroom before overflowing to infinity and NaN (fps 1e-200 evaluated to null). One
+/// frame must stay at least kMinScaledFrameStep apart, or keyframes one frame apart at one
+/// direction are no longer told apart and are not reproduced (measured: exact to 1e-6 at 8e-6,
+/// off by 7e-5 at 8e-7 and 3e-3 at 8e-8 with exponent 3.99).
+inline constexpr double kMaxScaledTimeSpan = 1e60;
+inline constexpr double kMinScaledFrameStep = 1e-5;
+
 /// The largest sidecar file read (docs/reliability.md): far above what kMaxKeyframesPerEffect
 /// keyframes in every effect take, small enough to hold in memory several times over.
 inline constexpr std::uintmax_t kMaxSidecarBytes = std::uintmax_t{64} << 20;

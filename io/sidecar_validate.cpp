@@ -5,6 +5,7 @@
 #include "io/sidecar_validate.h"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -31,6 +32,13 @@ namespace {
 std::string num(double v) {
   if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
   return json(v).dump();
+}
+
+/// A derived value for messages: three significant digits ("2.4e+201", "0.8").
+std::string short_num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
 }
 
 const char* type_name(const json& v) {
@@ -313,11 +321,61 @@ void read_effect(Checker& c, const json& v, const std::string& ptr, std::optiona
   }
 }
 
+/// True when some problem was reported at `ptr` or below it.
+bool has_problem_at(const std::vector<Problem>& problems, std::size_t first, const std::string& ptr) {
+  for (std::size_t i = first; i < problems.size(); ++i)
+    if (problems[i].pointer == ptr || problems[i].pointer.rfind(ptr + "/", 0) == 0) return true;
+  return false;
+}
+
+/// The values the maths derives from fps, frames and time_scale must stay finite and usable:
+/// one frame is 24 / fps * time_scale apart in the RBF distance (contract). Checked for the
+/// file's interpolation and each effect's own, once those fields are themselves valid.
+void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Problem>& problems,
+                        std::size_t first) {
+  if (has_problem_at(problems, first, "/video/fps") || has_problem_at(problems, first, "/video/frames") ||
+      s.video.frames < 2)
+    return;  // one frame: there is no time axis to scale
+  const double gaps = static_cast<double>(s.video.frames - 1);
+  const auto check = [&](const effects::InterpolationSettings& in, const std::string& ptr,
+                         bool own) {
+    if (has_problem_at(problems, first, ptr)) return;
+    const double step = 24.0 / s.video.fps * in.time_scale;
+    const double span = gaps * step;
+    // The remedy names the value at the pointer: fps for the file's interpolation, the
+    // effect's own time_scale for an override.
+    const std::string blame = own ? ptr + "/time_scale" : "/video/fps";
+    const std::string what = "one frame is 24 / fps * time_scale = " + short_num(step) +
+                             " apart in the RBF distance";
+    if (!(span <= kMaxScaledTimeSpan)) {  // also catches inf and NaN
+      const std::string fix =
+          own ? "time_scale must be at most " + short_num(kMaxScaledTimeSpan * s.video.fps / (24.0 * gaps))
+              : "fps must be at least " + short_num(24.0 * in.time_scale * gaps / kMaxScaledTimeSpan);
+      c.error(blame, what + ", the clip's " + std::to_string(s.video.frames) + " frames " +
+                         short_num(span) + ": beyond " + short_num(kMaxScaledTimeSpan) +
+                         ", where its distances overflow (" + fix + ")");
+    } else if (!(step >= kMinScaledFrameStep)) {
+      const std::string fix =
+          own ? "time_scale must be at least " + short_num(kMinScaledFrameStep * s.video.fps / 24.0)
+              : "fps must be at most " + short_num(24.0 * in.time_scale / kMinScaledFrameStep);
+      c.error(blame, what + ": below " + short_num(kMinScaledFrameStep) +
+                         ", where keyframes one frame apart are no longer told apart (" + fix + ")");
+    }
+  };
+  check(s.interpolation, "/interpolation", false);
+  for (std::size_t i = 0; i < s.effects.size(); ++i) {
+    if (!s.effects[i].interpolation) continue;
+    const std::string ptr = "/effects/" + std::to_string(i) + "/interpolation";
+    check(*s.effects[i].interpolation, ptr, true);
+  }
+}
+
 }  // namespace
 
 Sidecar parse_sidecar(const json& document, const std::string& file_for_messages,
                       std::vector<Problem>& problems) {
   Sidecar out;
+  const std::size_t first_problem = problems.size();
   Checker c(file_for_messages, problems);
   const json* root = c.object(document, "");
   if (!root) return out;
@@ -361,6 +419,8 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
         read_effect(c, (*p)[i], "/effects/" + std::to_string(i), frames, seen, out.effects[i]);
     }
   }
+  // Checks across fields, each in a function of its own.
+  check_time_scaling(c, out, problems, first_problem);
   return out;
 }
 

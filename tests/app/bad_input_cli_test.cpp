@@ -83,5 +83,22 @@ TEST(BadInput, SizesBeyondTheirLimitsAreRefusedBeforeAllocating) {
   });
 }
 
+TEST(BadInput, AFileWhoseMathsWouldNotBeFiniteDoesNotValidate) {
+  // fps 1e-200 validated; eval then printed null and render wrote a black image, exit 0.
+  const fs::path dir = setup();
+  std::string text = exposure_sidecar();
+  text.replace(text.find("\"fps\": 30.0"), 11, "\"fps\": 1e-200");
+  text.replace(text.find("\"frames\": 1"), 11, "\"frames\": 2");
+  write_text(dir / "nan.vdfx.json", text);
+  const std::string s = (dir / "nan.vdfx.json").string();
+  expect_rows({
+      {"validate " + s, 1, "nan.vdfx.json: /video/fps: one frame is 24 / fps * time_scale = 2.4e+201"},
+      {"eval " + s + " --at 0,0,1", 1, "/video/fps"},
+      {"render " + (dir / "pano.png").string() + " --sidecar " + s +
+           " --view 0,0 --fov 90 --size 16x8 --out " + (dir / "o.png").string(),
+       1, "/video/fps"},
+  });
+}
+
 }  // namespace
 }  // namespace vdfx::app::testing

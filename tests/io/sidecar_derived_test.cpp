@@ -1,0 +1,83 @@
+/// @file
+/// @brief Issue 11, class 4: a sidecar that validates never evaluates to NaN or infinity. The
+/// validator bounds what the maths derives from fps, frames and time_scale (one frame is
+/// 24 / fps * time_scale apart in the RBF distance), and at those bounds the interpolation is
+/// still finite and reproduces its keyframes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "effects/stack_interpolator.h"
+#include "io/sidecar.h"
+#include "io/sidecar_validate.h"
+
+namespace vdfx::io {
+namespace {
+
+/// Four exposure keyframes, two pairs at one direction one frame apart (the hardest case for a
+/// tiny time step), the last frame of the clip at the far end (the largest span).
+std::string sidecar_text(double fps, long long frames, double exponent, double time_scale,
+                         const char* effect_interpolation = "") {
+  char buf[2048];
+  std::snprintf(buf, sizeof buf, R"({"format": "vdfx.sidecar", "version": 1,
+    "video": {"path": "c.mp4", "fps": %.17g, "frames": %lld, "width": 2, "height": 1},
+    "interpolation": {"exponent": %.17g, "time_scale": %.17g},
+    "effects": [{"type": "exposure", %s "keyframes": [
+      {"azimuth_deg": 90, "altitude_deg": 0, "frame": 0, "params": {"stops": 1}},
+      {"azimuth_deg": 90, "altitude_deg": 0, "frame": 1, "params": {"stops": -1}},
+      {"azimuth_deg": 0, "altitude_deg": -30, "frame": %lld, "params": {"stops": 0.5}},
+      {"azimuth_deg": 0, "altitude_deg": -30, "frame": 0, "params": {"stops": -0.5}}]}]})",
+                fps, frames, exponent, time_scale, effect_interpolation, frames - 1);
+  return buf;
+}
+
+TEST(SidecarDerived, TimeScalingThatWouldOverflowOrMergeFramesIsRefused) {
+  const struct {
+    std::string text;
+    const char* pointer;
+    const char* says;
+  } rows[] = {
+      // fps 1e-200 validated, then eval printed null and render wrote a black image.
+      {sidecar_text(1e-200, 2, 1.0, 1.0), "/video/fps", "fps must be at least 2.4e-59"},
+      {sidecar_text(1e300, 2, 1.0, 1.0), "/video/fps", "fps must be at most 2.4e+06"},
+      {sidecar_text(30, 2, 1.0, 1.0, R"("interpolation": {"exponent": 1, "time_scale": 1e-6},)"),
+       "/effects/0/interpolation/time_scale", "time_scale must be at least 1.25e-05"},
+  };
+  for (const auto& row : rows) {
+    const SidecarReport r = validate_sidecar_text(row.text, "s.vdfx.json");
+    ASSERT_EQ(r.problems.size(), 1u) << r.to_string();
+    EXPECT_EQ(r.problems[0].pointer, row.pointer) << r.to_string();
+    EXPECT_NE(r.problems[0].message.find(row.says), std::string::npos) << r.to_string();
+  }
+  // One frame has no time axis: nothing to scale.
+  std::string still = sidecar_text(1e-200, 1, 1.0, 1.0);
+  still.replace(still.find("\"frame\": 1,"), 11, "\"frame\": 0,");
+  const SidecarReport r = validate_sidecar_text(still, "s");
+  EXPECT_TRUE(r.ok()) << r.to_string();
+}
+
+TEST(SidecarDerived, AtTheBoundsTheInterpolationIsFiniteAndReproducesKeyframes) {
+  // Just inside each bound, for exponents across their open range (0, 4).
+  const double frames = 3;
+  const double fps_for_span = 24.0 * 1.0 * (frames - 1) / (0.99 * kMaxScaledTimeSpan);
+  const double fps_for_step = 24.0 * 1.0 / (1.01 * kMinScaledFrameStep);
+  for (const double fps : {fps_for_span, fps_for_step, 30.0}) {
+    for (const double exponent : {0.01, 1.0, 2.0, 3.99}) {
+      const SidecarReport r =
+          validate_sidecar_text(sidecar_text(fps, static_cast<long long>(frames), exponent, 1.0), "s");
+      ASSERT_TRUE(r.ok()) << r.to_string();
+      const Sidecar& s = *r.sidecar;
+      const effects::StackInterpolator stack(s.effects, s.interpolation, s.video.fps);
+      for (const effects::Keyframe& k : s.effects[0].keyframes) {
+        const double v = stack.evaluate(k.direction, k.frame).exposure_stops;
+        EXPECT_NEAR(v, k.params[0], 1e-4) << "fps " << fps << " exponent " << exponent;
+      }
+      for (const std::int64_t f : {0, 1, 2})
+        EXPECT_TRUE(std::isfinite(stack.evaluate(effects::Direction{37.0, 12.0}, f).exposure_stops));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace vdfx::io
