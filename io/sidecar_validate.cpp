@@ -285,6 +285,17 @@ std::string known_types() {
   return s;
 }
 
+/// The number of keyframes the solver takes (kMaxKeyframesPerEffect); beyond it the keyframes
+/// are not read at all: one clear message, no time spent on what cannot be used.
+bool keyframe_count_ok(Checker& c, const json& keyframes, const std::string& ptr) {
+  if (keyframes.size() <= kMaxKeyframesPerEffect) return true;
+  c.error(ptr, std::to_string(keyframes.size()) + " keyframes, more than the " +
+                   std::to_string(kMaxKeyframesPerEffect) +
+                   " an effect may have (the interpolation's memory grows with the square of the "
+                   "count, its solve time with the cube)");
+  return false;
+}
+
 void read_effect(Checker& c, const json& v, const std::string& ptr, std::optional<std::int64_t> frames,
                  std::map<effects::EffectType, std::string>& seen, effects::EffectTrack& out) {
   const json* obj = c.object(v, ptr);
@@ -315,6 +326,7 @@ void read_effect(Checker& c, const json& v, const std::string& ptr, std::optiona
       c.error(kp, std::string("expected an array, found ") + type_name(*p));
       return;
     }
+    if (!keyframe_count_ok(c, *p, kp)) return;
     out.keyframes.resize(p->size());
     for (std::size_t i = 0; i < p->size(); ++i)
       read_keyframe(c, (*p)[i], kp + "/" + std::to_string(i), spec, frames, out.keyframes[i]);

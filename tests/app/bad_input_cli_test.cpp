@@ -100,5 +100,20 @@ TEST(BadInput, AFileWhoseMathsWouldNotBeFiniteDoesNotValidate) {
   });
 }
 
+TEST(BadInput, KeyframesBeyondTheSolversLimitAreAnInputError) {
+  // 100k keyframes in one effect validated, then eval ended in std::bad_alloc (exit 3).
+  const fs::path dir = setup();
+  std::string keys;
+  for (int i = 0; i < 5000; ++i)
+    keys += std::string(i ? "," : "") + R"({"azimuth_deg": )" + std::to_string(i % 359 - 179) +
+            R"(, "altitude_deg": 0, "frame": 0, "params": {"stops": 0}})";
+  std::string text = exposure_sidecar();
+  const std::size_t at = text.find("\"keyframes\": [") + 14;
+  text.replace(at, text.find("]}", at) - at, keys);
+  write_text(dir / "many.vdfx.json", text);
+  expect_rows({{"eval " + (dir / "many.vdfx.json").string() + " --at 0,0,0", 1,
+                "many.vdfx.json: /effects/0/keyframes: 5000 keyframes, more than the 4096"}});
+}
+
 }  // namespace
 }  // namespace vdfx::app::testing

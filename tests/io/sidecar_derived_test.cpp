@@ -1,12 +1,16 @@
 /// @file
-/// @brief Issue 11, class 4: a sidecar that validates never evaluates to NaN or infinity. The
-/// validator bounds what the maths derives from fps, frames and time_scale (one frame is
-/// 24 / fps * time_scale apart in the RBF distance), and at those bounds the interpolation is
-/// still finite and reproduces its keyframes.
+/// @brief Issue 11, classes 4 and 5: a sidecar that validates never evaluates to NaN or infinity
+/// and stays within the solver's scale. The validator bounds what the maths derives from fps,
+/// frames and time_scale (one frame is 24 / fps * time_scale apart in the RBF distance), and at
+/// those bounds the interpolation is still finite and reproduces its keyframes; the number of
+/// keyframes per effect is checked at load.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "effects/stack_interpolator.h"
 #include "io/sidecar.h"
@@ -77,6 +81,34 @@ TEST(SidecarDerived, AtTheBoundsTheInterpolationIsFiniteAndReproducesKeyframes) 
         EXPECT_TRUE(std::isfinite(stack.evaluate(effects::Direction{37.0, 12.0}, f).exposure_stops));
     }
   }
+}
+
+/// A document with one exposure effect of `n` keyframes on a spiral over the sphere.
+nlohmann::json keyframes_document(std::size_t n) {
+  nlohmann::json doc = nlohmann::json::parse(sidecar_text(30, 50, 1.0, 1.0));
+  nlohmann::json& keys = doc["effects"][0]["keyframes"];
+  keys = nlohmann::json::array();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double z = 2.0 * (static_cast<double>(i) + 0.5) / static_cast<double>(n) - 1.0;
+    keys.push_back({{"azimuth_deg", std::fmod(static_cast<double>(i) * 137.50776, 359.0) - 179.0},
+                    {"altitude_deg", std::asin(z) * 180.0 / M_PI},
+                    {"frame", i % 50},
+                    {"params", {{"stops", static_cast<double>(i % 17) / 4.0 - 2.0}}}});
+  }
+  return doc;
+}
+
+TEST(SidecarDerived, KeyframesPerEffectAreCheckedAtLoad) {
+  // 100k keyframes validated, then eval, render and play ended in std::bad_alloc (exit 3).
+  std::vector<Problem> problems;
+  (void)parse_sidecar(keyframes_document(kMaxKeyframesPerEffect), "s", problems);
+  EXPECT_TRUE(problems.empty());
+  (void)parse_sidecar(keyframes_document(kMaxKeyframesPerEffect + 1), "s", problems);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].pointer, "/effects/0/keyframes");
+  EXPECT_NE(problems[0].message.find("4097 keyframes, more than the 4096 an effect may have"),
+            std::string::npos)
+      << problems[0].message;
 }
 
 }  // namespace
