@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <iostream>
 #include <vector>
 
@@ -52,6 +54,50 @@ void check_direction(const effects::Direction& d, const std::string& text, const
 
 }  // namespace
 
+namespace {
+
+std::string bound_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+/// The text quoted in a message, at most 40 characters of it.
+std::string cli_quote(const std::string& text) {
+  return "'" + (text.size() <= 40 ? text : text.substr(0, 37) + "...") + "'";
+}
+
+}  // namespace
+
+CLI::Validator finite_range(double lo, double hi) {
+  const std::string range = "[" + bound_text(lo) + ", " + bound_text(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        double v = 0.0;
+        const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v))
+          return cli_quote(text) + " is not a finite number";
+        if (v < lo || v > hi) return cli_quote(text) + " is out of range " + range;
+        return {};
+      },
+      "number in " + range);
+}
+
+CLI::Validator whole_range(std::int64_t lo, std::int64_t hi) {
+  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        std::int64_t v = 0;
+        const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec == std::errc::result_out_of_range || (ec == std::errc() && (v < lo || v > hi)))
+          return cli_quote(text) + " is out of range " + range;
+        if (text.empty() || ec != std::errc() || ptr != text.data() + text.size())
+          return cli_quote(text) + " is not a whole number";
+        return {};
+      },
+      "whole number in " + range);
+}
+
 ViewSpec parse_view(const std::string& text) {
   const auto v = split_numbers(text, ',', "--view");
   if (v.size() != 2 && v.size() != 3)
@@ -64,14 +110,20 @@ ViewSpec parse_view(const std::string& text) {
 }
 
 EvalPoint parse_eval_point(const std::string& text) {
-  const auto v = split_numbers(text, ',', "--at");
-  if (v.size() != 3)
-    throw CLI::ValidationError("--at", "'" + text + "': expected AZ,ALT,FRAME");
-  if (v[2] < 0 || v[2] != std::floor(v[2]) || v[2] > 9.0e15)
-    throw CLI::ValidationError("--at", "'" + text + "': FRAME must be a whole number >= 0");
+  // FRAME is read as an integer, exactly: through a double, 9007199254740993 would round.
+  const std::size_t last_comma = text.rfind(',');
+  const std::string frame_text = last_comma == std::string::npos ? "" : text.substr(last_comma + 1);
+  const auto v = split_numbers(text.substr(0, last_comma == std::string::npos ? text.size() : last_comma),
+                               ',', "--at");
+  if (v.size() != 2 || last_comma == std::string::npos)
+    throw CLI::ValidationError("--at", cli_quote(text) + ": expected AZ,ALT,FRAME");
+  std::string frame_copy = frame_text;
+  if (const std::string why = whole_range(0, std::numeric_limits<std::int64_t>::max())(frame_copy);
+      !why.empty())
+    throw CLI::ValidationError("--at", cli_quote(text) + ": FRAME " + why);
   EvalPoint p;
   p.direction = {effects::wrap_azimuth_deg(v[0]), v[1]};
-  p.frame = static_cast<std::int64_t>(v[2]);
+  std::from_chars(frame_text.data(), frame_text.data() + frame_text.size(), p.frame);
   check_direction(p.direction, text, "--at");
   return p;
 }

@@ -33,6 +33,14 @@ struct ImageSize {
   int height = 0;
 };
 
+/// Validators for numeric options. CLI11's own let NaN through (CLI::Range compares, and every
+/// comparison with NaN is false), saturate an int64 that overflows (2^63 read as 2^63 - 1) and
+/// print their bounds with 309 digits; these parse the text themselves.
+/// A finite number in [lo, hi].
+CLI::Validator finite_range(double lo, double hi);
+/// A whole number in [lo, hi], exactly as written (no rounding, no saturation).
+CLI::Validator whole_range(std::int64_t lo, std::int64_t hi);
+
 /// Each throws CLI::ValidationError (a usage error) with the offending text.
 ViewSpec parse_view(const std::string& text);  //!< "AZ,ALT" or "AZ,ALT,ROLL"
 EvalPoint parse_eval_point(const std::string& text);  //!< "AZ,ALT,FRAME"

@@ -46,7 +46,7 @@ int cmd_play(const Args& args) {
   cli.add_flag("--no-loop", no_loop, "stop on the last frame instead of looping");
   cli.add_option("--seek-step", seek_step, "seconds per B / F seek")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 3600.0));
+      ->check(finite_range(0.0, 3600.0));
   add_loop_options(cli, loop);
   cli.footer(play_help_footer());
   if (auto code = parse_cli(cli, args)) return *code;

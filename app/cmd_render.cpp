@@ -3,6 +3,7 @@
 /// CPU reference path or (--gpu) through the GL compositor, optionally as one HMD eye with lens
 /// pre-distortion.
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <opencv2/imgproc.hpp>
 
@@ -30,9 +31,10 @@ int cmd_render(const Args& args) {
   cli.add_option("INPUT", input, "equirect image (PNG, JPEG, EXR, HDR) or video")->required();
   cli.add_option("--sidecar", sidecar_path, "the effects (.vdfx.json)")->required();
   cli.add_option("--view", view_text, "where to look: AZ,ALT[,ROLL] in degrees")->required();
-  cli.add_option("--frame", frame, "video frame index (0-based)")->check(CLI::NonNegativeNumber);
+  cli.add_option("--frame", frame, "video frame index (0-based)")
+      ->check(whole_range(0, std::numeric_limits<std::int64_t>::max()));
   cli.add_option("--fov", fov, "horizontal field of view in degrees (not with --hmd)")
-      ->check(CLI::Range(1.0, 179.0));
+      ->check(finite_range(1.0, 179.0));
   cli.add_option("--size", size_text, "output size WxH (with --hmd: default the eye's size)");
   cli.add_option("--mode", mode_text,
                  "view: parameters interpolated once at the view centre (the paper's method);\n"

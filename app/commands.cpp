@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "io/input_error.h"
+#include "xr/gl_context.h"
 
 namespace vdfx::app {
 
@@ -54,6 +55,11 @@ int run_main(const Args& args) {
     } catch (const UsageError& e) {
       std::cerr << "vdfx " << c.name << ": " << e.what() << "\n";
       return kExitUsage;
+#if VDFX_WITH_GL
+    } catch (const xr::GlUnavailableError& e) {  // no display or GL 4.3 here: how it was run
+      std::cerr << "vdfx " << c.name << ": " << e.what() << "\n";
+      return kExitUsage;
+#endif
     } catch (const io::InputError& e) {
       std::cerr << "vdfx " << c.name << ": " << e.what() << "\n";
       return kExitBadInput;

@@ -3,6 +3,7 @@
 #include "app/frame_loop_cli.h"
 
 #include <iostream>
+#include <limits>
 
 #include "app/cli_util.h"
 #include "io/input_error.h"
@@ -54,9 +55,9 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
                  "eye buffers at this fraction of the profile's resolution (1 = full; the default "
                  "keeps llvmpipe interactive)")
       ->capture_default_str()
-      ->check(CLI::Range(0.01, 4.0));
+      ->check(finite_range(0.01, 4.0));
   cli.add_option("--frames,--exit-after-frames", o.frames, "stop after N frames")
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_range(0, std::numeric_limits<std::int64_t>::max()));
   cli.add_option("--screenshot", o.screenshot, "write the mirror of the last frame to this PNG");
   cli.add_option("--mirror", o.mirror, "mirror window: pre (pre-distorted panels), lens (through "
                                        "the lens), eye (left eye, undistorted)")
@@ -68,7 +69,7 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
   cli.add_option("--decode-timeout", o.decode_timeout_ms,
                  "ms a frame may wait for the decoder (0: never wait, show the previous frame)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 10000.0));
+      ->check(finite_range(0.0, 10000.0));
   cli.add_option("--bake", o.bake, "per-pixel mode's parameter grid WxH (speed/error knob)")
       ->capture_default_str()
       ->check(bake_problem);

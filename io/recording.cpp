@@ -2,9 +2,13 @@
 /// @brief Recording reader (validating, line-numbered errors) and incremental writer.
 #include "io/recording.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -191,9 +195,6 @@ RecordingHeader parse_header(const Where& w, const Json& obj) {
 
 // [SECTION] Writing
 
-/// The reason a stream failed, as far as errno still tells it.
-std::string errno_text() { return errno != 0 ? std::strerror(errno) : "I/O error"; }
-
 OrderedJson pose_json(const RecordedPose& p) {
   return OrderedJson{{"q", OrderedJson::array({p.q[0], p.q[1], p.q[2], p.q[3]})},
                      {"p", OrderedJson::array({p.p[0], p.p[1], p.p[2]})}};
@@ -354,26 +355,44 @@ std::string format_hid_line(const RecordedHid& h) {
 RecordingWriter::RecordingWriter(const std::filesystem::path& path, const RecordingHeader& header)
     : path_(path) {
   // Through a link to its file; a device or pipe is refused, never replaced or blocked on.
-  out_.open(resolve_output_path(path), std::ios::binary | std::ios::trunc);
-  if (!out_) {
-    throw InputError(path.string() + ": cannot create the recording (" + errno_text() + ")");
-  }
+  fd_ = ::open(resolve_output_path(path).c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd_ < 0)
+    throw InputError(path.string() + ": cannot create the recording (" + std::strerror(errno) + ")");
   write_line(format_header_line(header));
+}
+
+RecordingWriter::~RecordingWriter() {
+  if (fd_ >= 0) ::close(fd_);
 }
 
 void RecordingWriter::write(const RecordedSample& sample) { write_line(format_sample_line(sample)); }
 void RecordingWriter::write(const RecordedHid& hid) { write_line(format_hid_line(hid)); }
 
-void RecordingWriter::write_line(const std::string& line) {
-  out_ << line << '\n';
-  out_.flush();  // a crash loses at most this line
-  // The user chose where to record, so a full disk or a lost device is their input's problem
-  // (exit 1), named with the file; what was written before stays readable (a truncated last
-  // line is dropped by the reader).
-  if (!out_) {
-    throw InputError(path_.string() + ": cannot write the recording (" + errno_text() +
-                     "); the lines before this one were kept");
+void RecordingWriter::write_line(const std::string& text) {
+  if (fd_ < 0)
+    throw InputError(path_.string() + ": the recording stopped after line " + std::to_string(lines_) +
+                     " (an earlier write failed)");
+  const std::string line = text + '\n';
+  std::size_t done = 0;
+  while (done < line.size()) {
+    const ssize_t n = ::write(fd_, line.data() + done, line.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      // The user chose where to record, so a full disk is their input's problem (exit 1). The
+      // part of this line that did get out is cut off again: a partial line followed by more
+      // lines would make the whole file unreadable.
+      const std::string why = n < 0 ? std::strerror(errno) : "nothing written";
+      const bool cut = ::ftruncate(fd_, static_cast<off_t>(whole_)) == 0;
+      ::close(fd_);
+      fd_ = -1;
+      throw InputError(path_.string() + ": cannot write the recording (" + why + "); its first " +
+                       std::to_string(lines_) + " lines are kept" +
+                       (cut ? "" : " (the last one may be cut short: the reader drops it)"));
+    }
+    done += static_cast<std::size_t>(n);
   }
+  whole_ += line.size();
+  ++lines_;
 }
 
 }  // namespace vdfx::io

@@ -9,7 +9,6 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -92,11 +91,17 @@ Recording parse_recording(std::istream& in, const std::string& name);
 std::string to_hex(const std::vector<std::uint8_t>& bytes);
 std::vector<std::uint8_t> from_hex(const std::string& hex);
 
-/// Writes a recording line by line, flushing after each, so a crash loses at most the line being
-/// written (which the reader then tolerates as a truncated last line).
+/// Writes a recording line by line, each straight to the file (no buffer in the process), so a
+/// crash loses at most the line being written, which the reader then tolerates as a truncated
+/// last line. A write that fails (full disk) cuts the file back to its last whole line and throws
+/// io::InputError naming the file; the writer then stays failed. The file is always one the
+/// reader takes: a header and whole lines.
 class RecordingWriter {
  public:
   RecordingWriter(const std::filesystem::path& path, const RecordingHeader& header);
+  ~RecordingWriter();
+  RecordingWriter(const RecordingWriter&) = delete;
+  RecordingWriter& operator=(const RecordingWriter&) = delete;
   void write(const RecordedSample& sample);
   void write(const RecordedHid& hid);
   const std::filesystem::path& path() const { return path_; }
@@ -104,7 +109,9 @@ class RecordingWriter {
  private:
   void write_line(const std::string& line);
   std::filesystem::path path_;
-  std::ofstream out_;
+  int fd_ = -1;             //!< -1 once failed
+  std::uint64_t whole_ = 0;  //!< bytes of whole lines written
+  int lines_ = 0;
 };
 
 /// One line of JSON for a sample or a HID report, exactly as written to the file (no newline).

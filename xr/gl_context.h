@@ -20,6 +20,13 @@ class GlError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// No OpenGL 4.3 context can be had here at all (no display, no X server, an older driver):
+/// the environment, not a bug, so the command line reports it as a usage error (exit 2).
+class GlUnavailableError : public GlError {
+ public:
+  using GlError::GlError;
+};
+
 struct GlContextOptions {
   int width = 1280;          //!< window size (the hidden window of an offscreen context is tiny)
   int height = 720;

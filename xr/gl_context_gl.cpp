@@ -46,11 +46,11 @@ std::unique_ptr<GlContext> GlContext::create(const GlContextOptions& o) {
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   if ((!display || !*display) && (!wayland || !*wayland))
-    throw GlError(
+    throw GlUnavailableError(
         "cannot create an OpenGL context: no display (DISPLAY is not set). "
         "Run under a desktop session or a virtual one: `xvfb-run -a <command>`.");
   if (live_contexts() == 0 && glfwInit() != GLFW_TRUE)
-    throw GlError("cannot create an OpenGL context: glfwInit failed on DISPLAY='" +
+    throw GlUnavailableError("cannot create an OpenGL context: glfwInit failed on DISPLAY='" +
                   std::string(display ? display : "") + "' (" + last_glfw_error() +
                   "). Is the X server running? Try `xvfb-run -a <command>`.");
   glfwDefaultWindowHints();
@@ -64,7 +64,7 @@ std::unique_ptr<GlContext> GlContext::create(const GlContextOptions& o) {
   GLFWwindow* window = glfwCreateWindow(w, h, o.title.c_str(), nullptr, nullptr);
   if (!window) {
     if (live_contexts() == 0) glfwTerminate();
-    throw GlError("cannot create an OpenGL 4.3 core context (" + last_glfw_error() +
+    throw GlUnavailableError("cannot create an OpenGL 4.3 core context (" + last_glfw_error() +
                   "). The driver must offer OpenGL 4.3 core; Mesa llvmpipe offers 4.5.");
   }
   ++live_contexts();
@@ -72,7 +72,7 @@ std::unique_ptr<GlContext> GlContext::create(const GlContextOptions& o) {
   ctx->make_current();
   glfwSwapInterval(o.visible && o.vsync ? 1 : 0);
   if (epoxy_gl_version() < 43)
-    throw GlError("OpenGL " + ctx->version() + " is older than the 4.3 core the compositor needs");
+    throw GlUnavailableError("OpenGL " + ctx->version() + " is older than the 4.3 core the compositor needs");
   if (o.debug_output) {
     glEnable(GL_DEBUG_OUTPUT);
     glDebugMessageCallback(on_gl_debug, nullptr);

@@ -115,5 +115,41 @@ TEST(BadInput, KeyframesBeyondTheSolversLimitAreAnInputError) {
                 "many.vdfx.json: /effects/0/keyframes: 5000 keyframes, more than the 4096"}});
 }
 
+TEST(BadInput, TheUsersMistakesAreNeverInternalErrors) {
+  // Each of these was exit 3 ("internal error: basic_filebuf::underflow", nlohmann's exception
+  // text, ViewCamera's precondition, a filesystem_error) or exit 0 with a black image.
+  const fs::path dir = setup();
+  fs::create_directories(dir / "folder.vdrec.jsonl");
+  fs::create_directories(dir / "folder.json");
+  std::ifstream in(std::string(VDFX_SOURCE_DIR) + "/xr/profiles/generic90.json");
+  std::string profile((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = profile.find("\"refresh_hz\":") + 13;
+  profile.replace(at, profile.find(',', at) - at, " 1e400");
+  write_text(dir / "overflow.json", profile);
+  write_text(dir / "afile", "x");
+  std::ifstream rec_in(test_files::recordings_dir() / "sim_look_and_place.vdrec.jsonl");
+  std::string header, sample;
+  std::getline(rec_in, header);
+  std::getline(rec_in, sample);
+  write_text(dir / "rec.vdrec.jsonl", header + "\n" + sample + "\n");
+  const std::string pano = (dir / "pano.png").string(), s = (dir / "s.vdfx.json").string();
+  const std::string render = "render " + pano + " --sidecar " + s + " --view 0,0 --size 16x8 --out " +
+                             (dir / "o.png").string();
+  expect_rows({
+      {"replay " + (dir / "folder.vdrec.jsonl").string() + " --video " + pano + " --sidecar-out " +
+           (dir / "o.vdfx.json").string(),
+       1, "folder.vdrec.jsonl: is a folder, not a recording"},
+      {"hmd show " + (dir / "folder.json").string(), 1, "folder.json: is a folder, not an HMD profile"},
+      {"hmd show " + (dir / "overflow.json").string(), 1, "overflow.json: line "},
+      {render + " --fov nan", 2, "--fov: 'nan' is not a finite number"},
+      {render + " --fov nan --gpu", 2, "--fov: 'nan' is not a finite number"},
+      {"replay " + (dir / "rec.vdrec.jsonl").string() + " --video " + pano + " --sidecar-out " +
+           (dir / "o.vdfx.json").string() + " --frames " + (dir / "afile" / "sub").string(),
+       1, "--frames " + (dir / "afile" / "sub").string() + ": cannot create the folder"},
+      // No display for --gpu is how the command was run, not a bug: a usage error.
+      {render + " --fov 90 --gpu", 2, "no display"},
+  });
+}
+
 }  // namespace
 }  // namespace vdfx::app::testing

@@ -62,5 +62,40 @@ TEST(CliUtil, SizesStayWithinTheirDocumentedLimits) {
   }
 }
 
+TEST(CliUtil, NumericOptionsRefuseNanOverflowAndSayTheRangeShortly) {
+  // Issue 11, classes 6 and 7: CLI11's checks let --fov nan through, read --frame 2^63 as
+  // 2^63 - 1, and printed --frame -1's range with 309 digits.
+  const struct {
+    CLI::Validator check;
+    std::string text;
+    std::string says;  //!< "" when accepted
+  } rows[] = {
+      {finite_range(1, 179), "90", ""},
+      {finite_range(1, 179), "nan", "'nan' is not a finite number"},
+      {finite_range(1, 179), "inf", "'inf' is not a finite number"},
+      {finite_range(1, 179), "1e999", "'1e999' is not a finite number"},
+      {finite_range(1, 179), "0.5", "'0.5' is out of range [1, 179]"},
+      {finite_range(1, 179), "90x", "'90x' is not a finite number"},
+      {whole_range(0, INT64_MAX), "9223372036854775807", ""},
+      {whole_range(0, INT64_MAX), "9223372036854775808", "is out of range [0, 9223372036854775807]"},
+      {whole_range(0, INT64_MAX), "-1", "'-1' is out of range [0, 9223372036854775807]"},
+      {whole_range(0, INT64_MAX), "1.5", "'1.5' is not a whole number"},
+      {whole_range(0, INT64_MAX), "", "'' is not a whole number"},
+  };
+  for (auto row : rows) {
+    std::string text = row.text;
+    const std::string why = row.check(text);
+    if (row.says.empty()) {
+      EXPECT_EQ(why, "") << row.text;
+    } else {
+      EXPECT_NE(why.find(row.says), std::string::npos) << row.text << ": " << why;
+      EXPECT_LT(why.size(), 120u) << why;
+    }
+  }
+  // FRAME of --at is read as an integer, exactly.
+  EXPECT_EQ(parse_eval_point("0,0,9007199254740993").frame, 9007199254740993);
+  EXPECT_THROW(parse_eval_point("0,0,9223372036854775808"), CLI::ValidationError);
+}
+
 }  // namespace
 }  // namespace vdfx::app
