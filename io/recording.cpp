@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -127,6 +128,10 @@ RecordedHand parse_hand(const Where& w, const Json& v, const std::string& ptr, b
 std::int64_t parse_time(const Where& w, const Json& obj) {
   const Json& t = field(w, obj, "", "t_ns");
   if (!t.is_number_integer()) w.fail("/t_ns", "expected an integer number of nanoseconds");
+  // nlohmann keeps 2^63 and above as unsigned; read as int64 they wrapped to negative times that
+  // a first sample had nothing to be compared with.
+  if (t.is_number_unsigned() && t.get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX))
+    w.fail("/t_ns", "time " + t.dump() + " is beyond the largest time, 2^63 - 1 ns (292 years)");
   return t.get<std::int64_t>();
 }
 

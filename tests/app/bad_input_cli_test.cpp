@@ -151,5 +151,29 @@ TEST(BadInput, TheUsersMistakesAreNeverInternalErrors) {
   });
 }
 
+TEST(BadInput, ValuesAreReadExactlyOrRefused) {
+  const fs::path dir = setup();
+  std::ifstream rec_in(test_files::recordings_dir() / "sim_look_and_place.vdrec.jsonl");
+  std::string header;
+  std::getline(rec_in, header);
+  write_text(dir / "wrap.vdrec.jsonl",
+             header + "\n" + R"({"t_ns":9223372036854775808,"head":{"q":[1,0,0,0],"p":[0,1.6,0]}})" "\n");
+  const std::string render = "render " + (dir / "pano.png").string() + " --sidecar " +
+                             (dir / "s.vdfx.json").string() + " --view 0,0 --fov 90 --size 16x8 --out " +
+                             (dir / "o.png").string();
+  expect_rows({
+      // Was accepted as a negative time (exit 0).
+      {"replay " + (dir / "wrap.vdrec.jsonl").string() + " --video " + (dir / "pano.png").string() +
+           " --sidecar-out " + (dir / "o.vdfx.json").string(),
+       1, "wrap.vdrec.jsonl:2: /t_ns: time 9223372036854775808 is beyond"},
+      // Was read as 2^63 - 1 ("frame 9223372036854775807 does not exist").
+      {render + " --frame 9223372036854775808", 2,
+       "--frame: '9223372036854775808' is out of range [0, 9223372036854775807]"},
+      // Printed its range with 309 digits.
+      {render + " --frame -1", 2, "--frame: '-1' is out of range [0, 9223372036854775807]"},
+  });
+  EXPECT_LT(run(render + " --frame -1").output.size(), 200u);
+}
+
 }  // namespace
 }  // namespace vdfx::app::testing

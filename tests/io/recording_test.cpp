@@ -159,6 +159,9 @@ const BadCase kBad[] = {
     {"hid_both_keys", kHeader + "\n" + R"({"t_ns":1,"hid":{"device":"054c:05c4","report":"00","descriptor":"00"}})" "\n", 2, "exactly one of"},
     {"truncated_middle_line", kHeader + "\n" + kSample1.substr(0, 40) + "\n" + kSample2 + "\n", 2, "bad JSON"},
     {"blank_line", kHeader + "\n\n" + kSample2 + "\n", 2, "empty line"},
+    // Issue 11, class 7: 2^63 ns wrapped to a negative time, accepted on the first sample.
+    {"time_beyond_int64", kHeader + "\n" + R"({"t_ns":9223372036854775808,"head":{"q":[1,0,0,0],"p":[0,0,0]}})" "\n", 2, "/t_ns: time 9223372036854775808 is beyond the largest time"},
+    {"hid_time_beyond_int64", kHeader + "\n" + R"({"t_ns":18446744073709551615,"hid":{"device":"054c:05c4","report":"00"}})" "\n", 2, "is beyond the largest time"},
 };
 
 class RecordingErrors : public ::testing::TestWithParam<BadCase> {};
