@@ -8,6 +8,8 @@
 #include <iostream>
 #include <vector>
 
+#include "io/excerpt.h"
+
 namespace vdfx::app {
 
 std::optional<int> parse_cli(CLI::App& cli, const Args& args) {
@@ -19,7 +21,8 @@ std::optional<int> parse_cli(CLI::App& cli, const Args& args) {
     std::cout << cli.help();
     return kExitOk;
   } catch (const CLI::ParseError& e) {
-    std::cerr << cli.get_name() << ": " << e.what() << "\n(" << cli.get_name()
+    // CLI11 quotes the option's value; an argument can be 128 KiB long.
+    std::cerr << cli.get_name() << ": " << io::excerpt(e.what(), 300) << "\n(" << cli.get_name()
               << " --help lists the options)\n";
     return kExitUsage;
   }
@@ -27,6 +30,9 @@ std::optional<int> parse_cli(CLI::App& cli, const Args& args) {
 }
 
 namespace {
+
+/// The text quoted in a message: at most 40 bytes of it, control bytes spelled out.
+std::string cli_quote(const std::string& text) { return "'" + io::excerpt(text, 40) + "'"; }
 
 std::vector<double> split_numbers(const std::string& text, char sep, const char* what) {
   std::vector<double> values;
@@ -39,7 +45,7 @@ std::vector<double> split_numbers(const std::string& text, char sep, const char*
     const char* last = part.data() + part.size();
     const auto [ptr, ec] = std::from_chars(first, last, v);
     if (part.empty() || ec != std::errc() || ptr != last || !std::isfinite(v))
-      throw CLI::ValidationError(what, "'" + text + "': '" + part + "' is not a finite number");
+      throw CLI::ValidationError(what, cli_quote(text) + ": " + cli_quote(part) + " is not a finite number");
     values.push_back(v);
     if (end == std::string::npos) break;
     start = end + 1;
@@ -49,7 +55,7 @@ std::vector<double> split_numbers(const std::string& text, char sep, const char*
 
 void check_direction(const effects::Direction& d, const std::string& text, const char* what) {
   if (d.altitude_deg < -90.0 || d.altitude_deg > 90.0)
-    throw CLI::ValidationError(what, "'" + text + "': altitude must be in [-90, 90] degrees");
+    throw CLI::ValidationError(what, cli_quote(text) + ": altitude must be in [-90, 90] degrees");
 }
 
 }  // namespace
@@ -62,10 +68,6 @@ std::string bound_text(double v) {
   return buf;
 }
 
-/// The text quoted in a message, at most 40 characters of it.
-std::string cli_quote(const std::string& text) {
-  return "'" + (text.size() <= 40 ? text : text.substr(0, 37) + "...") + "'";
-}
 
 }  // namespace
 
@@ -101,7 +103,7 @@ CLI::Validator whole_range(std::int64_t lo, std::int64_t hi) {
 ViewSpec parse_view(const std::string& text) {
   const auto v = split_numbers(text, ',', "--view");
   if (v.size() != 2 && v.size() != 3)
-    throw CLI::ValidationError("--view", "'" + text + "': expected AZ,ALT or AZ,ALT,ROLL");
+    throw CLI::ValidationError("--view", cli_quote(text) + ": expected AZ,ALT or AZ,ALT,ROLL");
   ViewSpec s;
   s.direction = {effects::wrap_azimuth_deg(v[0]), v[1]};
   s.roll_deg = v.size() == 3 ? v[2] : 0.0;
@@ -132,11 +134,11 @@ ImageSize parse_size(const std::string& text, const char* option, const SizeLimi
   const auto v = split_numbers(text, 'x', option);
   const std::string side = std::to_string(limit.max_side);
   if (v.size() != 2 || v[0] < 1 || v[1] < 1 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
-    throw CLI::ValidationError(option, "'" + text + "': expected WxH, whole numbers 1.." + side);
+    throw CLI::ValidationError(option, cli_quote(text) + ": expected WxH, whole numbers 1.." + side);
   if (v[0] > limit.max_side || v[1] > limit.max_side)
-    throw CLI::ValidationError(option, "'" + text + "': each side must be at most " + side);
+    throw CLI::ValidationError(option, cli_quote(text) + ": each side must be at most " + side);
   if (v[0] * v[1] > static_cast<double>(limit.max_pixels))
-    throw CLI::ValidationError(option, "'" + text + "': " + std::to_string(std::llround(v[0] * v[1])) +
+    throw CLI::ValidationError(option, cli_quote(text) + ": " + std::to_string(std::llround(v[0] * v[1])) +
                                            " pixels, more than the " +
                                            std::to_string(limit.max_pixels) + " allowed (" +
                                            limit.example + ")");

@@ -9,6 +9,7 @@
 
 #include "app/cli_util.h"
 #include "app/view_render.h"
+#include "io/excerpt.h"
 #include "io/image_write.h"
 #include "io/input_error.h"
 #include "io/output_path.h"
@@ -17,6 +18,22 @@
 #include "xr/hmd_profile.h"
 
 namespace vdfx::app {
+
+namespace {
+
+/// Options that would have no effect in this combination are usage errors, not silently
+/// ignored (`--eye right` without `--hmd` rendered the plain view, exit 0).
+void check_option_combinations(const CLI::App& cli, const std::string& hmd_name,
+                               const RenderRequest& r) {
+  if (cli.count("--eye") > 0 && hmd_name.empty())
+    throw CLI::ValidationError("--eye", "needs --hmd (the eye is one of the headset's)");
+  if (cli.count("--no-lca") > 0 && r.distortion.method == xr::DistortionMethod::None)
+    throw CLI::ValidationError("--no-lca", "needs --distort pixel or mesh:N");
+  if (cli.count("--bake") > 0 && !(r.gpu && r.mode == effects::RenderMode::Pixel))
+    throw CLI::ValidationError("--bake", "needs --gpu --mode pixel (the CPU's pixel mode is exact)");
+}
+
+}  // namespace
 
 int cmd_render(const Args& args) {
   CLI::App cli{"Renders one view of INPUT (a panorama image or a video, equirectangular) with the\n"
@@ -87,9 +104,10 @@ int cmd_render(const Args& args) {
     } else if (fov > 0.0) {
       throw CLI::ValidationError("--fov", "the eye's field of view comes from --hmd; drop --fov");
     }
+    check_option_combinations(cli, hmd_name, request);
     const std::optional<xr::BlurMethod> blur = xr::blur_method_from_name(blur_text);
     if (!blur)
-      throw CLI::ValidationError("--blur", "'" + blur_text + "': expected exact or pyramid");
+      throw CLI::ValidationError("--blur", "'" + io::excerpt(blur_text, 40) + "': expected exact or pyramid");
     request.blur = *blur;
     if (!gpu && request.blur != xr::BlurMethod::Exact)
       throw CLI::ValidationError("--blur", "the CPU reference blur is exact; pyramid needs --gpu");

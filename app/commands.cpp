@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "io/input_error.h"
+#include "io/library_logs.h"
 #include "xr/gl_context.h"
 
 namespace vdfx::app {
@@ -31,11 +32,24 @@ void print_help(std::ostream& out) {
     name.resize(10, ' ');
     out << "  " << name << c.summary << "\n";
   }
-  out << "\nexit codes: 0 success, 1 the input was wrong, 2 usage error, 3 internal error\n";
+  out << "\n--verbose (anywhere): keep the media libraries' own messages (OpenCV, FFmpeg)\n"
+         "exit codes: 0 success, 1 the input was wrong, 2 usage error, 3 internal error\n";
 }
 }  // namespace
 
-int run_main(const Args& args) {
+int run_main(const Args& raw_args) {
+  // --verbose, anywhere before "--": the media libraries' own messages stay on.
+  Args args;
+  bool verbose = false;
+  for (std::size_t i = 0; i < raw_args.size(); ++i) {
+    if (raw_args[i] == "--") {
+      args.insert(args.end(), raw_args.begin() + static_cast<std::ptrdiff_t>(i), raw_args.end());
+      break;
+    }
+    if (raw_args[i] == "--verbose") verbose = true;
+    else args.push_back(raw_args[i]);
+  }
+  if (!verbose) io::quiet_library_logs();
   if (args.empty()) {
     print_help(std::cerr);
     return kExitUsage;

@@ -12,6 +12,7 @@
 #include "effects/effect_shaders.h"
 #include "effects/stack_interpolator.h"
 #include "effects/view_camera.h"
+#include "io/excerpt.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
 #include "xr/compositor.h"
@@ -58,10 +59,10 @@ xr::DistortionSettings parse_distortion(const std::string& text) {
     int value = 0;
     const auto [ptr, ec] = std::from_chars(n.data(), n.data() + n.size(), value);
     if (n.empty() || ec != std::errc() || ptr != n.data() + n.size() || value < 2 || value > 257)
-      throw std::invalid_argument("'" + text + "': N must be a whole number in 2..257");
+      throw std::invalid_argument("'" + io::excerpt(text, 40) + "': N must be a whole number in 2..257");
     s.mesh_n = value;
   } else {
-    throw std::invalid_argument("'" + text + "': expected none, pixel or mesh:N");
+    throw std::invalid_argument("'" + io::excerpt(text, 40) + "': expected none, pixel or mesh:N");
   }
   return s;
 }

@@ -17,6 +17,7 @@
 #include "io/frame_decoder.h"
 #include "io/image_source.h"
 #include "io/input_error.h"
+#include "io/library_logs.h"
 
 namespace vdfx::io {
 namespace {
@@ -25,7 +26,11 @@ class OpenCvDecoder final : public FrameDecoder {
  public:
   OpenCvDecoder(const std::filesystem::path& path, const DecoderOptions& options) : options_(options) {
     const std::string name = path.string();
-    open_or_throw(name);
+    {
+      // The backends print their own complaints about a damaged file; vdfx reports it itself.
+      const QuietStderr quiet;
+      open_or_throw(name);
+    }
     const double fps = cap_.get(cv::CAP_PROP_FPS);
     const double count = cap_.get(cv::CAP_PROP_FRAME_COUNT);
     const int w = static_cast<int>(cap_.get(cv::CAP_PROP_FRAME_WIDTH));

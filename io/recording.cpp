@@ -16,8 +16,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/excerpt.h"
 #include "io/input_error.h"
 #include "io/input_file.h"
+#include "io/json_text.h"
 #include "io/output_path.h"
 
 namespace vdfx::io {
@@ -50,7 +52,7 @@ void reject_unknown(const Where& w, const Json& obj, const std::string& ptr,
   for (auto it = obj.begin(); it != obj.end(); ++it) {
     bool ok = false;
     for (const char* k : known) ok = ok || it.key() == k;
-    if (!ok) w.fail(ptr, "unknown field \"" + it.key() + "\"");
+    if (!ok) w.fail(ptr, "unknown field \"" + excerpt(it.key()) + "\"");
   }
 }
 
@@ -177,12 +179,12 @@ RecordingHeader parse_header(const Where& w, const Json& obj) {
   if (!obj.is_object()) w.fail("", "the first line must be the recording header object");
   const Json& format = field(w, obj, "", "format");
   if (format != "vdfx.recording") {
-    w.fail("/format", "expected \"vdfx.recording\", got " + format.dump());
+    w.fail("/format", "expected \"vdfx.recording\", got " + excerpt(format.dump()));
   }
   const Json& version = field(w, obj, "", "version");
   if (!version.is_number_integer()) w.fail("/version", "expected an integer");
   if (version.get<long long>() != 1) {
-    w.fail("/version", "unsupported version " + version.dump() + " (this build reads version 1)");
+    w.fail("/version", "unsupported version " + excerpt(version.dump()) + " (this build reads version 1)");
   }
   reject_unknown(w, obj, "", {"format", "version", "hmd", "video", "note"});
   RecordingHeader h;
@@ -244,7 +246,7 @@ std::vector<std::uint8_t> from_hex(const std::string& hex) {
     if (c >= '0' && c <= '9') return c - '0';
     if (c >= 'a' && c <= 'f') return c - 'a' + 10;
     if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    throw std::invalid_argument(std::string("not a hex digit: '") + c + "'");
+    throw std::invalid_argument("not a hex digit: '" + excerpt(std::string(1, c)) + "'");
   };
   std::vector<std::uint8_t> out(hex.size() / 2);
   for (std::size_t i = 0; i < out.size(); ++i) {
@@ -281,18 +283,23 @@ Recording parse_recording(std::istream& in, const std::string& name) {
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const Where w{name, line_no};
-    Json obj;
-    try {
-      obj = Json::parse(line);
-    } catch (const Json::exception& e) {  // syntax errors, and numbers beyond double (1e999)
-      if (!terminated && have_header && e.id >= 100 && e.id < 200) {
+    if (line.empty()) w.fail("", "empty line");
+    // As the sidecar's reader: NUL bytes, duplicate keys and overflowing numbers are errors, and
+    // what the message quotes of the line is cut short.
+    JsonText parsed = parse_json_text(line);
+    if (!parsed.errors.empty()) {
+      const JsonTextError& e = parsed.errors.front();
+      const std::string what = e.line == 0 ? e.message : "bad JSON at column " + std::to_string(e.column) +
+                                                             ": " + e.message.substr(e.message.find(": ") + 2);
+      if (!terminated && have_header && e.code >= 100 && e.code < 200) {
         // A crash while writing leaves a partial last line; the rest is still good.
-        rec.warnings.push_back(name + ":" + std::to_string(line_no) +
-                               ": truncated last line ignored (" + e.what() + ")");
+        rec.warnings.push_back(name + ":" + std::to_string(line_no) + ": truncated last line ignored (" +
+                               what + ")");
         break;
       }
-      w.fail("", line.empty() ? "empty line" : std::string("bad JSON: ") + e.what());
+      w.fail(e.pointer, what);
     }
+    const Json& obj = parsed.value;
     if (!have_header) {
       rec.header = parse_header(w, obj);
       have_header = true;

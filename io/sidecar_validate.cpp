@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 
+#include "io/excerpt.h"
 #include "io/input_file.h"
 #include "io/json_text.h"
 
@@ -81,7 +82,8 @@ class Checker {
       if (!ok) {
         std::string list;
         for (const char* n : known) list += std::string(list.empty() ? "" : ", ") + n;
-        error(ptr + "/" + json_pointer_token(k), "unknown field \"" + k + "\" (expected: " + list + ")");
+        error(ptr + "/" + excerpt(json_pointer_token(k)),
+              "unknown field \"" + excerpt(k) + "\" (expected: " + list + ")");
       }
     }
   }
@@ -208,7 +210,7 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
     if (auto s = c.string(*p, ptr + "/distance")) {
       if (*s == "chordal") out.distance = effects::AngularDistance::Chordal;
       else if (*s == "geodesic") out.distance = effects::AngularDistance::Geodesic;
-      else c.error(ptr + "/distance", "unknown distance \"" + *s + "\" (expected chordal or geodesic)");
+      else c.error(ptr + "/distance", "unknown distance \"" + excerpt(*s) + "\" (expected chordal or geodesic)");
     }
   }
 }
@@ -227,7 +229,7 @@ void read_params(Checker& c, const json& v, const std::string& ptr, const effect
       names += (names.empty() ? "" : ", ") + std::string(ps.name);
     }
     if (!known)
-      c.error(ptr + "/" + json_pointer_token(k), "unknown parameter \"" + k + "\" for effect " +
+      c.error(ptr + "/" + excerpt(json_pointer_token(k)), "unknown parameter \"" + excerpt(k) + "\" for effect " +
                                                      std::string(spec.name) + " (expected: " + names + ")");
   }
   std::size_t offset = 0;
@@ -308,10 +310,10 @@ void read_effect(Checker& c, const json& v, const std::string& ptr, std::optiona
         spec = &effects::effect_spec(*t);
         out.type = *t;
         if (auto [it, inserted] = seen.emplace(*t, ptr); !inserted)
-          c.error(ptr + "/type", "effect type \"" + *s + "\" appears twice (first at " + it->second +
+          c.error(ptr + "/type", "effect type \"" + excerpt(*s) + "\" appears twice (first at " + it->second +
                                      "); each effect has one keyframe set");
       } else {
-        c.error(ptr + "/type", "unknown effect type \"" + *s + "\" (known: " + known_types() + ")");
+        c.error(ptr + "/type", "unknown effect type \"" + excerpt(*s) + "\" (known: " + known_types() + ")");
       }
     }
   }
@@ -397,7 +399,7 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
   const json* format = c.member(*root, "", "format");
   if (format) {
     if (auto s = c.string(*format, "/format"); s && *s != kSidecarFormat) {
-      c.error("/format", "expected \"" + std::string(kSidecarFormat) + "\", found \"" + *s + "\"");
+      c.error("/format", "expected \"" + std::string(kSidecarFormat) + "\", found \"" + excerpt(*s) + "\"");
       return out;
     }
   }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "effects/coords.h"
+#include "io/excerpt.h"
 #include "io/input_error.h"
 #include "io/input_file.h"
 #include "io/json_text.h"
@@ -49,7 +50,7 @@ class Checker {
                    std::initializer_list<const char*> keys) {
     const std::set<std::string> known(keys.begin(), keys.end());
     for (const auto& [k, v] : j.items()) {
-      if (!known.count(k)) fail(pointer + "/" + k, "unknown key");
+      if (!known.count(k)) fail(pointer + "/" + io::excerpt(io::json_pointer_token(k)), "unknown key");
     }
   }
 
@@ -224,10 +225,10 @@ HmdProfile parse_hmd_profile(const json& doc, const std::string& source) {
       doc, "",
       {"format", "version", "name", "description", "refresh_hz", "ipd_m", "distortion", "eyes"});
   if (const std::string f = check.string(doc, "format", "/format"); !f.empty() && f != "vdfx.hmd") {
-    check.fail("/format", "must be \"vdfx.hmd\", got \"" + f + "\"");
+    check.fail("/format", "must be \"vdfx.hmd\", got \"" + io::excerpt(f) + "\"");
   }
   if (const json* v = check.child(doc, "version", "/version"); v && *v != 1) {
-    check.fail("/version", "unsupported version " + v->dump() + " (this vdfx reads version 1)");
+    check.fail("/version", "unsupported version " + io::excerpt(v->dump()) + " (this vdfx reads version 1)");
   }
   p.name = check.string(doc, "name", "/name");
   if (doc.contains("name") && doc["name"].is_string() && p.name.empty()) {
@@ -284,7 +285,7 @@ HmdProfile load_hmd_profile(std::string_view name_or_path) {
     if (!std::filesystem::is_regular_file(path)) {
       std::string known;
       for (const auto& n : list_hmd_profiles()) known += (known.empty() ? "" : ", ") + n;
-      throw io::InputError("unknown HMD profile '" + arg + "' (in " + hmd_profile_dir().string() +
+      throw io::InputError("unknown HMD profile '" + io::excerpt(arg) + "' (in " + hmd_profile_dir().string() +
                            ": " + (known.empty() ? "none" : known) + ")");
     }
   }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "command_test_util.h"
@@ -173,6 +174,51 @@ TEST(BadInput, ValuesAreReadExactlyOrRefused) {
       {render + " --frame -1", 2, "--frame: '-1' is out of range [0, 9223372036854775807]"},
   });
   EXPECT_LT(run(render + " --frame -1").output.size(), 200u);
+}
+
+TEST(BadInput, MessagesAreShortSayWhatAndComeAlone) {
+  const fs::path dir = setup();
+  std::string text = exposure_sidecar();
+  text.replace(text.find("30.0"), 4, "1" + std::string(10'000'000, '0'));
+  write_text(dir / "long.vdfx.json", text);
+  std::string nul = exposure_sidecar();
+  nul[nul.find("\"video\"")] = '\0';
+  write_text(dir / "nul.vdfx.json", nul);
+  // Random bytes named .mp4: OpenCV, FFmpeg and GStreamer each printed their complaint first.
+  std::string noise(4096, '\0');
+  for (std::size_t i = 0; i < noise.size(); ++i) noise[i] = static_cast<char>((i * 7919u) >> 3);
+  write_text(dir / "broken.mp4", noise);
+  const std::string s = (dir / "s.vdfx.json").string();
+  const std::string render = "render " + (dir / "pano.png").string() + " --sidecar " + s +
+                             " --view 0,0 --fov 90 --size 16x8 --out " + (dir / "o.png").string();
+  expect_rows({
+      {"validate " + (dir / "long.vdfx.json").string(), 1, "number overflow parsing '10000000000"},
+      {"validate " + (dir / "nul.vdfx.json").string(), 1, "a NUL byte"},
+      // Options that would do nothing were accepted silently.
+      {render + " --eye right", 2, "--eye: needs --hmd"},
+      {render + " --no-lca", 2, "--no-lca: needs --distort"},
+      {render + " --bake 64x32", 2, "--bake: needs --gpu --mode pixel"},
+  });
+  EXPECT_LT(run("validate " + (dir / "long.vdfx.json").string()).output.size(), 500u);
+  const CommandResult broken = run("render " + (dir / "broken.mp4").string() + " --sidecar " + s +
+                                   " --view 0,0 --fov 90 --size 16x8 --out " + (dir / "o.png").string());
+  EXPECT_EQ(broken.exit_code, 1);
+  EXPECT_EQ(broken.output.rfind("vdfx render: " + (dir / "broken.mp4").string() + ": ", 0), 0u)
+      << broken.output;
+  EXPECT_EQ(std::count(broken.output.begin(), broken.output.end(), '\n'), 1) << broken.output;
+}
+
+TEST(BadInput, ACorruptAutosaveIsNotReportedAsRecovered) {
+  // `edit --recover yes` printed "recovered" and then failed on the autosave.
+  const fs::path dir = setup();
+  write_text(dir / "s.vdfx.json.autosave", "{broken");
+  const CommandResult r = run("edit " + (dir / "pano.png").string() + " --sidecar " +
+                              (dir / "s.vdfx.json").string() + " --recover yes");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("s.vdfx.json.autosave: (document): line 1, column 2"), std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("recovered"), std::string::npos) << r.output;
+  EXPECT_EQ(test_files::slurp(dir / "s.vdfx.json.autosave"), "{broken");
 }
 
 }  // namespace

@@ -21,6 +21,13 @@
 #include <sys/types.h>
 #include <unistd.h>
 
+/* The next definition of `name` (glibc's). memcpy, not a cast: ISO C has no conversion from an
+ * object pointer to a function pointer, and POSIX guarantees the representations agree. */
+static void next_symbol(void* function_pointer, size_t size, const char* name) {
+  void* p = dlsym(RTLD_NEXT, name);
+  memcpy(function_pointer, &p, size);
+}
+
 static int fault_is(const char* name) {
   const char* f = getenv("VDFX_FAULT");
   return f != NULL && strcmp(f, name) == 0;
@@ -33,7 +40,7 @@ static int fd_is(int fd, mode_t type) {
 
 int fsync(int fd) {
   static int (*real)(int) = NULL;
-  if (real == NULL) real = (int (*)(int))dlsym(RTLD_NEXT, "fsync");
+  if (real == NULL) next_symbol(&real, sizeof real, "fsync");
   if ((fault_is("fsync_dir") && fd_is(fd, S_IFDIR)) || (fault_is("fsync_file") && fd_is(fd, S_IFREG))) {
     errno = EIO;
     return -1;
@@ -43,7 +50,7 @@ int fsync(int fd) {
 
 int rename(const char* from, const char* to) {
   static int (*real)(const char*, const char*) = NULL;
-  if (real == NULL) real = (int (*)(const char*, const char*))dlsym(RTLD_NEXT, "rename");
+  if (real == NULL) next_symbol(&real, sizeof real, "rename");
   if (fault_is("rename_kill")) raise(SIGKILL);
   if (fault_is("rename")) {
     errno = EIO;
@@ -55,7 +62,7 @@ int rename(const char* from, const char* to) {
 ssize_t write(int fd, const void* buf, size_t n) {
   static ssize_t (*real)(int, const void*, size_t) = NULL;
   static long long passed = 0;
-  if (real == NULL) real = (ssize_t(*)(int, const void*, size_t))dlsym(RTLD_NEXT, "write");
+  if (real == NULL) next_symbol(&real, sizeof real, "write");
   if (fault_is("write_enospc") && fd_is(fd, S_IFREG)) {
     const char* after = getenv("VDFX_FAULT_AFTER");
     const long long limit = after != NULL ? atoll(after) : 0;
