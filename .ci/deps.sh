@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   fonts-dejavu-core blender-data
   xvfb xauth libgl1-mesa-dri mesa-utils
+  clang-14 libclang-rt-14-dev llvm-14
 )
 
 missing=()

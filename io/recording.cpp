@@ -165,6 +165,32 @@ RecordedHid parse_hid(const Where& w, const Json& obj, std::int64_t t) {
   return out;
 }
 
+/// The next line into `line` (without its newline), read in small pieces and never past
+/// kMaxRecordingLineBytes + 1 bytes; `terminated` says whether a newline ended it. False at the
+/// end of the input.
+bool read_line(std::istream& in, std::string& line, bool& terminated) {
+  line.clear();
+  char piece[4096];
+  while (true) {
+    in.getline(piece, sizeof piece);
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (in.bad()) throw InputError("read error");
+    if (in.eof()) {  // the input ended before a newline
+      line.append(piece, got);
+      terminated = false;
+      return !line.empty();
+    }
+    if (!in.fail()) {  // the newline ended the line (it is counted in gcount, not stored)
+      line.append(piece, got - 1);
+      terminated = true;
+      return true;
+    }
+    line.append(piece, got);  // the piece filled up: the line goes on
+    in.clear();
+    if (line.size() > kMaxRecordingLineBytes) return true;  // the caller reports it
+  }
+}
+
 RecordedSample parse_sample(const Where& w, const Json& obj, std::int64_t t) {
   reject_unknown(w, obj, "", {"t_ns", "head", "left", "right"});
   RecordedSample s;
@@ -265,18 +291,9 @@ Recording parse_recording(std::istream& in, const std::string& name) {
   bool any_line = false;
   // One line at a time, never more than the limit: a file without newlines (or /dev/zero) is
   // refused at its first line instead of being read whole.
-  std::vector<char> buffer(kMaxRecordingLineBytes + 2);
-  while (true) {
-    in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-    const auto got = static_cast<std::size_t>(in.gcount());
-    const bool terminated = !in.eof() && !in.fail();
-    if (in.fail() && !in.eof() && !in.bad()) {  // buffer full before a newline
-      Where{name, line_no + 1}.fail("", "line longer than " + byte_size_text(kMaxRecordingLineBytes) +
-                                            " (the limit of a recording line)");
-    }
-    if (in.bad()) Where{name, line_no + 1}.fail("", "read error");
-    if (got == 0 && !terminated) break;  // end of input
-    std::string line(buffer.data(), terminated ? got - 1 : got);
+  std::string line;
+  bool terminated = false;
+  while (read_line(in, line, terminated)) {
     if (line.size() > kMaxRecordingLineBytes)
       Where{name, line_no + 1}.fail("", "line longer than " + byte_size_text(kMaxRecordingLineBytes) +
                                             " (the limit of a recording line)");

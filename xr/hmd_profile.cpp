@@ -258,6 +258,17 @@ HmdProfile parse_hmd_profile(const json& doc, const std::string& source) {
   return p;
 }
 
+HmdProfile parse_hmd_profile_text(std::string_view text, const std::string& source) {
+  io::JsonText parsed = io::parse_json_text(text);
+  if (!parsed.errors.empty()) {
+    std::string msg;
+    for (const io::JsonTextError& e : parsed.errors)
+      msg += (msg.empty() ? "" : "\n") + source + ": " + e.place() + ": " + e.message;
+    throw io::InputError(msg);
+  }
+  return parse_hmd_profile(parsed.value, source);
+}
+
 std::filesystem::path hmd_profile_dir() {
   if (const char* env = std::getenv("VDFX_HMD_PROFILE_DIR"); env && *env) return env;
   return std::filesystem::path(VDFX_SOURCE_DIR) / "xr" / "profiles";
@@ -291,15 +302,8 @@ HmdProfile load_hmd_profile(std::string_view name_or_path) {
   }
   // Bounded and non-blocking (a pipe or /dev/zero named as a profile is refused); the JSON is
   // parsed like a sidecar's: line and column of a syntax error, duplicate keys refused.
-  const std::string text = io::read_input_file(path, kMaxHmdProfileBytes, "an HMD profile");
-  io::JsonText parsed = io::parse_json_text(text);
-  if (!parsed.errors.empty()) {
-    std::string msg;
-    for (const io::JsonTextError& e : parsed.errors)
-      msg += (msg.empty() ? "" : "\n") + path.string() + ": " + e.place() + ": " + e.message;
-    throw io::InputError(msg);
-  }
-  return parse_hmd_profile(parsed.value, path.string());
+  return parse_hmd_profile_text(io::read_input_file(path, kMaxHmdProfileBytes, "an HMD profile"),
+                                path.string());
 }
 
 }  // namespace vdfx::xr

@@ -69,6 +69,10 @@ HmdProfile load_hmd_profile(std::string_view name_or_path);
 /// Validates and converts a parsed profile; `source` names the file in error messages.
 HmdProfile parse_hmd_profile(const nlohmann::json& doc, const std::string& source);
 
+/// Parses and validates a profile's text (as a sidecar's: line and column of a syntax error, NUL
+/// bytes and duplicate keys refused); `source` names the file in error messages.
+HmdProfile parse_hmd_profile_text(std::string_view text, const std::string& source);
+
 /// Names of the profiles in hmd_profile_dir(), sorted.
 std::vector<std::string> list_hmd_profiles();
 
