@@ -2,11 +2,10 @@
 /// @brief write_png: cv::imencode, then write_file_atomic.
 #include "io/image_write.h"
 
+#include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
-
-#include <opencv2/imgcodecs.hpp>
 
 #include "io/atomic_file.h"
 

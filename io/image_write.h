@@ -4,7 +4,6 @@
 #pragma once
 
 #include <filesystem>
-
 #include <opencv2/core.hpp>
 
 #include "io/output_path.h"

@@ -26,11 +26,11 @@ std::optional<std::string> stat_problem(const struct stat& st, std::uintmax_t ma
   if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) {
     std::string size = byte_size_text(static_cast<std::uintmax_t>(st.st_size));
     // "1.0 MiB, more than the 1 MiB" would read as a contradiction: give the bytes then.
-    if (size.find('.') != std::string::npos && size.substr(0, size.find('.')) ==
-                                                   byte_size_text(max_bytes).substr(0, size.find('.')))
+    if (size.find('.') != std::string::npos &&
+        size.substr(0, size.find('.')) == byte_size_text(max_bytes).substr(0, size.find('.')))
       size = std::to_string(st.st_size) + " bytes";
-    return "is " + size + ", more than the " + byte_size_text(max_bytes) + " " +
-           std::string(kind) + " may be";
+    return "is " + size + ", more than the " + byte_size_text(max_bytes) + " " + std::string(kind) +
+           " may be";
   }
   return std::nullopt;
 }
@@ -87,9 +87,9 @@ std::optional<std::string> try_read_input_file(const std::filesystem::path& path
     return std::nullopt;
   }
   struct stat st {};
-  std::optional<std::string> problem =
-      ::fstat(fd, &st) != 0 ? std::optional<std::string>(std::strerror(errno))
-                            : stat_problem(st, max_bytes, kind);
+  std::optional<std::string> problem = ::fstat(fd, &st) != 0
+                                           ? std::optional<std::string>(std::strerror(errno))
+                                           : stat_problem(st, max_bytes, kind);
   std::string bytes;
   if (!problem) {
     bytes.resize(static_cast<std::size_t>(st.st_size));

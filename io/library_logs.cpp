@@ -8,7 +8,6 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
-
 #include <opencv2/core/utils/logger.hpp>
 
 namespace vdfx::io {
@@ -25,7 +24,9 @@ void quiet_library_logs() {
   g_quiet = true;
 }
 
-bool library_logs_quiet() { return g_quiet; }
+bool library_logs_quiet() {
+  return g_quiet;
+}
 
 QuietStderr::QuietStderr() {
   if (!g_quiet) return;

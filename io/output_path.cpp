@@ -43,8 +43,9 @@ fs::path resolve_output_path(const fs::path& path, OutputName name) {
       refuse(path, what + "; vdfx writes regular files only");
     }
     if (name == OutputName::Generated)
-      refuse(path, "it is a symbolic link, and vdfx chose this name itself: it writes through "
-                   "links only when they are named on the command line");
+      refuse(path,
+             "it is a symbolic link, and vdfx chose this name itself: it writes through "
+             "links only when they are named on the command line");
     if (links == kMaxLinks) refuse(path, "too many levels of symbolic links");
     std::error_code ec;
     const fs::path next = fs::read_symlink(target, ec);

@@ -15,17 +15,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Without a display, under a time limit: a hang is exit 124, not a stuck test.
 CommandResult run(const std::string& args) {
-  return run_vdfx(args, "env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 ");
+  return run_vdfx_headless(args);
 }
 
-/// pano.png and s.vdfx.json in a fresh folder.
 fs::path setup() {
-  const fs::path dir = test_dir();
-  write_test_panorama(dir);
-  write_text(dir / "s.vdfx.json", exposure_sidecar());
-  return dir;
+  return panorama_and_sidecar();
 }
 
 struct Row {
@@ -55,7 +50,8 @@ TEST(BadInput, PipesDevicesAndHugeFilesAreRefusedNotWaitedOn) {
       {"validate /dev/zero", 1, "/dev/zero: (document): is a character device"},
       {"validate " + (dir / "pipe.vdfx.json").string(), 1, "is a named pipe (FIFO)"},
       {"validate " + (dir / "huge.vdfx.json").string(), 1, "is 8 GiB, more than the 64 MiB"},
-      {"render " + (dir / "pipe.png").string() + " --sidecar " + s + view, 1, "pipe.png: is a named pipe"},
+      {"render " + (dir / "pipe.png").string() + " --sidecar " + s + view, 1,
+       "pipe.png: is a named pipe"},
       {"render " + pano + " --sidecar " + (dir / "pipe.vdfx.json").string() + view, 1,
        "pipe.vdfx.json: (document): is a named pipe"},
       {"replay " + (dir / "pipe.vdrec.jsonl").string() + " --video " + pano + " --sidecar-out " +
@@ -93,7 +89,8 @@ TEST(BadInput, AFileWhoseMathsWouldNotBeFiniteDoesNotValidate) {
   write_text(dir / "nan.vdfx.json", text);
   const std::string s = (dir / "nan.vdfx.json").string();
   expect_rows({
-      {"validate " + s, 1, "nan.vdfx.json: /video/fps: one frame is 24 / fps * time_scale = 2.4e+201"},
+      {"validate " + s, 1,
+       "nan.vdfx.json: /video/fps: one frame is 24 / fps * time_scale = 2.4e+201"},
       {"eval " + s + " --at 0,0,1", 1, "/video/fps"},
       {"render " + (dir / "pano.png").string() + " --sidecar " + s +
            " --view 0,0 --fov 90 --size 16x8 --out " + (dir / "o.png").string(),
@@ -128,19 +125,16 @@ TEST(BadInput, TheUsersMistakesAreNeverInternalErrors) {
   profile.replace(at, profile.find(',', at) - at, " 1e400");
   write_text(dir / "overflow.json", profile);
   write_text(dir / "afile", "x");
-  std::ifstream rec_in(test_files::recordings_dir() / "sim_look_and_place.vdrec.jsonl");
-  std::string header, sample;
-  std::getline(rec_in, header);
-  std::getline(rec_in, sample);
-  write_text(dir / "rec.vdrec.jsonl", header + "\n" + sample + "\n");
+  write_short_recording(dir / "rec.vdrec.jsonl");
   const std::string pano = (dir / "pano.png").string(), s = (dir / "s.vdfx.json").string();
-  const std::string render = "render " + pano + " --sidecar " + s + " --view 0,0 --size 16x8 --out " +
-                             (dir / "o.png").string();
+  const std::string render = "render " + pano + " --sidecar " + s +
+                             " --view 0,0 --size 16x8 --out " + (dir / "o.png").string();
   expect_rows({
       {"replay " + (dir / "folder.vdrec.jsonl").string() + " --video " + pano + " --sidecar-out " +
            (dir / "o.vdfx.json").string(),
        1, "folder.vdrec.jsonl: is a folder, not a recording"},
-      {"hmd show " + (dir / "folder.json").string(), 1, "folder.json: is a folder, not an HMD profile"},
+      {"hmd show " + (dir / "folder.json").string(), 1,
+       "folder.json: is a folder, not an HMD profile"},
       {"hmd show " + (dir / "overflow.json").string(), 1, "overflow.json: line "},
       {render + " --fov nan", 2, "--fov: 'nan' is not a finite number"},
       {render + " --fov nan --gpu", 2, "--fov: 'nan' is not a finite number"},
@@ -158,10 +152,12 @@ TEST(BadInput, ValuesAreReadExactlyOrRefused) {
   std::string header;
   std::getline(rec_in, header);
   write_text(dir / "wrap.vdrec.jsonl",
-             header + "\n" + R"({"t_ns":9223372036854775808,"head":{"q":[1,0,0,0],"p":[0,1.6,0]}})" "\n");
+             header + "\n" +
+                 R"({"t_ns":9223372036854775808,"head":{"q":[1,0,0,0],"p":[0,1.6,0]}})"
+                 "\n");
   const std::string render = "render " + (dir / "pano.png").string() + " --sidecar " +
-                             (dir / "s.vdfx.json").string() + " --view 0,0 --fov 90 --size 16x8 --out " +
-                             (dir / "o.png").string();
+                             (dir / "s.vdfx.json").string() +
+                             " --view 0,0 --fov 90 --size 16x8 --out " + (dir / "o.png").string();
   expect_rows({
       // Was accepted as a negative time (exit 0).
       {"replay " + (dir / "wrap.vdrec.jsonl").string() + " --video " + (dir / "pano.png").string() +
@@ -200,8 +196,9 @@ TEST(BadInput, MessagesAreShortSayWhatAndComeAlone) {
       {render + " --bake 64x32", 2, "--bake: needs --gpu --mode pixel"},
   });
   EXPECT_LT(run("validate " + (dir / "long.vdfx.json").string()).output.size(), 500u);
-  const CommandResult broken = run("render " + (dir / "broken.mp4").string() + " --sidecar " + s +
-                                   " --view 0,0 --fov 90 --size 16x8 --out " + (dir / "o.png").string());
+  const CommandResult broken =
+      run("render " + (dir / "broken.mp4").string() + " --sidecar " + s +
+          " --view 0,0 --fov 90 --size 16x8 --out " + (dir / "o.png").string());
   EXPECT_EQ(broken.exit_code, 1);
   EXPECT_EQ(broken.output.rfind("vdfx render: " + (dir / "broken.mp4").string() + ": ", 0), 0u)
       << broken.output;

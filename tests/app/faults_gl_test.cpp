@@ -20,7 +20,8 @@ TEST(FaultsGl, PlayRecordOntoAFullDiskIsAnInputErrorAndKeepsWholeLines) {
   // Mesa's shader cache would write files of its own and use up the 2000 bytes.
   const CommandResult r = run_vdfx(
       "play " + (dir / "pano.png").string() + " --sidecar " + (dir / "s.vdfx.json").string() +
-          " --input replay:" + (test_files::recordings_dir() / "sim_look_and_place.vdrec.jsonl").string() +
+          " --input replay:" +
+          (test_files::recordings_dir() / "sim_look_and_place.vdrec.jsonl").string() +
           " --record " + rec.string() + " --hidden --scale 0.05 --window 64x32 --frames 30",
       "env MESA_SHADER_CACHE_DISABLE=true LD_PRELOAD=" + std::string(VDFX_FAULT_SO) +
           " VDFX_FAULT=write_enospc VDFX_FAULT_AFTER=2000"

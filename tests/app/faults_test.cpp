@@ -17,9 +17,9 @@ using test_files::slurp;
 /// vdfx with VDFX_FAULT=fault. ASan checks that its runtime comes first among the libraries;
 /// a preloaded one comes before it, which is fine here.
 CommandResult run_with_fault(const std::string& fault, const std::string& args) {
-  return run_vdfx(args, "env -u DISPLAY LD_PRELOAD=" + std::string(VDFX_FAULT_SO) +
-                            " VDFX_FAULT=" + fault +
-                            " ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0 ");
+  return run_vdfx(
+      args, "env -u DISPLAY LD_PRELOAD=" + std::string(VDFX_FAULT_SO) + " VDFX_FAULT=" + fault +
+                " ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0 ");
 }
 
 std::size_t temp_files(const fs::path& dir) {
@@ -38,8 +38,8 @@ Scene setup() {
   Scene s{test_dir(), ""};
   write_test_panorama(s.dir);
   write_text(s.dir / "s.vdfx.json", exposure_sidecar());
-  s.render = "render " + (s.dir / "pano.png").string() + " --sidecar " + (s.dir / "s.vdfx.json").string() +
-             " --view 0,0 --fov 90 --size 16x8 --out ";
+  s.render = "render " + (s.dir / "pano.png").string() + " --sidecar " +
+             (s.dir / "s.vdfx.json").string() + " --view 0,0 --fov 90 --size 16x8 --out ";
   return s;
 }
 
@@ -71,7 +71,8 @@ TEST(Faults, TheTemporaryFileOfAKilledSaveIsCleanedUpByTheNextSave) {
   // temporary file was left forever.
   const Scene s = setup();
   write_text(s.dir / "out.png", "old");
-  const CommandResult killed = run_with_fault("rename_kill", s.render + (s.dir / "out.png").string());
+  const CommandResult killed =
+      run_with_fault("rename_kill", s.render + (s.dir / "out.png").string());
   EXPECT_NE(killed.exit_code, 0);
   EXPECT_EQ(slurp(s.dir / "out.png"), "old");
   EXPECT_EQ(temp_files(s.dir), 1u);

@@ -16,22 +16,14 @@ namespace {
 namespace fs = std::filesystem;
 using test_files::slurp;
 
-/// Runs vdfx without a display (nothing here may open a window) and under a time limit (a
-/// command blocked on a pipe fails the test instead of hanging it).
 CommandResult run(const std::string& args) {
-  return run_vdfx(args, "env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 ");
+  return run_vdfx_headless(args);
 }
 
 /// pano.png, s.vdfx.json and a two-line recording rec.vdrec.jsonl in a fresh folder.
 fs::path setup() {
-  const fs::path dir = test_dir();
-  write_test_panorama(dir);
-  write_text(dir / "s.vdfx.json", exposure_sidecar());
-  std::ifstream in(test_files::recordings_dir() / "sim_look_and_place.vdrec.jsonl");
-  std::string header, sample;
-  std::getline(in, header);
-  std::getline(in, sample);
-  write_text(dir / "rec.vdrec.jsonl", header + "\n" + sample + "\n");
+  const fs::path dir = panorama_and_sidecar();
+  write_short_recording(dir / "rec.vdrec.jsonl");
   return dir;
 }
 
@@ -113,10 +105,10 @@ TEST(OutputSafety, ReplayFramesNeverFollowALinkInTheFolder) {
   const std::string sidecar = slurp(dir / "s.vdfx.json");
   fs::create_directories(dir / "frames");
   fs::create_symlink("../s.vdfx.json", dir / "frames" / "replay_000.png");
-  const CommandResult r = run("replay " + (dir / "rec.vdrec.jsonl").string() + " --video " +
-                              (dir / "pano.png").string() + " --sidecar-out " +
-                              (dir / "out.vdfx.json").string() + " --frames " +
-                              (dir / "frames").string());
+  const CommandResult r =
+      run("replay " + (dir / "rec.vdrec.jsonl").string() + " --video " +
+          (dir / "pano.png").string() + " --sidecar-out " + (dir / "out.vdfx.json").string() +
+          " --frames " + (dir / "frames").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("replay_000.png: it is a symbolic link"), std::string::npos) << r.output;
   EXPECT_EQ(slurp(dir / "s.vdfx.json"), sidecar);
@@ -126,8 +118,8 @@ TEST(OutputSafety, RecordAndScreenshotRefuseTheCommandsInputs) {
   const fs::path dir = setup();
   const std::string sidecar = slurp(dir / "s.vdfx.json"), rec = slurp(dir / "rec.vdrec.jsonl");
   const std::string play = "play " + (dir / "pano.png").string() + " --sidecar " +
-                           (dir / "s.vdfx.json").string() + " --input replay:" +
-                           (dir / "rec.vdrec.jsonl").string();
+                           (dir / "s.vdfx.json").string() +
+                           " --input replay:" + (dir / "rec.vdrec.jsonl").string();
   const struct {
     std::string args;
     const char* says;

@@ -14,8 +14,8 @@ namespace {
 TEST(ViewRenderFinite, NonFiniteParametersAreRefusedNamingTheSidecarAndView) {
   const effects::StackParams ok;
   EXPECT_NO_THROW(require_finite(ok, "s.vdfx.json", {10.0, 5.0}, 3));
-  for (const double bad : {std::numeric_limits<double>::quiet_NaN(),
-                           std::numeric_limits<double>::infinity()}) {
+  for (const double bad :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     effects::StackParams p;
     p.exposure_stops = bad;
     try {

@@ -8,10 +8,10 @@
 
 /// A property every input must keep (a finite value, a value in its range, a round trip). A
 /// failure aborts, which libFuzzer reports as a crash and keeps the input.
-#define VDFX_FUZZ_CHECK(cond)                                                              \
-  do {                                                                                     \
-    if (!(cond)) {                                                                         \
+#define VDFX_FUZZ_CHECK(cond)                                                               \
+  do {                                                                                      \
+    if (!(cond)) {                                                                          \
       std::fprintf(stderr, "%s:%d: fuzz property failed: %s\n", __FILE__, __LINE__, #cond); \
-      std::abort();                                                                        \
-    }                                                                                      \
+      std::abort();                                                                         \
+    }                                                                                       \
   } while (false)

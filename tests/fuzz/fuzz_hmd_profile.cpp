@@ -15,7 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace vdfx;
   xr::HmdProfile p;
   try {
-    p = xr::parse_hmd_profile_text(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.json");
+    p = xr::parse_hmd_profile_text(std::string_view(reinterpret_cast<const char*>(data), size),
+                                   "fuzz.json");
   } catch (const io::InputError&) {
     return 0;
   }
@@ -25,7 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const xr::EyeProfile& ep = p.eye(e);
     VDFX_FUZZ_CHECK(ep.width >= 1 && ep.width <= 16384 && ep.height >= 1 && ep.height <= 16384);
     const effects::EyeLens lens = p.eye_lens(e);
-    const auto centre = lens.lens.panel_to_view(Eigen::Vector2d(0.0, 0.0), 1, effects::InverseMethod::Newton);
+    const auto centre =
+        lens.lens.panel_to_view(Eigen::Vector2d(0.0, 0.0), 1, effects::InverseMethod::Newton);
     VDFX_FUZZ_CHECK(centre && std::isfinite(centre->x()) && std::isfinite(centre->y()));
   }
   return 0;

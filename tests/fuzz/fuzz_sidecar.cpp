@@ -29,7 +29,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       for (const double v : p.get(track.type)) VDFX_FUZZ_CHECK(std::isfinite(v));
     }
   }
-  const effects::StackParams far = stack.evaluate(effects::Direction{-123.0, 45.0}, s.video.frames - 1);
+  const effects::StackParams far =
+      stack.evaluate(effects::Direction{-123.0, 45.0}, s.video.frames - 1);
   VDFX_FUZZ_CHECK(std::isfinite(far.exposure_stops) && std::isfinite(far.blur_sigma_deg) &&
                   std::isfinite(far.tint_gain.sum()) && std::isfinite(far.vignette_radius_deg));
   return 0;

@@ -22,17 +22,8 @@ namespace vdfx::io {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::error_of;
 using testing::temp_dir;
-
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 /// A file of `bytes` bytes that takes no disk space (a hole).
 fs::path sparse_file(const fs::path& p, std::uintmax_t bytes) {
@@ -94,8 +85,8 @@ TEST(InputFile, EveryReaderTakesOnlyRegularFilesWithinItsLimit) {
   EXPECT_NE(big.problems[0].message.find("more than the 64 MiB a sidecar may be"),
             std::string::npos)
       << big.problems[0].message;
-  const std::string rec =
-      error_of([&] { read_recording(sparse_file(dir / "big.vdrec.jsonl", kMaxRecordingBytes + 1)); });
+  const std::string rec = error_of(
+      [&] { read_recording(sparse_file(dir / "big.vdrec.jsonl", kMaxRecordingBytes + 1)); });
   EXPECT_NE(rec.find("more than the 1 GiB a recording may be"), std::string::npos) << rec;
 }
 
@@ -108,7 +99,8 @@ TEST(InputFile, ARecordingLineStopsAtItsLimitWithItsNumber) {
     std::istringstream ok(header + "\n" + std::string(kMaxRecordingLineBytes, ' ') + "x" +
                           (newline ? "\n" : ""));
     const std::string over = error_of([&] { parse_recording(ok, "r.jsonl"); });
-    EXPECT_NE(over.find("r.jsonl:2: line longer than 1 MiB"), std::string::npos) << over.substr(0, 200);
+    EXPECT_NE(over.find("r.jsonl:2: line longer than 1 MiB"), std::string::npos)
+        << over.substr(0, 200);
     std::istringstream at(header + "\n" + std::string(kMaxRecordingLineBytes - 1, ' ') + "x\n");
     const std::string within = error_of([&] { parse_recording(at, "r.jsonl"); });
     EXPECT_NE(within.find("r.jsonl:2: bad JSON"), std::string::npos) << within.substr(0, 200);

@@ -59,7 +59,8 @@ TEST(Messages, SidecarMessagesQuoteAtMostAFewDozenBytes) {
     ASSERT_FALSE(r.ok());
     const std::string all = r.to_string();
     EXPECT_NE(all.find(row.says), std::string::npos) << all.substr(0, 300);
-    for (const Problem& p : r.problems) EXPECT_LT(p.to_string().size(), 400u) << p.to_string().substr(0, 300);
+    for (const Problem& p : r.problems)
+      EXPECT_LT(p.to_string().size(), 400u) << p.to_string().substr(0, 300);
   }
 }
 

@@ -19,19 +19,9 @@ namespace vdfx::io {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::temp_dir;
 using test_files::slurp;
-
-/// The message of the InputError `f` throws ("" when it throws none).
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::error_of;
+using testing::temp_dir;
 
 TEST(OutputPath, FollowsChainsOfLinksToTheFileTheyName) {
   const auto dir = temp_dir("output_links");
@@ -58,11 +48,9 @@ TEST(OutputPath, RefusesWhatIsNotARegularFile) {
     fs::path path;
     const char* expected;
   } rows[] = {
-      {dir / "fifo", "named pipe"},
-      {dir / "folder", "a folder"},
+      {dir / "fifo", "named pipe"},          {dir / "folder", "a folder"},
       {"/dev/null", "character device"},  // only stat'ed: nothing is ever written here
-      {dir / "to_null", "character device"},
-      {dir / "loop1", "too many levels of symbolic links"},
+      {dir / "to_null", "character device"}, {dir / "loop1", "too many levels of symbolic links"},
   };
   for (const auto& row : rows) {
     const std::string msg = error_of([&] { resolve_output_path(row.path); });

@@ -8,9 +8,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <vector>
-
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "effects/stack_interpolator.h"
 #include "io/sidecar.h"
@@ -68,8 +67,8 @@ TEST(SidecarDerived, AtTheBoundsTheInterpolationIsFiniteAndReproducesKeyframes) 
   const double fps_for_step = 24.0 * 1.0 / (1.01 * kMinScaledFrameStep);
   for (const double fps : {fps_for_span, fps_for_step, 30.0}) {
     for (const double exponent : {0.01, 1.0, 2.0, 3.99}) {
-      const SidecarReport r =
-          validate_sidecar_text(sidecar_text(fps, static_cast<long long>(frames), exponent, 1.0), "s");
+      const SidecarReport r = validate_sidecar_text(
+          sidecar_text(fps, static_cast<long long>(frames), exponent, 1.0), "s");
       ASSERT_TRUE(r.ok()) << r.to_string();
       const Sidecar& s = *r.sidecar;
       const effects::StackInterpolator stack(s.effects, s.interpolation, s.video.fps);
@@ -78,7 +77,8 @@ TEST(SidecarDerived, AtTheBoundsTheInterpolationIsFiniteAndReproducesKeyframes) 
         EXPECT_NEAR(v, k.params[0], 1e-4) << "fps " << fps << " exponent " << exponent;
       }
       for (const std::int64_t f : {0, 1, 2})
-        EXPECT_TRUE(std::isfinite(stack.evaluate(effects::Direction{37.0, 12.0}, f).exposure_stops));
+        EXPECT_TRUE(
+            std::isfinite(stack.evaluate(effects::Direction{37.0, 12.0}, f).exposure_stops));
     }
   }
 }
