@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
-# Runs every libFuzzer target of tests/fuzz for a bounded time (issue 11): builds them with clang
-# into build-fuzz/ (or $VDFX_FUZZ_BUILD_DIR), then fuzzes each for $VDFX_FUZZ_SECONDS (default
-# 60) starting from a copy of its seed corpus, $VDFX_JOBS at a time. A crash, leak, timeout or
-# property failure fails the run; the input that caused it is in build-fuzz/artifacts/NAME/.
+# Runs every libFuzzer target of tests/fuzz for a bounded time (issue 11): builds them in the
+# sanitizer build (.ci/asan_configure.sh, build-asan/ or $VDFX_ASAN_BUILD_DIR, shared with
+# .ci/sanitize.sh), then fuzzes each for $VDFX_FUZZ_SECONDS (default 10: a smoke run in CI that
+# finds shallow faults in new reader code; run it longer by hand after changing a reader)
+# starting from a copy of its seed corpus, $VDFX_JOBS at a time. A crash, leak, timeout or
+# property failure fails the run; the input that caused it is in build-asan/artifacts/NAME/.
 # Keep it: copy it to tests/fuzz/regressions/NAME/, fix the bug, and ctest runs it from then on.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/.ci/deps.sh"
-build=${VDFX_FUZZ_BUILD_DIR:-$root/build-fuzz}
-seconds=${VDFX_FUZZ_SECONDS:-60}
+build=${VDFX_ASAN_BUILD_DIR:-$root/build-asan}
+seconds=${VDFX_FUZZ_SECONDS:-10}
 jobs=${VDFX_JOBS:-$(nproc)}
 targets=(sidecar recording hmd_profile hid_descriptor hid_reports)
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang-14 \
-  -DCMAKE_CXX_COMPILER=clang++-14 -DVDFX_FUZZ=ON -DVDFX_WITH_GL=OFF -DVDFX_BUILD_BENCH=OFF \
-  -DVDFX_WERROR=ON >/dev/null
+"$root/.ci/asan_configure.sh" "$build"
 cmake --build "$build" -j "$jobs" --target "${targets[@]/#/fuzz_}"
 if command -v llvm-symbolizer-14 > /dev/null; then
   export ASAN_SYMBOLIZER_PATH=$(command -v llvm-symbolizer-14)
