@@ -7,9 +7,10 @@ packages=(
   build-essential cmake pkg-config git
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libopencv-dev
+  libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libglfw3-dev libglm-dev libepoxy-dev libstb-dev libhidapi-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  fonts-dejavu-core blender-data
+  fonts-dejavu-core blender-data ffmpeg
   xvfb xauth libgl1-mesa-dri mesa-utils
   clang-14 libclang-rt-14-dev llvm-14
 )

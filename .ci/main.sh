@@ -25,17 +25,21 @@ for view in "window 31,5" "desk -75,-10" "bed 75,-15" "behind -150,0"; do
     --mode pixel --out "$out/demo-$1-pixel.png"
 done
 echo "vdfx: demo views written to $out (demo-*.png: view-dependent; demo-*-pixel.png: per-pixel baseline)"
+# The baked export (docs/export.md): the panorama as a one-frame 360 video, effects per pixel.
+"$vdfx" export "$pano" --sidecar "$demo" --baked "$out/demo-baked.mp4"
 
-# The in-headset editor: the demo session (recordings/demo.vdrec.jsonl) replayed in the editor's
-# window on the bundled demo (not saved), its mirror written as a screenshot (Xvfb when there is
-# no display), then the same session replayed headless: the sidecar it authors and a few frames.
+# The editor: the demo session (recordings/demo.vdrec.jsonl) replayed in the editor's window on
+# the bundled demo (not saved), in the desktop view it was recorded in (1280 x 720), written as
+# a screenshot (Xvfb when there is no display), then the same session replayed headless: the
+# sidecar it authors and a few frames.
 run_gl() { if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a "$@"; fi; }
 run_gl "$vdfx" edit --input replay:"$root/recordings/demo.vdrec.jsonl" --frames 433 --hidden \
-  --mirror eye --scale 0.5 --window 720x800 --screenshot "$out/editor.png"
+  --screenshot "$out/editor.png"
 "$vdfx" replay "$root/recordings/demo.vdrec.jsonl" --video "$pano" \
   --sidecar-out "$out/demo-authored.vdfx.json" --frames "$out/replay"
-echo "vdfx: editor mirror $out/editor.png, authored sidecar $out/demo-authored.vdfx.json"
-# With a display, finish in the real editor on the demo (VDFX_NO_WINDOW=1 skips it).
+echo "vdfx: editor window $out/editor.png, authored sidecar $out/demo-authored.vdfx.json"
+# With a display, finish in the real editor on the demo, in the desktop view (VDFX_NO_WINDOW=1
+# skips it).
 if [ -n "${DISPLAY:-}" ] && [ "${VDFX_NO_WINDOW:-0}" != 1 ]; then
   "$vdfx" edit
 fi

@@ -61,12 +61,26 @@ bool Autosave::save(const io::Sidecar& sidecar) {
     return false;
   }
   ++saves_;
-  status_ = "saved " + path_.filename().string() + " (" + std::to_string(saves_) + " changes)";
+  status_ = "saved " + path_.filename().string() + " (" + std::to_string(saves_) +
+            (saves_ == 1 ? " change)" : " changes)");
   return true;
 }
 
 bool Autosave::finish(const io::Sidecar& sidecar) {
-  if (!save(sidecar)) return false;
+  // The final state on disk: written when the file does not hold it yet (a new sidecar, or an
+  // autosave that failed); not a change of its own.
+  const std::string text = io::format_sidecar(sidecar);
+  const auto on_disk = slurp(path_);
+  if (on_disk != text) {
+    try {
+      io::write_file_atomic(path_, text);
+    } catch (const std::exception& e) {
+      status_ = std::string("saving FAILED: ") + e.what();
+      return false;
+    }
+  }
+  if (saves_ == 0)
+    status_ = path_.filename().string() + (on_disk ? ": no changes" : ": new sidecar written (no keyframes yet)");
   std::error_code ec;
   fs::remove(recovery_path(path_), ec);
   return !ec;

@@ -32,16 +32,17 @@ class Autosave {
   /// Writes the sidecar and the recovery copy (both atomically). Never throws: a failure is kept
   /// in status() and the next save tries again.
   bool save(const io::Sidecar& sidecar);
-  /// Clean exit: a final save of the sidecar, then the recovery copy is removed.
+  /// Clean exit: the sidecar is written if it does not hold this state yet (a new one, or after
+  /// a failed autosave), then the recovery copy is removed. Not counted as a change.
   bool finish(const io::Sidecar& sidecar);
-  /// "saved NAME (n changes)" or "autosave FAILED: reason".
+  /// "saved NAME (n changes)", "NAME: no changes" or "autosave FAILED: reason".
   const std::string& status() const { return status_; }
   int saves() const { return saves_; }
   const std::filesystem::path& path() const { return path_; }
 
  private:
   std::filesystem::path path_;
-  std::string status_ = "not saved yet";
+  std::string status_ = "no changes yet";
   int saves_ = 0;
 };
 

@@ -19,6 +19,9 @@
 namespace vdfx::app {
 namespace {
 
+/// Thumbnails across the timeline strip.
+constexpr int kTimelineThumbnails = 10;
+
 namespace fs = std::filesystem;
 
 /// `vdfx edit`'s default --scale (the player keeps kDefaultEyeScale).
@@ -34,14 +37,6 @@ fs::path sidecar_video(const fs::path& sidecar_path, const io::Sidecar& s) {
 
 // The desktop layout puts both panels in front of the head (the sim's mouse reaches them); sim
 // recordings were made with it, so their replays need it too.
-PanelLayout layout_for(const std::string& input) {
-  if (input == "sim") return PanelLayout::Desktop;
-  const std::string prefix = "replay:";
-  if (input.rfind(prefix, 0) == 0)
-    return io::read_recording(input.substr(prefix.size())).header.hmd == "sim" ? PanelLayout::Desktop
-                                                                                : PanelLayout::Hands;
-  return PanelLayout::Hands;
-}
 
 // Offers an unclean exit's recovery copy. Returns the file to load instead of the sidecar.
 std::optional<fs::path> handle_recovery(const fs::path& sidecar_path, const std::string& recover) {
@@ -131,8 +126,8 @@ int cmd_edit(const Args& args) {
   LoopSetup setup = prepare_loop(loop, v, true, {{"--sidecar", sidecar_path}});
   if (!exists) {
     const io::VideoProperties& p = setup.video->properties();
-    sidecar.video = {fs::absolute(v).string(), p.fps.value(), std::max<std::int64_t>(1, p.frames), p.width,
-                     p.height};
+    sidecar = io::new_sidecar({fs::absolute(v).string(), p.fps.value(),
+                               std::max<std::int64_t>(1, p.frames), p.width, p.height});
     std::cerr << "vdfx edit: new sidecar " << sidecar_path.string() << " for " << v.string() << "\n";
   }
   if (demo)
@@ -140,16 +135,29 @@ int cmd_edit(const Args& args) {
               << " and pass --sidecar COPY to keep edits)\n";
 
   EditorOptions eo;
-  eo.layout = layout_for(loop.input);
+  // The sim (and replays of sessions recorded with it): the Desktop layout in the window's view;
+  // a replay keeps the view it was recorded in, a live window's panels follow its size.
+  const bool desktop = loop.input == "sim" || setup.recorded_desktop.has_value();
+  eo.layout = desktop ? PanelLayout::Desktop : PanelLayout::Hands;
+  if (setup.recorded_desktop)
+    eo.viewport = {setup.recorded_desktop->width, setup.recorded_desktop->height, setup.recorded_desktop->hfov_deg};
+  else
+    eo.viewport = {setup.options.window_width, setup.options.window_height, setup.options.desktop_hfov_deg};
   if (!demo) eo.autosave_path = sidecar_path;
   DocumentOptions dopts;
   // Replays are exact: every solve and minimap finishes before the frame that shows it. Live,
   // the minimap is computed on a worker so that playing a large set never stalls a frame.
   const bool replay = loop.input.rfind("replay:", 0) == 0;
   if (replay) dopts.keyframes.async = false;
-  eo.async_visualizations = !replay;
+  eo.visuals.async = !replay;
   Editor editor(std::move(sidecar), dopts, eo);
-  EditorClient client(editor, create_gl_panel_textures());
+  EditorClient client(editor, create_gl_panel_textures(), /*follow_window=*/desktop && !setup.recorded_desktop);
+  if (!setup.video->properties().is_still) {
+    auto thumbs = std::make_unique<ThumbnailWorker>(v, kTimelineThumbnails, cv::Size(192, 96));
+    // A replay must look the same every run: its thumbnails are there from the first frame.
+    if (replay) thumbs->wait(std::chrono::seconds(60));
+    client.set_thumbnails(std::move(thumbs));
+  }
   FrameLoop frame_loop(setup.options, *setup.input, *setup.video, client);
   FrameLoopResult result;
   try {

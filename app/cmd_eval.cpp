@@ -4,7 +4,9 @@
 #include <iostream>
 
 #include "app/cli_util.h"
-#include "app/view_render.h"
+#include "app/finite_params.h"
+#include "app/flare_set_of.h"
+#include "app/grain_set_of.h"
 #include "effects/stack_interpolator.h"
 #include "io/input_error.h"
 #include "io/sidecar.h"
@@ -12,10 +14,12 @@
 namespace vdfx::app {
 
 int cmd_eval(const Args& args) {
-  CLI::App cli{"Prints the interpolated parameters of every effect at the given views as JSON, one\n"
-               "object per --at and per line. Effects without keyframes print their neutral\n"
-               "values with \"active\": false.",
-               "vdfx eval"};
+  CLI::App cli{
+      "Prints the interpolated parameters of every effect at the given views as JSON, one\n"
+      "object per --at and per line. Effects without keyframes print their neutral\n"
+      "values with \"active\": false; flares print their intensity, grains their intensity\n"
+      "and size, each in file order.",
+      "vdfx eval"};
   std::string path;
   std::vector<std::string> at_texts;
   cli.add_option("SIDECAR", path, "the sidecar file")->required();
@@ -39,6 +43,8 @@ int cmd_eval(const Args& args) {
                            " frames (/video/frames)");
   }
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+  const effects::FlareSet flares = flare_set_of(sidecar);
+  const effects::GrainSet grains = grain_set_of(sidecar);
   for (const EvalPoint& p : points) {
     const effects::StackParams params = stack.evaluate(p.direction, p.frame);
     require_finite(params, path, p.direction, p.frame);  // never print "null"
@@ -53,6 +59,20 @@ int cmd_eval(const Args& args) {
       fx[std::string(spec.name)] = std::move(e);
     }
     out["effects"] = std::move(fx);
+    // Flares (any number, in file order): their keyframed intensity at the view.
+    nlohmann::ordered_json fl = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < flares.size(); ++k)
+      fl.push_back({{"intensity", flares.intensity(k, effects::to_unit(p.direction), p.frame)}});
+    out["flares"] = std::move(fl);
+    // Grain effects (any number, in file order): keyframed intensity and size at the view.
+    nlohmann::ordered_json gr = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < grains.size(); ++k) {
+      const effects::GrainParams g = grains.params(k, effects::to_unit(p.direction), p.frame);
+      gr.push_back({{"style", effects::grain_style_name(grains.effect(k).style)},
+                    {"intensity", g.intensity},
+                    {"size", g.size}});
+    }
+    out["grains"] = std::move(gr);
     std::cout << out.dump() << "\n";
   }
   return kExitOk;

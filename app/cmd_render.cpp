@@ -135,6 +135,12 @@ int cmd_render(const Args& args) {
   io::resolve_output_path(out_path);
 
   const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
+  if (const auto g = first_gpu_only_grain(sidecar); g && !gpu) {
+    std::cerr << "vdfx render: " << sidecar_path << ": grain #" << *g + 1 << " ("
+              << effects::grain_style_name(sidecar.grains[*g].style)
+              << ") is volumetric and renders on the GPU only: add --gpu\n";
+    return kExitUsage;
+  }
   const cv::Mat rgb8 = render_request(input, sidecar, request);
   cv::Mat bgr;
   cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);

@@ -28,8 +28,12 @@ int cmd_validate(const Args& args) {
   if (!quiet) {
     std::size_t keyframes = 0;
     for (const auto& track : report.sidecar->effects) keyframes += track.keyframes.size();
-    std::cout << path << ": valid (" << report.sidecar->effects.size() << " effects, " << keyframes
-              << " keyframes)\n";
+    for (const auto& flare : report.sidecar->flares) keyframes += flare.keyframes.size();
+    for (const auto& grain : report.sidecar->grains) keyframes += grain.keyframes.size();
+    std::cout << path << ": valid ("
+              << report.sidecar->effects.size() + report.sidecar->flares.size() +
+                     report.sidecar->grains.size()
+              << " effects, " << keyframes << " keyframes)\n";
   }
   return kExitOk;
 }

@@ -1,89 +1,60 @@
+/// @file
+/// @brief Every command with its function (tests and the media module run them all in-process).
 #include "app/commands.h"
 
-#include <exception>
-#include <iostream>
+#include <map>
+#include <stdexcept>
+#include <string>
 
-#include "io/input_error.h"
 #include "io/library_logs.h"
 #include "xr/gl_context.h"
 
 namespace vdfx::app {
+namespace {
+
+CommandFn function_of(const std::string& name) {
+  static const std::map<std::string, CommandFn> fns = {
+      {"devices", cmd_devices}, {"edit", cmd_edit},     {"eval", cmd_eval},
+      {"export", cmd_export},   {"hmd", cmd_hmd},       {"play", cmd_play},
+      {"render", cmd_render},   {"replay", cmd_replay}, {"validate", cmd_validate},
+  };
+  const auto it = fns.find(name);
+  if (it == fns.end()) throw std::logic_error("command '" + name + "' has no function");
+  return it->second;
+}
+
+/// Runs `fn`. No display or no GL 4.3 here is how the command was run, not the input or a bug:
+/// a usage error (exit 2).
+int gl_unavailable_is_usage(CommandFn fn, const Args& args) {
+#if VDFX_WITH_GL
+  try {
+    return fn(args);
+  } catch (const xr::GlUnavailableError& e) {
+    throw UsageError(e.what());
+  }
+#else
+  return fn(args);
+#endif
+}
+
+}  // namespace
 
 const std::vector<Command>& commands() {
-  static const std::vector<Command> list = {
-      {"devices", "list HID input devices (gamepads, SpaceMouse) and their ids for --input hid:", cmd_devices},
-      {"edit", "the in-headset editor (no VIDEO: the bundled demo)", cmd_edit},
-      {"eval", "print the interpolated parameters of every effect at given views", cmd_eval},
-      {"hmd", "list the simulated headsets, or show one (vdfx hmd list | show NAME)", cmd_hmd},
-      {"play", "play a video with its effects in the simulated headset", cmd_play},
-      {"render", "render one view of a panorama or video frame to a PNG", cmd_render},
-      {"replay", "replay a recorded editing session headless and write its sidecar", cmd_replay},
-      {"validate", "check a sidecar file; list every problem", cmd_validate},
-  };
+  static const std::vector<Command> list = [] {
+    std::vector<Command> v;
+    for (const CommandInfo& c : command_infos()) v.push_back({c.name, c.summary, function_of(c.name)});
+    return v;
+  }();
   return list;
 }
 
-namespace {
-void print_help(std::ostream& out) {
-  out << "vdfx: author view-dependent effects for 360-degree video\n\n"
-         "usage: vdfx COMMAND [ARGS...]   (vdfx COMMAND --help for its options)\n\ncommands:\n";
-  for (const auto& c : commands()) {
-    std::string name = c.name;
-    name.resize(10, ' ');
-    out << "  " << name << c.summary << "\n";
-  }
-  out << "\n--verbose (anywhere): keep the media libraries' own messages (OpenCV, FFmpeg)\n"
-         "exit codes: 0 success, 1 the input was wrong, 2 usage error, 3 internal error\n";
-}
-}  // namespace
-
-int run_main(const Args& raw_args) {
-  // --verbose, anywhere before "--": the media libraries' own messages stay on.
-  Args args;
-  bool verbose = false;
-  for (std::size_t i = 0; i < raw_args.size(); ++i) {
-    if (raw_args[i] == "--") {
-      args.insert(args.end(), raw_args.begin() + static_cast<std::ptrdiff_t>(i), raw_args.end());
-      break;
-    }
-    if (raw_args[i] == "--verbose") verbose = true;
-    else args.push_back(raw_args[i]);
-  }
-  if (!verbose) io::quiet_library_logs();
-  if (args.empty()) {
-    print_help(std::cerr);
-    return kExitUsage;
-  }
-  if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    print_help(std::cout);
-    return kExitOk;
-  }
-  if (args[0] == "--version") {
-    std::cout << "vdfx 0.1.0\n";
-    return kExitOk;
-  }
-  for (const auto& c : commands()) {
-    if (args[0] != c.name) continue;
-    try {
-      return c.run(Args(args.begin() + 1, args.end()));
-    } catch (const UsageError& e) {
-      std::cerr << "vdfx " << c.name << ": " << e.what() << "\n";
-      return kExitUsage;
-#if VDFX_WITH_GL
-    } catch (const xr::GlUnavailableError& e) {  // no display or GL 4.3 here: how it was run
-      std::cerr << "vdfx " << c.name << ": " << e.what() << "\n";
-      return kExitUsage;
-#endif
-    } catch (const io::InputError& e) {
-      std::cerr << "vdfx " << c.name << ": " << e.what() << "\n";
-      return kExitBadInput;
-    } catch (const std::exception& e) {
-      std::cerr << "vdfx " << c.name << ": internal error: " << e.what() << "\n";
-      return kExitInternal;
-    }
-  }
-  std::cerr << "vdfx: unknown command '" << args[0] << "' (vdfx --help lists them)\n";
-  return kExitUsage;
+int run_main(const Args& args) {
+  if (!wants_verbose(args)) io::quiet_library_logs();
+  return dispatch(args, [](const CommandInfo& c, const Args& rest) {
+    const CommandFn fn = function_of(c.name);
+    return run_guarded(
+        c.name, [fn](const Args& a) { return gl_unavailable_is_usage(fn, a); }, rest);
+  });
 }
 
 }  // namespace vdfx::app

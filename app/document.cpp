@@ -12,7 +12,11 @@ namespace vdfx::app {
 using effects::EffectType;
 
 Document::Document(io::Sidecar sidecar, DocumentOptions options)
-    : video_(sidecar.video), defaults_(sidecar.interpolation), options_(options) {
+    : video_(sidecar.video),
+      defaults_(sidecar.interpolation),
+      flares_(std::move(sidecar.flares)),
+      grains_(std::move(sidecar.grains)),
+      options_(options) {
   std::array<std::vector<effects::Keyframe>, effects::kEffectCount> loaded;
   for (auto& track : sidecar.effects) {
     overrides_[idx(track.type)] = track.interpolation;
@@ -28,6 +32,8 @@ io::Sidecar Document::sidecar() const {
   io::Sidecar s;
   s.video = video_;
   s.interpolation = defaults_;
+  s.flares = flares_;
+  s.grains = grains_;
   for (const auto& spec : effects::all_effect_specs()) {
     const auto i = idx(spec.type);
     if (sets_[i]->keyframes().empty() && !overrides_[i]) continue;
@@ -151,6 +157,25 @@ void Document::set_interpolation(EffectType type, const effects::InterpolationSe
   overrides_[idx(type)] = settings;
   rebuild(type, sets_[idx(type)]->keyframes());
   record(std::string(spec.name) + " interpolation", type, std::move(before));
+}
+
+PendingEdit& Document::begin_pending(EffectType type, std::optional<std::size_t> moved, effects::Keyframe key) {
+  pending_.reset();
+  pending_ = std::make_unique<PendingEdit>(*this, type, moved, std::move(key), options_.keyframes, pending_stats_);
+  return *pending_;
+}
+
+std::optional<effects::KeyframeSet::Edit> Document::commit_pending() {
+  if (!pending_) return std::nullopt;
+  const std::unique_ptr<PendingEdit> p = std::move(pending_);
+  if (p->moved()) return move_keyframe(p->effect(), *p->moved(), p->key().direction, p->key().frame);
+  return add_keyframe(p->effect(), p->key());
+}
+
+std::uint64_t Document::solutions_version() const {
+  std::uint64_t v = 0;
+  for (const auto& set : sets_) v += set->solution_version();
+  return v;
 }
 
 bool Document::undo() {

@@ -5,7 +5,8 @@
 /// Every edit goes through here, becomes one undo step (or part of an open group) and notifies
 /// the change listener (autosave). The sidecar written is rebuilt from the keyframe sets, with
 /// the effects in the stack's order (blur, tint, exposure, saturation, contrast, vignette); an
-/// effect is written when it has keyframes or its own interpolation settings.
+/// effect is written when it has keyframes or its own interpolation settings. Flares and grain
+/// are carried through unchanged.
 #pragma once
 
 #include <array>
@@ -16,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "app/pending_edit.h"
 #include "app/undo_stack.h"
 #include "effects/keyframe_set.h"
 #include "effects/stack_interpolator.h"
@@ -68,6 +70,18 @@ class Document {
   /// The effect's own exponent and time scale (throws io::InputError when out of range).
   void set_interpolation(effects::EffectType type, const effects::InterpolationSettings& settings);
 
+  // ---- the edit being made (app/pending_edit.h): at most one at a time
+  /// Starts one (a new keyframe, or keyframe `moved` held) and returns it; replaces any other.
+  PendingEdit& begin_pending(effects::EffectType type, std::optional<std::size_t> moved, effects::Keyframe key);
+  PendingEdit* pending() { return pending_.get(); }
+  const PendingEdit* pending() const { return pending_.get(); }
+  /// Commits it as one edit (add_keyframe, or move_keyframe of the held one to where it is) and
+  /// ends it. Returns the edit; nullopt without a pending edit.
+  std::optional<effects::KeyframeSet::Edit> commit_pending();
+  /// Ends it without an edit.
+  void cancel_pending() { pending_.reset(); }
+  const PendingStats& pending_stats() const { return pending_stats_; }
+
   void begin_group(const std::string& label) { undo_.begin_group(label); }
   void end_group() { undo_.end_group(); }
   bool undo();
@@ -76,6 +90,9 @@ class Document {
 
   /// Grows with every change of the document (edits, undo, redo).
   std::uint64_t revision() const { return revision_; }
+  /// Grows whenever a published solution changes (an edit, or an asynchronous solve finishing):
+  /// the sum of the effects' solution versions.
+  std::uint64_t solutions_version() const;
   /// Called after every change (autosave).
   void set_change_listener(std::function<void()> listener) { listener_ = std::move(listener); }
 
@@ -92,12 +109,18 @@ class Document {
 
   io::VideoInfo video_;
   effects::InterpolationSettings defaults_;
+  /// The sidecar's flares, kept as read and written back unchanged (the editor does not edit
+  /// them yet; a save must not drop them).
+  std::vector<effects::FlareEffect> flares_;
+  std::vector<effects::GrainEffect> grains_;  //!< likewise the grain effects
   DocumentOptions options_;
   std::array<std::unique_ptr<effects::KeyframeSet>, effects::kEffectCount> sets_;
   std::array<std::optional<effects::InterpolationSettings>, effects::kEffectCount> overrides_;
   std::array<std::vector<double>, effects::kEffectCount> params_;
   UndoStack undo_;
   std::uint64_t revision_ = 0;
+  PendingStats pending_stats_;
+  std::unique_ptr<PendingEdit> pending_;  //!< after the sets: it reads them
   std::function<void()> listener_;
 };
 

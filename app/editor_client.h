@@ -6,12 +6,12 @@
 /// preview included; quads() turns the editor's panels into quad layers in LOCAL space (the
 /// panels' world is the input's LOCAL space; both face their local +z, like OpenXR quads).
 ///
-/// Panel textures: a panel's CPU image (premultiplied RGBA8, row 0 at the top) is uploaded only
-/// when the panel re-rendered, and then only its damaged rectangles. The compositor blends quads
-/// with straight alpha (GL_SRC_ALPHA, 1 - src alpha) and samples row 0 at the quad's bottom, so
-/// the client keeps a straight-alpha, bottom-up copy of each panel and uploads from it.
+/// Panel textures: a panel's CPU image (premultiplied RGBA8, row 0 at the top) is uploaded as it
+/// is, only when the panel re-rendered, and then only its damaged rectangles: the compositor's
+/// quads are premultiplied with their first row at the top (OpenXR's quad-layer convention).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -21,11 +21,13 @@
 
 #include "app/editor.h"
 #include "app/frame_client.h"
+#include "app/thumbnail_worker.h"
 
 namespace vdfx::app {
 
 /// Where panel images go: GL textures in the window (create_gl_panel_textures), a recorder in
-/// tests. Images are straight-alpha RGBA8, bottom row first (GL's texture orientation).
+/// tests. Images are premultiplied RGBA8, first row at the top of the quad (the compositor's
+/// quad convention, xr::QuadLayer).
 class PanelTextures {
  public:
   virtual ~PanelTextures() = default;
@@ -41,15 +43,25 @@ class PanelTextures {
 /// GL context at upload and release; throws std::runtime_error in a build without OpenGL.
 std::unique_ptr<PanelTextures> create_gl_panel_textures();
 
-/// Premultiplied RGBA8 (row 0 at the top) -> straight alpha, rows reversed, for the rectangle `r`
-/// of `premultiplied` into `out` (same size, allocated by the caller).
-void unpremultiply_flipped(const cv::Mat& premultiplied, const cv::Rect& r, cv::Mat& out);
+/// How the client draws the pointers and the placement reticle in the scene (quads composited
+/// with the panels, never touched by the effects).
+struct PointerDrawing {
+  double dot_deg = 0.8;      //!< the cursor dot's angular diameter
+  double reticle_deg = 1.6;  //!< the ring at the view centre (where keyframes are placed)
+  double far_m = 3.0;        //!< where the dot sits when the ray meets no panel
+  double ray_width_m = 0.004;
+};
 
 class EditorClient : public FrameClient {
  public:
   /// The editor stays owned by the caller; textures may be null (no quads: tests of the rest).
-  EditorClient(Editor& editor, std::unique_ptr<PanelTextures> textures);
+  /// follow_window: the Desktop layout follows the window's size (live); off for replays, whose
+  /// panels stay where the recording had them.
+  EditorClient(Editor& editor, std::unique_ptr<PanelTextures> textures, bool follow_window = false);
 
+  /// Timeline thumbnails from a worker: shown on the strip once decoded.
+  void set_thumbnails(std::unique_ptr<ThumbnailWorker> worker) { thumbnails_ = std::move(worker); }
+  void on_desktop_event(const xr::DesktopEvent& event) override;
   void update(const xr::InputState& input, std::int64_t display_time_ns, FrameInfo& info) override;
   effects::StackParams params(const effects::Direction& direction, std::int64_t video_frame) override;
   unsigned active_effects() const override { return active_; }
@@ -67,22 +79,42 @@ class EditorClient : public FrameClient {
 
   /// The editor's controls, as text for --help and docs/editor.md.
   static std::string controls_text();
+  /// The pointer quads of the last quads() call: cursor dots, rays, the reticle (tests).
+  const std::vector<xr::QuadLayer>& pointer_quads() const { return pointer_quads_; }
 
  private:
+  void add_pointer_quads(std::vector<xr::QuadLayer>& out);
+  unsigned texture_of(std::size_t slot, const cv::Mat& premultiplied);
+
   struct Slot {
     const ui::Panel* panel = nullptr;
     int render_count = -1;  //!< the panel's render_count() at the last upload
     unsigned texture = 0;
-    cv::Mat straight;       //!< straight alpha, bottom-up
+    int width = 0, height = 0;  //!< the texture's size at the last upload
   };
   Editor& editor_;
   std::unique_ptr<PanelTextures> textures_;
   std::vector<Slot> slots_;
   unsigned active_ = 0;
   std::uint64_t revision_ = 0;
-  std::vector<double> revision_key_;
+  /// What params() depends on; revision_ moves when it changes.
+  struct AnswersKey {
+    std::uint64_t document = ~0ull, solutions = 0, pending = 0;
+    bool pending_exists = false, unaltered = false;
+    bool operator==(const AnswersKey&) const = default;
+  };
+  AnswersKey answers_;
   int uploads_ = 0;
   std::int64_t uploaded_pixels_ = 0;
+  bool follow_window_ = false;
+  std::unique_ptr<ThumbnailWorker> thumbnails_;
+  PointerDrawing drawing_;
+  std::array<unsigned, 3> pointer_textures_{};  //!< dot, ring, ray
+  std::vector<xr::QuadLayer> pointer_quads_;
+  // Frame rate over the last second of display time, for the heads-up line.
+  std::int64_t fps_t0_ = -1;
+  int fps_frames_ = 0;
+  double fps_ = 0.0;
 };
 
 }  // namespace vdfx::app

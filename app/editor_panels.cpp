@@ -1,6 +1,9 @@
 /// @file
-/// @brief EditorPanels: building and placing the effect and timeline panels.
+/// @brief EditorPanels: building and placing the editor's panels in both layouts.
 #include "app/editor_panels.h"
+
+#include <algorithm>
+#include <cmath>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -19,97 +22,103 @@ xr::Pose anchor_pose(Anchor anchor, const xr::InputState& input) {
 }
 
 namespace {
+
 // A tilt about x so that a panel held below the eyes faces them.
 xr::Pose offset(glm::dvec3 p, double tilt_deg = 0.0) {
   return {p, glm::angleAxis(glm::radians(tilt_deg), glm::dvec3(1.0, 0.0, 0.0))};
 }
+
+// Hands layout (layout pixels; 1000 px = 0.25 m).
 constexpr int kEffectW = 1000, kEffectH = 1500;
 constexpr int kTimelineW = 2000, kTimelineH = 1200;
+
+std::string title_case(std::string_view s) {
+  std::string n(s);
+  if (!n.empty()) n[0] = static_cast<char>(n[0] - 'a' + 'A');
+  return n;
+}
+
 }  // namespace
-
-PanelPlacement effect_panel_placement(PanelLayout layout) {
-  // Desktop: the sim's left hand rests at (-0.2, -0.3, -0.3) m in the head frame looking where
-  // the head looks, so this puts the panel at (-0.2, 0, -0.45) m from the eye: left of the view
-  // centre (9.5 to 36 degrees), fully inside a 90-degree 16:9 view, and close enough that its
-  // text stays legible in the desktop mirror's reduced eye buffers.
-  if (layout == PanelLayout::Desktop) return {Anchor::LeftHand, offset({0.0, 0.3, -0.15})};
-  return {Anchor::LeftHand, offset({0.05, 0.16, -0.05}, -20.0)};
-}
-
-PanelPlacement timeline_panel_placement(PanelLayout layout) {
-  // Desktop: right of and below the view centre at 0.55 m (2 to 41 degrees right, 1 up to 26
-  // down), clear of the effect panel and large enough to read in the desktop mirror.
-  if (layout == PanelLayout::Desktop) return {Anchor::Head, offset({0.27, -0.135, -0.55})};
-  return {Anchor::RightHand, offset({-0.05, 0.12, -0.05}, -20.0)};
-}
 
 std::string effect_widget_id(EffectType type) { return std::string(effects::effect_name(type)); }
 
 EditorPanels::EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frame_count,
-                           PanelLayout layout_)
-    : layout(layout_),
-      effect_place(effect_panel_placement(layout_)),
-      timeline_place(timeline_panel_placement(layout_)) {
-  using namespace ui;
-  effect = std::make_unique<Panel>(kEffectPanelId, kEffectW, kEffectH,
-                                   glm::dvec2(0.25, 0.25 * kEffectH / kEffectW), fonts);
-  {
-    Panel& p = *effect;
-    const Theme& t = p.theme();
-    Stack col(Rect{0, 0, kEffectW, kEffectH}.inset(40.0), t.gap);
-    title = &p.add<Label>("title", "Effects", Label::Role::Title);
-    title->set_rect(col.next(64));
-    std::vector<std::string> names;
-    for (const auto& s : effects::all_effect_specs()) {
-      std::string n(s.name);
-      n[0] = static_cast<char>(n[0] - 'a' + 'A');
-      names.push_back(n);
-    }
-    menu = &p.add<MenuList>("effect_menu", names, static_cast<int>(EffectType::Exposure), t.row_height);
-    menu->set_rect(col.next(6 * t.row_height + 16));
-    effect_widget_rect_ = col.next(330);
-    effect_widgets[0] = &p.add<Slider1D>("blur", "Blur", Axis{0.0, 10.0, 0.1, "%.1f", "\u00b0", ""}, 0.0, 0.0);
-    effect_widgets[1] = &p.add<ColourWheel>("tint", "Tint");
-    effect_widgets[2] = &p.add<Slider1D>("exposure", "Exposure", Axis{-8.0, 8.0, 0.1, "%+.1f", " stops", ""}, 0.0, 0.0);
-    effect_widgets[3] = &p.add<Slider1D>("saturation", "Saturation", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
-    effect_widgets[4] = &p.add<Slider1D>("contrast", "Contrast", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
-    effect_widgets[5] = &p.add<Pad2D>("vignette", "Vignette", Axis{0.0, 180.0, 1.0, "%.0f", "\u00b0", "radius"},
-                                      Axis{0.01, 180.0, 1.0, "%.0f", "\u00b0", "falloff"}, glm::dvec2(180.0, 0.01));
-    const Rect row = col.next(t.row_height);
-    undo = &p.add<Button>("undo", "\u2190 Undo");
-    undo->set_rect(split_cols(row, 2, 0, t.gap));
-    redo = &p.add<Button>("redo", "Redo \u2192");
-    redo->set_rect(split_cols(row, 2, 1, t.gap));
-    const Rect keys = col.next(t.row_height);
-    delete_nearest = &p.add<Button>("delete_nearest", "Delete nearest");
-    delete_nearest->set_rect(split_cols(keys, 2, 0, t.gap));
-    deselect = &p.add<Button>("deselect", "Deselect");
-    deselect->set_rect(split_cols(keys, 2, 1, t.gap));
-    deselect->set_enabled(false);
-    exponent = &p.add<Slider1D>("exponent", "Exponent \u03b1", Axis{0.1, 3.9, 0.1, "%.1f", "", ""}, 1.0, 1.0);
-    exponent->set_rect(col.next(130));
-    time_scale = &p.add<Slider1D>("time_scale", "Time scale c", Axis{0.1, 10.0, 0.1, "%.1f", "", ""}, 1.0, 1.0);
-    time_scale->set_rect(col.next(130));
-    status = &p.add<Label>("status", "", Label::Role::Small, Align::Left, true);
-    status->set_rect(col.next(60));
+                           PanelLayout layout_, DesktopViewport viewport)
+    : layout(layout_), viewport_(viewport) {
+  if (layout == PanelLayout::Hands) {
+    build_effect_panel(fonts, kEffectW, kEffectH, glm::dvec2(0.25, 0.25 * kEffectH / kEffectW));
+    build_hands_timeline(fonts, frame_count);
+    effect_place = {Anchor::LeftHand, offset({0.05, 0.16, -0.05}, -20.0)};
+    timeline_place = {Anchor::RightHand, offset({-0.05, 0.12, -0.05}, -20.0)};
+  } else {
+    build_desktop_panels(fonts, frame_count);
+    set_viewport(viewport);
   }
-  timeline = std::make_unique<Panel>(kTimelinePanelId, kTimelineW, kTimelineH, glm::dvec2(0.5, 0.3), fonts);
-  {
-    Panel& p = *timeline;
-    const Theme& t = p.theme();
-    Stack col(Rect{0, 0, kTimelineW, kTimelineH}.inset(40.0), t.gap);
-    Stack top(col.next(t.row_height), t.gap, Stack::Axis::Horizontal);
-    play = &p.add<Button>("play", "", Icon::Play);
-    play->set_rect(top.next(120));
-    prev_key = &p.add<Button>("prev_key", "\u2190 Key");
-    prev_key->set_rect(top.next(220));
-    next_key = &p.add<Button>("next_key", "Key \u2192");
-    next_key->set_rect(top.next(220));
-    time = &p.add<Label>("time", "", Label::Role::Body, Align::Right, true);
-    time->set_rect(top.rest());
-    strip = &p.add<TimelineStrip>("strip", static_cast<int>(frame_count));
-    strip->set_rect(col.next(220));
-    Stack toggles(col.next(t.row_height), t.gap, Stack::Axis::Horizontal);
+  show_effect(EffectType::Exposure);
+}
+
+void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, int width, int height,
+                                      glm::dvec2 size_m) {
+  using namespace ui;
+  effect = std::make_unique<Panel>(kEffectPanelId, width, height, size_m, fonts);
+  Panel& p = *effect;
+  const Theme& t = p.theme();
+  Stack col(Rect{0, 0, static_cast<double>(width), static_cast<double>(height)}.inset(40.0), t.gap);
+  title = &p.add<Label>("title", "Effects", Label::Role::Title);
+  title->set_rect(col.next(64));
+  std::vector<std::string> names;
+  for (const auto& s : effects::all_effect_specs()) names.push_back(title_case(s.name));
+  menu = &p.add<MenuList>("effect_menu", names, static_cast<int>(EffectType::Exposure), t.row_height);
+  menu->set_rect(col.next(6 * t.row_height + 16));
+  effect_widget_rect_ = col.next(330);
+  blur = &p.add<Slider1D>("blur", "Blur", Axis{0.0, 10.0, 0.1, "%.1f", "\u00b0", ""}, 0.0, 0.0);
+  tint = &p.add<ColourWheel>("tint", "Tint");
+  exposure = &p.add<Slider1D>("exposure", "Exposure", Axis{-8.0, 8.0, 0.1, "%+.1f", " stops", ""}, 0.0, 0.0);
+  saturation = &p.add<Slider1D>("saturation", "Saturation", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
+  contrast = &p.add<Slider1D>("contrast", "Contrast", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
+  vignette = &p.add<Pad2D>("vignette", "Vignette", Axis{0.0, 180.0, 1.0, "%.0f", "\u00b0", "radius"},
+                           Axis{0.01, 180.0, 1.0, "%.0f", "\u00b0", "falloff"}, glm::dvec2(180.0, 0.01));
+  effect_widgets = {blur, tint, exposure, saturation, contrast, vignette};
+  const Rect row = col.next(t.row_height);
+  undo = &p.add<Button>("undo", "\u2190 Undo");
+  undo->set_rect(split_cols(row, 2, 0, t.gap));
+  redo = &p.add<Button>("redo", "Redo \u2192");
+  redo->set_rect(split_cols(row, 2, 1, t.gap));
+  const Rect keys = col.next(t.row_height);
+  delete_nearest = &p.add<Button>("delete_nearest", "Delete nearest");
+  delete_nearest->set_rect(split_cols(keys, 2, 0, t.gap));
+  deselect = &p.add<Button>("deselect", "Deselect");
+  deselect->set_rect(split_cols(keys, 2, 1, t.gap));
+  deselect->set_enabled(false);
+  exponent = &p.add<Slider1D>("exponent", "Exponent \u03b1", Axis{0.1, 3.9, 0.1, "%.1f", "", ""}, 1.0, 1.0);
+  exponent->set_rect(col.next(130));
+  // In an author's unit: how many degrees of view one second of video weighs like
+  // (docs/interpolation.md, "Time"), on a logarithmic track.
+  Axis time_axis{0.1, 2000.0, 0.0, "%.2g", "\u00b0 of view", ""};
+  time_axis.log = true;
+  time_scale = &p.add<Slider1D>("time_scale", "1 s of video weighs like", time_axis,
+                                effects::kAuthorDegPerSecond, effects::kAuthorDegPerSecond);
+  time_scale->set_rect(col.next(130));
+  status = &p.add<Label>("status", "", Label::Role::Small, Align::Left, true);
+  status->set_rect(col.next(60));
+}
+
+void EditorPanels::add_visualizations(ui::Panel& p, ui::Stack& col, double toggles_h, bool stacked) {
+  using namespace ui;
+  const Theme& t = p.theme();
+  if (stacked) {  // Desktop: two rows of toggles, then the minimap over the plot
+    const Rect row = col.next(toggles_h);
+    show_tracks = &p.add<Toggle>("show_tracks", "Track plot", true);
+    show_tracks->set_rect(split_cols(row, 2, 0, t.gap));
+    show_minimap = &p.add<Toggle>("show_minimap", "Minimap", true);
+    show_minimap->set_rect(split_cols(row, 2, 1, t.gap));
+    lock = &p.add<Toggle>("lock", "Lock timeline in world", false);
+    lock->set_rect(col.next(toggles_h));
+    const Rect rest = col.rest();
+    minimap_rect_ = {rest.x, rest.y, rest.w, 0.5 * rest.w + 90.0};
+    plot_rect_ = {rest.x, minimap_rect_.bottom() + t.gap, rest.w, rest.bottom() - minimap_rect_.bottom() - t.gap};
+  } else {  // Hands: toggles in one row, the hint, then the plot beside the minimap
+    Stack toggles(col.next(toggles_h), t.gap, Stack::Axis::Horizontal);
     show_tracks = &p.add<Toggle>("show_tracks", "Track plot", true);
     show_tracks->set_rect(toggles.next(560));
     show_minimap = &p.add<Toggle>("show_minimap", "Minimap", true);
@@ -121,12 +130,66 @@ EditorPanels::EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_
     const Rect bottom = col.rest();
     plot_rect_ = {bottom.x, bottom.y, 1000, bottom.h};
     minimap_rect_ = {bottom.x + 1000 + t.gap, bottom.y, bottom.w - 1000 - t.gap, bottom.h};
-    plot = &p.add<Plot>("track_plot", "Value over time at the view", 0.0, 1.0, "%.1f");
-    plot->set_rect(plot_rect_);
-    minimap = &p.add<Minimap>("minimap", "Value over the sphere");
-    minimap->set_rect(minimap_rect_);
   }
-  show_effect(EffectType::Exposure);
+  plot = &p.add<Plot>("track_plot", "Value over time at the view", 0.0, 1.0, "%.1f");
+  plot->set_rect(plot_rect_);
+  minimap = &p.add<Minimap>("minimap", "Value over the sphere");
+  minimap->set_rect(minimap_rect_);
+}
+
+/// The top row of the timeline: play, previous / next keyframe, the time label.
+void EditorPanels::add_transport_row(ui::Panel& p, ui::Stack& col) {
+  using namespace ui;
+  const Theme& t = p.theme();
+  Stack top(col.next(t.row_height), t.gap, Stack::Axis::Horizontal);
+  play = &p.add<Button>("play", "", Icon::Play);
+  play->set_rect(top.next(120));
+  prev_key = &p.add<Button>("prev_key", "\u2190 Key");
+  prev_key->set_rect(top.next(220));
+  next_key = &p.add<Button>("next_key", "Key \u2192");
+  next_key->set_rect(top.next(220));
+  time = &p.add<Label>("time", "", Label::Role::Body, Align::Right, true);
+  time->set_rect(top.rest());
+}
+
+void EditorPanels::build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames) {
+  using namespace ui;
+  timeline = std::make_unique<Panel>(kTimelinePanelId, kTimelineW, kTimelineH, glm::dvec2(0.5, 0.3), fonts);
+  Panel& p = *timeline;
+  const Theme& t = p.theme();
+  Stack col(Rect{0, 0, kTimelineW, kTimelineH}.inset(40.0), t.gap);
+  add_transport_row(p, col);
+  strip = &p.add<TimelineStrip>("strip", static_cast<int>(frames));
+  strip->set_rect(col.next(220));
+  add_visualizations(p, col, t.row_height, false);
+}
+
+void EditorPanels::show_values(EffectType type, std::span<const double> v) {
+  ui::Widget* w = effect_widgets[static_cast<std::size_t>(type)];
+  if (w->pressed()) return;  // it shows its own value while dragged
+  switch (type) {
+    case EffectType::Tint: {
+      const glm::dvec2 hs = ui::hue_sat_from_tint_gain({v[0], v[1], v[2]});
+      if (glm::length(hs - glm::dvec2(tint->hue(), tint->sat())) > 1e-6) tint->set_hue_sat(hs.x, hs.y);
+      break;
+    }
+    case EffectType::Vignette: vignette->set_value({v[0], v[1]}); break;
+    case EffectType::Blur: blur->set_value(v[0]); break;
+    case EffectType::Exposure: exposure->set_value(v[0]); break;
+    case EffectType::Saturation: saturation->set_value(v[0]); break;
+    case EffectType::Contrast: contrast->set_value(v[0]); break;
+  }
+}
+
+std::vector<double> EditorPanels::values_of(EffectType type, const ui::Event& e) {
+  switch (type) {
+    case EffectType::Tint: {
+      const Eigen::Vector3d g = ui::tint_gain_from_hue_sat(e.new_value.x, e.new_value.y);
+      return {g[0], g[1], g[2]};
+    }
+    case EffectType::Vignette: return {e.new_value.x, e.new_value.y};
+    default: return {e.new_value.x};
+  }
 }
 
 void EditorPanels::show_effect(EffectType type) {
@@ -135,25 +198,58 @@ void EditorPanels::show_effect(EffectType type) {
   menu->select(static_cast<int>(type));
 }
 
+std::vector<ui::Panel*> EditorPanels::all() {
+  std::vector<ui::Panel*> out{effect.get(), timeline.get()};
+  if (views) out.push_back(views.get());
+  if (hud) out.push_back(hud.get());
+  return out;
+}
+
+ui::Panel* EditorPanels::panel(std::string_view id) {
+  for (ui::Panel* p : all())
+    if (p->id() == id) return p;
+  return nullptr;
+}
+
+ui::Panel* EditorPanels::panel_of(const ui::Widget* widget) {
+  for (ui::Panel* p : all())
+    for (const auto& w : p->widgets())
+      if (w.get() == widget) return p;
+  return nullptr;
+}
+
 void EditorPanels::place(const xr::InputState& input) {
-  if (effect_place.anchor != Anchor::World)
-    effect->set_world_pose(anchor_pose(effect_place.anchor, input) * effect_place.offset);
-  if (timeline_place.anchor != Anchor::World)
-    timeline->set_world_pose(anchor_pose(timeline_place.anchor, input) * timeline_place.offset);
+  const auto put = [&](ui::Panel* p, const PanelPlacement& place) {
+    if (p && place.anchor != Anchor::World) p->set_world_pose(anchor_pose(place.anchor, input) * place.offset);
+  };
+  put(effect.get(), effect_place);
+  put(timeline.get(), timeline_place);
+  put(views.get(), views_place);
+  put(hud.get(), hud_place);
   plot->set_rect(show_tracks->on() ? plot_rect_ : ui::Rect{});
   minimap->set_rect(show_minimap->on() ? minimap_rect_ : ui::Rect{});
 }
 
 std::vector<ui::Panel*> EditorPanels::reachable_by(xr::Hand hand) {
+  // On the desktop the mouse is the right hand's ray; the sim's left hand only has buttons.
+  if (layout == PanelLayout::Desktop && hand == xr::Hand::Left) return {};
   const Anchor own = hand == xr::Hand::Left ? Anchor::LeftHand : Anchor::RightHand;
   std::vector<ui::Panel*> out;
   if (effect_place.anchor != own) out.push_back(effect.get());
   if (timeline_place.anchor != own) out.push_back(timeline.get());
+  if (views) out.push_back(views.get());  // the HUD takes no input
   return out;
 }
 
 void EditorPanels::lock_timeline(bool locked) {
-  timeline_place = locked ? PanelPlacement{Anchor::World, timeline->pose()} : timeline_panel_placement(layout);
+  if (locked) {
+    timeline_place = PanelPlacement{Anchor::World, timeline->pose()};
+  } else if (layout == PanelLayout::Hands) {
+    timeline_place = {Anchor::RightHand, offset({-0.05, 0.12, -0.05}, -20.0)};
+  } else {
+    timeline_place.anchor = Anchor::Head;
+    set_viewport(viewport_);
+  }
   lock->set_on(locked);
 }
 

@@ -98,13 +98,20 @@ ReplayResult run_replay(const ReplayOptions& o) {
   if (o.sidecar_in) {
     sidecar = io::read_sidecar(*o.sidecar_in);
   } else {
-    sidecar.video = {o.video.string(), props.fps.value(), std::max<std::int64_t>(1, props.frames),
-                     props.width, props.height};
+    sidecar = io::new_sidecar({o.video.string(), props.fps.value(),
+                               std::max<std::int64_t>(1, props.frames), props.width, props.height});
   }
 
   EditorOptions eo;
-  // The sim's recordings were made with the desktop layout (panels in front of the head).
-  eo.layout = rec.header.hmd == "sim" ? PanelLayout::Desktop : PanelLayout::Hands;
+  // The sim's recordings were made with the desktop layout (panels in front of the head), in
+  // the view their header names (older ones: 1280 x 720 at 90 degrees).
+  if (rec.header.desktop || rec.header.hmd == "sim") {
+    eo.layout = PanelLayout::Desktop;
+    const io::RecordedDesktopView v = rec.header.desktop.value_or(io::RecordedDesktopView{1280, 720, 90.0});
+    eo.viewport = {v.width, v.height, v.hfov_deg};
+  } else {
+    eo.layout = PanelLayout::Hands;
+  }
   Editor editor(std::move(sidecar), DocumentOptions{{.async = false}}, eo);
 
   auto backend = xr::create_replay_backend(std::move(rec), {});

@@ -4,15 +4,20 @@
 ///
 /// Order per frame: desktop events (on_desktop_event) -> update(input at the display time) ->
 /// the loop fetches info.video_frame from the decoder -> params(head forward, shown frame) unless
-/// unaltered() -> quads() -> both eyes rendered -> mirror.
+/// unaltered() -> flares(head pose, shown frame) and grains(head pose, display time, shown frame)
+/// unless unaltered() -> quads() -> both eyes rendered -> mirror.
 #pragma once
 
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
 #include "effects/coords.h"
 #include "effects/effect_types.h"
+#include "effects/flare_layout.h"
+#include "io/picture.h"
+#include "effects/grain_layout.h"
 #include "xr/actions.h"
 #include "xr/input_events.h"
 #include "xr/session.h"
@@ -58,6 +63,24 @@ class FrameClient {
   /// Changes whenever params() would answer differently for the same arguments (an edit); the
   /// per-pixel bake is redone when it or the shown frame changes.
   virtual std::uint64_t params_revision() const { return 0; }
+  /// This frame's flares for the head pose (LOCAL) at a video frame, computed once and drawn
+  /// into both eyes after the effects (docs/flare.md). `picture` is that video frame as decoded
+  /// (null while none is), for lights found in the video (converted only then: io::to_rgb).
+  virtual std::vector<effects::FlareLayout> flares(const xr::Pose& head_in_local,
+                                                   std::int64_t video_frame,
+                                                   const io::Picture* picture) {
+    (void)head_in_local, (void)video_frame, (void)picture;
+    return {};
+  }
+  /// This frame's grain layers for the head pose (LOCAL) at a display time and video frame,
+  /// laid out once and drawn into both eyes after the flares (docs/grain.md). The display time
+  /// picks the grain pattern (one per refresh_ms); the frame, with the head's direction, the
+  /// keyframed intensity and size.
+  virtual std::vector<effects::GrainFrame> grains(const xr::Pose& head_in_local,
+                                                  std::int64_t display_time_ns, std::int64_t video_frame) {
+    (void)head_in_local, (void)display_time_ns, (void)video_frame;
+    return {};
+  }
   /// UI panels, composited after the effects (never blurred or tinted).
   virtual std::vector<xr::QuadLayer> quads() { return {}; }
   /// True while the plain film should be shown (no effect at all).

@@ -3,6 +3,7 @@
 #include "app/frame_loop.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -25,6 +26,8 @@
 #include "io/input_error.h"
 #include "io/video_source.h"
 #include "xr/compositor.h"
+#include "xr/flare_gl.h"
+#include "xr/grain_gl.h"
 #include "xr/gl_context.h"
 #include "xr/input_backend.h"
 #include "xr/param_grid.h"
@@ -33,10 +36,21 @@
 
 namespace vdfx::app {
 
+std::optional<xr::MirrorMode> mirror_for_key(xr::Key key) {
+  switch (key) {
+    case xr::Key::Num1: return xr::MirrorMode::Desktop;
+    case xr::Key::Num2: return xr::MirrorMode::PreDistorted;
+    case xr::Key::Num3: return xr::MirrorMode::ThroughTheLens;
+    case xr::Key::Num4: return xr::MirrorMode::SingleEye;
+    default: return std::nullopt;
+  }
+}
+
 std::string frame_loop_keys_text() {
-  return "  1                         mirror: pre-distorted panels (both eyes, as the displays show them)\n"
-         "  2                         mirror: through the lens (both eyes, as the wearer sees them)\n"
-         "  3                         mirror: single eye (left eye buffer, undistorted)\n"
+  return "  1                         window: desktop view (one undistorted view for a monitor)\n"
+         "  2                         window: headset mirror, pre-distorted panels (as the displays show them)\n"
+         "  3                         window: headset mirror, through the lens (as the wearer sees them)\n"
+         "  4                         window: headset mirror, left eye, undistorted\n"
          "  Escape                    quit (closing the window too)\n";
 }
 
@@ -46,13 +60,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// While no frame is shown yet, each frame waits up to this long for the first one.
+constexpr std::int64_t kLoadingWaitNs = 50'000'000;
+
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-effects::Direction head_direction(const xr::InputState& in) {
-  const glm::dvec3 f = xr::forward(in.head);
-  return effects::from_unit(Eigen::Vector3d(f.x, f.y, f.z));
 }
 
 }  // namespace
@@ -65,7 +77,10 @@ struct FrameLoop::Impl {
   std::unique_ptr<xr::GlContext> gl;
   std::unique_ptr<GlfwInputGlue> glue;
   std::unique_ptr<xr::Compositor> compositor;
-  xr::MirrorMode mirror = xr::MirrorMode::PreDistorted;
+  std::unique_ptr<xr::FlareGl> flare;  //!< the client's flares, drawn after the effects
+  std::unique_ptr<xr::GrainGl> grain;  //!< the client's grain, drawn after the flares
+  xr::MirrorMode mirror = xr::MirrorMode::Desktop;
+  std::optional<glm::dvec2> cursor;  //!< the last cursor position the window reported
 
   // What is on screen: the decoded frame, and the parameter grid baked for it (per-pixel mode).
   std::optional<io::VideoFrame> shown;
@@ -84,6 +99,7 @@ struct FrameLoop::Impl {
     g.height = o.window_height;
     g.visible = o.visible;
     g.vsync = o.vsync;
+    g.resizable = o.resizable;
     g.title = "vdfx";
     gl = xr::GlContext::create(g);
     glue = std::make_unique<GlfwInputGlue>(gl->window());
@@ -95,15 +111,30 @@ struct FrameLoop::Impl {
     cc.gpu_timing = o.stats;
     cc.blur = o.blur;
     compositor = std::make_unique<xr::Compositor>(cc);
-    mirror = static_cast<xr::MirrorMode>(std::clamp(o.mirror_mode, 0, 2));
+    flare = std::make_unique<xr::FlareGl>();
+    grain = std::make_unique<xr::GrainGl>();
+    mirror = o.mirror;
+  }
+
+  /// What the window shows now, for turning cursor positions into rays.
+  xr::MirrorGeometry mirror_geometry(int width, int height) const {
+    const xr::CompositorConfig& c = compositor->config();
+    return xr::MirrorGeometry::from_profile(o.profile, mirror, c.eye_width, c.eye_height, width,
+                                            height, o.desktop_hfov_deg);
+  }
+
+  /// A cursor position with the ray through what is drawn under it.
+  xr::MouseMoveEvent cursor_event(double x, double y, int width, int height) const {
+    xr::MouseMoveEvent m{x, y};
+    m.ray = xr::mirror_ray(mirror_geometry(width, height), x, y);
+    m.over_view = m.ray.has_value();
+    return m;
   }
 
   /// Uploads the shown frame as it is decoded.
   void upload(FrameLoopStats& stats) {
     const auto t0 = Clock::now();
-    cv::Mat bgr;
-    cv::cvtColor(shown->image, bgr, cv::COLOR_RGB2BGR);
-    compositor->set_video_frame(bgr);
+    compositor->set_video_frame(shown->picture);  // as decoded: the GPU converts Y'CbCr
     stats.add_cpu("upload", ms_since(t0));
     uploaded_any = true;
   }
@@ -122,25 +153,31 @@ struct FrameLoop::Impl {
     grid_revision = client.params_revision();
   }
 
-  void handle_loop_key(const xr::DesktopEvent& e, bool& quit) {
+  /// Loop keys; returns whether the mirror changed.
+  bool handle_loop_key(const xr::DesktopEvent& e, bool& quit) {
     const auto* k = std::get_if<xr::KeyEvent>(&e);
-    if (!k || !k->pressed) return;
-    switch (k->key) {
-      case xr::Key::Num1: mirror = xr::MirrorMode::PreDistorted; break;
-      case xr::Key::Num2: mirror = xr::MirrorMode::ThroughTheLens; break;
-      case xr::Key::Num3: mirror = xr::MirrorMode::SingleEye; break;
-      case xr::Key::Escape: quit = true; break;
-      default: break;
-    }
+    if (!k || !k->pressed) return false;
+    if (k->key == xr::Key::Escape) quit = true;
+    const auto m = mirror_for_key(k->key);
+    if (!m || *m == mirror) return false;
+    mirror = *m;
+    return true;
   }
 
-  void write_screenshot() {
-    int w = 0, h = 0;
-    gl->framebuffer_size(&w, &h);
-    if (!o.visible || w <= 0 || h <= 0) {
-      w = o.window_width;
-      h = o.window_height;
-    }
+  /// No first frame yet: an input error once the start time-out has passed (or the decoder has
+  /// given up), naming the video.
+  void check_start_timeout(Clock::time_point wall0) const {
+    const io::VideoStats st = video.stats();
+    const bool gave_up = st.ended_early && st.decoded == 0;
+    if (!gave_up && Clock::now() - wall0 < o.start_timeout) return;
+    std::string why = gave_up ? "the decoder found no frame (" + std::to_string(st.decode_errors) + " failed)"
+                              : "no frame was decoded within " +
+                                    std::to_string(std::chrono::duration_cast<std::chrono::seconds>(o.start_timeout).count()) +
+                                    " s";
+    throw io::InputError(video.properties().path.string() + ": cannot show the video: " + why);
+  }
+
+  void write_screenshot(int w, int h) {
     xr::GlTarget target(w, h, xr::TexFormat::RGBA8);
     compositor->draw_mirror(mirror, &target, w, h);
     const cv::Mat bgr = xr::to_bgr8(target.read_float());
@@ -179,16 +216,32 @@ struct FrameLoop::Impl {
       }
       int fbw = 0, fbh = 0;
       gl->framebuffer_size(&fbw, &fbh);
+      // A hidden window (tests, screenshots) renders at the size asked for; so does a minimised one.
+      if (!o.visible || fbw <= 0 || fbh <= 0) fbw = o.window_width, fbh = o.window_height;
+      bool geometry_changed = false;
       if (fbw != geometry_w || fbh != geometry_h) {
-        // The sim's aim ray: approximate the window as a pinhole with the left eye's width.
-        const xr::FovDeg& f = o.profile.eye(xr::Eye::Left).fov;
-        events.insert(events.begin(), xr::ViewGeometryEvent{fbw, fbh, f.angle_right - f.angle_left});
+        events.insert(events.begin(), xr::ViewGeometryEvent{fbw, fbh, o.desktop_hfov_deg});
         geometry_w = fbw;
         geometry_h = fbh;
+        geometry_changed = true;
       }
-      for (const auto& e : events) {
+      std::vector<xr::DesktopEvent> routed;  // events with cursor rays for what the mirror shows
+      for (auto& e : events) {
+        if (auto* m = std::get_if<xr::MouseMoveEvent>(&e)) {
+          if (!m->ray) *m = cursor_event(m->x, m->y, fbw, fbh);
+          cursor = glm::dvec2(m->x, m->y);
+        }
+        routed.push_back(e);
+        if (handle_loop_key(e, quit)) geometry_changed = true;
+        if (geometry_changed && cursor) {
+          // The same cursor now points through another mirror: re-aim without moving.
+          routed.push_back(cursor_event(cursor->x, cursor->y, fbw, fbh));
+          geometry_changed = false;
+        }
+      }
+      if (geometry_changed && cursor) routed.push_back(cursor_event(cursor->x, cursor->y, fbw, fbh));
+      for (const auto& e : routed) {
         input.push_event(e);
-        handle_loop_key(e, quit);
         client.on_desktop_event(e);
       }
 
@@ -204,15 +257,19 @@ struct FrameLoop::Impl {
       FrameInfo info;
       info.loop_frame = n;
       info.display_time_ns = t;
-      info.head_forward = head_direction(in);
+      info.head_forward = xr::forward_direction(in.head);
       info.shown_video_frame = shown ? shown->index : -1;
       client.update(in, t, info);
       if (info.request_exit) quit = true;
 
       // Video: never block (timeout 0 unless asked); a frame not ready keeps the previous one.
+      // Until the first frame is decoded the view is a dark field and the client shows
+      // "loading"; each frame then waits a little for it, so loading is not slowed by spinning.
       if (info.video_paused != video_paused) video.set_paused(video_paused = info.video_paused);
       if (info.video_loop != video_loop) video.set_loop(video_loop = info.video_loop);
-      auto f = video.frame_at(info.video_frame, o.decode_timeout);
+      const auto loading_wait = std::chrono::nanoseconds(shown ? 0 : kLoadingWaitNs);
+      auto f = video.frame_at(info.video_frame, std::max(o.decode_timeout, loading_wait));
+      if (!shown && !f) check_start_timeout(wall0);
       bool changed = false;
       if (f && (!shown || f->index != shown->index)) {
         shown = std::move(f);
@@ -238,16 +295,35 @@ struct FrameLoop::Impl {
         stats.add_cpu("params", ms_since(params_t0));
       }
 
+      // Flares: laid out once per frame from the head pose, drawn into both eyes.
+      const auto flares_t0 = Clock::now();
+      flare->set_layouts(client.unaltered() ? std::vector<effects::FlareLayout>{}
+                                            : client.flares(in.head, param_frame,
+                                                            shown ? &shown->picture : nullptr));
+      stats.add_cpu("flares", ms_since(flares_t0));
+      // Grain: laid out once per frame (pattern from the display time), drawn into both eyes.
+      const auto grains_t0 = Clock::now();
+      grain->set_layers(client.unaltered() ? std::vector<effects::GrainFrame>{}
+                                           : client.grains(in.head, t, param_frame));
+      stats.add_cpu("grains", ms_since(grains_t0));
+      const std::array<xr::EyeLayer*, 2> layers{flare.get(), grain.get()};
+
       const std::vector<xr::QuadLayer> quads = client.quads();
-      const auto views = session.locate_views(in.head, xr::ReferenceSpace::Local);
-      for (int e = 0; e < 2; ++e)
-        compositor->render_eye(e, {xr::render_view(views[e]), params, mask, per_pixel}, quads,
-                               in.head);
+      if (mirror == xr::MirrorMode::Desktop) {
+        const xr::RenderView view = xr::desktop_view(in.head, o.desktop_hfov_deg, fbw, fbh);
+        compositor->render_desktop({view, params, mask, per_pixel, layers}, fbw, fbh,
+                                   o.desktop_video_scale, quads, in.head);
+      } else {
+        const auto views = session.locate_views(in.head, xr::ReferenceSpace::Local);
+        for (int e = 0; e < 2; ++e)
+          compositor->render_eye(e, {xr::render_view(views[e]), params, mask, per_pixel, layers},
+                                 quads, in.head);
+      }
       if (o.on_frame) o.on_frame(*compositor, n);
       compositor->draw_mirror(mirror, nullptr, fbw, fbh);
       const bool last = quit || (o.max_frames >= 0 && n + 1 >= o.max_frames) ||
                         (replay && n + 1 >= static_cast<std::int64_t>(timeline.size()));
-      if (last && !o.screenshot.empty()) write_screenshot();
+      if (last && !o.screenshot.empty()) write_screenshot(fbw, fbh);
       gl->swap_buffers();
       session.end_frame(fs.predicted_display_time_ns, quads);
 

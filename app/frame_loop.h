@@ -20,12 +20,14 @@
 #include <functional>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/frame_client.h"
 #include "xr/blur_method.h"
 #include "xr/hmd_profile.h"
+#include "xr/mirror.h"
 
 namespace vdfx::io {
 class VideoSource;
@@ -40,6 +42,10 @@ namespace vdfx::app {
 /// Default eye scale for the window: llvmpipe renders 1440x1600 eyes at about 3 frames per
 /// second; a quarter of the width and height (1/16 of the pixels) keeps the loop usable.
 inline constexpr double kDefaultEyeScale = 0.25;
+/// The desktop view: about the horizontal FOV of a headset, so what an author sees on the monitor
+/// is what a viewer sees in the headset.
+inline constexpr double kDefaultDesktopHfovDeg = 100.0;
+inline constexpr double kDefaultDesktopVideoScale = 0.5;
 
 struct FrameLoopOptions {
   xr::HmdProfile profile;
@@ -48,7 +54,17 @@ struct FrameLoopOptions {
   int window_height = 720;
   bool visible = true;       //!< false: hidden window (tests), the mirror still renders
   bool vsync = true;         //!< live mode only; replay never waits
-  int mirror_mode = 0;       //!< xr::MirrorMode as int: 0 pre-distorted, 1 through lens, 2 eye
+  bool resizable = true;     //!< false while recording the sim (its panels follow the window)
+  /// What the window shows: the desktop view (one undistorted view filling the window, the
+  /// sim's default) or a headset mirror; keys 1-4 switch.
+  xr::MirrorMode mirror = xr::MirrorMode::Desktop;
+  double desktop_hfov_deg = kDefaultDesktopHfovDeg;  //!< horizontal FOV of the desktop view
+  /// The desktop view renders video and effects at this fraction of the window and scales them
+  /// up; panels, text and pointer are drawn at the window's full resolution.
+  double desktop_video_scale = kDefaultDesktopVideoScale;
+  /// The first decoded frame may take this long (a 4K long-GOP clip on two cores); the window
+  /// shows "loading" meanwhile. No frame by then is an input error naming the video.
+  std::chrono::milliseconds start_timeout{20000};
   std::int64_t max_frames = -1;          //!< stop after this many frames (-1: no limit)
   std::filesystem::path screenshot;      //!< write the last frame's mirror here (PNG)
   bool stats = false;                    //!< GPU timer per stage, medians printed
@@ -104,6 +120,9 @@ class FrameLoop {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// The mirror a key selects (1 desktop, 2 pre-distorted, 3 through the lens, 4 one eye).
+std::optional<xr::MirrorMode> mirror_for_key(xr::Key key);
 
 /// The keys the loop itself handles (mirror modes, quit), as text for --help.
 std::string frame_loop_keys_text();

@@ -59,10 +59,16 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
   cli.add_option("--frames,--exit-after-frames", o.frames, "stop after N frames")
       ->check(whole_range(0, std::numeric_limits<std::int64_t>::max()));
   cli.add_option("--screenshot", o.screenshot, "write the mirror of the last frame to this PNG");
-  cli.add_option("--mirror", o.mirror, "mirror window: pre (pre-distorted panels), lens (through "
-                                       "the lens), eye (left eye, undistorted)")
+  cli.add_option("--mirror", o.mirror,
+                 "what the window shows: desktop (one undistorted view for a monitor), pre "
+                 "(headset mirror: pre-distorted panels), lens (through the lens), eye (left eye, "
+                 "undistorted); auto: desktop for the sim and its recordings, else pre. Keys 1-4 "
+                 "switch while running")
       ->capture_default_str()
-      ->check(CLI::IsMember({"pre", "lens", "eye"}));
+      ->check(CLI::IsMember({"auto", "desktop", "pre", "lens", "eye"}));
+  cli.add_option("--fov", o.fov, "horizontal field of view of the desktop view, degrees")
+      ->capture_default_str()
+      ->check(finite_range(20.0, 160.0));
   cli.add_option("--window", o.window, "window size WxH")->capture_default_str()->check(window_problem);
   cli.add_flag("--hidden", o.hidden, "no visible window (offscreen; --screenshot still works)");
   cli.add_flag("--no-vsync", o.no_vsync, "do not wait for the display's vsync (live input)");
@@ -99,24 +105,40 @@ LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path
   f.stats = o.stats;
   f.visible = !o.hidden;
   f.vsync = !o.no_vsync;
-  f.mirror_mode = o.mirror == "pre" ? 0 : o.mirror == "lens" ? 1 : 2;
+  f.desktop_hfov_deg = o.fov;
   f.decode_timeout = std::chrono::nanoseconds(static_cast<std::int64_t>(o.decode_timeout_ms * 1e6));
 
   io::VideoSourceOptions vo;
   vo.loop = loop_video;
   s.video = io::VideoSource::open(video_path, vo);
 
+  // Which view the window opens on: the desktop view for the sim (a monitor and a mouse) and for
+  // replays of sessions recorded in it, a headset mirror otherwise.
+  const std::string replay_prefix = "replay:";
+  bool desktop_input = o.input == "sim";
+  if (o.input.rfind(replay_prefix, 0) == 0) {
+    const io::RecordingHeader h = io::read_recording(o.input.substr(replay_prefix.size())).header;
+    if (h.desktop) s.recorded_desktop = h.desktop;
+    else if (h.hmd == "sim") s.recorded_desktop = io::RecordedDesktopView{1280, 720, 90.0};  // before the extension
+    desktop_input = s.recorded_desktop.has_value();
+  }
+  f.mirror = o.mirror == "auto" ? (desktop_input ? xr::MirrorMode::Desktop : xr::MirrorMode::PreDistorted)
+                                : *xr::mirror_mode_from_name(o.mirror);
+
   xr::InputBackendOptions io_opts;
   io_opts.sim.window_width = window.width;
   io_opts.sim.window_height = window.height;
-  const xr::FovDeg& fov = f.profile.eye(xr::Eye::Left).fov;
-  io_opts.sim.hfov_deg = fov.angle_right - fov.angle_left;
+  io_opts.sim.hfov_deg = o.fov;
   s.input = xr::create_input_backend(o.input, io_opts);
   if (!o.record.empty()) {
     io::RecordingHeader h;
     h.hmd = f.profile.name;
     h.video = video_path.string();
     h.note = "vdfx " + o.input;
+    // The sim's panels are laid out for the window: the replay needs its size and FOV (the
+    // window is then not resizable while recording, docs/input.md).
+    if (o.input == "sim") h.desktop = io::RecordedDesktopView{window.width, window.height, o.fov};
+    f.resizable = o.input != "sim";
     s.input = xr::create_recording_backend(std::move(s.input), o.record, h);
   }
   return s;

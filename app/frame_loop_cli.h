@@ -25,7 +25,8 @@ struct LoopCli {
   double scale = kDefaultEyeScale;
   std::int64_t frames = -1;
   std::string screenshot;
-  std::string mirror = "pre";  //!< pre | lens | eye
+  std::string mirror = "auto";  //!< auto | desktop | pre | lens | eye
+  double fov = kDefaultDesktopHfovDeg;  //!< the desktop view's horizontal FOV
   std::string window = "1280x720";
   bool hidden = false;
   bool no_vsync = false;
@@ -35,10 +36,13 @@ struct LoopCli {
 };
 
 /// Adds --hmd, --input, --record, --stats, --scale, --frames (alias --exit-after-frames),
-/// --screenshot, --mirror, --window, --hidden, --no-vsync, --decode-timeout, --bake, --blur.
+/// --screenshot, --mirror, --fov, --window, --hidden, --no-vsync, --decode-timeout, --bake, --blur.
 void add_loop_options(CLI::App& cli, LoopCli& o);
 
 struct LoopSetup {
+  /// The desktop view a replayed sim session was recorded in (its header), for the editor's
+  /// panel layout; nullopt otherwise.
+  std::optional<io::RecordedDesktopView> recorded_desktop;
   std::unique_ptr<xr::InputBackend> input;
   std::unique_ptr<io::VideoSource> video;
   FrameLoopOptions options;

@@ -2,11 +2,15 @@
 /// @brief Player: playhead, keys, and the sidecar's interpolated effects.
 #include "app/player.h"
 
+#include "io/ycbcr.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
+#include "app/flare_set_of.h"
+#include "app/grain_set_of.h"
 #include "effects/effect_shaders.h"
 #include "io/input_error.h"
 
@@ -25,6 +29,8 @@ effects::StackInterpolator make_interpolator(const io::Sidecar& s) {
 
 Player::Player(const io::Sidecar& sidecar, const io::VideoProperties& video, PlayerOptions options)
     : interp_(make_interpolator(sidecar)),
+      flares_(flare_set_of(sidecar)),
+      grains_(grain_set_of(sidecar)),
       playhead_(video.fps, std::max<std::int64_t>(video.frames, 1), options.loop),
       options_(options),
       mode_(options.mode) {
@@ -78,10 +84,8 @@ void Player::update(const xr::InputState& input, std::int64_t t, FrameInfo& info
   for (xr::Key k : pending_keys_) apply_key(k, t);
   pending_keys_.clear();
   // Controller: b toggles A/B on its press, a shows the unaltered film while held.
-  const bool b = input.right.tracked && input.right.secondary;
-  if (b && !prev_b_) apply_key(xr::Key::V, t);
-  prev_b_ = b;
-  unaltered_button_ = input.right.tracked && input.right.primary;
+  if (input.edges.was_pressed(xr::Hand::Right, xr::Control::Secondary)) apply_key(xr::Key::V, t);
+  unaltered_button_ = input.edges.is_down(xr::Hand::Right, xr::Control::Primary);
 
   frame_ = playhead_.frame_at(t);
   info.video_frame = frame_;
@@ -91,6 +95,23 @@ void Player::update(const xr::InputState& input, std::int64_t t, FrameInfo& info
 
 effects::StackParams Player::params(const effects::Direction& direction, std::int64_t frame) {
   return interp_.evaluate(direction, frame);
+}
+
+std::vector<effects::FlareLayout> Player::flares(const xr::Pose& head, std::int64_t frame,
+                                                 const io::Picture* picture) {
+  if (flares_.empty()) return {};
+  // An auto light looks at each video frame once (converted to RGB on the CPU only then).
+  if (flares_.uses_auto_light() && picture && frame != observed_frame_) {
+    flares_.observe(frame, io::to_rgb(*picture, io::PixelFormat::RgbF32));
+    observed_frame_ = frame;
+  }
+  return flares_.layouts({xr::position_of(head), xr::rotation_of(head)}, frame);
+}
+
+std::vector<effects::GrainFrame> Player::grains(const xr::Pose& head, std::int64_t display_time_ns,
+                                                std::int64_t frame) {
+  if (grains_.empty()) return {};
+  return grains_.layout({xr::position_of(head), xr::rotation_of(head)}, display_time_ns, frame);
 }
 
 std::string Player::status_line() const {

@@ -1,8 +1,9 @@
 /// @file
 /// @brief The player (`vdfx play`): a FrameClient with no authoring UI. Plays the video against
 /// the display time (exact frame mapping, app/player_playhead.h), interpolates the sidecar's
-/// effects at the head's forward direction, and has the perception-study switches: view-dependent
-/// vs per-pixel parameters, and the unaltered film while a key is held.
+/// effects at the head's forward direction (and its flares and grain for the head pose), and has
+/// the perception-study switches: view-dependent vs per-pixel parameters, and the unaltered film
+/// while a key is held.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +12,8 @@
 
 #include "app/frame_client.h"
 #include "app/player_playhead.h"
+#include "effects/flare_set.h"
+#include "effects/grain_layout.h"
 #include "effects/stack_interpolator.h"
 #include "io/frame_decoder.h"
 #include "io/sidecar.h"
@@ -33,6 +36,10 @@ class Player : public FrameClient {
   void on_desktop_event(const xr::DesktopEvent& event) override;
   void update(const xr::InputState& input, std::int64_t display_time_ns, FrameInfo& info) override;
   effects::StackParams params(const effects::Direction& direction, std::int64_t frame) override;
+  std::vector<effects::GrainFrame> grains(const xr::Pose& head_in_local, std::int64_t display_time_ns,
+                                          std::int64_t frame) override;
+  std::vector<effects::FlareLayout> flares(const xr::Pose& head_in_local, std::int64_t frame,
+                                           const io::Picture* picture) override;
   unsigned active_effects() const override { return active_; }
   bool unaltered() const override { return unaltered_key_ || unaltered_button_ || forced_unaltered_; }
   ParamMode param_mode() const override { return mode_; }
@@ -50,13 +57,15 @@ class Player : public FrameClient {
  private:
   void apply_key(xr::Key key, std::int64_t t_ns);
   effects::StackInterpolator interp_;
+  effects::FlareSet flares_;
+  std::int64_t observed_frame_ = -1;  //!< the video frame the auto lights last looked at
+  effects::GrainSet grains_;
   unsigned active_ = 0;
   Playhead playhead_;
   PlayerOptions options_;
   ParamMode mode_;
   std::vector<xr::Key> pending_keys_;  //!< pressed since the last update (applied at its time)
   bool unaltered_key_ = false, unaltered_button_ = false, forced_unaltered_ = false;
-  bool prev_b_ = false;
   std::int64_t frame_ = 0;
 };
 

@@ -1,15 +1,21 @@
 #include "app/view_render.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
-#include "app/commands.h"
+#include "app/command_table.h"
+#include "app/finite_params.h"
+#include "app/flare_set_of.h"
+#include "app/grain_set_of.h"
 #include "app/size_limits.h"
 #include "effects/distortion_mesh.h"
 #include "effects/effect_shaders.h"
+#include "effects/flare_render.h"
+#include "effects/grain_render.h"
 #include "effects/stack_interpolator.h"
 #include "effects/view_camera.h"
 #include "io/excerpt.h"
@@ -18,6 +24,8 @@
 #include "xr/compositor.h"
 #include "xr/effect_stack_gl.h"
 #include "xr/eye_views.h"
+#include "xr/flare_gl.h"
+#include "xr/grain_gl.h"
 #include "xr/gl_context.h"
 #include "xr/param_grid.h"
 #include "xr/render_view.h"
@@ -133,22 +141,39 @@ EyeSetup eye_setup(const RenderRequest& r) {
   return {view, lens};
 }
 
+/// The sidecar's flares for a head pose at `frame` (docs/flare.md). An auto light is measured in
+/// `equirect` and in the frames before it that its fit uses, so a lone frame gets the light
+/// playback shows.
+std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input,
+                                              const io::Sidecar& sidecar, const cv::Mat& equirect,
+                                              const effects::HeadPose& head, std::int64_t frame) {
+  if (sidecar.flares.empty()) return {};
+  effects::FlareSet flares = flare_set_of(sidecar);
+  if (flares.uses_auto_light()) {
+    for (std::int64_t f = std::max<std::int64_t>(0, frame - flares.auto_light_window()); f < frame;
+         ++f)
+      flares.observe(f, load_equirect_frame(input, f));
+    flares.observe(frame, equirect);
+  }
+  return flares.layouts(head, frame);
+}
+
+/// The sidecar's grain layers for a head pose at `frame`, at the request's display time (by
+/// default the frame's own start, so a frame always shows the same grain: docs/grain.md).
+std::vector<effects::GrainFrame> view_grains(const io::Sidecar& sidecar, const effects::HeadPose& head,
+                                             const RenderRequest& r) {
+  if (sidecar.grains.empty()) return {};
+  effects::GrainSet grains = grain_set_of(sidecar);
+  const std::int64_t t = r.display_time_ns.value_or(effects::frame_display_time_ns(r.frame, sidecar.video.fps));
+  return grains.layout(head, t, r.frame);
+}
+
 }  // namespace
 
-void require_finite(const effects::StackParams& p, const std::string& sidecar_name,
-                    const effects::Direction& at, std::int64_t frame) {
-  const double values[] = {p.blur_sigma_deg, p.tint_gain.x(), p.tint_gain.y(), p.tint_gain.z(),
-                           p.exposure_stops, p.saturation, p.contrast, p.vignette_radius_deg,
-                           p.vignette_falloff_deg};
-  for (const double v : values) {
-    if (std::isfinite(v)) continue;
-    char where[96];
-    std::snprintf(where, sizeof where, "%.6g,%.6g,%lld", at.azimuth_deg, at.altitude_deg,
-                  static_cast<long long>(frame));
-    throw io::InputError(sidecar_name + ": the effects evaluate to a value that is not finite at " +
-                         where + " (the file's numbers are beyond what the interpolation can " +
-                         "represent); nothing was rendered");
-  }
+std::optional<std::size_t> first_gpu_only_grain(const io::Sidecar& sidecar) {
+  for (std::size_t i = 0; i < sidecar.grains.size(); ++i)
+    if (effects::is_volumetric(sidecar.grains[i].style)) return i;
+  return std::nullopt;
 }
 
 cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
@@ -166,8 +191,17 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
   std::optional<EyeSetup> eye;
   if (r.hmd) eye = eye_setup(r);
   const int w = eye ? eye->lens.width : r.width, h = eye ? eye->lens.height : r.height;
-  const xr::RenderView view =
+  xr::RenderView view =
       eye ? eye->view : xr::RenderView::look_at(r.look, r.roll_deg, r.hfov_deg, w, h);
+  // The head sits at the origin looking at the view; an HMD eye is half the IPD to its side
+  // (the video ignores that, flares do not: docs/flare.md, "Stereo").
+  const effects::HeadPose head{Eigen::Vector3d::Zero(), xr::view_rotation(r.look, r.roll_deg)};
+  if (eye)
+    view.position = head.orientation *
+                    Eigen::Vector3d((r.eye == xr::Eye::Left ? -0.5 : 0.5) * r.hmd->ipd_m, 0.0, 0.0);
+  const std::vector<effects::FlareLayout> flares =
+      view_flares(input, sidecar, equirect, head, r.frame);
+  const std::vector<effects::GrainFrame> grains = view_grains(sidecar, head, r);
 
   if (r.gpu) {
     auto context = xr::GlContext::create({});
@@ -189,6 +223,12 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
     options.distortion = r.distortion;
     if (eye) options.lens = eye->lens.lens;
     options.blur = r.blur;
+    xr::FlareGl flare_layer;
+    flare_layer.set_layouts(flares);
+    xr::GrainGl grain_layer;
+    grain_layer.set_layers(grains);
+    const std::array<xr::EyeLayer*, 2> layers{&flare_layer, &grain_layer};
+    options.layers = layers;
     unsigned mask = effects::non_neutral_mask(view_params);
     std::optional<xr::ParamGrid> grid;
     if (r.mode == effects::RenderMode::Pixel) {
@@ -224,6 +264,13 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
   } else {
     const effects::ParamsAt at = evaluate;
     rendered = effects::render_view(sampler, camera, at, effects::RenderMode::Pixel);
+  }
+  effects::add_flares(rendered, camera, view.position, flares);
+  for (const effects::GrainFrame& g : grains) {
+    if (effects::is_volumetric(g.style))
+      throw std::invalid_argument("grain style " + std::string(effects::grain_style_name(g.style)) +
+                                  " renders on the GPU only (--gpu)");
+    effects::composite_shader_grain(rendered, g, view.orientation, view.position, view.tangents());
   }
   if (eye && r.distortion.method != xr::DistortionMethod::None)
     rendered = predistort_cpu(rendered, eye->lens, r.distortion);

@@ -33,13 +33,14 @@ struct RenderRequest {
   xr::Eye eye = xr::Eye::Left;
   xr::DistortionSettings distortion{xr::DistortionMethod::None};
   std::string sidecar_name;  //!< names the sidecar when its values evaluate to NaN or infinity
+  /// Display time that picks the grain pattern (docs/grain.md); default the frame's start,
+  /// effects::frame_display_time_ns(frame, fps).
+  std::optional<std::int64_t> display_time_ns;
 };
 
-/// Throws io::InputError naming `sidecar_name` and the view when an evaluated parameter is NaN
-/// or infinite: the validator keeps the interpolation finite (docs/sidecar.md), and this is the
-/// backstop that refuses to render or print such values instead of a black image or "null".
-void require_finite(const effects::StackParams& params, const std::string& sidecar_name,
-                    const effects::Direction& at, std::int64_t frame);
+/// Index (in Sidecar::grains) of the first grain effect with no CPU reference (a volumetric
+/// style: object_cloud, free_cloud), which `vdfx render` draws only with --gpu.
+std::optional<std::size_t> first_gpu_only_grain(const io::Sidecar& sidecar);
 
 /// Frame `frame` of a video or still as RGB float, display-encoded. Throws io::InputError naming
 /// the file when it is missing, unreadable, or has no such frame.

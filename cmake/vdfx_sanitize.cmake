@@ -1,10 +1,11 @@
 # Sanitizer and fuzzing builds (issue 11; docs/reliability.md, "Sanitizers and fuzzing").
 #  VDFX_SANITIZE=ON  AddressSanitizer + UndefinedBehaviorSanitizer on every target (gcc or clang);
 #                    any undefined behaviour aborts (-fno-sanitize-recover), leaks fail at exit.
-#                    .ci/sanitize.sh builds it and runs the whole suite with
-#                    cmake/lsan_suppressions.txt.
+#                    CI (.ci/sanitize.sh) builds the io, effects and xr tests this way with clang
+#                    and VDFX_FUZZ, without GL (docs/reliability.md says why).
 #  VDFX_FUZZ=ON      the libFuzzer targets of tests/fuzz (clang only); implies the sanitizers and
 #                    instruments every library for coverage (-fsanitize=fuzzer-no-link).
+#                    .ci/fuzz.sh runs each target for a few seconds in CI.
 option(VDFX_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
 option(VDFX_FUZZ "Build the libFuzzer targets (clang; implies VDFX_SANITIZE)" OFF)
 

@@ -300,15 +300,15 @@ void KeyframeSet::adopt_worker_result() {
   ready_.reset();
 }
 
+bool replaces(const Direction& direction, std::int64_t frame, const Keyframe& other) {
+  return other.frame == frame &&
+         angle_between(to_unit(direction), to_unit(other.direction)) <= kReplaceAngleDeg * kDegToRad;
+}
+
 std::optional<std::size_t> KeyframeSet::find_coincident(const Direction& d, std::int64_t frame,
                                                         std::optional<std::size_t> skip) const {
-  const Eigen::Vector3d n = to_unit(d);
-  for (std::size_t i = 0; i < keyframes_.size(); ++i) {
-    if (skip && *skip == i) continue;
-    if (keyframes_[i].frame != frame) continue;
-    if (angle_between(n, to_unit(keyframes_[i].direction)) <= kReplaceAngleDeg * kDegToRad)
-      return i;
-  }
+  for (std::size_t i = 0; i < keyframes_.size(); ++i)
+    if (!(skip && *skip == i) && replaces(d, frame, keyframes_[i])) return i;
   return std::nullopt;
 }
 

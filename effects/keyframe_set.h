@@ -32,6 +32,10 @@ namespace vdfx::effects {
 /// A keyframe added within this angle of an existing one at the same frame replaces it.
 inline constexpr double kReplaceAngleDeg = 0.5;
 
+/// The editing rule: a keyframe placed (or moved) at (direction, frame) replaces `other` when
+/// both are at that frame and within kReplaceAngleDeg of each other.
+bool replaces(const Direction& direction, std::int64_t frame, const Keyframe& other);
+
 struct KeyframeSetOptions {
   bool async = true;               //!< false: full re-solves inline (batch tools, tests)
   //! Relative residual above which an update falls back to a full solve. Bordered updates of an

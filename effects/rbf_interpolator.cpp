@@ -2,6 +2,7 @@
 /// @brief RbfInterpolator: solve at construction, fast vectorised evaluation.
 #include "effects/rbf_interpolator.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -29,6 +30,7 @@ RbfInterpolator::RbfInterpolator(std::span<const Keyframe> keyframes, int dimens
   weights_t_ = s.weights.transpose();
   coeffs_t_ = s.coefficients.transpose();
   diagnostics_ = s.diagnostics;
+  find_frame_span();
 }
 
 RbfInterpolator::RbfInterpolator(RbfPoints points, const RbfKernel& kernel,
@@ -40,7 +42,21 @@ RbfInterpolator::RbfInterpolator(RbfPoints points, const RbfKernel& kernel,
       weights_t_(solution.weights.transpose()),
       coeffs_t_(solution.coefficients.transpose()),
       diagnostics_(solution.diagnostics),
-      neutral_(std::move(neutral)) {}
+      neutral_(std::move(neutral)) {
+  find_frame_span();
+}
+
+void RbfInterpolator::find_frame_span() {
+  if (points_.frame.empty()) return;
+  const auto [lo, hi] = std::minmax_element(points_.frame.begin(), points_.frame.end());
+  first_frame_ = *lo;
+  last_frame_ = *hi;
+}
+
+std::int64_t RbfInterpolator::effective_frame(std::int64_t frame) const {
+  if (kernel_.outside == TimeOutside::Extrapolate || points_.size() == 0) return frame;
+  return std::clamp(frame, first_frame_, last_frame_);
+}
 
 Eigen::VectorXd RbfInterpolator::evaluate(const Eigen::Vector3d& unit, std::int64_t frame) const {
   Eigen::VectorXd out(dimension());
@@ -62,7 +78,7 @@ void RbfInterpolator::evaluate_into(const Eigen::Vector3d& n, std::int64_t frame
     return;
   }
   // Integer difference first: exact for any frame numbers below 2^53.
-  const double t = static_cast<double>(frame - points_.frame_origin);
+  const double t = static_cast<double>(effective_frame(frame) - points_.frame_origin);
   double prow[5];
   basis_.row(n, t, prow);
   out.noalias() = coeffs_t_ * Eigen::Map<const Eigen::VectorXd>(prow, basis_.size());

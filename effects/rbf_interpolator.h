@@ -38,6 +38,8 @@ class RbfInterpolator {
   int dimension() const { return static_cast<int>(neutral_.size()); }
   int centres() const { return points_.size(); }
 
+  /// Values at a view direction and frame. Outside the keyframes' frame span the frame is held
+  /// at the nearest end of it unless the settings say Extrapolate (TimeOutside).
   Eigen::VectorXd evaluate(const Eigen::Vector3d& unit, std::int64_t frame) const;
   Eigen::VectorXd evaluate(const Direction& direction, std::int64_t frame) const;
   /// Allocation-free form; `out` must have dimension() entries. `unit` must be a unit vector.
@@ -48,8 +50,12 @@ class RbfInterpolator {
   const PolynomialBasis& basis() const { return basis_; }
   const RbfPoints& points() const { return points_; }
   const Eigen::VectorXd& neutral() const { return neutral_; }
+  /// The frame an evaluation at `frame` uses: clamped into the keyframes' frame span when held.
+  std::int64_t effective_frame(std::int64_t frame) const;
 
  private:
+  void find_frame_span();
+
   RbfPoints points_;          // structure of arrays: x, y, z, t contiguous
   RbfKernel kernel_;
   PolynomialBasis basis_;
@@ -57,6 +63,7 @@ class RbfInterpolator {
   Eigen::MatrixXd coeffs_t_;   // D x r
   RbfDiagnostics diagnostics_;
   Eigen::VectorXd neutral_;
+  std::int64_t first_frame_ = 0, last_frame_ = 0;  //!< the centres' frame span
 };
 
 }  // namespace vdfx::effects

@@ -35,6 +35,7 @@ RbfKernel RbfKernel::from(const InterpolationSettings& settings, double fps) {
                     : (a == 2.0 ? RbfKernelKind::ThinPlate : RbfKernelKind::Power);
   k.distance = settings.distance;
   k.time_factor = (24.0 / fps) * c;
+  k.outside = settings.outside;
   return k;
 }
 

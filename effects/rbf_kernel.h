@@ -25,6 +25,8 @@ struct RbfKernel {
   RbfKernelKind kind = RbfKernelKind::Linear;
   AngularDistance distance = AngularDistance::Chordal;
   double time_factor = 24.0 / 30.0;  //!< (24 / fps) * time_scale: time units per frame
+  /// Evaluation outside the keyframes' frame span: hold the end values (default) or extrapolate.
+  TimeOutside outside = TimeOutside::Hold;
 
   /// Validates the ranges of keyframe.h and fps > 0; throws std::invalid_argument saying which.
   static RbfKernel from(const InterpolationSettings& settings, double fps);

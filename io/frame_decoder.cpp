@@ -15,7 +15,7 @@ std::unique_ptr<FrameDecoder> open_frame_decoder(const std::filesystem::path& pa
   // A regular file only: a named pipe with no writer would block the backends forever.
   check_input_file(path, std::numeric_limits<std::uintmax_t>::max(), "a video or image");
   if (is_still_image_path(path)) return create_still_decoder(path, options);
-  return create_opencv_decoder(path, options);
+  return create_libav_decoder(path, options);
 }
 
 }  // namespace vdfx::io

@@ -15,7 +15,13 @@ class StillDecoder final : public FrameDecoder {
     const LoadedImage img = load_image(path, options.tone);
     if (options.format == PixelFormat::RgbF32) image_ = img.rgb;
     else img.rgb.convertTo(image_, CV_8UC3, 255.0);  // rounds to nearest, saturates
-    props_ = {path, options.still_fps, 1, image_.cols, image_.rows, true, "image"};
+    props_.path = path;
+    props_.fps = options.still_fps;
+    props_.frames = 1;
+    props_.width = image_.cols;
+    props_.height = image_.rows;
+    props_.is_still = true;
+    props_.backend = "image";
   }
   const VideoProperties& properties() const override { return props_; }
   std::int64_t next_index() const override { return next_; }

@@ -6,14 +6,17 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
-#include <opencv2/core.hpp>
 #include <optional>
+
+#include "io/picture.h"
 
 namespace vdfx::io {
 
 struct VideoFrame {
   std::int64_t index = -1;
-  cv::Mat image;  //!< RGB, layout of the source's PixelFormat
+  /// As the decoder made it: Y'CbCr planes for videos (the GPU converts them), RGB for stills.
+  /// io::to_rgb converts on the CPU.
+  Picture picture;
 };
 
 class FrameQueue {

@@ -212,7 +212,7 @@ RecordingHeader parse_header(const Where& w, const Json& obj) {
   if (version.get<long long>() != 1) {
     w.fail("/version", "unsupported version " + excerpt(version.dump()) + " (this build reads version 1)");
   }
-  reject_unknown(w, obj, "", {"format", "version", "hmd", "video", "note"});
+  reject_unknown(w, obj, "", {"format", "version", "hmd", "video", "note", "desktop"});
   RecordingHeader h;
   const Json& hmd = field(w, obj, "", "hmd");
   if (!hmd.is_string()) w.fail("/hmd", "expected a string");
@@ -223,6 +223,25 @@ RecordingHeader parse_header(const Where& w, const Json& obj) {
   const Json& note = field(w, obj, "", "note");
   if (!note.is_string()) w.fail("/note", "expected a string");
   h.note = note.get<std::string>();
+  if (obj.contains("desktop")) {
+    const Json& d = obj["desktop"];
+    if (!d.is_object()) w.fail("/desktop", "expected an object");
+    reject_unknown(w, d, "/desktop", {"width", "height", "hfov_deg"});
+    RecordedDesktopView v;
+    const auto size = [&](const char* key) {
+      const Json& n = field(w, d, "/desktop", key);
+      if (!n.is_number_integer() || n.get<long long>() < 1 || n.get<long long>() > 16384)
+        w.fail(std::string("/desktop/") + key, "expected an integer in [1, 16384]");
+      return static_cast<int>(n.get<long long>());
+    };
+    v.width = size("width");
+    v.height = size("height");
+    const Json& f = field(w, d, "/desktop", "hfov_deg");
+    if (!f.is_number() || !(f.get<double>() > 0.0 && f.get<double>() < 180.0))
+      w.fail("/desktop/hfov_deg", "expected a number in (0, 180)");
+    v.hfov_deg = f.get<double>();
+    h.desktop = v;
+  }
   return h;
 }
 
@@ -362,6 +381,10 @@ std::string format_header_line(const RecordingHeader& header) {
   j["hmd"] = header.hmd;
   j["video"] = header.video ? OrderedJson(*header.video) : OrderedJson(nullptr);
   j["note"] = header.note;
+  if (header.desktop)
+    j["desktop"] = OrderedJson{{"width", header.desktop->width},
+                               {"height", header.desktop->height},
+                               {"hfov_deg", header.desktop->hfov_deg}};
   return j.dump();
 }
 

@@ -53,10 +53,20 @@ struct RecordedHid {
   bool is_descriptor = false;
 };
 
+/// vdfx extension of the header (docs/input.md): the desktop view a sim session was recorded
+/// in, so a replay lays out the editor's panels and aims the cursor rays as they were.
+struct RecordedDesktopView {
+  int width = 1280;        //!< window pixels, 1..16384
+  int height = 720;
+  double hfov_deg = 100.0;  //!< horizontal FOV, (0, 180)
+  bool operator==(const RecordedDesktopView&) const = default;
+};
+
 struct RecordingHeader {
   std::string hmd = "sim";
   std::optional<std::string> video;  //!< null in the file when absent
   std::string note;
+  std::optional<RecordedDesktopView> desktop{};  //!< "desktop": {...}, absent when not recorded
 };
 
 struct RecordingLine {

@@ -4,6 +4,8 @@
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/sidecar_flare.h"
+#include "io/sidecar_grain.h"
 #include "io/sidecar_validate.h"
 
 namespace vdfx::io {
@@ -19,6 +21,7 @@ ordered interpolation_json(const effects::InterpolationSettings& s) {
   // The extension is written only when it differs from the default, so files that do not use
   // it stay plain format 1 for readers that do not know it.
   if (s.distance == effects::AngularDistance::Geodesic) j["distance"] = "geodesic";
+  if (s.outside == effects::TimeOutside::Extrapolate) j["outside_span"] = "extrapolate";
   return j;
 }
 
@@ -42,22 +45,31 @@ ordered ordered_document(const Sidecar& s) {
     e["type"] = std::string(spec.name);
     if (track.interpolation) e["interpolation"] = interpolation_json(*track.interpolation);
     ordered kfs = ordered::array();
-    for (const effects::Keyframe& k : track.keyframes) {
-      ordered kj;
-      kj["azimuth_deg"] = k.direction.azimuth_deg;
-      kj["altitude_deg"] = k.direction.altitude_deg;
-      kj["frame"] = k.frame;
-      kj["params"] = params_to_json(track.type, k.params);
-      kfs.push_back(std::move(kj));
-    }
+    for (const effects::Keyframe& k : track.keyframes)
+      kfs.push_back(keyframe_to_json(k, params_to_json(track.type, k.params)));
     e["keyframes"] = std::move(kfs);
     effects_json.push_back(std::move(e));
   }
+  for (const effects::FlareEffect& f : s.flares) effects_json.push_back(flare_to_json(f));
+  for (const effects::GrainEffect& g : s.grains) effects_json.push_back(grain_to_json(g));
   doc["effects"] = std::move(effects_json);
   return doc;
 }
 
 }  // namespace
+
+nlohmann::ordered_json keyframe_to_json(const effects::Keyframe& k, nlohmann::ordered_json params) {
+  ordered kj;
+  kj["azimuth_deg"] = k.direction.azimuth_deg;
+  kj["altitude_deg"] = k.direction.altitude_deg;
+  kj["frame"] = k.frame;
+  kj["params"] = std::move(params);
+  return kj;
+}
+
+nlohmann::ordered_json interpolation_to_json(const effects::InterpolationSettings& s) {
+  return interpolation_json(s);
+}
 
 nlohmann::ordered_json params_to_json(effects::EffectType type, std::span<const double> values) {
   const effects::EffectSpec& spec = effects::effect_spec(type);
@@ -97,6 +109,13 @@ std::string format_sidecar(const Sidecar& sidecar) { return ordered_document(sid
 
 void write_sidecar(const std::filesystem::path& path, const Sidecar& sidecar) {
   write_file_atomic(path, format_sidecar(sidecar));
+}
+
+Sidecar new_sidecar(VideoInfo video) {
+  Sidecar s;
+  s.video = std::move(video);
+  s.interpolation.time_scale = effects::kAuthorTimeScale;
+  return s;
 }
 
 }  // namespace vdfx::io

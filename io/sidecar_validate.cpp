@@ -12,10 +12,14 @@
 #include "io/excerpt.h"
 #include "io/input_file.h"
 #include "io/json_text.h"
+#include "io/sidecar_checker.h"
+#include "io/sidecar_flare.h"
+#include "io/sidecar_grain.h"
 
 namespace vdfx::io {
 
 using nlohmann::json;
+using namespace detail;
 
 std::string Problem::to_string() const {
   return file + ": " + (pointer.empty() ? std::string("(document)") : pointer) + ": " + message;
@@ -29,142 +33,12 @@ std::string SidecarReport::to_string() const {
 
 namespace {
 
-/// A number for messages: integral values without ".0", others in shortest round-trip form.
-std::string num(double v) {
-  if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
-  return json(v).dump();
-}
-
 /// A derived value for messages: three significant digits ("2.4e+201", "0.8").
 std::string short_num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", v);
   return buf;
 }
-
-const char* type_name(const json& v) {
-  if (v.is_number_integer()) return "integer";
-  if (v.is_number_float()) return "number";
-  return v.type_name();
-}
-
-struct Range {
-  double lo;
-  double hi;
-  bool lo_open;
-  bool hi_open;
-  bool contains(double v) const {
-    return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
-  }
-  std::string text() const {
-    return std::string(lo_open ? "(" : "[") + num(lo) + ", " + num(hi) + (hi_open ? ")" : "]");
-  }
-};
-
-class Checker {
- public:
-  Checker(std::string file, std::vector<Problem>& out) : file_(std::move(file)), out_(out) {}
-
-  void error(const std::string& ptr, std::string msg) { out_.push_back({file_, ptr, std::move(msg)}); }
-
-  /// The object at `ptr`, or null (reported) when `v` is not an object.
-  const json* object(const json& v, const std::string& ptr) {
-    if (v.is_object()) return &v;
-    error(ptr, std::string("expected an object, found ") + type_name(v));
-    return nullptr;
-  }
-
-  /// Reports every key that is not in `known` (a reader must never silently drop data).
-  void only_keys(const json& obj, const std::string& ptr, std::initializer_list<const char*> known) {
-    for (const auto& [k, v] : obj.items()) {
-      bool ok = false;
-      for (const char* n : known) ok = ok || k == n;
-      if (!ok) {
-        std::string list;
-        for (const char* n : known) list += std::string(list.empty() ? "" : ", ") + n;
-        error(ptr + "/" + excerpt(json_pointer_token(k)),
-              "unknown field \"" + excerpt(k) + "\" (expected: " + list + ")");
-      }
-    }
-  }
-
-  /// The member `key` of `obj`; reports it when missing and `required`.
-  const json* member(const json& obj, const std::string& ptr, const char* key, bool required = true) {
-    const auto it = obj.find(key);
-    if (it != obj.end()) return &*it;
-    if (required) error(ptr, std::string("missing field \"") + key + "\"");
-    return nullptr;
-  }
-
-  std::optional<double> number(const json& v, const std::string& ptr, const Range& range) {
-    if (!v.is_number()) {
-      error(ptr, std::string("expected a number, found ") + type_name(v));
-      return std::nullopt;
-    }
-    const double d = v.get<double>();
-    // JSON has no NaN or infinity literal and the parser rejects overflow, but a document built
-    // in memory can still hold them.
-    if (!std::isfinite(d)) {
-      error(ptr, "not a finite number");
-      return std::nullopt;
-    }
-    if (!range.contains(d)) {
-      error(ptr, "value " + num(d) + " is out of range " + range.text());
-      return std::nullopt;
-    }
-    return d;
-  }
-
-  /// An integer in [lo, hi]. A number with a fractional part is rejected; 75.0 is taken as 75.
-  std::optional<std::int64_t> integer(const json& v, const std::string& ptr, std::int64_t lo,
-                                      std::int64_t hi, const std::string& range_text) {
-    std::int64_t i = 0;
-    if (v.is_number_unsigned()) {
-      const auto u = v.get<std::uint64_t>();
-      if (u > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
-        error(ptr, "value " + v.dump() + " is out of range " + range_text);
-        return std::nullopt;
-      }
-      i = static_cast<std::int64_t>(u);
-    } else if (v.is_number_integer()) {
-      i = v.get<std::int64_t>();
-    } else if (v.is_number_float()) {
-      const double d = v.get<double>();
-      if (!std::isfinite(d)) {
-        error(ptr, "not a finite number");
-        return std::nullopt;
-      }
-      if (d != std::floor(d)) {
-        error(ptr, "expected an integer, found " + num(d));
-        return std::nullopt;
-      }
-      // 2^63 is exactly representable; anything at or beyond it does not fit.
-      if (d < -9223372036854775808.0 || d >= 9223372036854775808.0) {
-        error(ptr, "value " + num(d) + " is out of range " + range_text);
-        return std::nullopt;
-      }
-      i = static_cast<std::int64_t>(d);
-    } else {
-      error(ptr, std::string("expected an integer, found ") + type_name(v));
-      return std::nullopt;
-    }
-    if (i < lo || i > hi) {
-      error(ptr, "value " + std::to_string(i) + " is out of range " + range_text);
-      return std::nullopt;
-    }
-    return i;
-  }
-
-  std::optional<std::string> string(const json& v, const std::string& ptr) {
-    if (v.is_string()) return v.get<std::string>();
-    error(ptr, std::string("expected a string, found ") + type_name(v));
-    return std::nullopt;
-  }
-
- private:
-  std::string file_;
-  std::vector<Problem>& out_;
-};
 
 constexpr std::int64_t kIntMax = std::numeric_limits<int>::max();
 
@@ -196,7 +70,7 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
                         effects::InterpolationSettings& out) {
   const json* obj = c.object(v, ptr);
   if (!obj) return;
-  c.only_keys(*obj, ptr, {"exponent", "time_scale", "distance"});
+  c.only_keys(*obj, ptr, {"exponent", "time_scale", "distance", "outside_span"});
   if (const json* p = c.member(*obj, ptr, "exponent"))
     if (auto d = c.number(*p, ptr + "/exponent",
                           {effects::kExponentMin, effects::kExponentMax, true, true}))
@@ -211,6 +85,14 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
       if (*s == "chordal") out.distance = effects::AngularDistance::Chordal;
       else if (*s == "geodesic") out.distance = effects::AngularDistance::Geodesic;
       else c.error(ptr + "/distance", "unknown distance \"" + excerpt(*s) + "\" (expected chordal or geodesic)");
+    }
+  }
+  // Extension of format 1: optional, hold when absent (docs/sidecar.md).
+  if (const json* p = c.member(*obj, ptr, "outside_span", /*required=*/false)) {
+    if (auto s = c.string(*p, ptr + "/outside_span")) {
+      if (*s == "hold") out.outside = effects::TimeOutside::Hold;
+      else if (*s == "extrapolate") out.outside = effects::TimeOutside::Extrapolate;
+      else c.error(ptr + "/outside_span", "unknown value \"" + excerpt(*s) + "\" (expected hold or extrapolate)");
     }
   }
 }
@@ -284,18 +166,7 @@ std::string known_types() {
   std::string s;
   for (const auto& spec : effects::all_effect_specs())
     s += (s.empty() ? "" : ", ") + std::string(spec.name);
-  return s;
-}
-
-/// The number of keyframes the solver takes (kMaxKeyframesPerEffect); beyond it the keyframes
-/// are not read at all: one clear message, no time spent on what cannot be used.
-bool keyframe_count_ok(Checker& c, const json& keyframes, const std::string& ptr) {
-  if (keyframes.size() <= kMaxKeyframesPerEffect) return true;
-  c.error(ptr, std::to_string(keyframes.size()) + " keyframes, more than the " +
-                   std::to_string(kMaxKeyframesPerEffect) +
-                   " an effect may have (the interpolation's memory grows with the square of the "
-                   "count, its solve time with the cube)");
-  return false;
+  return s + ", " + kFlareTypeName + ", " + kGrainTypeName;
 }
 
 void read_effect(Checker& c, const json& v, const std::string& ptr, std::optional<std::int64_t> frames,
@@ -342,11 +213,15 @@ bool has_problem_at(const std::vector<Problem>& problems, std::size_t first, con
   return false;
 }
 
+/// An entry's own interpolation settings and where they are ("/effects/3/interpolation").
+using Override = std::pair<std::string, effects::InterpolationSettings>;
+
 /// The values the maths derives from fps, frames and time_scale must stay finite and usable:
 /// one frame is 24 / fps * time_scale apart in the RBF distance (contract). Checked for the
-/// file's interpolation and each effect's own, once those fields are themselves valid.
-void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Problem>& problems,
-                        std::size_t first) {
+/// file's interpolation and each entry's own (effects, flares, grains), once those fields are
+/// themselves valid.
+void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Override>& overrides,
+                        const std::vector<Problem>& problems, std::size_t first) {
   if (has_problem_at(problems, first, "/video/fps") || has_problem_at(problems, first, "/video/frames") ||
       s.video.frames < 2)
     return;  // one frame: there is no time axis to scale
@@ -377,19 +252,39 @@ void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Problem>
     }
   };
   check(s.interpolation, "/interpolation", false);
-  for (std::size_t i = 0; i < s.effects.size(); ++i) {
-    if (!s.effects[i].interpolation) continue;
-    const std::string ptr = "/effects/" + std::to_string(i) + "/interpolation";
-    check(*s.effects[i].interpolation, ptr, true);
-  }
+  for (const auto& [ptr, settings] : overrides) check(settings, ptr, true);
 }
 
 }  // namespace
+
+namespace detail {
+
+bool keyframe_count_ok(Checker& c, const json& keyframes, const std::string& ptr) {
+  if (keyframes.size() <= kMaxKeyframesPerEffect) return true;
+  c.error(ptr, std::to_string(keyframes.size()) + " keyframes, more than the " +
+                   std::to_string(kMaxKeyframesPerEffect) +
+                   " an effect may have (the interpolation's memory grows with the square of the "
+                   "count, its solve time with the cube)");
+  return false;
+}
+
+void read_interpolation_settings(Checker& c, const json& v, const std::string& ptr,
+                                 effects::InterpolationSettings& out) {
+  read_interpolation(c, v, ptr, out);
+}
+
+void read_keyframe_place(Checker& c, const json& v, const std::string& ptr,
+                         std::optional<std::int64_t> frames, effects::Keyframe& out) {
+  read_keyframe(c, v, ptr, nullptr, frames, out);
+}
+
+}  // namespace detail
 
 Sidecar parse_sidecar(const json& document, const std::string& file_for_messages,
                       std::vector<Problem>& problems) {
   Sidecar out;
   const std::size_t first_problem = problems.size();
+  std::vector<Override> overrides;
   Checker c(file_for_messages, problems);
   const json* root = c.object(document, "");
   if (!root) return out;
@@ -428,13 +323,26 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
       c.error("/effects", std::string("expected an array, found ") + type_name(*p));
     } else {
       std::map<effects::EffectType, std::string> seen;
-      out.effects.resize(p->size());
-      for (std::size_t i = 0; i < p->size(); ++i)
-        read_effect(c, (*p)[i], "/effects/" + std::to_string(i), frames, seen, out.effects[i]);
+      for (std::size_t i = 0; i < p->size(); ++i) {
+        const std::string ep = "/effects/" + std::to_string(i);
+        // Extension types (several may coexist) have readers of their own.
+        const std::optional<effects::InterpolationSettings>* own = nullptr;
+        if (is_flare_entry((*p)[i])) {
+          read_flare(c, (*p)[i], ep, frames, out.flares.emplace_back());
+          own = &out.flares.back().interpolation;
+        } else if (is_grain_entry((*p)[i])) {
+          read_grain(c, (*p)[i], ep, frames, out.grains.emplace_back());
+          own = &out.grains.back().interpolation;
+        } else {
+          read_effect(c, (*p)[i], ep, frames, seen, out.effects.emplace_back());
+          own = &out.effects.back().interpolation;
+        }
+        if (*own) overrides.emplace_back(ep + "/interpolation", **own);
+      }
     }
   }
   // Checks across fields, each in a function of its own.
-  check_time_scaling(c, out, problems, first_problem);
+  check_time_scaling(c, out, overrides, problems, first_problem);
   return out;
 }
 

@@ -26,6 +26,9 @@ VideoSource::VideoSource(std::unique_ptr<FrameDecoder> decoder, VideoSourceOptio
     next_ = 0;
     seek_pending_ = true;
   }
+  if (props_.declared_frames > props_.frames)
+    warn("the file declares " + std::to_string(props_.declared_frames) + " frames but holds " +
+         std::to_string(props_.frames) + " (cut short?); playing those");
   worker_ = std::thread([this] { run(); });
 }
 
@@ -99,10 +102,10 @@ void VideoSource::run() {
     const std::int64_t index = next_;
     const std::uint64_t epoch = epoch_;
     lock.unlock();
-    cv::Mat image;
+    Picture picture;
     DecodeStatus status = DecodeStatus::Error;
     try {
-      status = decoder_->read(image);
+      status = decoder_->read_picture(picture);
     } catch (const std::exception&) {
       status = DecodeStatus::Error;
     }
@@ -111,7 +114,7 @@ void VideoSource::run() {
 
     switch (status) {
       case DecodeStatus::Ok:
-        queue_.push({index, std::move(image)});
+        queue_.push({index, std::move(picture)});
         ++stats_.decoded;
         consecutive_errors_ = 0;
         next_ = index + 1;

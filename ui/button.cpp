@@ -32,7 +32,7 @@ void Button::draw(DrawContext& ctx) const {
     ctx.canvas.text(*ctx.fonts.regular, px, label_, rect().inset(t.padding, 0), Align::Centre, col);
     return;
   }
-  const double text_w = label_.empty() ? 0.0 : ctx.fonts.regular->measure(label_, px);
+  const double text_w = label_.empty() ? 0.0 : ctx.canvas.text_width(*ctx.fonts.regular, px, label_);
   const double gap = label_.empty() ? 0.0 : 0.4 * px;
   const double total = icon_size + gap + text_w;
   const double x0 = rect().centre().x - 0.5 * total;

@@ -166,7 +166,26 @@ void Canvas::clear(Rgba c) {
                           std::round(pm[3])));
 }
 
-void Canvas::clear_rect(const Rect& r, Rgba c) {
+void Canvas::set_scale(double scale) {
+  if (!(scale > 0.0) || !std::isfinite(scale)) throw std::invalid_argument("Canvas::set_scale: scale must be > 0");
+  scale_ = scale;
+}
+
+int Canvas::font_px(int size) const {
+  return scale_ == 1.0 ? size : std::max(1, static_cast<int>(std::lround(size * scale_)));
+}
+
+double Canvas::text_width(const Font& font, int px_size, std::string_view utf8) const {
+  return font.measure(utf8, font_px(px_size)) / scale_;
+}
+
+Rect Canvas::clip() const {
+  const Rect& c = clips_.back();
+  return {c.x / scale_, c.y / scale_, c.w / scale_, c.h / scale_};
+}
+
+void Canvas::clear_rect(const Rect& layout_rect, Rgba c) {
+  const Rect r = px(layout_rect);
   float pm[4];
   premultiply(c, pm);
   // Whole pixels whose centres lie in r (pixel_box rounds outwards, so cut it again).
@@ -181,7 +200,7 @@ void Canvas::clear_rect(const Rect& r, Rgba c) {
                         std::round(pm[3])));
 }
 
-void Canvas::push_clip(const Rect& r) { clips_.push_back(clips_.back().intersect(r)); }
+void Canvas::push_clip(const Rect& r) { clips_.push_back(clips_.back().intersect(px(r))); }
 
 void Canvas::pop_clip() {
   if (clips_.size() <= 1) throw std::logic_error("Canvas::pop_clip without push_clip");
@@ -232,13 +251,18 @@ void Canvas::fill_distance(const Rect& bounds, Rgba c, Distance&& dist) {
   }
 }
 
-void Canvas::fill_rounded_rect(const Rect& r, double radius, Rgba c) {
-  if (r.empty()) return;
+void Canvas::fill_rounded_rect(const Rect& layout_rect, double radius, Rgba c) {
+  if (layout_rect.empty()) return;
+  const Rect r = px(layout_rect);
+  radius = px(radius);
   fill_distance(r, c, [&](glm::dvec2 p) { return rounded_box_distance(p, r, radius); });
 }
 
-void Canvas::stroke_rounded_rect(const Rect& r, double radius, double width, Rgba c) {
-  if (r.empty()) return;
+void Canvas::stroke_rounded_rect(const Rect& layout_rect, double radius, double width, Rgba c) {
+  if (layout_rect.empty()) return;
+  const Rect r = px(layout_rect);
+  radius = px(radius);
+  width = px(width);
   fill_distance(r, c, [&](glm::dvec2 p) {
     const double d = rounded_box_distance(p, r, radius);
     return std::abs(d + 0.5 * width) - 0.5 * width;
@@ -246,11 +270,16 @@ void Canvas::stroke_rounded_rect(const Rect& r, double radius, double width, Rgb
 }
 
 void Canvas::fill_circle(glm::dvec2 centre, double radius, Rgba c) {
+  centre = px(centre);
+  radius = px(radius);
   const Rect b{centre.x - radius, centre.y - radius, 2 * radius, 2 * radius};
   fill_distance(b, c, [&](glm::dvec2 p) { return glm::length(p - centre) - radius; });
 }
 
 void Canvas::stroke_circle(glm::dvec2 centre, double radius, double width, Rgba c) {
+  centre = px(centre);
+  radius = px(radius);
+  width = px(width);
   const double outer = radius + 0.5 * width;
   const Rect b{centre.x - outer, centre.y - outer, 2 * outer, 2 * outer};
   fill_distance(b, c, [&](glm::dvec2 p) {
@@ -259,13 +288,21 @@ void Canvas::stroke_circle(glm::dvec2 centre, double radius, double width, Rgba 
 }
 
 void Canvas::line(glm::dvec2 a, glm::dvec2 b, double width, Rgba c) {
+  a = px(a);
+  b = px(b);
+  width = px(width);
   const glm::dvec2 pts[2] = {a, b};
   fill_distance(bounds_of(pts, 0.5 * width), c,
                 [&](glm::dvec2 p) { return segment_distance(p, a, b) - 0.5 * width; });
 }
 
-void Canvas::polyline(std::span<const glm::dvec2> pts, double width, Rgba c, bool closed) {
-  if (pts.size() < 2 || c.a <= 0.f) return;
+void Canvas::polyline(std::span<const glm::dvec2> layout_pts, double width, Rgba c, bool closed) {
+  if (layout_pts.size() < 2 || c.a <= 0.f) return;
+  std::vector<glm::dvec2> scaled;
+  if (scale_ != 1.0)
+    for (const glm::dvec2 p : layout_pts) scaled.push_back(px(p));
+  const std::span<const glm::dvec2> pts = scale_ != 1.0 ? std::span<const glm::dvec2>(scaled) : layout_pts;
+  width = px(width);
   // Coverage is the max over segments, gathered in a mask first so joints are blended once.
   const double hw = 0.5 * width;
   const PixelBox box = pixel_box(bounds_of(pts, hw + 1.0));
@@ -296,8 +333,12 @@ void Canvas::polyline(std::span<const glm::dvec2> pts, double width, Rgba c, boo
   }
 }
 
-void Canvas::fill_convex(std::span<const glm::dvec2> pts, Rgba c) {
-  if (pts.size() < 3) return;
+void Canvas::fill_convex(std::span<const glm::dvec2> layout_pts, Rgba c) {
+  if (layout_pts.size() < 3) return;
+  std::vector<glm::dvec2> scaled;
+  if (scale_ != 1.0)
+    for (const glm::dvec2 p : layout_pts) scaled.push_back(px(p));
+  const std::span<const glm::dvec2> pts = scale_ != 1.0 ? std::span<const glm::dvec2>(scaled) : layout_pts;
   // Signed area tells the winding, so edge normals can point outwards either way.
   double area = 0.0;
   for (size_t i = 0; i < pts.size(); ++i) {
@@ -361,7 +402,9 @@ cv::Mat scale_to(const cv::Mat& rgba, cv::Size size) {
 
 }  // namespace
 
-const cv::Mat& ScaledImage::get(const cv::Mat& src, const Rect& dst, ChannelOrder order) {
+const cv::Mat& ScaledImage::get(const cv::Mat& src, const Rect& layout_dst, ChannelOrder order,
+                                double scale) {
+  const Rect dst{layout_dst.x * scale, layout_dst.y * scale, layout_dst.w * scale, layout_dst.h * scale};
   if (src.data != src_data_ || src.size() != src_size_ || src.type() != src_type_ ||
       order != order_ || !(dst == dst_) || rgba_.empty()) {
     const cv::Rect place = image_placement(dst);
@@ -374,8 +417,9 @@ const cv::Mat& ScaledImage::get(const cv::Mat& src, const Rect& dst, ChannelOrde
   return rgba_;
 }
 
-void Canvas::image(const cv::Mat& src, const Rect& dst, ChannelOrder order, float opacity) {
-  if (src.empty() || dst.empty()) return;
+void Canvas::image(const cv::Mat& src, const Rect& layout_dst, ChannelOrder order, float opacity) {
+  if (src.empty() || layout_dst.empty()) return;
+  const Rect dst = px(layout_dst);
   const cv::Rect place = image_placement(dst);
   const int x0 = place.x, y0 = place.y, w = place.width, h = place.height;
   if (w <= 0 || h <= 0) return;
@@ -400,9 +444,10 @@ void Canvas::image(const cv::Mat& src, const Rect& dst, ChannelOrder order, floa
   }
 }
 
-void Canvas::text_at(const Font& font, int px, std::u32string_view text, double x, double baseline,
+void Canvas::text_at(const Font& font, int size, std::u32string_view text, double x, double baseline,
                      Rgba c) {
-  draw_line(font, px, font.layout(text, px), x, baseline, c);
+  const int fpx = font_px(size);
+  draw_line(font, fpx, font.layout(text, fpx), px(x), px(baseline), c);
 }
 
 void Canvas::draw_line(const Font& font, int px, const LineLayout& line, double x, double baseline,
@@ -433,8 +478,10 @@ void Canvas::draw_line(const Font& font, int px, const LineLayout& line, double 
   }
 }
 
-double Canvas::text(const Font& font, int px, std::string_view utf8, const Rect& box, Align align,
-                    Rgba c) {
+double Canvas::text(const Font& font, int size, std::string_view utf8, const Rect& layout_box,
+                    Align align, Rgba c) {
+  const int px = font_px(size);
+  const Rect box = this->px(layout_box);
   // Lay the line out once; only text that does not fit is cut (as fit_text does) and redone.
   LineLayout line = font.layout(decode_utf8(utf8), px);
   if (line.width > box.w) line = font.layout(decode_utf8(fit_text(font, px, utf8, box.w)), px);
@@ -444,10 +491,10 @@ double Canvas::text(const Font& font, int px, std::string_view utf8, const Rect&
   if (align == Align::Centre) x = box.x + 0.5 * (box.w - width);
   if (align == Align::Right) x = box.right() - width;
   const double baseline = box.y + 0.5 * (box.h - (m.ascent + m.descent)) + m.ascent;
-  push_clip(box);
+  clips_.push_back(clips_.back().intersect(box));  // box is in pixels already
   draw_line(font, px, line, x, baseline, c);
-  pop_clip();
-  return width;
+  clips_.pop_back();
+  return width / scale_;
 }
 
 std::string fit_text(const Font& font, int px, std::string_view utf8, double max_width) {

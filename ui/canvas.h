@@ -7,6 +7,11 @@
 /// Shapes are anti-aliased by signed distance: pixel coverage = clamp(0.5 - d, 0, 1) where d is
 /// the distance in pixels from the pixel centre to the shape's edge (negative inside).
 /// No GL anywhere: the compositor uploads image() as a texture.
+///
+/// Scale: a canvas may draw at a scale (set_scale): every coordinate, size, stroke width, clip
+/// and font size given to it is in layout units, multiplied by the scale to reach its pixels.
+/// Panels use it to render their fixed layout at the resolution they cover on screen, so text
+/// is rasterised at its on-screen size (crisp) instead of being scaled down afterwards.
 #pragma once
 
 #include "ui/colour.h"
@@ -36,8 +41,13 @@ class Canvas {
   /// std::invalid_argument for any other type.
   explicit Canvas(cv::Mat pixels);
 
-  int width() const { return image_.cols; }
-  int height() const { return image_.rows; }
+  int width() const { return image_.cols; }   //!< pixels
+  int height() const { return image_.rows; }  //!< pixels
+  /// Pixels per layout unit (default 1). Fonts are rasterised at round(px * scale).
+  void set_scale(double scale);
+  double scale() const { return scale_; }
+  /// Width in layout units of one line of text as this canvas draws it (at its scale).
+  double text_width(const Font& font, int px, std::string_view utf8) const;
   /// Premultiplied RGBA8 pixels.
   const cv::Mat& image() const { return image_; }
   /// Straight-alpha RGBA8 copy (PNG convention).
@@ -51,7 +61,7 @@ class Canvas {
   /// Restricts drawing to r intersected with the current clip, until the matching pop_clip.
   void push_clip(const Rect& r);
   void pop_clip();
-  Rect clip() const { return clips_.back(); }
+  Rect clip() const;  //!< layout units
 
   void fill_rect(const Rect& r, Rgba c) { fill_rounded_rect(r, 0.0, c); }
   void fill_rounded_rect(const Rect& r, double radius, Rgba c);
@@ -91,9 +101,15 @@ class Canvas {
     int x0, y0, x1, y1;
   };
   PixelBox pixel_box(const Rect& r) const;  // r rounded outwards, intersected with the clip
+  // Layout units to pixels.
+  Rect px(const Rect& r) const { return {r.x * scale_, r.y * scale_, r.w * scale_, r.h * scale_}; }
+  glm::dvec2 px(glm::dvec2 p) const { return p * scale_; }
+  double px(double v) const { return v * scale_; }
+  int font_px(int size) const;
 
   cv::Mat image_;
-  std::vector<Rect> clips_;
+  std::vector<Rect> clips_;  //!< pixels
+  double scale_ = 1.0;
 };
 
 /// An image converted and scaled for one destination rectangle, kept by widgets that draw the
@@ -101,8 +117,10 @@ class Canvas {
 /// the conversion and resampling and gives the same pixels as drawing the source.
 class ScaledImage {
  public:
-  /// Straight RGBA8 at dst's whole-pixel size, rebuilt only when src's buffer or dst changed.
-  const cv::Mat& get(const cv::Mat& src, const Rect& dst, ChannelOrder order = ChannelOrder::Bgr);
+  /// Straight RGBA8 at dst's whole-pixel size on a canvas of the given scale (Canvas::scale()),
+  /// rebuilt only when src's buffer, dst or the scale changed.
+  const cv::Mat& get(const cv::Mat& src, const Rect& dst, ChannelOrder order = ChannelOrder::Bgr,
+                     double scale = 1.0);
 
  private:
   const void* src_data_ = nullptr;

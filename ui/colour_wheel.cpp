@@ -67,6 +67,8 @@ void ColourWheel::drag_to(glm::dvec2 p) {
   set_hue_sat(hue, len / disc_radius());
 }
 
+void ColourWheel::step(glm::ivec2 d) { set_hue_sat(hue_ + kHueStepDeg * d.x, sat_ + kSatStep * d.y); }
+
 void ColourWheel::thumbstick(glm::dvec2 stick, double dt) {
   if (stick == glm::dvec2(0.0)) return;
   set_hue_sat(hue_ + stick.x * 120.0 * dt, sat_ + stick.y * 0.5 * dt);

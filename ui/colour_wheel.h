@@ -29,12 +29,17 @@ class ColourWheel : public Widget {
   Eigen::Vector3d tint_gain() const { return tint_gain_from_hue_sat(hue_, sat_); }
   glm::dvec2 value() const override { return {hue_, sat_}; }
   bool focusable() const override { return true; }
+  bool steppable() const override { return true; }
   bool draggable() const override { return true; }
   /// The disc follows the pointer: angle (0 deg = right, counter-clockwise) is hue, distance
   /// from the centre over the radius is saturation.
   void drag_to(glm::dvec2 p) override;
   /// x turns the hue (120 deg/s at full deflection), y changes saturation (0.5/s).
   void thumbstick(glm::dvec2 stick, double dt) override;
+  /// A push turns the hue by kHueStepDeg (x) or changes saturation by kSatStep (y).
+  void step(glm::ivec2 direction) override;
+  static constexpr double kHueStepDeg = 5.0;
+  static constexpr double kSatStep = 0.05;
   void draw(DrawContext& ctx) const override;
   glm::dvec2 disc_centre() const;
   double disc_radius() const;

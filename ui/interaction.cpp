@@ -57,7 +57,7 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
                                    double dt) {
   std::vector<Event> events;
   auto emit = [&](const Ref& r, EventKind k, glm::dvec2 o, glm::dvec2 n) {
-    events.push_back({r.panel, r.widget, k, o, n});
+    events.push_back({r.panel, r.widget, k, o, n, widget_of(panels, r)});
   };
   // Runs a change on a widget and reports ValueChanged if its value moved.
   auto change = [&](const Ref& r, Widget& w, auto&& fn) {
@@ -68,6 +68,7 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
 
   // 1. Trigger with hysteresis.
   const bool was_down = down_;
+  was_down_ = down_;
   if (!down_ && in.trigger > settings_.press_threshold) down_ = true;
   else if (down_ && in.trigger < settings_.release_threshold) down_ = false;
 
@@ -100,7 +101,13 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
     if (w->draggable()) {
       drag_start_value_ = w->value();
       emit(press_, EventKind::DragBegin, drag_start_value_, drag_start_value_);
-      change(press_, *w, [&] { w->drag_to(hit_->pixel); });
+      fine_ = in.fine;
+      drag_anchor_ = hit_->pixel;
+      // A fine press keeps the value where it is (the motion from here moves it); a plain press
+      // jumps it under the pointer.
+      drag_to_ = fine_ ? w->drag_point().value_or(hit_->pixel) : hit_->pixel;
+      drag_offset_ = drag_to_ - hit_->pixel;
+      if (!fine_) change(press_, *w, [&] { w->drag_to(hit_->pixel); });
     }
   }
 
@@ -108,8 +115,16 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
   Widget* held = widget_of(panels, press_);
   if (down_ && was_down && held && held->draggable()) {
     if (const auto h = intersect_panel_plane(*panel_of(panels, press_.panel), in.ray);
-        h && h->front)
-      change(press_, *held, [&] { held->drag_to(h->pixel); });
+        h && h->front) {
+      if (in.fine != fine_) {  // the mode changes here: continue from where the widget is
+        fine_ = in.fine;
+        drag_anchor_ = h->pixel;
+        drag_offset_ = drag_to_ - h->pixel;
+      }
+      drag_to_ = fine_ ? drag_anchor_ + drag_offset_ + (h->pixel - drag_anchor_) * settings_.fine_factor
+                       : h->pixel + drag_offset_;
+      change(press_, *held, [&] { held->drag_to(drag_to_); });
+    }
   }
 
   // 5. Release: end the drag; a click needs the release on the pressed widget.
@@ -125,21 +140,42 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
     press_ = {};
   }
 
-  // 6. Thumbstick on the focused widget; a gesture is bracketed by DragBegin/DragEnd.
-  if (Widget* f = widget_of(panels, focus_); f && press_.empty()) {
+  // 6. Thumbstick (the sim's arrow keys): on the widget under the pointer, else the focused one.
+  // A push steps once (a tap moves exactly one step); held past the repeat delay it moves
+  // continuously. A gesture is bracketed by DragBegin/DragEnd (one undo step).
+  if (press_.empty()) {
     glm::dvec2 stick = in.thumbstick;
     if (std::abs(stick.x) < settings_.stick_dead_zone) stick.x = 0.0;
     if (std::abs(stick.y) < settings_.stick_dead_zone) stick.y = 0.0;
     const bool active = stick != glm::dvec2(0.0);
     if (active && !stick_active_) {
-      stick_active_ = true;
-      stick_start_value_ = f->value();
-      emit(focus_, EventKind::DragBegin, stick_start_value_, stick_start_value_);
+      Widget* h = widget_of(panels, hover_);
+      stick_ref_ = h && h->steppable() ? hover_ : focus_;
     }
-    change(focus_, *f, [&] { f->thumbstick(stick, dt); });
-    if (!active && stick_active_) {
+    if (Widget* f = widget_of(panels, stick_ref_)) {
+      if (active && !stick_active_) {
+        stick_active_ = true;
+        stick_held_s_ = 0.0;
+        stick_start_value_ = f->value();
+        emit(stick_ref_, EventKind::DragBegin, stick_start_value_, stick_start_value_);
+        const glm::ivec2 dir{stick.x > 0.0 ? 1 : stick.x < 0.0 ? -1 : 0, stick.y > 0.0 ? 1 : stick.y < 0.0 ? -1 : 0};
+        change(stick_ref_, *f, [&] { f->step(dir); });
+      } else if (active) {
+        // Only the time held past the repeat delay moves it, whatever the frame rate.
+        const double before = stick_held_s_;
+        stick_held_s_ += dt;
+        const double moving = stick_held_s_ - std::max(before, settings_.stick_repeat_delay_s);
+        if (moving > 0.0) change(stick_ref_, *f, [&] { f->thumbstick(stick, moving); });
+      }
+      if (!active && stick_active_) {
+        change(stick_ref_, *f, [&] { f->thumbstick(glm::dvec2(0.0), dt); });  // widgets reset their remainders
+        stick_active_ = false;
+        emit(stick_ref_, EventKind::DragEnd, stick_start_value_, f->value());
+        stick_ref_ = {};
+      }
+    } else {
       stick_active_ = false;
-      emit(focus_, EventKind::DragEnd, stick_start_value_, f->value());
+      stick_ref_ = {};
     }
   }
   return events;

@@ -47,6 +47,9 @@ struct PointerInput {
   Ray ray;
   double trigger = 0.0;          //!< [0, 1]
   glm::dvec2 thumbstick{0.0};    //!< [-1, 1]^2, +x right, +y up
+  /// Fine adjustment held (the other hand's grip; Shift in the sim): a drag moves the widget by
+  /// PointerSettings::fine_factor of the pointer's motion, without a jump when it starts or ends.
+  bool fine = false;
 };
 
 /// Press / release thresholds with hysteresis, and the thumbstick dead zone.
@@ -54,6 +57,8 @@ struct PointerSettings {
   double press_threshold = 0.55;
   double release_threshold = 0.45;
   double stick_dead_zone = 0.2;
+  double stick_repeat_delay_s = 0.35;  //!< a push steps once; held this long it moves on
+  double fine_factor = 0.1;            //!< drag gain while PointerInput::fine is held
 };
 
 /// The interaction state of one pointer (one per hand).
@@ -67,6 +72,9 @@ class Pointer {
 
   /// Trigger state after hysteresis.
   bool trigger_down() const { return down_; }
+  /// The trigger went down / up in the last update.
+  bool trigger_pressed() const { return down_ && !was_down_; }
+  bool trigger_released() const { return !down_ && was_down_; }
   /// Current hit (nullopt when the ray misses every panel).
   const std::optional<PanelHit>& hit() const { return hit_; }
   /// Panel and widget ids under the pointer / held / focused ("" when none).
@@ -88,10 +96,18 @@ class Pointer {
 
   PointerSettings settings_;
   bool down_ = false;
+  bool was_down_ = false;  //!< down_ before the last update
   std::optional<PanelHit> hit_;
   Ref hover_, press_, focus_;
   glm::dvec2 drag_start_value_{0.0};
-  bool stick_active_ = false;  //!< a thumbstick gesture is under way on the focused widget
+  // Where the held widget is dragged to: the pointer's pixel, scaled about an anchor while fine.
+  bool fine_ = false;
+  glm::dvec2 drag_to_{0.0};       //!< the last position given to drag_to
+  glm::dvec2 drag_anchor_{0.0};   //!< the pointer's pixel when the current mode began
+  glm::dvec2 drag_offset_{0.0};   //!< drag_to_ - pointer pixel then (no jump between modes)
+  bool stick_active_ = false;  //!< a thumbstick gesture is under way on stick_ref_
+  Ref stick_ref_;              //!< the widget the gesture acts on (hovered, else focused)
+  double stick_held_s_ = 0.0;
   glm::dvec2 stick_start_value_{0.0};
 };
 

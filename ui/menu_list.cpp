@@ -69,23 +69,17 @@ void MenuList::click(glm::dvec2 p) {
   if (const int row = row_at(p); row >= 0) select(row);
 }
 
+void MenuList::step(glm::ivec2 d) {
+  if (d.y != 0) select(selected_ - d.y);  // up = the previous item
+}
+
 void MenuList::thumbstick(glm::dvec2 stick, double dt) {
   if (std::abs(stick.y) < 0.5) {
-    held_ = -1.0;
-    return;
-  }
-  const int dir = stick.y > 0 ? -1 : 1;
-  if (held_ < 0.0) {
     held_ = 0.0;
-    next_repeat_ = kRepeatDelaySeconds;
-    select(selected_ + dir);
     return;
   }
   held_ += dt;
-  while (held_ >= next_repeat_) {
-    select(selected_ + dir);
-    next_repeat_ += kRepeatSeconds;
-  }
+  for (; held_ >= kRepeatSeconds; held_ -= kRepeatSeconds) select(selected_ + (stick.y > 0 ? -1 : 1));
 }
 
 void MenuList::draw(DrawContext& ctx) const {

@@ -28,14 +28,15 @@ class MenuList : public Widget {
 
   glm::dvec2 value() const override { return {static_cast<double>(selected_), 0.0}; }
   bool focusable() const override { return true; }
+  bool steppable() const override { return true; }
   void hover_at(glm::dvec2 p) override;
   void click(glm::dvec2 p) override;
-  /// y moves the selection: one row at once, then repeats every kRepeatSeconds after
-  /// kRepeatDelaySeconds while held past half deflection (up = previous item).
+  /// A push moves the selection one row (up = the previous item); held on (past the pointer's
+  /// repeat delay, past half deflection) it moves a row every kRepeatSeconds.
+  void step(glm::ivec2 direction) override;
   void thumbstick(glm::dvec2 stick, double dt) override;
   void draw(DrawContext& ctx) const override;
 
-  static constexpr double kRepeatDelaySeconds = 0.45;
   static constexpr double kRepeatSeconds = 0.2;
 
  private:
@@ -45,8 +46,7 @@ class MenuList : public Widget {
   double row_h_;
   int scroll_ = 0;
   int hover_row_ = -1;
-  double held_ = -1.0;  //!< seconds the stick has been held past half deflection, -1 = released
-  double next_repeat_ = 0.0;
+  double held_ = 0.0;  //!< seconds held past half deflection not yet turned into rows
 };
 
 }  // namespace vdfx::ui

@@ -124,7 +124,7 @@ void Minimap::draw(DrawContext& ctx) const {
   c.text(*ctx.fonts.regular, t.font_body, title_,
          {r.x + t.padding, r.y + 8, r.w - 2 * t.padding, 56}, Align::Left, t.text);
   const Rect a = map_area();
-  if (!image_.empty()) c.image(scaled_.get(image_, a), a, ChannelOrder::Rgb);
+  if (!image_.empty()) c.image(scaled_.get(image_, a, ChannelOrder::Bgr, c.scale()), a, ChannelOrder::Rgb);
   else c.fill_rect(a, t.surface_pressed);
   c.push_clip(a);
   for (const auto& line : footprint()) {

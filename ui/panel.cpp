@@ -14,6 +14,16 @@ Panel::Panel(std::string id, int width_px, int height_px, glm::dvec2 size_m,
     : id_(std::move(id)), width_(width_px), height_(height_px), size_m_(size_m),
       fonts_(std::move(fonts)), theme_(theme) {}
 
+void Panel::set_render_scale(double scale) {
+  if (scale == scale_) return;
+  scale_ = scale;
+  canvas_.reset();  // a new texture size: the next render is full
+  ++revision_;
+}
+
+int Panel::texture_width() const { return std::max(1, static_cast<int>(std::lround(width_ * scale_))); }
+int Panel::texture_height() const { return std::max(1, static_cast<int>(std::lround(height_ * scale_))); }
+
 Widget* Panel::find(std::string_view id) const {
   for (const auto& w : widgets_)
     if (w->id() == id) return w.get();
@@ -92,20 +102,24 @@ void add_merged(std::vector<Rect>& rects, Rect r) {
 Panel::~Panel() = default;
 
 Panel::Damage Panel::damage() const {
-  const Rect all = whole();
+  // Widgets report damage in layout pixels; it is redrawn in whole texture pixels.
+  const Rect all = whole_texture();
   if (!canvas_ || rendered_revision_ != revision_ ||
       rendered_widget_revisions_.size() != widgets_.size())
     return {{all}, true};
+  const auto tex = [&](const Rect& r) {
+    return snap(Rect{r.x * scale_, r.y * scale_, r.w * scale_, r.h * scale_}, all);
+  };
   Damage d;
   for (size_t i = 0; i < widgets_.size(); ++i) {
     const Widget& w = *widgets_[i];
     if (w.revision() == rendered_widget_revisions_[i]) continue;
     if (w.damage_is_partial()) {  // the widget knows which part changed
-      add_merged(d.rects, snap(w.damage().intersect(w.paint_bounds()), all));
+      add_merged(d.rects, tex(w.damage().intersect(w.paint_bounds())));
       continue;
     }
-    add_merged(d.rects, snap(rendered_bounds_[i], all));  // where it was
-    add_merged(d.rects, snap(w.paint_bounds(), all));     // where it is
+    add_merged(d.rects, tex(rendered_bounds_[i]));  // where it was
+    add_merged(d.rects, tex(w.paint_bounds()));     // where it is
   }
   if (d.rects.empty()) return d;
   double area = 0.0;
@@ -123,8 +137,10 @@ void Panel::draw_region(Canvas& canvas, const Rect* clip) const {
   canvas.fill_rounded_rect(all, 2 * theme_.corner_radius, theme_.panel_bg);
   canvas.stroke_rounded_rect(all, 2 * theme_.corner_radius, 3.0, theme_.panel_border);
   DrawContext ctx{canvas, theme_, *fonts_};
-  for (const auto& w : widgets_)
+  for (const auto& w : widgets_) {
+    if (w->rect().empty()) continue;  // laid out away (a widget of another mode)
     if (!clip || !w->paint_bounds().intersect(*clip).empty()) w->draw(ctx);
+  }
 }
 
 bool Panel::render_if_dirty() {
@@ -133,13 +149,21 @@ bool Panel::render_if_dirty() {
   // Someone still holds the last texture: draw into a new buffer so theirs stays as it was.
   const bool shared = canvas_ && canvas_->image().u && canvas_->image().u->refcount > 1;
   if (dmg.full) {
-    if (!canvas_ || shared) canvas_ = std::make_unique<Canvas>(width_, height_);
-    else canvas_->clear();
+    if (!canvas_ || shared) {
+      canvas_ = std::make_unique<Canvas>(texture_width(), texture_height());
+      canvas_->set_scale(scale_);
+    } else {
+      canvas_->clear();
+    }
     draw_region(*canvas_, nullptr);
     ++full_render_count_;
   } else {
-    if (shared) canvas_ = std::make_unique<Canvas>(canvas_->image().clone());
-    for (const Rect& r : dmg.rects) {
+    if (shared) {
+      canvas_ = std::make_unique<Canvas>(canvas_->image().clone());
+      canvas_->set_scale(scale_);
+    }
+    for (const Rect& px : dmg.rects) {
+      const Rect r{px.x / scale_, px.y / scale_, px.w / scale_, px.h / scale_};  // layout pixels
       canvas_->push_clip(r);
       canvas_->clear_rect(r);
       draw_region(*canvas_, &r);

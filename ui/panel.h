@@ -8,6 +8,10 @@
 /// damaged rectangles: the old and new paint_bounds() of every widget whose revision moved. A
 /// partial render clears those rectangles and redraws the background and every widget meeting
 /// them, clipped to them, so its pixels equal a full render's exactly.
+///
+/// Layout and texture: widgets are laid out in panel pixels (width_px x height_px, the layout);
+/// the texture is the layout drawn at render_scale() (Canvas::set_scale), so a panel covering
+/// 320 screen pixels can be rendered at 320 pixels with its fonts rasterised at that size.
 #pragma once
 
 #include "ui/canvas.h"
@@ -36,9 +40,15 @@ class Panel {
   Panel& operator=(const Panel&) = delete;
 
   const std::string& id() const { return id_; }
-  int width_px() const { return width_; }
-  int height_px() const { return height_; }
+  int width_px() const { return width_; }    //!< layout pixels
+  int height_px() const { return height_; }  //!< layout pixels
   glm::dvec2 size_m() const { return size_m_; }
+  void set_size_m(glm::dvec2 size_m) { size_m_ = size_m; }
+  /// Texture pixels per layout pixel (default 1). A change re-renders the whole texture.
+  void set_render_scale(double scale);
+  double render_scale() const { return scale_; }
+  int texture_width() const;   //!< round(width_px * render_scale)
+  int texture_height() const;
   const Theme& theme() const { return theme_; }
   const FontSet& fonts() const { return *fonts_; }
 
@@ -98,8 +108,8 @@ class Panel {
   /// Renders that drew the whole panel (the first, after add()/mark_dirty(), when more than
   /// kFullRenderFraction of it was damaged, or every render with partial rendering off).
   int full_render_count() const { return full_render_count_; }
-  /// Whole-pixel rectangles the next render redraws: empty when clean, the whole panel when a
-  /// full render is due. Overlapping rectangles are merged.
+  /// Whole texture-pixel rectangles the next render redraws: empty when clean, the whole texture
+  /// when a full render is due. Overlapping rectangles are merged.
   std::vector<Rect> dirty_rects() const;
   /// On (the default): renders redraw only dirty_rects(). Off: every render is full.
   void set_partial_render(bool on) { partial_ = on; }
@@ -114,10 +124,14 @@ class Panel {
   };
   Damage damage() const;
   Rect whole() const { return {0, 0, static_cast<double>(width_), static_cast<double>(height_)}; }
+  Rect whole_texture() const {
+    return {0, 0, static_cast<double>(texture_width()), static_cast<double>(texture_height())};
+  }
   void draw_region(Canvas& canvas, const Rect* clip) const;
   std::string id_;
   int width_, height_;
   glm::dvec2 size_m_;
+  double scale_ = 1.0;
   std::shared_ptr<const FontSet> fonts_;
   const Theme& theme_;
   std::vector<std::unique_ptr<Widget>> widgets_;

@@ -20,9 +20,18 @@ struct Axis {
   const char* format = "%.2f";  //!< printf format of the value text
   std::string unit;             //!< appended to the value text ("°", " stops")
   std::string name;             //!< axis name shown by Pad2D ("radius")
+  bool log = false;             //!< the track is logarithmic (min > 0); steps are 1/kLogSteps of it
 
   double clamp_snap(double v) const;
   std::string text(double v) const;
+  /// Where v sits along the track, 0 at min, 1 at max (logarithmic when log).
+  double fraction(double v) const;
+  double at_fraction(double t) const;
+  /// v moved by n steps: n * step, or n / kLogSteps of the track when log or continuous.
+  double stepped(double v, int n) const;
+  /// The step as shown next to the value ("step 0.1", "step x1.07").
+  std::string step_text() const;
+  static constexpr int kLogSteps = 100;
 };
 
 class Slider1D : public Widget {
@@ -35,9 +44,12 @@ class Slider1D : public Widget {
   const Axis& axis() const { return axis_; }
   glm::dvec2 value() const override { return {value_, 0.0}; }
   bool focusable() const override { return true; }
+  bool steppable() const override { return true; }
   bool draggable() const override { return true; }
   void drag_to(glm::dvec2 p) override;
+  std::optional<glm::dvec2> drag_point() const override;
   void thumbstick(glm::dvec2 stick, double dt) override;
+  void step(glm::ivec2 direction) override;
   void draw(DrawContext& ctx) const override;
   /// The track's horizontal extent in panel pixels (value min at x0, max at x1).
   double track_x0() const;
@@ -58,9 +70,12 @@ class Pad2D : public Widget {
   void set_value(glm::dvec2 v);
   glm::dvec2 value() const override { return value_; }
   bool focusable() const override { return true; }
+  bool steppable() const override { return true; }
   bool draggable() const override { return true; }
   void drag_to(glm::dvec2 p) override;
+  std::optional<glm::dvec2> drag_point() const override;
   void thumbstick(glm::dvec2 stick, double dt) override;
+  void step(glm::ivec2 direction) override;
   void draw(DrawContext& ctx) const override;
   /// The square the value maps onto (x min at left, y min at the bottom).
   Rect area() const;

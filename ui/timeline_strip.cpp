@@ -95,6 +95,10 @@ double TimelineStrip::x_of(int frame) const {
   return frame_count_ <= 1 ? t.x : t.x + t.w * frame / (frame_count_ - 1.0);
 }
 
+void TimelineStrip::step(glm::ivec2 d) {
+  if (d.x != 0) set_playhead(playhead_ + d.x);
+}
+
 void TimelineStrip::thumbstick(glm::dvec2 stick, double dt) {
   if (stick.x == 0.0) {
     pending_ = 0.0;
@@ -117,7 +121,7 @@ void TimelineStrip::draw(DrawContext& ctx) const {
     for (size_t i = 0; i < thumbs_.size(); ++i) {
       const Rect cr{tr.x + cell * i, tr.y, cell, tr.h};
       const Rect inner = cr.inset(2.0);
-      c.image(scaled_[i].get(centre_crop(thumbs_[i], inner.w / inner.h), inner), inner,
+      c.image(scaled_[i].get(centre_crop(thumbs_[i], inner.w / inner.h), inner, ChannelOrder::Bgr, c.scale()), inner,
               ChannelOrder::Rgb);
     }
     c.pop_clip();

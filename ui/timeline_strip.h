@@ -38,9 +38,11 @@ class TimelineStrip : public Widget {
 
   glm::dvec2 value() const override { return {static_cast<double>(playhead_), 0.0}; }
   bool focusable() const override { return true; }
+  bool steppable() const override { return true; }
   bool draggable() const override { return true; }
   void drag_to(glm::dvec2 p) override { set_playhead(frame_at(p.x)); }
-  /// x steps frames at up to kStickFramesPerSecond.
+  /// A push of x steps one frame; held on, frames pass at up to kStickFramesPerSecond.
+  void step(glm::ivec2 direction) override;
   void thumbstick(glm::dvec2 stick, double dt) override;
   void draw(DrawContext& ctx) const override;
 

@@ -10,8 +10,10 @@
 #include "ui/rect.h"
 
 #include <glm/vec2.hpp>
+#include <glm/ext/vector_int2.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <cstdint>
 #include <string>
 
@@ -31,12 +33,16 @@ enum class EventKind {
 /// Values are two numbers wide so one event type fits every widget: Slider1D (value, 0),
 /// Pad2D (x, y), ColourWheel (hue_deg, sat), Toggle (0/1, 0), MenuList (index, 0),
 /// TimelineStrip (frame, 0). A DragBegin/DragEnd pair brackets one undo step.
+class Widget;
+
 struct Event {
   std::string panel;
   std::string widget;
   EventKind kind = EventKind::Clicked;
   glm::dvec2 old_value{0.0};
   glm::dvec2 new_value{0.0};
+  /// The widget itself: programs match events against the widgets they hold (typed), not ids.
+  const Widget* source = nullptr;
 };
 
 struct DrawContext {
@@ -77,6 +83,9 @@ class Widget {
   virtual bool interactive() const { return enabled_; }
   /// Whether a press focuses it for thumbstick input.
   virtual bool focusable() const { return false; }
+  /// Whether the thumbstick changes its value (step / thumbstick): then it takes the stick while
+  /// the pointer is over it, without a click first.
+  virtual bool steppable() const { return false; }
   /// Whether a press starts a drag whose value follows the pointer (drag_to) while held.
   virtual bool draggable() const { return false; }
   /// The value events report (see Event).
@@ -104,10 +113,18 @@ class Widget {
   virtual void hover_at(glm::dvec2 /*p*/) {}
   /// Pointer position while a drag is held (may lie outside the widget: clamp).
   virtual void drag_to(glm::dvec2 /*p*/) {}
+  /// Where drag_to() would have to go to give the current value (a fine drag starts there);
+  /// nullopt when the widget has no such point.
+  virtual std::optional<glm::dvec2> drag_point() const { return std::nullopt; }
   /// Press and release on this widget.
   virtual void click(glm::dvec2 /*p*/) {}
-  /// Deflection outside the dead zone (zero when released) for dt seconds while focused.
+  /// Deflection outside the dead zone (zero when released) for dt seconds while held past the
+  /// repeat delay (PointerSettings::stick_repeat_delay_s) on the widget under the pointer (or
+  /// the focused one).
   virtual void thumbstick(glm::dvec2 /*stick*/, double /*dt*/) {}
+  /// One step per push of the thumbstick or tap of an arrow key: x -1 left / +1 right, y -1 down
+  /// / +1 up (a slider's step, a menu row, a frame of the timeline).
+  virtual void step(glm::ivec2 /*direction*/) {}
 
   virtual void draw(DrawContext& ctx) const = 0;
 

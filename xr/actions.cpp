@@ -51,6 +51,42 @@ const std::vector<std::pair<std::string, Getter>>& table() {
 
 }  // namespace
 
+namespace {
+
+bool analog_down(double value, bool was_down) {
+  return was_down ? value >= kReleaseThreshold : value > kPressThreshold;
+}
+
+}  // namespace
+
+ControlSet controls_down(const InputState& s, ControlSet before) {
+  ControlSet out;
+  for (const Hand h : {Hand::Left, Hand::Right}) {
+    const HandState& hs = s.hand(h);
+    if (!hs.tracked) continue;
+    const auto analog = [&](Control c, double v) { out.set(h, c, analog_down(v, before.has(h, c))); };
+    analog(Control::Trigger, hs.trigger);
+    analog(Control::Squeeze, hs.squeeze);
+    analog(Control::StickUp, hs.thumbstick.y);
+    analog(Control::StickDown, -hs.thumbstick.y);
+    analog(Control::StickRight, hs.thumbstick.x);
+    analog(Control::StickLeft, -hs.thumbstick.x);
+    out.set(h, Control::Primary, hs.primary);
+    out.set(h, Control::Secondary, hs.secondary);
+    out.set(h, Control::Menu, hs.menu);
+    out.set(h, Control::StickClick, hs.thumbstick_click);
+  }
+  return out;
+}
+
+ActionEdges action_edges(const InputState& now, ControlSet before) {
+  ActionEdges e;
+  e.down = controls_down(now, before);
+  e.pressed.bits = e.down.bits & ~before.bits;
+  e.released.bits = before.bits & ~e.down.bits;
+  return e;
+}
+
 InputState neutral_input_state(std::int64_t t_ns) {
   InputState s;
   s.t_ns = t_ns;
@@ -59,6 +95,11 @@ InputState neutral_input_state(std::int64_t t_ns) {
 }
 
 glm::dvec3 forward(const Pose& pose) { return glm::normalize(pose.orientation * glm::dvec3(0.0, 0.0, -1.0)); }
+
+effects::Direction forward_direction(const Pose& pose) {
+  const glm::dvec3 f = forward(pose);
+  return effects::from_unit(Eigen::Vector3d(f.x, f.y, f.z));
+}
 
 glm::dquat look_rotation(double azimuth_deg, double altitude_deg) {
   // Yaw about +y (a positive angle turns -z towards -x, i.e. left, hence the minus), then pitch

@@ -26,12 +26,50 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "effects/coords.h"
 #include "xr/pose.h"
 
 namespace vdfx::xr {
 
 
 enum class Hand { Left = 0, Right = 1 };
+
+/// The buttons of a hand, and the analog controls read as buttons (trigger and squeeze pulled,
+/// the thumbstick pushed one way). The sim's key bindings and the edges below use this list.
+enum class Control : std::uint8_t {
+  Trigger, Squeeze, Primary, Secondary, Menu, StickClick, StickUp, StickDown, StickLeft, StickRight,
+};
+inline constexpr int kControlCount = 10;
+
+/// The one binding table of thresholds: an analog control (trigger, squeeze, a thumbstick axis)
+/// goes down above kPressThreshold and up again below kReleaseThreshold. ui::PointerSettings
+/// uses the same pair for the trigger.
+inline constexpr double kPressThreshold = 0.55;
+inline constexpr double kReleaseThreshold = 0.45;
+
+/// A set of (hand, control) pairs, one bit each.
+struct ControlSet {
+  std::uint32_t bits = 0;
+  static constexpr std::uint32_t bit(Hand h, Control c) {
+    return 1u << (static_cast<int>(h) * kControlCount + static_cast<int>(c));
+  }
+  bool has(Hand h, Control c) const { return bits & bit(h, c); }
+  void set(Hand h, Control c, bool on) { bits = on ? bits | bit(h, c) : bits & ~bit(h, c); }
+  bool empty() const { return bits == 0; }
+  bool operator==(const ControlSet&) const = default;
+};
+
+/// What changed since the previous poll of the same backend (OpenXR's changedSinceLastSync, as
+/// edges): a control pressed and released between two frames is down in exactly one poll, so
+/// it is pressed once and released once (InputBackend::poll).
+struct ActionEdges {
+  ControlSet down;      //!< down in this poll
+  ControlSet pressed;   //!< down now, up in the previous poll
+  ControlSet released;  //!< up now, down in the previous poll
+  bool is_down(Hand h, Control c) const { return down.has(h, c); }
+  bool was_pressed(Hand h, Control c) const { return pressed.has(h, c); }
+  bool was_released(Hand h, Control c) const { return released.has(h, c); }
+};
 
 struct HandState {
   bool tracked = false;
@@ -52,6 +90,9 @@ struct InputState {
   Pose head;  //!< VIEW in LOCAL
   HandState left;
   HandState right;
+  /// Edges since the backend's previous poll (filled by InputBackend::poll; a recording stores
+  /// the levels, and replay derives the same edges from them).
+  ActionEdges edges;
 
   HandState& hand(Hand h) { return h == Hand::Left ? left : right; }
   const HandState& hand(Hand h) const { return h == Hand::Left ? left : right; }
@@ -60,11 +101,34 @@ struct InputState {
 /// The standing eye height the backends use for the head when nothing else says (metres).
 inline constexpr double kDefaultEyeHeight = 1.6;
 
+/// The controls down in `s`, given those down in the state before (the hysteresis of analog
+/// values: between the thresholds a control keeps its previous state). Untracked hands have
+/// nothing down.
+ControlSet controls_down(const InputState& s, ControlSet before = {});
+/// Edges between two polls: `before` is the previous poll's ActionEdges::down.
+ActionEdges action_edges(const InputState& now, ControlSet before);
+
+/// xrSyncActions in small: stamps each state of a sequence with its edges since the one before.
+/// InputBackend::poll runs every poll through one; tests that build states by hand use their own.
+class ActionSync {
+ public:
+  InputState sync(InputState s) {
+    s.edges = action_edges(s, down_);
+    down_ = s.edges.down;
+    return s;
+  }
+
+ private:
+  ControlSet down_;
+};
+
 /// Nothing tracked, nothing pressed, head at (0, eye height, 0) looking down -z.
 InputState neutral_input_state(std::int64_t t_ns);
 
 /// The forward direction (-z) of a pose, unit length.
 glm::dvec3 forward(const Pose& pose);
+/// Where a pose looks, as the contract's azimuth and altitude (the head's view direction).
+effects::Direction forward_direction(const Pose& pose);
 
 /// Orientation looking at azimuth/altitude (degrees, contract conventions: azimuth positive to the
 /// right, altitude positive up), no roll.

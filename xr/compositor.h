@@ -1,34 +1,30 @@
 /// @file
-/// @brief The simulated headset's compositor: per eye, video layer -> effect stack -> quad layers
-/// -> lens pre-distortion -> panel; mirror modes; offscreen readback.
+/// @brief The simulated headset's compositor: per eye, video layer -> effect stack -> world-space
+/// layers (flare, grain: xr/eye_layer.h) -> quad layers -> lens pre-distortion -> panel; mirror
+/// modes; offscreen readback.
 ///
-/// Effects see only the video (and, later, flare/grain layers); UI quads are composited after
-/// them, so a panel is never blurred or vignetted. Everything renders into textures; the mirror
-/// window (or a test) reads them. The eye buffers are float (RGBA16F by default): no 8-bit
+/// Effects see only the video; the world-space layers and then the UI quads are composited after
+/// them, so a panel is never blurred, vignetted or flared. Everything renders into textures; the
+/// mirror window (or a test) reads them. The eye buffers are float (RGBA16F by default): no 8-bit
 /// rounding happens before the panel.
 #pragma once
 
 #include <array>
 #include <memory>
-#include <span>
-
 #include <opencv2/core.hpp>
+#include <span>
 
 #include "effects/effect_types.h"
 #include "xr/blur_method.h"
 #include "xr/distortion_gl.h"
+#include "xr/eye_layer.h"
 #include "xr/gpu_timer.h"
+#include "xr/mirror.h"
 #include "xr/param_grid.h"
 #include "xr/session.h"
 #include "xr/video_layer.h"
 
 namespace vdfx::xr {
-
-enum class MirrorMode {
-  PreDistorted,    //!< both panels side by side, as the displays show them
-  ThroughTheLens,  //!< both eyes as the wearer sees them (forward lens model applied)
-  SingleEye,       //!< the left eye buffer, undistorted (effects and quads, no lens)
-};
 
 struct CompositorConfig {
   int eye_width = 1440, eye_height = 1600;  //!< per eye, eye buffer and panel
@@ -50,6 +46,9 @@ struct EyeInput {
   /// Per-pixel mode: every pixel's parameters come from the grid given to
   /// Compositor::set_param_grid, looked up along its own view ray (`params` is then unused).
   bool per_pixel = false;
+  /// World-space layers drawn over the effects and under the quads, in this order (flare, then
+  /// grain); each already holds this frame's content.
+  std::span<EyeLayer* const> layers = {};
 };
 
 class Compositor {
@@ -59,13 +58,23 @@ class Compositor {
   ~Compositor();
 
   void set_video_frame(const cv::Mat& equirect);
+  /// A decoded frame as it is (Y'CbCr converted on the GPU: VideoLayerGl::set_frame).
+  void set_video_frame(const io::Picture& picture);
   /// Per-pixel mode's parameter grid (uploaded as float textures; used by eyes with per_pixel).
   void set_param_grid(const ParamGrid& grid);
   /// Renders one eye (0 left, 1 right). Quads are placed with Session::to_local(head_in_local).
   void render_eye(int eye, const EyeInput& in, std::span<const QuadLayer> quads = {},
                   const Pose& head_in_local = {});
-  /// Draws the mirror into `target` (or the default framebuffer when null), scaled to fit.
+  /// Renders the desktop view (MirrorMode::Desktop): `in.view` is the cyclopean pinhole
+  /// (xr::desktop_view); video and effects are rendered at video_scale of width x height and
+  /// scaled up, then the quads are drawn at the full width x height (sharp panel text), no lens.
+  void render_desktop(const EyeInput& in, int width, int height, double video_scale,
+                      std::span<const QuadLayer> quads = {}, const Pose& head_in_local = {});
+  /// Draws the mirror into `target` (or the default framebuffer when null): the desktop view
+  /// 1:1 (render_desktop at this size), or the eyes fitted as xr::mirror_eye_rect says.
   void draw_mirror(MirrorMode mode, const GlTarget* target, int width, int height);
+  /// The desktop view as last rendered (CV_32FC4 BGRA, upright).
+  cv::Mat read_desktop() const;
 
   /// Undistorted eye buffer (effects and quads), CV_32FC4 BGRA, upright.
   cv::Mat read_eye_buffer(int eye) const;
@@ -92,6 +101,8 @@ struct GpuViewOptions {
   /// Per-pixel mode when set: every pixel's parameters from this grid along its own ray (the
   /// `params` argument is then unused; `active_effects` still selects the compiled effects).
   const ParamGrid* param_grid = nullptr;
+  /// World-space layers (flare, grain) drawn after the effects, as EyeInput::layers.
+  std::span<EyeLayer* const> layers = {};
 };
 
 /// One offscreen view for `vdfx render --gpu` (and tests): video layer -> effects ->

@@ -32,6 +32,7 @@ struct GlContextOptions {
   int height = 720;
   bool visible = false;      //!< false: hidden window, render to textures only
   bool vsync = true;         //!< swap interval 1 for a visible window
+  bool resizable = true;     //!< the user may resize a visible window
   std::string title = "vdfx";
   bool debug_output = false; //!< GL_KHR_debug messages to stderr
 };

@@ -59,6 +59,7 @@ std::unique_ptr<GlContext> GlContext::create(const GlContextOptions& o) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_VISIBLE, o.visible ? GLFW_TRUE : GLFW_FALSE);
+  glfwWindowHint(GLFW_RESIZABLE, o.resizable ? GLFW_TRUE : GLFW_FALSE);
   glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, o.debug_output ? GLFW_TRUE : GLFW_FALSE);
   const int w = o.visible ? o.width : 16, h = o.visible ? o.height : 16;
   GLFWwindow* window = glfwCreateWindow(w, h, o.title.c_str(), nullptr, nullptr);

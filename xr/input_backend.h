@@ -24,8 +24,10 @@ namespace vdfx::xr {
 class InputBackend {
  public:
   virtual ~InputBackend() = default;
-  /// The actions at time t_ns (the frame's predicted display time).
-  virtual InputState poll(std::int64_t t_ns) = 0;
+  /// The actions at time t_ns (the frame's predicted display time), with the edges since the
+  /// previous poll (InputState::edges). Backends that queue input (sim, hid) never let a control
+  /// go down and up again within one poll: a tap between two frames is down in exactly one.
+  InputState poll(std::int64_t t_ns) { return sync_.sync(poll_state(t_ns)); }
   /// Desktop events from the window glue, applied at the next poll; ignored by backends that do
   /// not use them. Call from the thread that polls.
   virtual void push_event(const DesktopEvent& event) { (void)event; }
@@ -35,13 +37,20 @@ class InputBackend {
   virtual std::vector<std::int64_t> timeline() const { return {}; }
   /// Raw HID lines handled by the last poll (descriptors, reports, losses), for recording.
   virtual std::vector<io::RecordedHid> drain_raw_reports() { return {}; }
+
+ protected:
+  /// The backend's state at t_ns (what poll() returns, before the edges).
+  virtual InputState poll_state(std::int64_t t_ns) = 0;
+
+ private:
+  ActionSync sync_;
 };
 
 /// Desktop stand-in: mouse and keyboard drive head and hands (docs/input.md lists bindings).
 struct SimConfig {
   int window_width = 1280;   //!< pixels; updated by ViewGeometryEvent
   int window_height = 720;
-  double hfov_deg = 90.0;    //!< horizontal field of view of the desktop view
+  double hfov_deg = 100.0;   //!< horizontal field of view of the desktop view (its default)
   double look_deg_per_px = 0.2;  //!< head turn per pixel of right-button drag
   bool left_handed = false;  //!< mouse and the main keys drive the left hand instead
   glm::dvec3 head_position{0.0, kDefaultEyeHeight, 0.0};

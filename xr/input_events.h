@@ -6,8 +6,11 @@
 /// window. These are vdfx's own types, not GLFW's.
 #pragma once
 
+#include <optional>
 #include <string_view>
 #include <variant>
+
+#include <glm/vec3.hpp>
 
 namespace vdfx::xr {
 
@@ -36,10 +39,22 @@ struct MouseButtonEvent {
   bool pressed = false;
 };
 
+/// A ray in the head's frame (VIEW space): origin (an eye, or the head) and unit direction.
+struct ViewRay {
+  glm::dvec3 origin{0.0};
+  glm::dvec3 direction{0.0, 0.0, -1.0};
+};
+
 /// Cursor position in window pixels, origin top-left, y down (as window systems report it).
 struct MouseMoveEvent {
   double x = 0.0;
   double y = 0.0;
+  /// The ray along which the mirror drew the scene point under the cursor (xr::mirror_ray), set
+  /// by the frame loop; the sim aims through it. Unset: the sim's own pinhole of the window.
+  std::optional<ViewRay> ray{};
+  /// False when the cursor is over no drawn view (letterbox bars, beyond a lens's valid radius):
+  /// the mouse button then presses nothing.
+  bool over_view = true;
 };
 
 /// The desktop view changed: window size in pixels and the horizontal field of view it shows.

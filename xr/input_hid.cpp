@@ -4,6 +4,7 @@
 /// Each device has an io::HidReader (worker thread, queue, reopen after unplug). poll(t) drains the
 /// queues, feeds the reports at time t to the HidInputMapper (the same one replay uses) and keeps
 /// them as raw lines for a recording. A lost device's controls go neutral and status() says so.
+#include <deque>
 #include <sstream>
 #include <utility>
 
@@ -70,35 +71,30 @@ class HidInputBackend final : public InputBackend {
     }
   }
 
-  InputState poll(std::int64_t t_ns) override {
+  InputState poll_state(std::int64_t t_ns) override {
     raw_.clear();
-    for (auto& src : sources_) {
-      for (io::HidReaderEvent& ev : src.reader->drain()) {
-        switch (ev.kind) {
-          case io::HidReaderEvent::Kind::Connected: {
-            const auto ids = parse_device_id(src.id);
-            const bool known = ids && known_device_kind(ids->first, ids->second) != HidDeviceKind::Unknown;
-            if (!known && !ev.bytes.empty()) {  // generic gamepads need their descriptor, also in replay
-              try {
-                mapper_.on_descriptor(src.id, ev.bytes);
-                raw_.push_back({t_ns, src.id, ev.bytes, true});
-              } catch (const HidDescriptorError& e) {
-                src.problem = src.id + ": " + e.what();
-              }
-            }
-            break;
-          }
-          case io::HidReaderEvent::Kind::Report:
-            mapper_.on_report(t_ns, src.id, ev.bytes);
-            raw_.push_back({t_ns, src.id, std::move(ev.bytes), false});
-            break;
-          case io::HidReaderEvent::Kind::Disconnected:
-            mapper_.on_disconnect(t_ns, src.id);
-            raw_.push_back({t_ns, src.id, {}, false});
-            break;
-        }
+    for (std::size_t i = 0; i < sources_.size(); ++i)
+      for (io::HidReaderEvent& ev : sources_[i].reader->drain()) pending_.push_back({i, std::move(ev)});
+    // No lost taps (as the sim): events apply in order until one would change a control an
+    // earlier event of this poll changed; it and the rest wait for the next poll.
+    ControlSet down = controls_down(mapper_.state(t_ns), last_down_);
+    std::uint32_t changed = 0;
+    while (!pending_.empty()) {
+      HidInputMapper before = mapper_;
+      const std::size_t raw_before = raw_.size();
+      apply(t_ns, sources_[pending_.front().source], pending_.front().event);
+      const ControlSet after = controls_down(mapper_.state(t_ns), down);
+      const std::uint32_t diff = after.bits ^ down.bits;
+      if (diff & changed) {
+        mapper_ = std::move(before);
+        raw_.resize(raw_before);
+        break;
       }
+      changed |= diff;
+      down = after;
+      pending_.pop_front();
     }
+    last_down_ = down;
     return mapper_.state(t_ns);
   }
 
@@ -114,6 +110,34 @@ class HidInputBackend final : public InputBackend {
   std::vector<io::RecordedHid> drain_raw_reports() override { return std::exchange(raw_, {}); }
 
  private:
+  struct Source;
+  /// Feeds one reader event to the mapper at the poll's time and keeps it as a raw line.
+  void apply(std::int64_t t_ns, Source& src, const io::HidReaderEvent& ev) {
+    switch (ev.kind) {
+      case io::HidReaderEvent::Kind::Connected: {
+        const auto ids = parse_device_id(src.id);
+        const bool known = ids && known_device_kind(ids->first, ids->second) != HidDeviceKind::Unknown;
+        if (!known && !ev.bytes.empty()) {  // generic gamepads need their descriptor, also in replay
+          try {
+            mapper_.on_descriptor(src.id, ev.bytes);
+            raw_.push_back({t_ns, src.id, ev.bytes, true});
+          } catch (const HidDescriptorError& e) {
+            src.problem = src.id + ": " + e.what();
+          }
+        }
+        break;
+      }
+      case io::HidReaderEvent::Kind::Report:
+        mapper_.on_report(t_ns, src.id, ev.bytes);
+        raw_.push_back({t_ns, src.id, ev.bytes, false});
+        break;
+      case io::HidReaderEvent::Kind::Disconnected:
+        mapper_.on_disconnect(t_ns, src.id);
+        raw_.push_back({t_ns, src.id, {}, false});
+        break;
+    }
+  }
+
   struct Source {
     std::string id;
     std::unique_ptr<io::HidReader> reader;
@@ -123,6 +147,12 @@ class HidInputBackend final : public InputBackend {
   HidInputMapper mapper_;
   std::vector<Source> sources_;
   std::vector<io::RecordedHid> raw_;
+  struct Pending {
+    std::size_t source;
+    io::HidReaderEvent event;
+  };
+  std::deque<Pending> pending_;  //!< drained but not applied yet (a second change of a control)
+  ControlSet last_down_;
 };
 
 }  // namespace

@@ -16,7 +16,7 @@ class RecordingInputBackend final : public InputBackend {
                         const io::RecordingHeader& header)
       : inner_(std::move(inner)), writer_(file, header) {}
 
-  InputState poll(std::int64_t t_ns) override {
+  InputState poll_state(std::int64_t t_ns) override {
     InputState s = inner_->poll(t_ns);
     pending_ = inner_->drain_raw_reports();
     // A repeated or earlier poll time would break the file's strictly increasing samples; the

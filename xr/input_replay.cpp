@@ -27,7 +27,7 @@ class ReplayInputBackend final : public InputBackend {
     check_hid_lines();
   }
 
-  InputState poll(std::int64_t t_ns) override {
+  InputState poll_state(std::int64_t t_ns) override {
     if (!hids_.empty()) return poll_hid(t_ns);
     auto it = std::upper_bound(samples_.begin(), samples_.end(), t_ns,
                                [](std::int64_t t, const io::RecordedSample& s) { return t < s.t_ns; });

@@ -4,6 +4,10 @@
 /// Right-button drag turns the head; the main hand's aim ray goes through the cursor (its origin
 /// is the eye, so the ray hits exactly what is under the cursor); keys press buttons and move
 /// sticks. State is a function of the events alone: poll(t) applies the queued events and stamps t.
+/// No lost taps: a poll applies the queued events in order until one would change a control
+/// that an earlier event of the same poll already changed; that one and the rest wait for the
+/// next poll. So a key tapped between two frames is down in exactly one poll (and a double tap
+/// in two), and a recording of the polled states replays it as a tap.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -23,7 +27,6 @@ constexpr double kMaxPitchDeg = 89.0;
 const glm::dvec3 kOffHandOffset{0.2, -0.3, -0.3};  // head frame, mirrored in x for the left hand
 
 enum class Role { Main, Off, Left };  // Left: the control exists on the left hand only (menu)
-enum class Control { Trigger, Squeeze, Primary, Secondary, Menu, StickClick, StickUp, StickDown, StickLeft, StickRight };
 
 struct KeyBinding {
   Key key;
@@ -32,7 +35,7 @@ struct KeyBinding {
 };
 
 // The binding table: the sim applies it and sim_bindings_text prints it.
-constexpr std::array<KeyBinding, 20> kKeyBindings{{
+constexpr std::array<KeyBinding, 22> kKeyBindings{{
     {Key::Space, Role::Main, Control::Trigger},
     {Key::G, Role::Main, Control::Squeeze},
     {Key::J, Role::Main, Control::Primary},
@@ -44,6 +47,8 @@ constexpr std::array<KeyBinding, 20> kKeyBindings{{
     {Key::Right, Role::Main, Control::StickRight},
     {Key::E, Role::Off, Control::Trigger},
     {Key::Q, Role::Off, Control::Squeeze},
+    {Key::LeftShift, Role::Off, Control::Squeeze},  // held while dragging: fine adjustment
+    {Key::RightShift, Role::Off, Control::Squeeze},
     {Key::X, Role::Off, Control::Primary},
     {Key::Y, Role::Off, Control::Secondary},
     {Key::C, Role::Off, Control::StickClick},
@@ -88,11 +93,26 @@ class SimInputBackend final : public InputBackend {
 
   void push_event(const DesktopEvent& event) override { queue_.push_back(event); }
 
-  InputState poll(std::int64_t t_ns) override {
+  InputState poll_state(std::int64_t t_ns) override {
+    ControlSet down = controls_down(state(t_ns), last_down_);
+    std::uint32_t changed = 0;  // controls an event of this poll changed
     while (!queue_.empty()) {
+      // Only key and left-button events change controls, and only through these two.
+      const std::set<Key> keys = keys_;
+      const bool left = left_button_;
       std::visit([this](const auto& e) { apply(e); }, queue_.front());
+      const ControlSet after = controls_down(state(t_ns), down);
+      const std::uint32_t diff = after.bits ^ down.bits;
+      if (diff & changed) {  // a second change of one control: it waits for the next poll
+        keys_ = keys;
+        left_button_ = left;
+        break;
+      }
+      changed |= diff;
+      down = after;
       queue_.pop_front();
     }
+    last_down_ = down;
     return state(t_ns);
   }
 
@@ -102,7 +122,8 @@ class SimInputBackend final : public InputBackend {
     else keys_.erase(e.key);
   }
   void apply(const MouseButtonEvent& e) {
-    if (e.button == MouseButton::Left) left_button_ = e.pressed;
+    // A press over no drawn view (a letterbox bar) presses nothing; a release always releases.
+    if (e.button == MouseButton::Left) left_button_ = e.pressed && over_view_;
     if (e.button == MouseButton::Right) dragging_ = e.pressed;
   }
   void apply(const MouseMoveEvent& e) {
@@ -115,6 +136,9 @@ class SimInputBackend final : public InputBackend {
     }
     mouse_x_ = e.x;
     mouse_y_ = e.y;
+    over_view_ = e.over_view;
+    if (e.ray) ray_ = *e.ray;
+    else ray_.reset();
   }
   void apply(const ViewGeometryEvent& e) {
     if (e.width_px > 0 && e.height_px > 0) {
@@ -122,6 +146,7 @@ class SimInputBackend final : public InputBackend {
       config_.window_height = e.height_px;
     }
     if (e.hfov_deg > 0.0 && e.hfov_deg < 180.0) config_.hfov_deg = e.hfov_deg;
+    ray_.reset();  // the mirror changed: the next move brings the ray through the new geometry
   }
 
   bool active(Hand hand, Control c) const {
@@ -131,15 +156,19 @@ class SimInputBackend final : public InputBackend {
     return false;
   }
 
-  // The ray through the cursor, in the view frame: a pinhole with the configured horizontal FOV,
-  // the vertical one following from the window's aspect ratio.
-  glm::dquat cursor_rotation() const {
+  // The ray through the cursor, in the view frame: the mirror's own (MouseMoveEvent::ray), else
+  // a pinhole with the configured horizontal FOV, the vertical one from the window's aspect.
+  ViewRay cursor_ray() const {
+    if (ray_) return *ray_;
     const double w = std::max(1, config_.window_width), h = std::max(1, config_.window_height);
     const double tan_h = std::tan(0.5 * config_.hfov_deg * kDegToRad);
     const double tan_v = tan_h * h / w;
-    const glm::dvec3 dir = glm::normalize(glm::dvec3((2.0 * mouse_x_ / w - 1.0) * tan_h,
-                                                     (1.0 - 2.0 * mouse_y_ / h) * tan_v, -1.0));
-    return look_rotation(std::atan2(dir.x, -dir.z) * kRadToDeg, std::asin(dir.y) * kRadToDeg);
+    return {glm::dvec3(0.0), glm::normalize(glm::dvec3((2.0 * mouse_x_ / w - 1.0) * tan_h,
+                                                       (1.0 - 2.0 * mouse_y_ / h) * tan_v, -1.0))};
+  }
+  static glm::dquat rotation_towards(const glm::dvec3& dir) {
+    return look_rotation(std::atan2(dir.x, -dir.z) * kRadToDeg,
+                         std::asin(std::clamp(dir.y, -1.0, 1.0)) * kRadToDeg);
   }
 
   void fill_hand(HandState& hs, Hand hand) const {
@@ -167,8 +196,9 @@ class SimInputBackend final : public InputBackend {
     fill_hand(s.left, Hand::Left);
     fill_hand(s.right, Hand::Right);
     HandState& m = s.hand(main);
-    m.aim.orientation = glm::normalize(s.head.orientation * cursor_rotation());
-    m.aim.position = s.head.position;
+    const ViewRay ray = cursor_ray();
+    m.aim.orientation = glm::normalize(s.head.orientation * rotation_towards(ray.direction));
+    m.aim.position = s.head.position + s.head.orientation * ray.origin;
     if (left_button_) m.trigger = 1.0;
     HandState& o = s.hand(off);
     glm::dvec3 offset = kOffHandOffset;
@@ -182,9 +212,12 @@ class SimInputBackend final : public InputBackend {
 
   SimConfig config_;
   std::deque<DesktopEvent> queue_;
+  ControlSet last_down_;
   std::set<Key> keys_;
   bool left_button_ = false;
   bool dragging_ = false;
+  bool over_view_ = true;
+  std::optional<ViewRay> ray_;
   double mouse_x_ = 0.0, mouse_y_ = 0.0;
   double azimuth_deg_ = 0.0, altitude_deg_ = 0.0;
 };

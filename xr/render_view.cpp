@@ -56,4 +56,25 @@ Eigen::Vector3d RenderView::world_ray(double px, double py, int width, int heigh
   return camera(width, height).ray(px, py);
 }
 
+Eigen::Matrix4d RenderView::projection(double n, double f) const {
+  Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
+  const double w = tan_right - tan_left, h = tan_up - tan_down;
+  p(0, 0) = 2.0 / w;
+  p(0, 2) = (tan_right + tan_left) / w;
+  p(1, 1) = 2.0 / h;
+  p(1, 2) = (tan_up + tan_down) / h;
+  const bool infinite = !(f > n);
+  p(2, 2) = infinite ? -1.0 : -(f + n) / (f - n);
+  p(2, 3) = infinite ? -2.0 * n : -2.0 * f * n / (f - n);
+  p(3, 2) = -1.0;
+  return p;
+}
+
+Eigen::Matrix4d RenderView::world_to_eye() const {
+  Eigen::Matrix4d v = Eigen::Matrix4d::Identity();
+  v.topLeftCorner<3, 3>() = orientation.transpose();
+  v.topRightCorner<3, 1>() = -orientation.transpose() * position;
+  return v;
+}
+
 }  // namespace vdfx::xr

@@ -48,6 +48,13 @@ struct RenderView {
   Eigen::Vector2d pixel_at(const Eigen::Vector2d& tangent, int width, int height) const;
   /// World (LOCAL) unit ray of a pixel position.
   Eigen::Vector3d world_ray(double px, double py, int width, int height) const;
+
+  /// OpenXR-style projection (column-major, GL clip space) of this view's tangent rectangle:
+  /// x_ndc = (2 x/(-z) - (tR + tL)) / (tR - tL), likewise y; depth near -> -1, far -> +1, and
+  /// far_z <= near_z gives an infinite far plane.
+  Eigen::Matrix4d projection(double near_z, double far_z) const;
+  /// World (LOCAL) -> eye matrix: the inverse of (orientation, position).
+  Eigen::Matrix4d world_to_eye() const;
 };
 
 /// Rotation of the contract's view camera: yaw by azimuth, pitch by altitude, roll about forward

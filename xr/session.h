@@ -47,7 +47,9 @@ struct QuadLayer {
   ReferenceSpace space = ReferenceSpace::Local;
   Pose pose;                                     //!< centre of the quad, +z towards the viewer
   Eigen::Vector2d size_m = {1.0, 0.5};           //!< width, height in metres
-  unsigned texture = 0;                          //!< GL texture name (0: none yet)
+  /// GL texture name (0: none yet): premultiplied RGBA, its first row (as uploaded to GL) at
+  /// the quad's top, as OpenXR's quad layers.
+  unsigned texture = 0;
 };
 
 struct SessionStateEvent {

@@ -18,12 +18,21 @@
 /// LodMode::Derivatives uses hardware dFdx/dFdy of u and of u shifted by half a turn, taking the
 /// smaller, so the seam column does not see a derivative of ~1 (which would pick the smallest
 /// mip and draw a line). LodMode::Base samples level 0 only (aliases at the poles; for tests).
+///
+/// Decoded video frames arrive as io::Picture in the stream's own Y'CbCr layout: set_frame
+/// uploads the planes as they are (mipmapped one-channel R8/R16 textures, row padding included,
+/// no CPU conversion) and this layer's shader converts every sample it takes: luma and chroma
+/// are filtered (trilinear, the chroma coordinate shifted by the stream's siting, as io/ycbcr.h
+/// defines it), then the stream's matrix and range map the code values to R'G'B' (the same
+/// affine map as the CPU reference), clamped to [0, 1]. The conversion is affine, so filtering
+/// before it equals filtering after it except where the clamp acts (out-of-gamut codes).
 #pragma once
 
 #include <memory>
 
 #include <opencv2/core.hpp>
 
+#include "io/picture.h"
 #include "xr/gl_texture.h"
 #include "xr/render_view.h"
 
@@ -38,8 +47,15 @@ class VideoLayerGl {
   /// Uploads an equirect frame (CV_8UC3/4 or CV_32FC3/4, BGR) and rebuilds the mip chain;
   /// reallocates when the size or depth changes. 8-bit frames are stored RGBA8, float RGBA32F.
   void set_frame(const cv::Mat& equirect);
-  /// Draws the layer into `target` (whole viewport) for one eye.
+  /// Uploads a decoded picture: Y'CbCr planes as they are (converted per sample by render(), see
+  /// above), or packed RGB (CV_8UC3 / CV_32FC3, RGB order; channels swapped once on the CPU).
+  void set_frame(const io::Picture& picture);
+  /// Draws the layer into `target` (whole viewport) for one eye; before the first set_frame, a
+  /// uniform dark grey (kNoFrameGrey).
+  static constexpr float kNoFrameGrey = 0.08f;
+  bool has_frame() const;
   void render(const GlTarget& target, const RenderView& view, LodMode lod = LodMode::Analytic);
+  /// The RGB texture (frames given as cv::Mat or RGB pictures; empty for Y'CbCr pictures).
   const GlTexture& texture() const;
 
  private:

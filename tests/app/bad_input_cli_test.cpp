@@ -7,8 +7,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <tuple>
 
 #include "command_test_util.h"
+#include "tests/media_clips.h"
 
 namespace vdfx::app::testing {
 namespace {
@@ -203,6 +206,49 @@ TEST(BadInput, MessagesAreShortSayWhatAndComeAlone) {
   EXPECT_EQ(broken.output.rfind("vdfx render: " + (dir / "broken.mp4").string() + ": ", 0), 0u)
       << broken.output;
   EXPECT_EQ(std::count(broken.output.begin(), broken.output.end(), '\n'), 1) << broken.output;
+}
+
+TEST(BadInput, ACutOrDamagedVideoIsAnInputErrorNotAHang) {
+  const fs::path dir = setup();
+  test_media::ClipSpec spec;
+  spec.frames = 48;
+  spec.gop = 12;
+  const fs::path mp4 = test_media::write_clip(dir / "full.mp4", spec);  // index at the end
+  const fs::path mkv = test_media::write_clip(dir / "full.mkv", spec);
+  const auto cut = [&](const fs::path& full, const std::string& name, double keep) {
+    fs::copy_file(full, dir / name);
+    fs::resize_file(dir / name, static_cast<std::uintmax_t>(static_cast<double>(fs::file_size(full)) * keep));
+    return dir / name;
+  };
+  const fs::path mp4_cut = cut(mp4, "cut.mp4", 0.5);
+  const fs::path mkv_cut = cut(mkv, "cut.mkv", 0.5);  // the frames before the cut are there
+  // Noise over the middle half of the file (headers and the first frames intact).
+  const fs::path noisy = dir / "noisy.mkv";
+  fs::copy_file(mkv, noisy);
+  {
+    std::fstream f(noisy, std::ios::in | std::ios::out | std::ios::binary);
+    const auto size = static_cast<std::streamoff>(fs::file_size(noisy));
+    f.seekp(size / 4);
+    for (std::streamoff i = size / 4; i < 3 * size / 4; ++i) f.put(static_cast<char>((i * 7919) >> 5));
+  }
+  const std::string s = (dir / "s.vdfx.json").string();
+  const auto render = [&](const fs::path& video, int frame) {
+    return run("render " + video.string() + " --sidecar " + s + " --view 0,0 --fov 90 --size 16x8 --frame " +
+               std::to_string(frame) + " --out " + (dir / "o.png").string());
+  };
+  // Each: the contract's exit 1 (run() has a 60 s limit: a hang fails as 124), one line that
+  // starts with the command and the file.
+  for (const auto& [video, frame, says] :
+       {std::tuple{mp4_cut, 0, ""}, std::tuple{mkv_cut, 47, "frame 47 does not exist"},
+        std::tuple{noisy, 47, ""}}) {
+    const CommandResult r = render(video, frame);
+    EXPECT_EQ(r.exit_code, 1) << video << "\n" << r.output;
+    EXPECT_EQ(r.output.rfind("vdfx render: " + video.string() + ": ", 0), 0u) << r.output;
+    EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
+  // The intact part of the cut file still renders.
+  EXPECT_EQ(render(mkv_cut, 0).exit_code, 0);
 }
 
 TEST(BadInput, ACorruptAutosaveIsNotReportedAsRecovered) {

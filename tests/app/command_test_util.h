@@ -80,6 +80,22 @@ inline std::string exposure_sidecar(const std::string& extra_effects = "") {
          extra_effects + "]}";
 }
 
+/// Largest absolute difference over all pixels and channels of two same-size images.
+inline double max_abs_diff(const cv::Mat& a, const cv::Mat& b) {
+  cv::Mat d;
+  cv::absdiff(a, b, d);
+  double mx = 0;
+  cv::minMaxLoc(d.reshape(1), nullptr, &mx);
+  return mx;
+}
+
+/// Mean absolute difference over all pixels and channels.
+inline double mean_abs_diff(const cv::Mat& a, const cv::Mat& b) {
+  cv::Mat d;
+  cv::absdiff(a, b, d);
+  return cv::mean(d.reshape(1))[0];
+}
+
 /// `vdfx render DIR/pano.png --sidecar DIR/s.vdfx.json ARGS --out DIR/OUT`, expected to succeed;
 /// returns the written image (BGR).
 inline cv::Mat render(const std::filesystem::path& dir, const std::string& args,

@@ -21,10 +21,12 @@ struct FakeTextures : PanelTextures {
     bool whole;
     std::vector<cv::Rect> regions;
   };
-  std::vector<Call> calls;
+  std::vector<Call> calls;        //!< panel uploads (pointer marks are uploaded once, apart)
+  std::vector<std::size_t> marks;  //!< slots of the pointer marks' textures
   std::map<std::size_t, cv::Mat> images;
   unsigned upload(std::size_t slot, const cv::Mat& image, const std::vector<cv::Rect>& regions) override {
-    calls.push_back({slot, regions.empty(), regions});
+    if (slot >= 1000) marks.push_back(slot);
+    else calls.push_back({slot, regions.empty(), regions});
     if (regions.empty()) {
       images[slot] = image.clone();
     } else {
@@ -45,24 +47,23 @@ struct Fixture {
   FakeTextures* fake = new FakeTextures;
   EditorClient client{editor, std::unique_ptr<PanelTextures>(fake)};
   FrameInfo info;
-  void step(const xr::InputState& in) { client.update(in, in.t_ns, info); }
+  xr::ActionSync sync;  //!< the edges InputBackend::poll would add
+  void step(const xr::InputState& in) { client.update(sync.sync(in), in.t_ns, info); }
 };
 
-// What the GL texture must show: the panel, straight alpha, bottom row first.
-cv::Mat expected_texture(ui::Panel& p) {
-  cv::Mat out(p.height_px(), p.width_px(), CV_8UC4);
-  unpremultiply_flipped(p.texture(), {0, 0, p.width_px(), p.height_px()}, out);
-  return out;
-}
+// What the GL texture must show: the panel's own pixels (premultiplied, first row at the top).
+cv::Mat expected_texture(ui::Panel& p) { return p.texture(); }
 
 TEST(EditClient, QuadsAtPanelPosesUploadOnlyWhenPanelsRerender) {
   Fixture f;
   f.step(test::looking(10.0, 5.0, 0));
   const auto q1 = f.client.quads();
   const auto panels = f.editor.panels();
-  ASSERT_EQ(q1.size(), panels.size());
+  // The panels, then the pointer's marks (their textures made once).
+  ASSERT_EQ(q1.size(), panels.size() + f.client.pointer_quads().size());
   ASSERT_EQ(f.fake->calls.size(), panels.size());
-  for (std::size_t i = 0; i < q1.size(); ++i) {
+  EXPECT_EQ(f.fake->marks.size(), 3u);
+  for (std::size_t i = 0; i < panels.size(); ++i) {
     EXPECT_TRUE(f.fake->calls[i].whole);
     EXPECT_EQ(q1[i].space, xr::ReferenceSpace::Local);
     EXPECT_EQ(q1[i].pose, panels[i]->pose());
@@ -181,27 +182,6 @@ TEST(EditClient, PlayheadReachesTheLoop) {
   f.step(test::looking(0.0, 0.0, 1));
   EXPECT_EQ(f.info.video_frame, 42);
   EXPECT_NE(f.client.status_line().find("42"), std::string::npos);
-}
-
-struct UnpremultiplyCase {
-  cv::Vec4b premultiplied, straight;
-};
-
-TEST(EditClient, UnpremultiplyFlipped) {
-  const UnpremultiplyCase cases[] = {
-      {{255, 128, 0, 255}, {255, 128, 0, 255}},  // opaque: unchanged
-      {{0, 0, 0, 0}, {0, 0, 0, 0}},              // transparent
-      {{64, 32, 0, 128}, {128, 64, 0, 128}},     // half: colour doubled (rounded)
-      {{10, 10, 10, 10}, {255, 255, 255, 10}},   // faint white
-  };
-  for (const auto& c : cases) {
-    cv::Mat src(2, 1, CV_8UC4, cv::Scalar(1, 2, 3, 255));
-    src.at<cv::Vec4b>(0, 0) = c.premultiplied;  // top row
-    cv::Mat out(2, 1, CV_8UC4, cv::Scalar(0, 0, 0, 0));
-    unpremultiply_flipped(src, {0, 0, 1, 1}, out);
-    EXPECT_EQ(out.at<cv::Vec4b>(1, 0), c.straight);            // lands in the bottom row
-    EXPECT_EQ(out.at<cv::Vec4b>(0, 0), cv::Vec4b(0, 0, 0, 0));  // outside the rectangle: untouched
-  }
 }
 
 }  // namespace

@@ -1,17 +1,16 @@
 /// @file
 /// @brief `vdfx edit` end to end under Xvfb: a recorded editing session replayed in the window
-/// leaves the same keyframes as `vdfx replay`, and the mirror shows the panels over the effects
-/// (golden screenshot, single-eye mirror at a small size).
+/// leaves the same keyframes as `vdfx replay`, and the window shows the panels over the effects
+/// (golden screenshot of the desktop view at the default window size, compared at half size).
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <sstream>
 
 #include "command_test_util.h"
 #include "io/sidecar.h"
+#include "tests/golden_bgr.h"
 
 namespace vdfx::app {
 namespace {
@@ -22,47 +21,8 @@ using testing::run_vdfx;
 const std::string kSrc = VDFX_SOURCE_DIR;
 const std::string kSunrise = "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
 const std::string kRecording = kSrc + "/recordings/editor_place_exposure.vdrec.jsonl";
-// Small and fast: the left eye at 1/4 of 1440x1600 (below vdfx edit's default 0.5: at this
-// window size the two look the same, and 0.25 renders 4x fewer pixels), shown as it is (no lens).
-const std::string kMirror = " --hidden --scale 0.25 --window 360x400 --mirror eye";
-
-// Golden comparison in the style of tests/ui/golden.h (BGR here): max and mean tolerances on
-// 8-bit values, actual and x8 diff written on failure, VDFX_BLESS=1 rewrites the golden.
-std::string compare_with_golden(const cv::Mat& actual, const std::string& name, double max_tol, double mean_tol) {
-  const std::string golden = kSrc + "/tests/app/golden/" + name + ".png";
-  const fs::path out_dir = fs::path(VDFX_TEST_OUTPUT_DIR) / "app" / "golden";
-  fs::create_directories(out_dir);
-  const std::string actual_path = (out_dir / (name + ".actual.png")).string();
-  const char* bless = std::getenv("VDFX_BLESS");
-  if (bless && std::string(bless) == "1") {
-    fs::create_directories(fs::path(golden).parent_path());
-    cv::imwrite(golden, actual);
-    return {};
-  }
-  const cv::Mat g = cv::imread(golden, cv::IMREAD_COLOR);
-  if (g.empty() || g.size() != actual.size()) {
-    cv::imwrite(actual_path, actual);
-    return "no golden of the right size at " + golden + " (actual " + actual_path +
-           "; VDFX_BLESS=1 writes it)";
-  }
-  cv::Mat diff;
-  cv::absdiff(g, actual, diff);
-  double max_diff = 0.0;
-  cv::minMaxLoc(diff.reshape(1), nullptr, &max_diff);
-  const cv::Scalar m = cv::mean(diff);
-  const double mean_diff = (m[0] + m[1] + m[2]) / 3.0;
-  if (max_diff <= max_tol && mean_diff <= mean_tol) return {};
-  cv::imwrite(actual_path, actual);
-  cv::Mat amplified;
-  diff.convertTo(amplified, CV_8UC3, 8.0);
-  const std::string diff_path = (out_dir / (name + ".diff.png")).string();
-  cv::imwrite(diff_path, amplified);
-  std::ostringstream s;
-  s << golden << ": max difference " << max_diff << " (tolerance " << max_tol << "), mean " << mean_diff
-    << " (tolerance " << mean_tol << "); actual " << actual_path << ", diff x8 " << diff_path
-    << "; VDFX_BLESS=1 rewrites the golden if the change is meant";
-  return s.str();
-}
+// The desktop view a sim session opens in (the recording's header: 1280 x 720, 100 degrees).
+const std::string kMirror = " --hidden --window 1280x720";
 
 TEST(EditCmdGl, ReplayedSessionWritesTheReplaysKeyframesAndShowsPanels) {
   const fs::path dir = testing::test_dir();
@@ -104,7 +64,9 @@ TEST(EditCmdGl, ReplayedSessionWritesTheReplaysKeyframesAndShowsPanels) {
   cv::inRange(a, cv::Scalar(110, 110, 110), cv::Scalar(255, 255, 255), textish);
   EXPECT_GE(cv::countNonZero(textish & (grey > 24)), 20) << "light text pixels on the panels";
 
-  const std::string g = compare_with_golden(a, "edit_mirror_eye", 48.0, 1.5);
+  cv::Mat half;
+  cv::resize(a, half, {a.cols / 2, a.rows / 2}, 0, 0, cv::INTER_AREA);
+  const std::string g = test_images::compare_with_golden(half, "app", "edit_desktop_view", 48.0, 1.5);
   EXPECT_TRUE(g.empty()) << g;
 }
 

@@ -36,8 +36,25 @@ TEST(EditorAutosave, EveryChangeWritesSidecarAndRecoveryCopyCleanExitRemovesIt) 
   EXPECT_TRUE(io::read_sidecar(path).effects.empty());
   EXPECT_NE(ed.autosave_status().find("saved clip.vdfx.json (2 changes)"), std::string::npos);
   EXPECT_TRUE(ed.finish());
+  EXPECT_NE(ed.autosave_status().find("(2 changes)"), std::string::npos) << "finishing is no change";
   EXPECT_FALSE(std::filesystem::exists(recovery_path(path)));
   EXPECT_FALSE(find_recovery(path).has_value());
+}
+
+TEST(EditorAutosave, ASessionWithoutEditsReportsNoChanges) {
+  const auto dir = test::temp_dir("autosave_none");
+  const auto path = dir / "clip.vdfx.json";
+  {
+    Editor ed(test::empty_sidecar(), DocumentOptions{{.async = false}}, with_autosave(path));
+    EXPECT_TRUE(ed.finish());
+    EXPECT_EQ(ed.autosave_status(), "clip.vdfx.json: new sidecar written (no keyframes yet)");
+    EXPECT_EQ(io::read_sidecar(path), ed.document().sidecar());
+  }
+  const auto mtime = std::filesystem::last_write_time(path);
+  Editor again(io::read_sidecar(path), DocumentOptions{{.async = false}}, with_autosave(path));
+  EXPECT_TRUE(again.finish());
+  EXPECT_EQ(again.autosave_status(), "clip.vdfx.json: no changes");
+  EXPECT_EQ(std::filesystem::last_write_time(path), mtime) << "an unchanged file is not rewritten";
 }
 
 TEST(EditorAutosave, CrashLeavesARecoveryCopyThatIsOffered) {

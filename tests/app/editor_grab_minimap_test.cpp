@@ -44,15 +44,16 @@ class GrabMinimap : public ::testing::TestWithParam<Case> {};
 
 TEST_P(GrabMinimap, FieldFollowsTheHeldKeyframe) {
   EditorOptions eo;
-  eo.async_visualizations = GetParam().async;
+  eo.visuals.async = GetParam().async;
   Editor ed(forty_keyframes(), DocumentOptions{{.async = false}}, eo);
   ed.seek(30);
   std::int64_t t = 0;
+  xr::ActionSync sync;
   auto frame = [&](double az, double alt, double squeeze) {
     t += 33'333'333;
     auto in = test::looking(az, alt, t);
     in.right.squeeze = squeeze;
-    ed.update(in, t);
+    ed.update(sync.sync(in), t);
     ASSERT_TRUE(ed.wait_for_visualizations(std::chrono::seconds(30)));
   };
   frame(0.0, 0.0, 0.0);

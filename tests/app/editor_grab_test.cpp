@@ -35,12 +35,13 @@ class Grab : public ::testing::Test {
   }
   void frame(double az, double alt, double squeeze, bool stick_click = false) {
     t_ += kFrame;
-    ed_.update(with(looking(az, alt, t_), squeeze, stick_click), t_);
+    ed_.update(sync_.sync(with(looking(az, alt, t_), squeeze, stick_click)), t_);
   }
   const effects::Keyframe& key(std::size_t i) { return ed_.document().keyframes(EffectType::Exposure).at(i); }
   std::size_t steps() { return ed_.document().undo_stack().undo_size() - steps_before_; }
 
   Editor ed_;
+  xr::ActionSync sync_;  //!< the edges InputBackend::poll would add
   std::int64_t t_ = 0;
   std::size_t steps_before_ = 0;
 };
@@ -198,7 +199,7 @@ TEST_F(Grab, TriggerOnNothingDeselectsAndPreviewsANewKeyframe) {
   ASSERT_TRUE(ed_.selected_keyframe());
   auto in = looking(0.0, 0.0, t_ += kFrame);
   in.right.trigger = 1.0;
-  ed_.update(in, t_);
+  ed_.update(sync_.sync(in), t_);
   EXPECT_FALSE(ed_.selected_keyframe());
   EXPECT_TRUE(ed_.previewing());
 }

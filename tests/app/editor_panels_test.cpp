@@ -98,10 +98,10 @@ TEST_F(PanelWiring, TimelineScrubPlayAndToggles) {
   EXPECT_GT(ed_.frame(), 45);
   click(at(kTimelinePanelId, "play"));
   EXPECT_FALSE(ed_.playing());
-  click(at(kTimelinePanelId, "show_minimap"));
+  click(at(kViewsPanelId, "show_minimap"));
   EXPECT_FALSE(ed_.ui().show_minimap->on());
   EXPECT_EQ(ed_.ui().minimap->rect().w, 0.0);
-  click(at(kTimelinePanelId, "lock"));
+  click(at(kViewsPanelId, "lock"));
   EXPECT_EQ(ed_.ui().timeline_place.anchor, Anchor::World);
 }
 

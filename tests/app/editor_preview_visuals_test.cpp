@@ -64,17 +64,18 @@ class PreviewVisuals : public ::testing::TestWithParam<Case> {
  protected:
   void SetUp() override {
     EditorOptions eo;
-    eo.async_visualizations = GetParam().async;
+    eo.visuals.async = GetParam().async;
     ed_ = std::make_unique<Editor>(thirty_keyframes(), DocumentOptions{{.async = false}}, eo);
     ed_->seek(kFrame);
   }
+  xr::ActionSync sync_;  //!< the edges InputBackend::poll would add
   /// One frame looking at (az, alt) with the right trigger and squeeze as given.
   void frame(double az, double alt, double trigger, double squeeze) {
     t_ += 33'333'333;
     auto in = test::looking(az, alt, t_);
     in.right.trigger = trigger;
     in.right.squeeze = squeeze;
-    ed_->update(in, t_);
+    ed_->update(sync_.sync(in), t_);
     ASSERT_TRUE(ed_->wait_for_visualizations(std::chrono::seconds(30)));
   }
   /// The editor shows exactly what a fresh solve of the document's keyframes gives.

@@ -4,16 +4,26 @@
 
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <memory>
 
 #include "app/editor_panels.h"
 #include "effects/effect_types.h"
 #include "ui/colour_wheel.h"
 #include "xr/input_backend.h"
+#include "xr/mirror.h"
 
 namespace vdfx::app::test {
 
 namespace {
+
+xr::SimConfig script_sim() {
+  xr::SimConfig c;
+  c.window_width = kScriptViewport.width;
+  c.window_height = kScriptViewport.height;
+  c.hfov_deg = kScriptViewport.hfov_deg;
+  return c;
+}
 
 std::shared_ptr<const ui::FontSet> fonts() {
   static const auto f = std::make_shared<const ui::FontSet>(ui::FontSet::load());
@@ -25,24 +35,22 @@ EditorPanels& panels_for(int frames) {
   static std::map<int, std::unique_ptr<EditorPanels>> cache;
   auto& p = cache[frames];
   if (!p) {
-    p = std::make_unique<EditorPanels>(fonts(), frames, PanelLayout::Desktop);
-    p->place(xr::create_sim_backend({})->poll(0));
+    p = std::make_unique<EditorPanels>(fonts(), frames, PanelLayout::Desktop, kScriptViewport);
+    p->place(xr::create_sim_backend(script_sim())->poll(0));
   }
   return *p;
 }
 
+// The window position where the desktop view draws a world point (the head at rest).
 glm::dvec2 project(const glm::dvec3& world) {
-  const xr::SimConfig cfg;
-  const xr::InputState in = xr::create_sim_backend(cfg)->poll(0);
-  const glm::dvec3 l = in.head.inverse().transform(world);
-  const double t = std::tan(cfg.hfov_deg * 0.5 * 3.14159265358979323846 / 180.0);
-  const double w = cfg.window_width, h = cfg.window_height;
-  return {0.5 * w * (1.0 + l.x / -l.z / t), 0.5 * h * (1.0 - l.y / -l.z / (t * h / w))};
+  const xr::InputState in = xr::create_sim_backend(script_sim())->poll(0);
+  const auto g = xr::MirrorGeometry::from_profile(xr::load_hmd_profile("generic90"), xr::MirrorMode::Desktop, 1, 1,
+                                                  kScriptViewport.width, kScriptViewport.height,
+                                                  kScriptViewport.hfov_deg);
+  return *xr::mirror_pixel_of(g, in.head.inverse().transform(world));
 }
 
-ui::Panel& panel_of(EditorPanels& p, const std::string& id) {
-  return id == kEffectPanelId ? *p.effect : *p.timeline;
-}
+ui::Panel& panel_of(EditorPanels& p, const std::string& id) { return *p.panel(id); }
 
 // Pixel of a value on the effect panel's widgets.
 glm::dvec2 slider_cursor(const std::string& id, double v) {
@@ -89,7 +97,10 @@ glm::dvec2 strip_cursor(int frame, int frames) {
 class Session {
  public:
   Session(const std::filesystem::path& file, const std::string& note, std::optional<std::string> video)
-      : rec_(xr::create_recording_backend(xr::create_sim_backend({}), file, {"sim", std::move(video), note})) {}
+      : rec_(xr::create_recording_backend(
+            xr::create_sim_backend(script_sim()), file,
+            {"sim", std::move(video), note,
+             io::RecordedDesktopView{kScriptViewport.width, kScriptViewport.height, kScriptViewport.hfov_deg}})) {}
   void frames(int n) {
     for (int i = 0; i < n; ++i) rec_->poll(f_++ * kFrameNs);
   }
@@ -223,10 +234,10 @@ void editor_all_widgets(const std::filesystem::path& file) {
   s.frames(15);
   s.click(widget_cursor(kTimelinePanelId, "play", n));
   s.click(widget_cursor(kTimelinePanelId, "prev_key", n));
-  s.click(widget_cursor(kTimelinePanelId, "show_minimap", n));
-  s.click(widget_cursor(kTimelinePanelId, "show_minimap", n));
-  s.click(widget_cursor(kTimelinePanelId, "lock", n));
-  s.click(widget_cursor(kTimelinePanelId, "lock", n));
+  s.click(widget_cursor(kViewsPanelId, "show_minimap", n));
+  s.click(widget_cursor(kViewsPanelId, "show_minimap", n));
+  s.click(widget_cursor(kViewsPanelId, "lock", n));
+  s.click(widget_cursor(kViewsPanelId, "lock", n));
   s.frames(5);
 }
 
@@ -292,7 +303,9 @@ glm::dvec2 cursor_for(const std::string& panel, glm::dvec2 pixel, int frames) {
 }
 
 glm::dvec2 widget_cursor(const std::string& panel, const std::string& widget, int frames) {
-  const ui::Rect r = panel_of(panels_for(frames), panel).find(widget)->rect();
+  const ui::Widget* w = panel_of(panels_for(frames), panel).find(widget);
+  if (!w) throw std::invalid_argument("widget_cursor: no widget " + widget + " on panel " + panel);
+  const ui::Rect r = w->rect();
   return cursor_for(panel, {r.x + r.w * 0.5, r.y + r.h * 0.5}, frames);
 }
 

@@ -14,6 +14,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "app/editor_panels.h"
+
 namespace vdfx::app::test {
 
 inline constexpr std::int64_t kFrameNs = 33'333'333;
@@ -26,8 +28,12 @@ struct EditorScript {
 };
 const std::vector<EditorScript>& editor_scripts();
 
-/// Window position (default SimConfig: 1280 x 720, 90 deg) of a pixel of a panel in the desktop
-/// layout (head-locked, so independent of where the head looks), for a video of `frames` frames.
+/// The desktop view the sessions are recorded in (the window's default size and FOV); their
+/// recording headers say so, and replays lay the panels out for it.
+inline constexpr DesktopViewport kScriptViewport{1280, 720, 100.0};
+
+/// Window position (kScriptViewport) of a pixel of a panel in the desktop layout (head-locked,
+/// so independent of where the head looks), for a video of `frames` frames.
 glm::dvec2 cursor_for(const std::string& panel, glm::dvec2 pixel, int frames = 1);
 /// Centre of a widget's rectangle, as a window position.
 glm::dvec2 widget_cursor(const std::string& panel, const std::string& widget, int frames = 1);

@@ -39,9 +39,9 @@ class SelectByPointing : public ::testing::Test {
   void step(int n = 1) {
     for (int i = 0; i < n; ++i, t_ += test::kFrameNs) ed_.update(sim_->poll(t_), t_);
   }
-  /// Trigger (left mouse) pressed and released at a pixel of the timeline panel.
-  void click_timeline(glm::dvec2 pixel) {
-    const glm::dvec2 c = test::cursor_for(kTimelinePanelId, pixel, test::kClipFrames);
+  /// Trigger (left mouse) pressed and released at a pixel of the views panel (minimap and plot).
+  void click_views(glm::dvec2 pixel) {
+    const glm::dvec2 c = test::cursor_for(kViewsPanelId, pixel, test::kClipFrames);
     sim_->push_event(xr::MouseMoveEvent{c.x, c.y});
     step();
     sim_->push_event(xr::MouseButtonEvent{xr::MouseButton::Left, true});
@@ -58,7 +58,7 @@ class SelectByPointing : public ::testing::Test {
 
 TEST_F(SelectByPointing, PressingAMinimapDotSelectsThatKeyframe) {
   ASSERT_FALSE(ed_.selected_keyframe());
-  click_timeline(dot(2) + glm::dvec2(6.0, -5.0));  // a few pixels off the dot's centre
+  click_views(dot(2) + glm::dvec2(6.0, -5.0));  // a few pixels off the dot's centre
   ASSERT_EQ(ed_.selected_keyframe(), std::optional<std::size_t>(2)) << ed_.status_text();
   EXPECT_FALSE(ed_.previewing()) << "a press on the panel never previews";
   EXPECT_EQ(ed_.document().keyframes(EffectType::Exposure).size(), 3u) << "nothing placed";
@@ -71,14 +71,14 @@ TEST_F(SelectByPointing, PressingAMinimapDotSelectsThatKeyframe) {
 
   // A press on the map away from every dot keeps the selection; another dot moves it.
   const ui::Rect map = ed_.ui().minimap->map_area();
-  click_timeline({map.x + 0.5 * map.w, map.y + 0.9 * map.h});
+  click_views({map.x + 0.5 * map.w, map.y + 0.9 * map.h});
   EXPECT_EQ(ed_.selected_keyframe(), std::optional<std::size_t>(2));
-  click_timeline(dot(0));
+  click_views(dot(0));
   EXPECT_EQ(ed_.selected_keyframe(), std::optional<std::size_t>(0));
   EXPECT_EQ(ed_.ui().minimap->selected(), 0);
   // Pressing the same dot again after deselecting selects it again.
   ed_.deselect();
-  click_timeline(dot(0));
+  click_views(dot(0));
   EXPECT_EQ(ed_.selected_keyframe(), std::optional<std::size_t>(0));
 
   // The grab holds the selected keyframe, not the one nearest the view (index 1).

@@ -86,8 +86,9 @@ TEST(EditorTools, ButtonADeletesTheKeyframeNearestTheView) {
   for (double az : {-60.0, 0.0, 70.0}) ed.document().add_keyframe(EffectType::Exposure, {{az, 0.0}, 0, {az / 30.0}});
   auto in = looking(55.0, 0.0);
   in.right.primary = true;
-  ed.update(in, 0);
-  ed.update(in, kFrame);  // held: deletes once
+  xr::ActionSync sync;
+  ed.update(sync.sync(in), 0);
+  ed.update(sync.sync(in), kFrame);  // held: deletes once
   const auto& ks = ed.document().keyframes(EffectType::Exposure);
   ASSERT_EQ(ks.size(), 2u);
   for (const auto& k : ks) EXPECT_NE(k.direction.azimuth_deg, 70.0);
@@ -97,15 +98,16 @@ TEST(EditorTools, HoldingBShowsTheUnalteredFilm) {
   Editor ed = make_editor();
   ed.document().add_keyframe(EffectType::Saturation, {{0.0, 0.0}, 0, {2.0}});
   auto in = looking(0.0, 0.0);
-  ed.update(in, 0);
+  xr::ActionSync sync;
+  ed.update(sync.sync(in), 0);
   EXPECT_EQ(ed.current_params().saturation, 2.0);
   in.right.secondary = true;
-  ed.update(in, kFrame);
+  ed.update(sync.sync(in), kFrame);
   EXPECT_TRUE(ed.unaltered());
   const effects::StackParams neutral;
   EXPECT_EQ(ed.current_params().saturation, neutral.saturation);
   in.right.secondary = false;
-  ed.update(in, 2 * kFrame);
+  ed.update(sync.sync(in), 2 * kFrame);
   EXPECT_EQ(ed.current_params().saturation, 2.0);
 }
 
@@ -116,11 +118,12 @@ TEST(EditorTools, LeftXUndoesAndLeftYRedoes) {
   in.left.tracked = true;
   in.left.aim.orientation = xr::look_rotation(180.0, 0.0);  // away from every panel
   in.left.primary = true;
-  ed.update(in, 0);
+  xr::ActionSync sync;
+  ed.update(sync.sync(in), 0);
   EXPECT_TRUE(ed.document().keyframes(EffectType::Exposure).empty());
   in.left.primary = false;
   in.left.secondary = true;
-  ed.update(in, kFrame);
+  ed.update(sync.sync(in), kFrame);
   EXPECT_EQ(ed.document().keyframes(EffectType::Exposure).size(), 1u);
 }
 

@@ -4,6 +4,9 @@
 /// screenshot.
 #include <gtest/gtest.h>
 
+#include "io/input_error.h"
+#include "xr/video_layer.h"
+
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
@@ -27,6 +30,7 @@ FrameLoopOptions small_options() {
   o.window_height = 90;
   o.visible = false;
   o.keep_records = true;
+  o.mirror = xr::MirrorMode::PreDistorted;  // these tests read the eye buffers
   return o;
 }
 
@@ -94,6 +98,65 @@ TEST(FrameLoopGl, LateFramesAreCountedAndNeverBlockTheLoop) {
   for (const auto& rec : r.records) {
     EXPECT_LE(rec.shown_frame, 0);  // the previous frame (or none yet) stays on screen
     EXPECT_EQ(rec.late, rec.shown_frame != rec.requested_frame);
+  }
+}
+
+TEST(FrameLoopGl, TheFirstFramesShowALoadingFieldUntilTheDecoderDelivers) {
+  // The race of a slow first decode (a 4K long-GOP clip): the decoder is held until the loop
+  // has drawn five frames. Those show the dark loading field (no failure), then the video.
+  auto gate = std::make_shared<test::DecodeGate>();
+  gate->from = 0;
+  auto video = grey_video(100, 0.5, gate);
+  struct Opener {
+    std::shared_ptr<test::DecodeGate> g;
+    ~Opener() { g->open(); }
+  } opener{gate};
+  std::vector<std::int64_t> times;
+  for (std::int64_t k = 0; k < 40; ++k) times.push_back(k * 33'333'334);
+  auto input = replay(times);
+  const auto sc = test::one_effect_sidecar(EffectType::Exposure, {{0, 0, {0.0}}});
+  Player player(sc, video->properties());
+  FrameLoopOptions o = small_options();
+  std::vector<double> centre;  // the left eye's centre grey per loop frame
+  o.on_frame = [&](xr::Compositor& c, std::int64_t n) {
+    const cv::Mat eye = c.read_eye_buffer(0);
+    centre.push_back(eye.at<cv::Vec4f>(eye.rows / 2, eye.cols / 2)[1]);
+    if (n == 4) gate->open();
+  };
+  FrameLoop loop(o, *input, *video, player);
+  const FrameLoopResult r = loop.run();
+  ASSERT_EQ(r.frames, 40);
+  for (int n = 0; n < 5; ++n) {
+    EXPECT_EQ(r.records[static_cast<std::size_t>(n)].shown_frame, -1) << n;
+    EXPECT_NEAR(centre[static_cast<std::size_t>(n)], xr::VideoLayerGl::kNoFrameGrey, 1e-3) << n;
+  }
+  EXPECT_GE(r.records.back().shown_frame, 0);
+  EXPECT_NEAR(centre.back(), 0.5, 0.01) << "the video once decoded";
+}
+
+TEST(FrameLoopGl, AVideoThatNeverDeliversIsAnInputErrorAfterTheStartTimeout) {
+  auto gate = std::make_shared<test::DecodeGate>();
+  gate->from = 0;
+  auto video = grey_video(100, 0.5, gate);
+  struct Opener {
+    std::shared_ptr<test::DecodeGate> g;
+    ~Opener() { g->open(); }
+  } opener{gate};
+  std::vector<std::int64_t> times;
+  for (std::int64_t k = 0; k < 1000; ++k) times.push_back(k * 33'333'334);
+  auto input = replay(times);
+  const auto sc = test::one_effect_sidecar(EffectType::Exposure, {{0, 0, {0.0}}});
+  Player player(sc, video->properties());
+  FrameLoopOptions o = small_options();
+  o.start_timeout = std::chrono::milliseconds(300);
+  FrameLoop loop(o, *input, *video, player);
+  try {
+    loop.run();
+    FAIL() << "expected an input error";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("generated: cannot show the video: no frame was decoded within"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -172,7 +235,7 @@ TEST(FrameLoopGl, ScreenshotOfTheMirrorIsWritten) {
   FrameLoopOptions o = small_options();
   o.decode_timeout = std::chrono::seconds(5);
   o.screenshot = out;
-  o.mirror_mode = 2;  // single eye: the grey fills the eye's rectangle
+  o.mirror = xr::MirrorMode::SingleEye;  // the grey fills the eye's rectangle
   FrameLoop loop(o, *input, *video, player);
   EXPECT_EQ(loop.run().frames, 3);
   const cv::Mat png = cv::imread(out.string());

@@ -1,7 +1,7 @@
 /// @file
 /// @brief MinimapWorker: fields equal effect_minimap; requests queued behind a busy worker
 /// coalesce (latest wins); an older finished field is dropped for a newer one; shutdown while
-/// busy cancels and joins; the editor with async_visualizations shows the same fields as the
+/// busy cancels and joins; the editor with visuals.async shows the same fields as the
 /// synchronous one once the worker caught up, and never blocks update() on it.
 #include <gtest/gtest.h>
 
@@ -133,7 +133,7 @@ TEST(EditorAsyncMinimap, CatchesUpWithTheSynchronousFieldsWhilePlaying) {
   sc.effects.push_back({EffectType::Exposure, std::nullopt,
                         {{{30.0, 0.0}, 0, {2.0}}, {{-100.0, 40.0}, 10, {-3.0}}, {{170.0, -20.0}, 20, {1.0}}}});
   EditorOptions async_opts;
-  async_opts.async_visualizations = true;
+  async_opts.visuals.async = true;
   Editor sync(sc, DocumentOptions{{.async = false}}, EditorOptions{});
   Editor async(sc, DocumentOptions{{.async = false}}, async_opts);
   std::int64_t t = 0;

@@ -26,14 +26,18 @@ struct Step {
   bool right_a = false, right_b = false;
 };
 
-FrameInfo step(Player& p, const Step& s) {
+/// One frame; `sync` carries the controller edges across steps (InputBackend::poll's job), a
+/// fresh one is used when none is given.
+FrameInfo step(Player& p, const Step& s, xr::ActionSync* sync = nullptr) {
+  xr::ActionSync fresh;
+  if (!sync) sync = &fresh;
   for (const auto& e : s.events) p.on_desktop_event(e);
   xr::InputState in = xr::neutral_input_state(s.t_ns);
   in.right.tracked = true;
   in.right.primary = s.right_a;
   in.right.secondary = s.right_b;
   FrameInfo info;
-  p.update(in, s.t_ns, info);
+  p.update(sync->sync(in), s.t_ns, info);
   return info;
 }
 
@@ -66,10 +70,14 @@ TEST(PlayerClient, KeysAndButtons) {
   EXPECT_EQ(p.param_mode(), ParamMode::ViewDependent);
   step(p, {{key(xr::Key::V, true)}, 3 * s});
   EXPECT_EQ(p.param_mode(), ParamMode::PerPixel);
-  step(p, {{}, 3 * s, false, true});
+  xr::ActionSync sync;
+  step(p, {{}, 3 * s, false, true}, &sync);
   EXPECT_EQ(p.param_mode(), ParamMode::ViewDependent);
-  step(p, {{}, 3 * s, false, true});
+  step(p, {{}, 3 * s, false, true}, &sync);
   EXPECT_EQ(p.param_mode(), ParamMode::ViewDependent);
+  step(p, {{}, 3 * s, false, false}, &sync);
+  step(p, {{}, 3 * s, false, true}, &sync);
+  EXPECT_EQ(p.param_mode(), ParamMode::PerPixel);
   // U and the right a button show the unaltered film while held.
   EXPECT_FALSE(p.unaltered());
   step(p, {{key(xr::Key::U, true)}, 3 * s});

@@ -29,7 +29,7 @@ TEST(PlayerCmdGl, ReplayedDemoWritesScreenshotRecordingAndStats) {
   const CmdResult out = run("play /usr/share/blender/datafiles/studiolights/world/interior.exr --sidecar " +
                       src + "/app/demo/interior.vdfx.json --input replay:" + src +
                       "/recordings/sim_look_and_place.vdrec.jsonl --frames 4 --scale 0.05 "
-                      "--window 200x100 --hidden --stats --screenshot " + png.string() +
+                      "--window 200x100 --mirror pre --hidden --stats --screenshot " + png.string() +
                       " --record " + rec.string());
   ASSERT_EQ(out.exit_code, 0) << out.output;
   const cv::Mat m = cv::imread(png.string());

@@ -55,8 +55,8 @@ TEST(PlayerCmd, UsageErrorsAreExitTwo) {
 TEST(PlayerCmd, HelpListsEveryKeyAndTheSimBindings) {
   const CmdResult out = run("play --help");
   EXPECT_EQ(out.exit_code, 0);
-  for (const char* s : {"pause / play", "per-pixel", "unaltered", "mirror: pre-distorted",
-                        "mirror: through the lens", "mirror: single eye", "Escape",
+  for (const char* s : {"pause / play", "per-pixel", "unaltered", "desktop view", "pre-distorted panels",
+                        "through the lens", "left eye, undistorted", "Escape", "--fov", "--mirror",
                         "/user/hand/right/input/trigger/value", "turn the head", "--stats",
                         "--screenshot", "--frames", "--record", "--scale"})
     EXPECT_NE(out.output.find(s), std::string::npos) << s;

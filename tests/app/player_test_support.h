@@ -11,11 +11,13 @@
 
 #include <opencv2/core.hpp>
 
+#include "app/frame_loop.h"
 #include "effects/keyframe.h"
 #include "io/frame_decoder.h"
 #include "io/recording.h"
 #include "io/sidecar.h"
 #include "xr/actions.h"
+#include "xr/hmd_profile.h"
 
 namespace vdfx::app::test {
 
@@ -105,6 +107,20 @@ inline io::Sidecar one_effect_sidecar(effects::EffectType type, const std::vecto
   }
   s.effects.push_back(track);
   return s;
+}
+
+/// The frame loop of the layer tests (flare, grain): generic90 eyes at a tenth of their size in a
+/// hidden 160 x 90 window, each frame's video waited for (so the frames are deterministic).
+inline FrameLoopOptions small_hidden_loop() {
+  FrameLoopOptions o;
+  o.profile = xr::load_hmd_profile("generic90");
+  o.eye_scale = 0.1;
+  o.window_width = 160;
+  o.window_height = 90;
+  o.visible = false;
+  o.mirror = xr::MirrorMode::PreDistorted;  // both eyes are rendered (the tests read them)
+  o.decode_timeout = std::chrono::seconds(5);
+  return o;
 }
 
 }  // namespace vdfx::app::test

@@ -8,14 +8,6 @@
 namespace vdfx::app::testing {
 namespace {
 
-double max_abs_diff(const cv::Mat& a, const cv::Mat& b) {
-  cv::Mat d;
-  cv::absdiff(a, b, d);
-  double mx = 0;
-  cv::minMaxLoc(d.reshape(1), nullptr, &mx);
-  return mx;
-}
-
 TEST(RenderGpu, MatchesCpuReferenceForTheWholeStack) {
   const auto dir = test_dir();
   write_test_panorama(dir);

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "effects/effect_shaders.h"
+#include "gl_bench_support.h"
 #include "xr/distortion_gl.h"
 #include "xr/effect_stack_gl.h"
 #include "xr/gl_context.h"
@@ -78,11 +79,7 @@ Fixture& fixture() {
     f.lens = effects::LensModel(lp);
     f.video->render(f.a, f.eye);
     // The memory-bound floor: the stack's copy pass (an empty mask), median of 7.
-    std::vector<double> t;
-    for (int i = 0; i < 7; ++i)
-      t.push_back(finished_wall_ms([&] { f.stack->apply(f.a.texture(), f.b, {}, 0, f.eye); }));
-    std::nth_element(t.begin(), t.begin() + 3, t.end());
-    f.copy_ms = t[3];
+    f.copy_ms = bench::median_wall_ms(7, [&] { f.stack->apply(f.a.texture(), f.b, {}, 0, f.eye); });
     return f;
   }();
   return fx;
@@ -94,15 +91,7 @@ void run(benchmark::State& state, const std::function<void(Fixture&)>& body) {
     state.SkipWithError(f.error.c_str());
     return;
   }
-  body(f);  // warm-up: compiles the variant, builds the mesh
-  glFinish();
-  double total = 0.0;
-  for (auto _ : state) {
-    const double ms = finished_wall_ms([&] { body(f); });
-    state.SetIterationTime(ms * 1e-3);
-    total += ms;
-  }
-  const double mean_ms = total / static_cast<double>(state.iterations());
+  const double mean_ms = bench::timed_gl_loop(state, [&] { body(f); });
   state.counters["x_copy"] = mean_ms / f.copy_ms;
   state.counters["copy_ms"] = f.copy_ms;
 }

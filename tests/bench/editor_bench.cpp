@@ -5,11 +5,12 @@
 /// run: one RBF evaluation (the unit both are made of).
 ///
 /// The live preview (trigger placement or grab), per frame in which the preview keyframe moved:
-/// the old path (a fresh RbfInterpolator of all keyframes, O(N^3)) against PreviewInterpolant
-/// (one O(N^2) KeyframeSet::move), each followed by one evaluation away from the view.
+/// the old path (a fresh RbfInterpolator of all keyframes, O(N^3)) against the pending edit's
+/// interpolant (app/pending_edit.h: one O(N^2) KeyframeSet::move), each followed by one
+/// evaluation away from the view.
 /// The preview's start (trigger press or grab) at N = 1000: the old seed, one full solve of the
-/// keyframes and the preview keyframe (source 0, the peer), against cloning the document's
-/// solved set and one incremental add or move (source 1).
+/// keyframes and the pending keyframe (source 0, the peer), against the pending edit's seed,
+/// cloning the document's solved set and one incremental add or move (source 1).
 /// The frame thread while playing (a new frame every update) at N = 1000: the minimap computed
 /// in update() (async 0) against handed to MinimapWorker (async 1); CPU time is the frame
 /// thread's only.
@@ -20,7 +21,7 @@
 #include <random>
 
 #include "app/editor.h"
-#include "app/editor_preview.h"
+#include "app/document.h"
 #include "app/visualizations.h"
 #include "effects/keyframe_set.h"
 #include "effects/rbf_interpolator.h"
@@ -51,16 +52,21 @@ vdfx::effects::RbfInterpolator make_rbf(int n) { return vdfx::effects::RbfInterp
 /// The preview keyframe at step i: the head turning by 1.5 deg a frame.
 Keyframe preview_key(int i) { return {{-60.0 + 1.5 * (i % 80), 5.0}, 450, {2.0}}; }
 
+vdfx::io::Sidecar sidecar_of(std::vector<Keyframe> ks) {
+  vdfx::io::Sidecar sc;
+  sc.video = {"clip.mp4", 30.0, kFrames, 3840, 1920};
+  sc.effects.push_back({EffectType::Exposure, std::nullopt, std::move(ks)});
+  return sc;
+}
+
 /// Old path, the peer: a fresh interpolant of the keyframes and the preview keyframe.
 void BM_EditorPreviewFresh(benchmark::State& state) {
-  const auto ks = make_keyframes(static_cast<int>(state.range(0)));
-  vdfx::app::PreviewTarget t;
-  t.keyframes = &ks;
-  t.neutral = {0.0};
+  vdfx::app::Document doc(sidecar_of(make_keyframes(static_cast<int>(state.range(0)))), {{.async = false}});
+  auto& p = doc.begin_pending(EffectType::Exposure, std::nullopt, preview_key(0));
   int i = 0;
   for (auto _ : state) {
-    t.key = preview_key(i++);
-    const vdfx::effects::RbfInterpolator rbf(vdfx::app::preview_keyframe_list(t), 1, {}, 30.0, {0.0});
+    p.set_key(preview_key(i++));
+    const vdfx::effects::RbfInterpolator rbf(p.keyframe_list(), 1, {}, 30.0, {0.0});
     auto v = rbf.evaluate(Direction{100.0, 10.0}, 450);
     benchmark::DoNotOptimize(v.data());
   }
@@ -69,49 +75,47 @@ BENCHMARK(BM_EditorPreviewFresh)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisec
 
 /// New path: seeded once (untimed), then one incremental move per frame.
 void BM_EditorPreviewIncremental(benchmark::State& state) {
-  const auto ks = make_keyframes(static_cast<int>(state.range(0)));
-  vdfx::app::PreviewTarget t;
-  t.keyframes = &ks;
-  t.neutral = {0.0};
-  t.key = preview_key(0);
-  vdfx::app::PreviewInterpolant p({.async = false});
-  p.update(t);
+  vdfx::app::Document doc(sidecar_of(make_keyframes(static_cast<int>(state.range(0)))), {{.async = false}});
+  auto& p = doc.begin_pending(EffectType::Exposure, std::nullopt, preview_key(0));
+  p.interpolant();
   int i = 1;
   for (auto _ : state) {
-    t.key = preview_key(i++);
-    auto v = p.update(t)->evaluate(Direction{100.0, 10.0}, 450);
+    p.set_key(preview_key(i++));
+    auto v = p.interpolant()->evaluate(Direction{100.0, 10.0}, 450);
     benchmark::DoNotOptimize(v.data());
   }
-  state.counters["seeds"] = static_cast<double>(p.seeds());
+  state.counters["seeds"] = static_cast<double>(doc.pending_stats().seeds);
 }
 BENCHMARK(BM_EditorPreviewIncremental)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
-/// The first PreviewInterpolant::update of a preview (placement: grab 0; grab: grab 1), with
-/// and without the document's solved set as the source. The scratch set is dropped untimed.
+/// The first interpolant of a preview (placement: grab 0; grab: grab 1): the peer (source 0)
+/// solves the pending edit's keyframes from scratch; the pending edit (source 1) clones the
+/// document's solved set. The pending edit is ended untimed.
 void BM_EditorPreviewStart(benchmark::State& state) {
-  const auto ks = make_keyframes(static_cast<int>(state.range(0)));
-  const vdfx::effects::KeyframeSet doc(1, {}, 30.0, ks, {.async = false}, {0.0});
-  vdfx::app::PreviewTarget t;
-  t.keyframes = &doc.keyframes();
-  t.neutral = {0.0};
-  if (state.range(1) != 0) t.source = &doc;
-  if (state.range(2) != 0) {
-    t.moved = 17;
-    t.key = ks[17];
-    t.key.direction.azimuth_deg += 3.0;  // the first frame of the grab in which it moved
-  }
-  vdfx::app::PreviewInterpolant p({.async = false});
+  vdfx::app::Document doc(sidecar_of(make_keyframes(static_cast<int>(state.range(0)))), {{.async = false}});
+  const bool grab = state.range(2) != 0;
+  Keyframe held = doc.keyframes(EffectType::Exposure)[17];
+  held.direction.azimuth_deg += 3.0;  // the first frame of the grab in which it moved
   int i = 0;
   for (auto _ : state) {
-    if (!t.moved) t.key = preview_key(i++);
-    auto v = p.update(t)->evaluate(Direction{100.0, 10.0}, 450);
-    benchmark::DoNotOptimize(v.data());
     state.PauseTiming();
-    p.reset();
+    auto& p = doc.begin_pending(EffectType::Exposure, grab ? std::optional<std::size_t>(17) : std::nullopt,
+                                grab ? held : preview_key(i++));
+    state.ResumeTiming();
+    if (state.range(1) != 0) {
+      auto v = p.interpolant()->evaluate(Direction{100.0, 10.0}, 450);
+      benchmark::DoNotOptimize(v.data());
+    } else {
+      const vdfx::effects::KeyframeSet fresh(1, {}, 30.0, p.keyframe_list(), {.async = false}, {0.0});
+      auto v = fresh.solution()->evaluate(Direction{100.0, 10.0}, 450);
+      benchmark::DoNotOptimize(v.data());
+    }
+    state.PauseTiming();
+    doc.cancel_pending();
     state.ResumeTiming();
   }
-  state.counters["full_seeds_per_start"] =
-      static_cast<double>(p.full_seeds()) / static_cast<double>(std::max<std::uint64_t>(p.seeds(), 1));
+  state.counters["full_seeds_per_start"] = static_cast<double>(doc.pending_stats().full_seeds) /
+                                           static_cast<double>(std::max<std::uint64_t>(doc.pending_stats().seeds, 1));
 }
 BENCHMARK(BM_EditorPreviewStart)
     ->ArgNames({"n", "source", "grab"})
@@ -127,7 +131,7 @@ void BM_EditorPlayingFrame(benchmark::State& state) {
   sc.video = {"clip.mp4", 30.0, kFrames, 3840, 1920};
   sc.effects.push_back({EffectType::Exposure, std::nullopt, make_keyframes(static_cast<int>(state.range(0)))});
   vdfx::app::EditorOptions eo;
-  eo.async_visualizations = state.range(1) != 0;
+  eo.visuals.async = state.range(1) != 0;
   vdfx::app::Editor ed(sc, vdfx::app::DocumentOptions{{.async = false}}, eo);
   vdfx::xr::InputState in = vdfx::xr::neutral_input_state(0);
   in.head_tracked = true;

@@ -39,6 +39,32 @@ example["effects"] = [{"type": "tint",
                       {"type": "vignette", "keyframes": [{"azimuth_deg": 0.0, "altitude_deg": 90.0,
                        "frame": 10, "params": {"radius_deg": 40.0, "falloff_deg": 0.01}}]}]
 (d / "override.vdfx.json").write_text(json.dumps(example) + "\n")
+# The extension types (docs/sidecar.md): flares of each light form, grains of each style.
+kf = {"azimuth_deg": 20.0, "altitude_deg": 10.0, "frame": 5}
+example["effects"] = [
+    {"type": "flare", "style": "headset", "light": {"azimuth_deg": 40.0, "altitude_deg": 20.0},
+     "settings": {"fade_deg": 20.0, "rings": 3},
+     "keyframes": [dict(kf, params={"intensity": 2.0})]},
+    {"type": "flare", "style": "directional",
+     "light": [{"frame": 0, "azimuth_deg": -30.0, "altitude_deg": 5.0},
+               {"frame": 800, "azimuth_deg": 60.0, "altitude_deg": 30.0}],
+     "interpolation": {"exponent": 2.0, "time_scale": 0.5},
+     "keyframes": [dict(kf, params={"intensity": 0.5}), {"azimuth_deg": -100.0, "altitude_deg": 0.0,
+                                                          "frame": 600, "params": {"intensity": 4.0}}]},
+    {"type": "flare", "style": "headset", "light": "auto", "keyframes": []}]
+(d / "flare.vdfx.json").write_text(json.dumps(example) + "\n")
+example["effects"] = [
+    {"type": "grain", "style": "headset", "seed": 7, "settings": {"refresh_ms": 40.0},
+     "keyframes": [dict(kf, params={"intensity": 0.5, "size": 1.0})]},
+    {"type": "grain", "style": "object_cloud", "seed": 9007199254740993,
+     "settings": {"count": 500, "shell": 2.0},
+     "interpolation": {"exponent": 1.5, "time_scale": 3.0},
+     "keyframes": [dict(kf, params={"intensity": 1.0, "size": 0.25}),
+                   {"azimuth_deg": 170.0, "altitude_deg": -60.0, "frame": 899,
+                    "params": {"intensity": 0.0, "size": 4.0}}]},
+    {"type": "grain", "style": "free_cloud", "seed": 0, "settings": {"radius_m": 1.0},
+     "keyframes": []}]
+(d / "grain.vdfx.json").write_text(json.dumps(example) + "\n")
 
 # Recordings: the header and the first lines of each committed one (kept small for the fuzzer).
 d = fresh("recording")

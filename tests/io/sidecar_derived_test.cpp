@@ -111,5 +111,39 @@ TEST(SidecarDerived, KeyframesPerEffectAreCheckedAtLoad) {
       << problems[0].message;
 }
 
+TEST(SidecarDerived, FlareAndGrainEntriesKeepTheSameLimits) {
+  // The extension types are read by readers of their own; the keyframe limit and the time-scaling
+  // check hold for them too, and every problem is reported at the entry's own index in the file
+  // (the stack effects' in-memory index differs once flares or grains come before them).
+  nlohmann::json doc = keyframes_document(kMaxKeyframesPerEffect + 1);
+  nlohmann::json many = doc["effects"][0]["keyframes"];
+  for (auto& k : many) k["params"] = {{"intensity", 0.5}};
+  nlohmann::json many_grain = many;
+  for (auto& k : many_grain) k["params"] = {{"intensity", 0.5}, {"size", 1.0}};
+  const nlohmann::json tiny = {{"exponent", 1}, {"time_scale", 1e-6}};
+  nlohmann::json exposure = nlohmann::json::parse(sidecar_text(30, 50, 1.0, 1.0))["effects"][0];
+  exposure["interpolation"] = tiny;
+  doc["effects"] = {
+      {{"type", "flare"}, {"style", "headset"}, {"light", "auto"}, {"keyframes", many}},
+      {{"type", "grain"}, {"style", "headset"}, {"seed", 1}, {"keyframes", many_grain}},
+      {{"type", "flare"}, {"style", "headset"}, {"light", "auto"}, {"interpolation", tiny},
+       {"keyframes", nlohmann::json::array()}},
+      {{"type", "grain"}, {"style", "headset"}, {"seed", 1}, {"interpolation", tiny},
+       {"keyframes", nlohmann::json::array()}},
+      exposure};
+  std::vector<Problem> problems;
+  (void)parse_sidecar(doc, "s", problems);
+  const std::vector<std::string> expected = {
+      "/effects/0/keyframes", "/effects/1/keyframes", "/effects/2/interpolation/time_scale",
+      "/effects/3/interpolation/time_scale", "/effects/4/interpolation/time_scale"};
+  ASSERT_EQ(problems.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(problems[i].pointer, expected[i]) << problems[i].message;
+    EXPECT_NE(problems[i].message.find(i < 2 ? "4097 keyframes, more than the 4096" : "time_scale must be at least"),
+              std::string::npos)
+        << problems[i].message;
+  }
+}
+
 }  // namespace
 }  // namespace vdfx::io

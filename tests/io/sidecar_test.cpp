@@ -27,7 +27,8 @@ const char* kValid = R"({
     {"type": "exposure",
      "keyframes": [{"azimuth_deg": 30.0, "altitude_deg": 0.0, "frame": 75,
                     "params": {"stops": 1.0}}]},
-    {"type": "tint", "interpolation": {"exponent": 1.5, "time_scale": 2.0, "distance": "geodesic"},
+    {"type": "tint", "interpolation": {"exponent": 1.5, "time_scale": 2.0, "distance": "geodesic",
+                                       "outside_span": "extrapolate"},
      "keyframes": [{"azimuth_deg": -90.0, "altitude_deg": 45.0, "frame": 0,
                     "params": {"gain": [1.0, 0.5, 2.0]}},
                    {"azimuth_deg": 180.0, "altitude_deg": -90.0, "frame": 899,
@@ -59,10 +60,12 @@ TEST(Sidecar, ContractExampleIsValidAndReadsAsWritten) {
   EXPECT_EQ(s.effects[0].keyframes[0].params, std::vector<double>{1.0});
   ASSERT_TRUE(s.effects[1].interpolation.has_value());
   EXPECT_EQ(s.effects[1].interpolation->distance, effects::AngularDistance::Geodesic);
+  EXPECT_EQ(s.effects[1].interpolation->outside, effects::TimeOutside::Extrapolate);
   EXPECT_EQ(s.effects[1].interpolation->exponent, 1.5);
   EXPECT_EQ(s.effects[1].keyframes[0].params, (std::vector<double>{1.0, 0.5, 2.0}));
   EXPECT_EQ(s.effects[2].keyframes[0].params, (std::vector<double>{40.0, 0.01}));
   EXPECT_EQ(s.interpolation.distance, effects::AngularDistance::Chordal);
+  EXPECT_EQ(s.interpolation.outside, effects::TimeOutside::Hold);  // absent: hold
 }
 
 struct BrokenCase {
@@ -113,13 +116,17 @@ const BrokenCase kBroken[] = {
      "missing field \"exponent\""},
     {"distance_unknown", [](json& j) { j["interpolation"]["distance"] = "euclid"; },
      "/interpolation/distance", "unknown distance"},
+    {"outside_span_unknown", [](json& j) { j["interpolation"]["outside_span"] = "clamp"; },
+     "/interpolation/outside_span", "expected hold or extrapolate"},
+    {"outside_span_not_string", [](json& j) { j["effects"][1]["interpolation"]["outside_span"] = 1; },
+     "/effects/1/interpolation/outside_span", "expected a string"},
     {"effect_interp_bad", [](json& j) { j["effects"][1]["interpolation"]["exponent"] = -1; },
      "/effects/1/interpolation/exponent", "out of range"},
     {"effects_not_array", [](json& j) { j["effects"] = json::object(); }, "/effects",
      "expected an array"},
     {"effect_not_object", [](json& j) { j["effects"][0] = 3; }, "/effects/0", "expected an object"},
     {"unknown_type", [](json& j) { j["effects"][0]["type"] = "sparkle"; }, "/effects/0/type",
-     "unknown effect type \"sparkle\" (known: blur, tint, exposure, saturation, contrast, vignette)"},
+     "unknown effect type \"sparkle\" (known: blur, tint, exposure, saturation, contrast, vignette, flare, grain)"},
     {"type_twice", [](json& j) { j["effects"][2]["type"] = "exposure"; j["effects"][2]["keyframes"] = json::array(); },
      "/effects/2/type", "appears twice (first at /effects/0)"},
     {"missing_type", [](json& j) { j["effects"][0].erase("type"); }, "/effects/0",
@@ -325,6 +332,21 @@ TEST(Sidecar, DefaultDistanceIsNotWrittenGeodesicIs) {
   EXPECT_FALSE(to_json(s)["interpolation"].contains("distance"));
   s.interpolation.distance = effects::AngularDistance::Geodesic;
   EXPECT_EQ(to_json(s)["interpolation"]["distance"], "geodesic");
+}
+
+TEST(Sidecar, DefaultHoldIsNotWrittenExtrapolateIs) {
+  Sidecar s;
+  EXPECT_FALSE(to_json(s)["interpolation"].contains("outside_span"));
+  s.interpolation.outside = effects::TimeOutside::Extrapolate;
+  EXPECT_EQ(to_json(s)["interpolation"]["outside_span"], "extrapolate");
+}
+
+TEST(Sidecar, NewSidecarUsesTheAuthorTimeScale) {
+  const Sidecar s = new_sidecar({"clip.mp4", 25.0, 100, 64, 32});
+  EXPECT_EQ(s.interpolation.time_scale, effects::kAuthorTimeScale);
+  EXPECT_EQ(s.interpolation.outside, effects::TimeOutside::Hold);
+  EXPECT_EQ(s.video.fps, 25.0);
+  EXPECT_TRUE(s.effects.empty());
 }
 
 TEST(Sidecar, ToJsonOfContractExampleParsesBackEqual) {

@@ -1,7 +1,8 @@
 /// @file
 /// @brief Video sources: properties, frame-exact seeks, loop, pause, decode errors, truncated and
-/// missing files. Videos are generated at runtime with cv::VideoWriter; each frame carries its
-/// index as 8 black/white stripes, so a test can read back which frame it got.
+/// missing files. Videos are generated at runtime with FFmpeg's libraries (tests/media_clips.h;
+/// H.264 with B-frames unless said otherwise); each frame carries its index as 8 black/white
+/// stripes, so a test can read back which frame it got.
 #include "io_test_util.h"
 #include <gtest/gtest.h>
 
@@ -12,6 +13,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+
+#include "io/ycbcr.h"
+#include "tests/media_clips.h"
 #include <mutex>
 #include <set>
 #include <thread>
@@ -29,37 +33,34 @@ using namespace std::chrono_literals;
 constexpr int kW = 128, kH = 64;
 
 using testing::temp_dir;
+using test_media::coded_frame;
 
-cv::Mat coded_frame(int index) {
-  cv::Mat m(kH, kW, CV_8UC3, cv::Scalar(0, 0, 0));
-  for (int b = 0; b < 8; ++b)
-    if (index & (1 << b)) m(cv::Rect(b * 16, 0, 16, kH)).setTo(cv::Scalar(255, 255, 255));
-  return m;
+/// The stripes of a decoded picture (converted on the CPU, the reference path).
+int frame_code(const Picture& p) { return test_media::frame_code(to_rgb(p, PixelFormat::Rgb8)); }
+
+/// An H.264 MP4 (B-frames, key frame every `gop`, 0: x264's default of 250).
+fs::path write_video(const fs::path& dir, const std::string& name, int frames, io::Rational fps = {24, 1},
+                     int gop = 12) {
+  test_media::ClipSpec c;
+  c.frames = frames;
+  c.fps = fps;
+  c.gop = gop;
+  return test_media::write_clip(dir / name, c);
 }
 
-/// Reads the stripes back from an RGB frame (8-bit or float).
-int frame_code(const cv::Mat& rgb) {
-  cv::Mat m8;
-  if (rgb.depth() == CV_32F) rgb.convertTo(m8, CV_8UC3, 255.0);
-  else m8 = rgb;
-  int code = 0;
-  for (int b = 0; b < 8; ++b)
-    if (m8.at<cv::Vec3b>(kH / 2, b * 16 + 8)[1] > 127) code |= 1 << b;
-  return code;
-}
-
-fs::path write_video(const fs::path& dir, const std::string& name, int fourcc, int frames,
-                     double fps = 24.0) {
+/// An MJPEG AVI written by OpenCV's videoio: a file another tool made.
+fs::path write_opencv_mjpeg(const fs::path& dir, const std::string& name, int frames) {
   const fs::path p = dir / name;
-  cv::VideoWriter w(p.string(), fourcc, fps, cv::Size(kW, kH));
+  cv::VideoWriter w(p.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 24.0, cv::Size(kW, kH));
   if (!w.isOpened()) ADD_FAILURE() << "cannot write " << p << " with this OpenCV";
-  for (int i = 0; i < frames; ++i) w.write(coded_frame(i));
+  cv::Mat bgr;
+  for (int i = 0; i < frames; ++i) {
+    cv::cvtColor(coded_frame(i), bgr, cv::COLOR_RGB2BGR);
+    w.write(bgr);
+  }
   w.release();
   return p;
 }
-
-const int kMjpg = cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
-const int kMp4v = cv::VideoWriter::fourcc('m', 'p', '4', 'v');
 
 /// Warnings arrive on the decode thread: collected under a lock.
 std::mutex warnings_mutex;
@@ -75,7 +76,7 @@ VideoSourceOptions quiet(std::vector<std::string>* warnings = nullptr) {
 
 TEST(VideoSource, PropertiesAndSequentialFrames) {
   const auto dir = temp_dir("video_seq");
-  const auto p = write_video(dir, "a.avi", kMjpg, 30, 25.0);
+  const auto p = write_video(dir, "a.mp4", 30, {25, 1});
   auto src = VideoSource::open(p, quiet());
   const VideoProperties& pr = src->properties();
   EXPECT_EQ(pr.frames, 30);
@@ -87,8 +88,12 @@ TEST(VideoSource, PropertiesAndSequentialFrames) {
     const auto f = src->frame_at(i, 5s);
     ASSERT_TRUE(f) << i;
     EXPECT_EQ(f->index, i);
-    EXPECT_EQ(frame_code(f->image), i);
-    EXPECT_EQ(f->image.type(), CV_8UC3);
+    EXPECT_EQ(frame_code(f->picture), i);
+    // Handed over as decoded: Y'CbCr planes in the decoder's own buffers, nothing converted.
+    ASSERT_TRUE(f->picture.is_ycbcr());
+    EXPECT_EQ(f->picture.planes[0].type(), CV_8UC1);
+    EXPECT_EQ(f->picture.planes[1].size(), cv::Size(kW / 2, kH / 2));
+    EXPECT_TRUE(f->picture.owner);
   }
   EXPECT_EQ(src->stats().decode_errors, 0);
 }
@@ -96,57 +101,32 @@ TEST(VideoSource, PropertiesAndSequentialFrames) {
 /// Seeks in an order that jumps back, forward far, forward near, and repeats.
 const std::int64_t kSeekOrder[] = {40, 3, 3, 47, 0, 25, 24, 26, 10, 46, 1, 33};
 
-struct CodecCase {
-  const char* file;
-  int fourcc;
-};
-const CodecCase kCodecs[] = {{"mjpg.avi", kMjpg}, {"mp4v.mp4", kMp4v}};
-
-TEST(FrameDecoder, SeekIsFrameExact) {
-  const auto dir = temp_dir("decoder_seek");
-  for (const CodecCase& c : kCodecs) {
-    // mp4v has inter frames: a seek must decode from the key frame before the target.
-    const auto p = write_video(dir, c.file, c.fourcc, 48);
-    auto d = open_frame_decoder(p);
-    ASSERT_EQ(d->properties().frames, 48) << c.file;
-    for (const std::int64_t k : kSeekOrder) {
-      d->seek(k);
-      EXPECT_EQ(d->next_index(), k);
-      cv::Mat img;
-      ASSERT_EQ(d->read(img), DecodeStatus::Ok) << c.file << " frame " << k;
-      EXPECT_EQ(frame_code(img), k) << c.file;
-      EXPECT_EQ(d->next_index(), k + 1);
-    }
-    EXPECT_THROW(d->seek(48), std::out_of_range);
-    EXPECT_THROW(d->seek(-1), std::out_of_range);
-  }
-}
-
 TEST(VideoSource, FrameAtAfterJumpsIsExact) {
   const auto dir = temp_dir("video_seek");
-  for (const CodecCase& c : kCodecs) {
-    const auto p = write_video(dir, c.file, c.fourcc, 48);
-    VideoSourceOptions o = quiet();
-    o.decoder.format = PixelFormat::RgbF32;
-    auto src = VideoSource::open(p, o);
+  // B-frames with a short and a long GOP (one key frame: every seek decodes from frame 0), and a
+  // file another tool wrote.
+  const fs::path files[] = {write_video(dir, "gop12.mp4", 48, {24, 1}, 12),
+                            write_video(dir, "gop300.mp4", 48, {24, 1}, 300),
+                            write_opencv_mjpeg(dir, "opencv.avi", 48)};
+  for (const fs::path& p : files) {
+    auto src = VideoSource::open(p, quiet());
     for (const std::int64_t k : kSeekOrder) {
       const auto f = src->frame_at(k, 5s);
-      ASSERT_TRUE(f) << c.file << " " << k;
+      ASSERT_TRUE(f) << p << " " << k;
       EXPECT_EQ(f->index, k);
-      EXPECT_EQ(frame_code(f->image), k) << c.file;
-      EXPECT_EQ(f->image.type(), CV_32FC3);
+      EXPECT_EQ(frame_code(f->picture), k) << p;
     }
     // An explicit seek, then the frame.
     src->seek(17);
     const auto f = src->frame_at(17, 5s);
     ASSERT_TRUE(f);
-    EXPECT_EQ(frame_code(f->image), 17);
+    EXPECT_EQ(frame_code(f->picture), 17);
   }
 }
 
 TEST(VideoSource, LoopWrapsWithoutASeekAndEndClampsWithout) {
   const auto dir = temp_dir("video_loop");
-  const auto p = write_video(dir, "a.avi", kMjpg, 12);
+  const auto p = write_video(dir, "a.mp4", 12);
   {
     VideoSourceOptions o = quiet();
     o.loop = true;
@@ -157,7 +137,7 @@ TEST(VideoSource, LoopWrapsWithoutASeekAndEndClampsWithout) {
       const auto f = src->frame_at(k, 5s);
       ASSERT_TRUE(f) << k;
       EXPECT_EQ(f->index, k);
-      EXPECT_EQ(frame_code(f->image), k);
+      EXPECT_EQ(frame_code(f->picture), k);
     }
     // The wrap came from the decoder looping, not from a seek the consumer forced.
     EXPECT_EQ(src->stats().seeks, seeks);
@@ -174,20 +154,20 @@ TEST(VideoSource, LoopWrapsWithoutASeekAndEndClampsWithout) {
 
 TEST(VideoSource, PausedDecodesOnlyWhatIsAskedFor) {
   const auto dir = temp_dir("video_pause");
-  const auto p = write_video(dir, "a.avi", kMjpg, 40);
+  const auto p = write_video(dir, "a.mp4", 40);
   auto src = VideoSource::open(p, quiet());
   src->set_paused(true);
   EXPECT_TRUE(src->paused());
   const auto f = src->frame_at(20, 5s);
   ASSERT_TRUE(f);
-  EXPECT_EQ(frame_code(f->image), 20);
+  EXPECT_EQ(frame_code(f->picture), 20);
   const std::int64_t decoded = src->stats().decoded;
   std::this_thread::sleep_for(50ms);
   EXPECT_EQ(src->stats().decoded, decoded);  // nothing decoded ahead while paused
   src->set_paused(false);
   const auto g = src->frame_at(21, 5s);
   ASSERT_TRUE(g);
-  EXPECT_EQ(frame_code(g->image), 21);
+  EXPECT_EQ(frame_code(g->picture), 21);
 }
 
 /// A decoder that fails on chosen frames, and decodes frame i only once `*allowed` > i: the
@@ -197,7 +177,12 @@ class FakeDecoder final : public FrameDecoder {
   FakeDecoder(std::int64_t frames, std::set<std::int64_t> bad,
               std::shared_ptr<std::atomic<std::int64_t>> allowed = nullptr)
       : bad_(std::move(bad)), allowed_(std::move(allowed)) {
-    props_ = {"fake.mp4", {25, 1}, frames, kW, kH, false, "fake"};
+    props_.path = "fake.mp4";
+    props_.fps = {25, 1};
+    props_.frames = frames;
+    props_.width = kW;
+    props_.height = kH;
+    props_.backend = "fake";
   }
   const VideoProperties& properties() const override { return props_; }
   std::int64_t next_index() const override { return next_; }
@@ -210,7 +195,7 @@ class FakeDecoder final : public FrameDecoder {
     if (next_ >= props_.frames) return DecodeStatus::End;
     const std::int64_t i = next_++;
     if (bad_.count(i)) return DecodeStatus::Error;
-    cv::cvtColor(coded_frame(static_cast<int>(i)), out, cv::COLOR_BGR2RGB);
+    out = coded_frame(static_cast<int>(i));
     return DecodeStatus::Ok;
   }
 
@@ -230,7 +215,7 @@ TEST(VideoSource, MidStreamDecodeErrorIsSkippedWithAWarning) {
   EXPECT_EQ(f5->index, 4);
   const auto f6 = src.frame_at(6, 5s);
   ASSERT_TRUE(f6);
-  EXPECT_EQ(frame_code(f6->image), 6);
+  EXPECT_EQ(frame_code(f6->picture), 6);
   EXPECT_GE(src.stats().decode_errors, 1);
   std::lock_guard lock(warnings_mutex);
   ASSERT_FALSE(warnings.empty());
@@ -276,14 +261,16 @@ TEST(VideoSource, SlowDecodeTimesOutInsteadOfBlocking) {
 
 TEST(VideoSource, StillImageIsAOneFrameVideo) {
   const auto dir = temp_dir("video_still");
-  ASSERT_TRUE(cv::imwrite((dir / "s.png").string(), coded_frame(77)));
+  cv::Mat bgr;
+  cv::cvtColor(coded_frame(77), bgr, cv::COLOR_RGB2BGR);
+  ASSERT_TRUE(cv::imwrite((dir / "s.png").string(), bgr));
   auto src = VideoSource::open(dir / "s.png", quiet());
   EXPECT_TRUE(src->properties().is_still);
   EXPECT_EQ(src->properties().frames, 1);
   EXPECT_EQ(src->properties().width, kW);
   const auto f = src->frame_at(0, 5s);
   ASSERT_TRUE(f);
-  EXPECT_EQ(frame_code(f->image), 77);
+  EXPECT_EQ(frame_code(f->picture), 77);
   const auto g = src->frame_at(250, 5s);
   ASSERT_TRUE(g);
   EXPECT_EQ(g->index, 0);
@@ -312,38 +299,83 @@ TEST(VideoSource, MissingAndGarbageFilesAreInputErrors) {
 
 TEST(VideoSource, TruncatedFileFailsClearlyOrEndsGracefully) {
   const auto dir = temp_dir("video_truncated");
-  const auto full = write_video(dir, "full.avi", kMjpg, 60);
-  const auto size = fs::file_size(full);
-  for (const double keep : {0.5, 0.02}) {
-    const auto cut = dir / ("cut" + std::to_string(static_cast<int>(keep * 100)) + ".avi");
-    fs::copy_file(full, cut, fs::copy_options::overwrite_existing);
-    fs::resize_file(cut, static_cast<std::uintmax_t>(static_cast<double>(size) * keep));
-    std::unique_ptr<VideoSource> src;
-    try {
-      src = VideoSource::open(cut, quiet());
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(cut.string()), std::string::npos) << e.what();
-      continue;
+  // MP4 with its index in front (cut: the index promises frames the file no longer has), MP4
+  // with the index at the end (cut: no index at all), Matroska, and OpenCV's MJPEG AVI.
+  test_media::ClipSpec c;
+  c.frames = 60;
+  c.gop = 12;
+  c.frame = [](int i) {  // noise below the stripes: the frames, not the headers, fill the file
+    cv::Mat m = coded_frame(i);
+    cv::RNG rng(static_cast<std::uint64_t>(i) + 1);
+    cv::Mat noise(kH / 4, kW, CV_8UC3);
+    rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
+    noise.copyTo(m(cv::Rect(0, kH - kH / 4, kW, kH / 4)));
+    return m;
+  };
+  const fs::path front = test_media::write_clip(dir / "front.mp4", c);
+  const fs::path mkv = test_media::write_clip(dir / "full.mkv", c);
+  const fs::path avi = write_opencv_mjpeg(dir, "full.avi", 60);
+  int opened = 0;
+  for (const fs::path& full : {front, mkv, avi}) {
+    const auto size = fs::file_size(full);
+    for (const double keep : {0.5, 0.02}) {
+      const auto cut = dir / ("cut" + std::to_string(static_cast<int>(keep * 100)) + "_" +
+                              full.filename().string());
+      fs::copy_file(full, cut, fs::copy_options::overwrite_existing);
+      fs::resize_file(cut, static_cast<std::uintmax_t>(static_cast<double>(size) * keep));
+      std::unique_ptr<VideoSource> src;
+      std::vector<std::string> warnings;
+      try {
+        src = VideoSource::open(cut, quiet(&warnings));
+      } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(cut.string()), std::string::npos) << e.what();
+        continue;
+      }
+      ++opened;
+      // Opened: frames handed out are the right ones, except that the one frame the cut went
+      // through may decode with damaged content (the decoder cannot tell); asking past the cut
+      // returns rather than hangs.
+      std::int64_t last = -1;
+      std::set<std::int64_t> wrong;
+      for (std::int64_t i = 0; i < 60; ++i) {
+        const auto f = src->frame_at(i, 5s);
+        if (!f) continue;
+        EXPECT_LE(f->index, i);
+        if (frame_code(f->picture) != f->index) wrong.insert(f->index);
+        last = f->index;
+      }
+      EXPECT_LE(wrong.size(), 1u) << cut;
+      EXPECT_GE(last, 0) << cut;
+      EXPECT_LT(last, 59) << cut;  // the cut is never papered over with frames that are not there
+      // Fewer frames than the container promised is said, not silent.
+      const VideoProperties& pr = src->properties();
+      EXPECT_TRUE(pr.frames < 60 || src->stats().ended_early || src->stats().decode_errors > 0) << cut;
+      if (pr.declared_frames > pr.frames) {
+        std::lock_guard lock(warnings_mutex);
+        ASSERT_FALSE(warnings.empty()) << cut;
+        EXPECT_NE(warnings[0].find("cut short"), std::string::npos) << warnings[0];
+      }
     }
-    // Opened: frames handed out are the right ones, except that the one frame the cut went
-    // through may decode with damaged content (the decoder cannot tell); asking past the cut
-    // returns rather than hangs.
-    std::int64_t last = -1;
-    std::set<std::int64_t> wrong;
-    for (std::int64_t i = 0; i < src->properties().frames; ++i) {
-      const auto f = src->frame_at(i, 5s);
-      if (!f) continue;
-      EXPECT_LE(f->index, i);
-      if (frame_code(f->image) != f->index) wrong.insert(f->index);
-      last = f->index;
-    }
-    EXPECT_LE(wrong.size(), 1u);
-    EXPECT_GE(last, 0);
-    EXPECT_LT(last, 60);
-    // Fewer frames than declared must be visible in the stats, not silent.
-    if (last < src->properties().frames - 1) {
-      EXPECT_TRUE(src->stats().ended_early || src->stats().decode_errors > 0);
-    }
+  }
+  EXPECT_GE(opened, 3);  // cut in half, each of the three plays up to the cut
+  // The index-at-the-end MP4 cut anywhere has no index: refused with the file's name.
+  const fs::path tail = dir / "tail.mp4";
+  {
+    io::EncoderSettings s;
+    s.width = kW;
+    s.height = kH;
+    s.preset = "superfast";
+    s.faststart = false;
+    auto enc = io::VideoEncoder::create(tail, s);
+    for (int i = 0; i < 24; ++i) enc->write(rgb_to_ycbcr(coded_frame(i), s.ycbcr), i);
+    enc->finish();
+  }
+  fs::resize_file(tail, fs::file_size(tail) / 2);
+  try {
+    VideoSource::open(tail, quiet());
+    ADD_FAILURE() << "a cut MP4 without its index opened";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(tail.string()), std::string::npos) << e.what();
   }
 }
 

@@ -110,25 +110,36 @@ const DamageCase kDamageCases[] = {
       [](Panel& p) { hover(p, "play", true); }}},
 };
 
-class PartialRender : public ::testing::TestWithParam<DamageCase> {};
-
-TEST_P(PartialRender, EqualsFullRenderOfTheSameState) {
-  auto incremental = GetParam().make();
+/// A partial re-render after each step gives exactly the pixels of a full render of the final
+/// state, at a render scale (1: the panel's own pixels; 0.4: a desktop panel's on-screen size).
+void check_partial_equals_full(const DamageCase& c, double scale) {
+  const auto make = [&] {
+    auto p = c.make();
+    p->set_render_scale(scale);
+    return p;
+  };
+  auto incremental = make();
   incremental->texture();
-  for (const auto& step : GetParam().steps) {
+  for (const auto& step : c.steps) {
     step(*incremental);
     ASSERT_TRUE(incremental->dirty());
     EXPECT_TRUE(incremental->render_if_dirty());
   }
   EXPECT_EQ(incremental->full_render_count(), 1) << "the changes should have rendered partially";
-  EXPECT_EQ(incremental->render_count(), 1 + static_cast<int>(GetParam().steps.size()));
+  EXPECT_EQ(incremental->render_count(), 1 + static_cast<int>(c.steps.size()));
 
-  auto fresh = GetParam().make();
-  for (const auto& step : GetParam().steps) step(*fresh);
+  auto fresh = make();
+  for (const auto& step : c.steps) step(*fresh);
   const cv::Mat& full = fresh->texture();
   EXPECT_EQ(fresh->full_render_count(), 1);
+  EXPECT_EQ(full.cols, static_cast<int>(std::lround(fresh->width_px() * scale)));
   EXPECT_EQ(max_diff(incremental->texture(), full), 0.0);
 }
+
+class PartialRender : public ::testing::TestWithParam<DamageCase> {};
+
+TEST_P(PartialRender, EqualsFullRenderOfTheSameState) { check_partial_equals_full(GetParam(), 1.0); }
+TEST_P(PartialRender, EqualsFullRenderAtADesktopRenderScale) { check_partial_equals_full(GetParam(), 0.4); }
 
 INSTANTIATE_TEST_SUITE_P(Panels, PartialRender, ::testing::ValuesIn(kDamageCases),
                          [](const auto& info) { return std::string(info.param.name); });

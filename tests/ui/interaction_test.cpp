@@ -203,7 +203,8 @@ TEST(Pointer, DragMovesSliderMonotonicallyAndBracketsTheGesture) {
   EXPECT_EQ(end->new_value.x, 8.0);
 }
 
-TEST(Pointer, ThumbstickRateIsTimeBased) {
+TEST(Pointer, ThumbstickPushStepsOnceThenMovesAtATimeBasedRate) {
+  // The pointer rests on a button (not focusable): the stick acts on the focused slider.
   auto run = [](double dt, int frames) {
     Scene s;
     s.step(s.ray_to("exposure", {0, 200}), 0.0);  // aim below it: a press there is elsewhere
@@ -224,9 +225,52 @@ TEST(Pointer, ThumbstickRateIsTimeBased) {
     EXPECT_EQ(all.back().kind, EventKind::DragEnd);
     return sl->get();
   };
-  const double a = run(0.1, 15), b = run(0.025, 60);  // 1.5 s either way
-  EXPECT_NEAR(a, 16.0 / kStickSweepSeconds * 1.5, 0.1 + 1e-9);
-  EXPECT_NEAR(a, b, 0.1 + 1e-9);
+  // A tap (one frame) is exactly one step, at any frame time.
+  EXPECT_NEAR(run(0.1, 1), 0.1, 1e-12);
+  EXPECT_NEAR(run(0.3, 1), 0.1, 1e-12);
+  // Held: one step, then the range sweeps in kStickSweepSeconds past the repeat delay.
+  const double delay = PointerSettings{}.stick_repeat_delay_s;
+  for (const auto& [dt, frames] : {std::pair{0.1, 15}, std::pair{0.025, 60}}) {
+    const double moving = (frames - 1) * dt - delay;
+    EXPECT_NEAR(run(dt, frames), 0.1 + 16.0 / kStickSweepSeconds * moving, 0.1 + 1e-9) << dt;
+  }
+}
+
+TEST(Pointer, ThumbstickActsOnTheHoveredWidget) {
+  // No click first: the slider under the pointer takes the stick (the sim's arrow keys).
+  Scene s;
+  auto* sl = s.panel->find_as<Slider1D>("exposure");
+  sl->set_value(0.0);
+  s.step(s.ray_to("exposure"), 0.0, {0.0, 0.0}, 0.05);
+  EXPECT_TRUE(s.pointer.focused_widget().empty());
+  s.step(s.ray_to("exposure"), 0.0, {-1.0, 0.0}, 0.05);
+  s.step(s.ray_to("exposure"), 0.0, {0.0, 0.0}, 0.05);
+  EXPECT_NEAR(sl->get(), -0.1, 1e-12);
+}
+
+TEST(Pointer, FineDragMovesATenthOfThePointerWithoutJumps) {
+  Scene s;
+  auto* sl = s.panel->find_as<Slider1D>("exposure");
+  sl->set_value(0.0);
+  const double per_px = 16.0 / (sl->track_x1() - sl->track_x0());  // stops per panel pixel
+  const glm::dvec2 thumb = *sl->drag_point();
+  const auto fine = [&](glm::dvec2 p, double trigger, bool on) {
+    return s.pointer.update(s.panels, {s.ray_to(p), trigger, {0.0, 0.0}, on}, 1.0 / 72);
+  };
+  // A fine press away from the thumb keeps the value; 200 px of motion move it by 20 px' worth.
+  const glm::dvec2 press = thumb + glm::dvec2(150.0, 0.0);
+  fine(press, 0.0, true);
+  fine(press, 1.0, true);
+  EXPECT_NEAR(sl->get(), 0.0, 1e-12);
+  fine(press + glm::dvec2(200.0, 0.0), 1.0, true);
+  EXPECT_NEAR(sl->get(), 20.0 * per_px, 0.05 + 1e-9);  // snapped to the 0.1 step
+  const double at_fine = sl->get();
+  // Shift released mid-drag: no jump, then the pointer's own motion again.
+  fine(press + glm::dvec2(200.0, 0.0), 1.0, false);
+  EXPECT_NEAR(sl->get(), at_fine, 1e-12);
+  fine(press + glm::dvec2(230.0, 0.0), 1.0, false);
+  EXPECT_NEAR(sl->get(), at_fine + 30.0 * per_px, 0.05 + 1e-9);
+  fine(press + glm::dvec2(230.0, 0.0), 0.0, false);
 }
 
 TEST(Pointer, ThumbstickStepsMenuWithRepeat) {
@@ -240,11 +284,9 @@ TEST(Pointer, ThumbstickStepsMenuWithRepeat) {
   const double dt = 0.05;
   const int frames = 20;  // 1 s held down
   for (int i = 0; i < frames; ++i) s.step(s.ray_to(row0), 0.0, {0.0, -1.0}, dt);
-  // One step at once, then repeats at the delay and every period after it within the second.
-  const double held = (frames - 1) * dt;
-  const int repeats =
-      1 + static_cast<int>(std::floor((held - MenuList::kRepeatDelaySeconds) /
-                                      MenuList::kRepeatSeconds + 1e-9));
+  // One row at once, then one every period once held past the repeat delay.
+  const double moving = (frames - 1) * dt - PointerSettings{}.stick_repeat_delay_s;
+  const int repeats = static_cast<int>(std::floor(moving / MenuList::kRepeatSeconds + 1e-9));
   EXPECT_EQ(menu->selected(), std::min(5, 1 + repeats));
 }
 

@@ -178,6 +178,41 @@ InputState poll_until(InputBackend& b, std::int64_t& t, Pred pred) {
   return s;
 }
 
+TEST(HidBackend, TapBetweenPollsIsDownInExactlyOnePoll) {
+  // Cross pressed and released in two reports that both arrive before one poll: the poll shows
+  // it down (the release waits for the next poll), so the tap is one press, not lost.
+  MockBus bus;
+  InputBackendOptions opt;
+  opt.hid_system = mock_system(bus);
+  opt.hid_reader.read_timeout_ms = 2;
+  auto hid = create_input_backend("hid", opt);
+  std::int64_t t = 0;
+  poll_until(*hid, t, [&](const InputState&) { return hid->status().find("connected") != std::string::npos; });
+  {
+    std::lock_guard<std::mutex> lock(bus.mutex);
+    bus.reports.push_back(test_data::ds4_report({{5, 0x28}}));  // cross down
+    bus.reports.push_back(test_data::ds4_report({{5, 0x08}}));  // cross up
+  }
+  for (int i = 0; i < 500; ++i) {  // both read by the worker before the next poll
+    {
+      std::lock_guard<std::mutex> lock(bus.mutex);
+      if (bus.reports.empty()) break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  int pressed = 0, released = 0, down = 0;
+  for (int i = 0; i < 6; ++i) {
+    const InputState s = hid->poll(t += kFrame);
+    pressed += s.edges.was_pressed(Hand::Right, Control::Primary);
+    released += s.edges.was_released(Hand::Right, Control::Primary);
+    down += s.edges.is_down(Hand::Right, Control::Primary);
+  }
+  EXPECT_EQ(pressed, 1);
+  EXPECT_EQ(released, 1);
+  EXPECT_EQ(down, 1);
+}
+
 TEST(HidBackend, UnplugGoesNeutralThenRecoversAndReplaysTheSame) {
   MockBus bus;
   InputBackendOptions opt;

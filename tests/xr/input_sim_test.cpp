@@ -175,7 +175,7 @@ TEST(Sim, LeftHandedMouseAimsTheLeftHand) {
   sim->push_event(MouseMoveEvent{1280, 360});
   sim->push_event(MouseButtonEvent{MouseButton::Left, true});
   const InputState s = sim->poll(1);
-  EXPECT_NEAR(angle_deg(s.left.aim, s.head), 45.0, 1e-9);
+  EXPECT_NEAR(angle_deg(s.left.aim, s.head), 0.5 * cfg.hfov_deg, 1e-9);  // the window's right edge
   EXPECT_EQ(s.left.trigger, 1.0);
   EXPECT_EQ(s.right.trigger, 0.0);
   EXPECT_GT(s.right.aim.position.x, s.head.position.x);  // the other hand rests on its own side

@@ -17,7 +17,9 @@ namespace {
 io::RecordingHeader header(const std::string& note) { return {"sim", std::nullopt, note}; }
 
 void sim_look_and_place(const std::filesystem::path& file) {
-  auto rec = create_recording_backend(create_sim_backend({}), file,
+  SimConfig cfg;
+  cfg.hfov_deg = 90.0;  // the view this session was first recorded in (recordings/README.md)
+  auto rec = create_recording_backend(create_sim_backend(cfg), file,
                                       header("sim: look right 90 deg, up 10 deg, move the cursor, pull the trigger twice, push the left stick"));
   double mx = 640, my = 360;
   for (int f = 0; f < 180; ++f) {

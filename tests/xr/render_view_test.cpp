@@ -83,5 +83,36 @@ TEST(RenderView, OneFovConversion) {
                std::invalid_argument);
 }
 
+TEST(RenderView, ProjectionPutsWorldPointsOnTheirPixels) {
+  // The GL path (quads, flare) projects world points with projection() * world_to_eye(); the
+  // result must land on the pixel the camera's ray mapping gives, for any eye position.
+  for (const Case& c : cases()) {
+    RenderView v = c.view;
+    v.position = Eigen::Vector3d(0.03, 1.6, -0.2);
+    const ViewCamera cam = v.camera(c.width, c.height);
+    for (const double n : {1e-3, 0.05}) {
+      for (const double f : {100.0, 0.0 /* infinite */}) {
+        const Eigen::Matrix4d m = v.projection(n, f) * v.world_to_eye();
+        for (const auto& px :
+             {Eigen::Vector2d(3.5, 7.25), Eigen::Vector2d(c.width - 1.0, c.height * 0.5)}) {
+          for (const double dist : {0.05, 2.0, 90.0}) {
+            const Eigen::Vector3d p = v.position + dist * cam.ray(px.x(), px.y());
+            const Eigen::Vector4d clip = m * p.homogeneous();
+            const Eigen::Vector2d ndc = clip.head<2>() / clip.w();
+            EXPECT_NEAR(0.5 * (ndc.x() + 1.0) * c.width, px.x(), 1e-9) << c.name;
+            EXPECT_NEAR(0.5 * (1.0 - ndc.y()) * c.height, px.y(), 1e-9) << c.name;
+            // Between the near and far planes a point is inside the depth range (never clipped).
+            const double depth = -(v.world_to_eye() * p.homogeneous()).z();
+            if (depth <= n || (f > n && depth >= f)) continue;
+            const double z = clip.z() / clip.w();
+            EXPECT_GT(z, -1.0) << c.name << " dist " << dist;
+            EXPECT_LT(z, 1.0) << c.name << " dist " << dist;
+          }
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vdfx::xr

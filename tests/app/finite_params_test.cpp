@@ -5,7 +5,7 @@
 
 #include <limits>
 
-#include "app/view_render.h"
+#include "app/finite_params.h"
 #include "io/input_error.h"
 
 namespace vdfx::app {

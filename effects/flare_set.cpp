@@ -1,0 +1,65 @@
+/// @file
+/// @brief FlareSet: intensity RBFs, light sources, layouts.
+#include "effects/flare_set.h"
+
+#include <algorithm>
+
+#include "effects/flare_light.h"
+
+namespace vdfx::effects {
+
+namespace {
+
+// The RBF reproduces a keyframe's 0 only to rounding; below this the brightest element (peak
+// 1.05 x intensity) adds under 0.03 of an 8-bit step, so the flare is not drawn at all.
+constexpr double kMinDrawnIntensity = 1e-4;
+
+}  // namespace
+
+FlareSet::FlareSet(std::vector<FlareEffect> flares, const InterpolationSettings& defaults,
+                   double fps, AutoLightOptions auto_options)
+    : flares_(std::move(flares)), tracker_(auto_options) {
+  for (const FlareEffect& f : flares_) {
+    intensity_.push_back(std::make_shared<const RbfInterpolator>(
+        f.keyframes, 1, f.interpolation.value_or(defaults), fps,
+        std::vector<double>{kFlareIntensitySpec.neutral}));
+    uses_auto_ = uses_auto_ || std::holds_alternative<AutoLight>(f.light);
+  }
+}
+
+void FlareSet::observe(std::int64_t frame, const cv::Mat& rgb) {
+  if (uses_auto_) tracker_.observe(frame, rgb);
+}
+
+double FlareSet::intensity(std::size_t k, const Eigen::Vector3d& gaze, std::int64_t frame) const {
+  const RbfInterpolator& rbf = *intensity_.at(k);
+  if (rbf.empty()) return kFlareIntensitySpec.neutral;
+  double v = 0.0;
+  rbf.evaluate_into(gaze, frame, &v);
+  // The RBF may overshoot between keyframes; the sidecar's range holds for what is drawn.
+  return std::clamp(v, kFlareIntensitySpec.min, kFlareIntensitySpec.max);
+}
+
+std::optional<Eigen::Vector3d> FlareSet::light(std::size_t k, std::int64_t frame) const {
+  const FlareLight& l = flares_.at(k).light;
+  if (const auto* d = std::get_if<Direction>(&l)) return to_unit(*d);
+  if (const auto* t = std::get_if<std::vector<LightSample>>(&l)) return light_on_track(*t, frame);
+  return tracker_.light(frame);
+}
+
+std::vector<FlareLayout> FlareSet::layouts(const HeadPose& head, std::int64_t frame) const {
+  std::vector<FlareLayout> out;
+  const Eigen::Vector3d gaze = head.forward().normalized();
+  for (std::size_t k = 0; k < flares_.size(); ++k) {
+    const double level = intensity(k, gaze, frame);
+    if (!(level >= kMinDrawnIntensity)) continue;
+    const auto l = light(k, frame);
+    if (!l) continue;
+    const FlareEffect& f = flares_[k];
+    if (auto layout = layout_flare(f.style, f.settings, head, *l, level))
+      out.push_back(std::move(*layout));
+  }
+  return out;
+}
+
+}  // namespace vdfx::effects

@@ -1,0 +1,53 @@
+/// @file
+/// @brief The flares of a sidecar, evaluated per frame: each flare's intensity (RBF over gaze
+/// direction and frame), its light direction (fixed, track or auto) and its world-space layout
+/// for the head pose. One call per frame; both eyes draw the same layouts.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
+
+#include "effects/auto_light.h"
+#include "effects/flare.h"
+#include "effects/flare_layout.h"
+#include "effects/rbf_interpolator.h"
+
+namespace vdfx::effects {
+
+class FlareSet {
+ public:
+  /// Solves each flare's intensity keyframes (its own interpolation settings, else `defaults`).
+  /// Throws std::invalid_argument like RbfInterpolator.
+  FlareSet(std::vector<FlareEffect> flares, const InterpolationSettings& defaults, double fps,
+           AutoLightOptions auto_options = {});
+
+  bool empty() const { return flares_.empty(); }
+  std::size_t size() const { return flares_.size(); }
+  const std::vector<FlareEffect>& flares() const { return flares_; }
+
+  /// True when some flare finds its light in the video frames (observe() them).
+  bool uses_auto_light() const { return uses_auto_; }
+  /// Frames before f whose images the auto light at f uses (observe them too for a lone frame).
+  int auto_light_window() const { return tracker_.window(); }
+  /// Gives the auto-light tracker a video frame (RGB float equirect); nothing without auto lights.
+  void observe(std::int64_t frame, const cv::Mat& rgb);
+
+  /// Flare k's intensity at a gaze direction (unit) and frame, clamped to 0..4.
+  double intensity(std::size_t k, const Eigen::Vector3d& gaze, std::int64_t frame) const;
+  /// Flare k's light direction (unit) at a frame; nullopt when an auto light finds none.
+  std::optional<Eigen::Vector3d> light(std::size_t k, std::int64_t frame) const;
+  /// The layouts of every flare that adds light for this head pose at this frame.
+  std::vector<FlareLayout> layouts(const HeadPose& head, std::int64_t frame) const;
+
+ private:
+  std::vector<FlareEffect> flares_;
+  std::vector<std::shared_ptr<const RbfInterpolator>> intensity_;
+  AutoLightTracker tracker_;
+  bool uses_auto_ = false;
+};
+
+}  // namespace vdfx::effects

@@ -1,0 +1,199 @@
+/// @file
+/// @brief GLSL of the grain layer: the Perlin noise (as effects/perlin_noise.cpp), the shader
+/// styles (as effects/grain_render.cpp) and the particle quads.
+#include "effects/grain_shaders.h"
+
+namespace vdfx::effects {
+namespace {
+
+// Improved noise, operation for operation as PerlinNoise::operator().
+constexpr const char* kNoise = R"(
+uniform ivec4 u_perm[64];
+int perm_at(int i) {
+  i &= 255;
+  return u_perm[i >> 2][i & 3];
+}
+const vec3 kGrad[16] = vec3[16](
+    vec3(1, 1, 0), vec3(-1, 1, 0), vec3(1, -1, 0), vec3(-1, -1, 0),
+    vec3(1, 0, 1), vec3(-1, 0, 1), vec3(1, 0, -1), vec3(-1, 0, -1),
+    vec3(0, 1, 1), vec3(0, -1, 1), vec3(0, 1, -1), vec3(0, -1, -1),
+    vec3(1, 1, 0), vec3(0, -1, 1), vec3(-1, 1, 0), vec3(0, -1, -1));
+float fade(float t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+float lerp1(float t, float a, float b) { return a + t * (b - a); }
+float corner(int h, float ox, float oy, float oz) {
+  vec3 g = kGrad[h & 15];
+  return g.x * ox + g.y * oy + g.z * oz;
+}
+float perlin(vec3 p) {
+  vec3 f = floor(p);
+  int X = int(f.x) & 255, Y = int(f.y) & 255, Z = int(f.z) & 255;
+  float dx = p.x - f.x, dy = p.y - f.y, dz = p.z - f.z;
+  float u = fade(dx), v = fade(dy), w = fade(dz);
+  int a = perm_at(X) + Y, b = perm_at(X + 1) + Y;
+  int aa = perm_at(a) + Z, ab = perm_at(a + 1) + Z, ba = perm_at(b) + Z, bb = perm_at(b + 1) + Z;
+  float x1 = dx - 1.0, y1 = dy - 1.0, z1 = dz - 1.0;
+  float n000 = corner(perm_at(aa), dx, dy, dz), n100 = corner(perm_at(ba), x1, dy, dz);
+  float n010 = corner(perm_at(ab), dx, y1, dz), n110 = corner(perm_at(bb), x1, y1, dz);
+  float n001 = corner(perm_at(aa + 1), dx, dy, z1), n101 = corner(perm_at(ba + 1), x1, dy, z1);
+  float n011 = corner(perm_at(ab + 1), dx, y1, z1), n111 = corner(perm_at(bb + 1), x1, y1, z1);
+  float near_ = lerp1(v, lerp1(u, n000, n100), lerp1(u, n010, n110));
+  float far_ = lerp1(v, lerp1(u, n001, n101), lerp1(u, n011, n111));
+  return lerp1(w, near_, far_);
+}
+)";
+
+constexpr const char* kShaderStyles = R"(
+uniform int u_style;
+uniform mat3 u_eye_to_grain;
+uniform vec3 u_eye;
+uniform float u_distance;
+uniform float u_inv_cell;
+uniform vec3 u_offset1;
+uniform vec3 u_offset2;
+uniform float u_octave2;
+uniform float u_gain;
+uniform vec4 u_tan;
+uniform vec2 u_viewport;
+uniform float u_floor;
+// Dual-source blending (ONE, SRC1_COLOR): out = frag + dst * frag_scale.
+layout(location = 0, index = 0) out vec4 frag;
+layout(location = 0, index = 1) out vec4 frag_scale;
+void main() {
+  float tx = u_tan.x + (gl_FragCoord.x / u_viewport.x) * (u_tan.y - u_tan.x);
+  float ty = u_tan.z + (gl_FragCoord.y / u_viewport.y) * (u_tan.w - u_tan.z);
+  vec3 d = u_eye_to_grain[0] * tx + u_eye_to_grain[1] * ty - u_eye_to_grain[2];
+  d = d * (1.0 / sqrt(dot(d, d)));
+  vec3 e = u_eye;
+  float pixel_rad = (u_tan.y - u_tan.x) / u_viewport.x / sqrt(1.0 + tx * tx + ty * ty);
+  vec3 lattice;
+  float cells_per_pixel;
+  if (u_style == 0) {
+    if (!(d.z < 0.0)) discard;
+    float s = (-u_distance - e.z) / d.z;
+    vec3 q = e + d * s;
+    lattice = vec3(q.x * u_inv_cell, q.y * u_inv_cell, 0.0);
+    cells_per_pixel = s * pixel_rad / -d.z * u_inv_cell;
+  } else {
+    float b = dot(d, e), c = dot(e, e) - u_distance * u_distance;
+    float disc = b * b - c;
+    if (!(disc >= 0.0)) discard;
+    float s = -b + sqrt(disc);
+    lattice = (e + d * s) * u_inv_cell;
+    cells_per_pixel = s * pixel_rad * u_inv_cell;
+  }
+  float w1 = clamp(2.0 - 2.0 * cells_per_pixel, 0.0, 1.0);
+  float w2 = clamp(2.0 - 4.0 * cells_per_pixel, 0.0, 1.0);
+  vec3 p1 = lattice + u_offset1;
+  vec3 p2 = lattice * 2.0 + u_offset2;
+  float n1 = w1 > 0.0 ? perlin(p1) : 0.0;
+  float n2 = w2 > 0.0 ? perlin(p2) : 0.0;
+  float g = w1 * n1 + u_octave2 * w2 * n2;
+  float s = max(-1.0, u_gain * g);
+  frag = vec4(vec3(s * u_floor), 0.0);
+  frag_scale = vec4(vec3(1.0 + s), 1.0);
+}
+)";
+
+constexpr const char* kParticleVertex = R"(
+layout(location = 0) in vec3 a_centre;
+layout(location = 1) in vec3 a_extent;
+layout(location = 2) in vec4 a_rotation;
+layout(location = 3) in vec2 a_shade;
+uniform mat4 u_view_proj;
+uniform vec3 u_eye;
+uniform vec3 u_eye_up;
+uniform vec3 u_eye_right;
+uniform float u_size;
+uniform float u_intensity;
+uniform float u_px_per_tan;
+uniform float u_near_start;
+uniform float u_near_end;
+uniform float u_min_radius_px;
+uniform float u_max_radius_rad;
+out vec3 v_point;
+flat out vec3 v_centre;
+flat out vec3 v_semi;
+flat out vec4 v_rotation;
+flat out vec2 v_shade;
+void main() {
+  vec3 semi = 0.5 * a_extent * u_size;
+  float r = max(semi.x, max(semi.y, semi.z));
+  vec3 to = a_centre - u_eye;
+  float dist = length(to);
+  float alpha = a_shade.y * u_intensity * smoothstep(u_near_start, u_near_end, dist);
+  // A grain seen larger than u_max_radius_rad (a particle close to the eye) keeps the coverage of
+  // one that size: it fades as (max / radius)^2 instead of showing as a flake.
+  float radius_rad = r / dist;
+  if (radius_rad > u_max_radius_rad) alpha *= (u_max_radius_rad / radius_rad) * (u_max_radius_rad / radius_rad);
+  // Coverage-preserving minimum footprint: grow a sub-pixel particle, thin it by the area ratio.
+  float radius_px = radius_rad * u_px_per_tan;
+  float k = max(1.0, u_min_radius_px / max(radius_px, 1e-9));
+  semi *= k;
+  r *= k;
+  alpha /= k * k;
+  v_centre = a_centre;
+  v_semi = semi;
+  v_rotation = a_rotation;
+  // Modulation amplitude: brightness 0 darkens, 1 brightens, 0.5 leaves the image as it is.
+  v_shade = vec2(2.0 * a_shade.x - 1.0, alpha);
+  if (!(alpha > 0.0) || dist <= 1.05 * r) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: nothing drawn
+    v_point = a_centre;
+    return;
+  }
+  // A quad perpendicular to the line of sight, large enough to hold the bounding sphere's
+  // silhouette (half-size r d / sqrt(d^2 - r^2) at the centre's distance).
+  vec3 w = to / dist;
+  vec3 side = cross(w, u_eye_up);
+  if (dot(side, side) < 1e-12) side = u_eye_right;
+  side = normalize(side);
+  vec3 up = cross(side, w);
+  float hs = r * dist / sqrt(dist * dist - r * r);
+  vec2 c = vec2((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0);
+  vec3 p = a_centre + hs * (c.x * side + c.y * up);
+  v_point = p;
+  gl_Position = u_view_proj * vec4(p, 1.0);
+}
+)";
+
+constexpr const char* kParticleFragment = R"(
+in vec3 v_point;
+flat in vec3 v_centre;
+flat in vec3 v_semi;
+flat in vec4 v_rotation;
+flat in vec2 v_shade;
+uniform vec3 u_eye;
+uniform float u_floor;
+// Dual-source blending (ONE, SRC1_COLOR) as the shader styles: out = frag + dst * frag_scale.
+layout(location = 0, index = 0) out vec4 frag;
+layout(location = 0, index = 1) out vec4 frag_scale;
+// Rotates by the inverse of the unit quaternion q = (x, y, z, w).
+vec3 rotate_inverse(vec4 q, vec3 v) {
+  vec3 u = -q.xyz;
+  return v + 2.0 * cross(u, cross(u, v) + q.w * v);
+}
+void main() {
+  vec3 o = rotate_inverse(v_rotation, u_eye - v_centre) / v_semi;
+  vec3 d = rotate_inverse(v_rotation, v_point - u_eye) / v_semi;
+  float a = dot(d, d), b = dot(o, d), c = dot(o, o) - 1.0;
+  float disc = b * b - a * c;
+  if (!(disc > 0.0)) discard;
+  float s = max(-1.0, v_shade.x * v_shade.y * (disc / a));
+  frag = vec4(vec3(s * u_floor), 0.0);
+  frag_scale = vec4(vec3(1.0 + s), 1.0);
+}
+)";
+
+}  // namespace
+
+std::string grain_shader_fragment_source() {
+  return std::string(kNoise) + kShaderStyles;
+}
+std::string grain_particle_vertex_source() {
+  return kParticleVertex;
+}
+std::string grain_particle_fragment_source() {
+  return kParticleFragment;
+}
+
+}  // namespace vdfx::effects

@@ -1,0 +1,88 @@
+/// @file
+/// @brief The Desktop layout at the default window: panels cover exactly their window rectangles,
+/// textures match their on-screen size (crisp text), the smallest text is at least 13 px tall, the
+/// view centre stays clear; the heads-up line and expiring messages.
+#include <gtest/gtest.h>
+
+#include "app/editor.h"
+#include "editor_scripts.h"
+#include "editor_test_util.h"
+#include "ui/theme.h"
+#include "xr/input_backend.h"
+#include "xr/mirror.h"
+
+namespace vdfx::app {
+namespace {
+
+EditorOptions desktop(DesktopViewport v = {}) {
+  EditorOptions o;
+  o.layout = PanelLayout::Desktop;
+  o.viewport = v;
+  return o;
+}
+
+TEST(DesktopLayout, PanelsCoverTheirRectanglesWithTexturesAtScreenResolution) {
+  Editor ed(test::empty_sidecar(90), DocumentOptions{{.async = false}}, desktop());
+  xr::SimConfig sim;
+  ed.update(xr::create_sim_backend(sim)->poll(0), 0);
+  const auto g = xr::MirrorGeometry::from_profile(xr::load_hmd_profile("generic90"), xr::MirrorMode::Desktop, 1, 1,
+                                                  1280, 720, 100.0);
+  const xr::Pose head = ed.input().head;
+  for (ui::Panel* p : ed.panels()) {
+    const ScreenRect r = ed.ui().screen_rect(p->id());
+    // Its corners project onto the rectangle's corners (to a hundredth of a pixel) ...
+    const auto tl = xr::mirror_pixel_of(g, head.inverse().transform(p->world_of_pixel({0.0, 0.0})));
+    const auto br = xr::mirror_pixel_of(
+        g, head.inverse().transform(p->world_of_pixel({static_cast<double>(p->width_px()), static_cast<double>(p->height_px())})));
+    ASSERT_TRUE(tl && br) << p->id();
+    EXPECT_NEAR(tl->x, r.x, 0.01) << p->id();
+    EXPECT_NEAR(tl->y, r.y, 0.01) << p->id();
+    EXPECT_NEAR(br->x, r.x + r.w, 0.01) << p->id();
+    EXPECT_NEAR(br->y, r.y + r.h, 0.01) << p->id();
+    // ... inside the window, and its texture has that many pixels: one texel per screen pixel.
+    EXPECT_GE(r.x, 0) << p->id();
+    EXPECT_LE(r.x + r.w, 1280) << p->id();
+    EXPECT_GE(r.y, 0) << p->id();
+    EXPECT_LE(r.y + r.h, 720) << p->id();
+    EXPECT_EQ(p->texture_width(), r.w) << p->id();
+    EXPECT_EQ(p->texture_height(), r.h) << p->id();
+    // The view centre, where keyframes are placed, stays clear.
+    EXPECT_FALSE(640 >= r.x && 640 < r.x + r.w && 360 >= r.y && 360 < r.y + r.h) << p->id();
+  }
+  // The smallest text the toolkit draws is rasterised at >= 13 px at the default window.
+  EXPECT_GE(std::lround(ui::Theme::dark().font_small * desktop_ui_scale({})), 13);
+}
+
+TEST(DesktopLayout, PanelsFollowTheWindow) {
+  Editor ed(test::empty_sidecar(90), DocumentOptions{{.async = false}}, desktop());
+  ed.set_viewport({1920, 1080, 100.0});
+  const ScreenRect r = ed.ui().screen_rect(kTimelinePanelId);
+  EXPECT_EQ(r.x + r.w, 1920 - 12);
+  EXPECT_EQ(r.y + r.h, 1080 - 12);
+  EXPECT_EQ(ed.ui().timeline->texture_width(), r.w);
+  EXPECT_GT(desktop_ui_scale({1920, 1080, 100.0}), desktop_ui_scale({}));
+}
+
+TEST(DesktopLayout, HeadsUpLineAndExpiringMessages) {
+  Editor ed(test::empty_sidecar(90), DocumentOptions{{.async = false}}, desktop());
+  ed.set_loop_status(12.0, false);
+  ed.update(test::looking(30.0, -5.0, 0), 0);
+  ed.seek(45);
+  ed.update(test::looking(30.0, -5.0, 1), 1);
+  const std::string hud = ed.hud_text();
+  for (const char* s : {"frame 45 / 90", "0:01.50", "az 30\u00b0 alt -5\u00b0", "Exposure (0 keyframes)", "12 fps"})
+    EXPECT_NE(hud.find(s), std::string::npos) << s << " in " << hud;
+  EXPECT_EQ(ed.ui().hud_line->text(), hud);
+  ed.place_keyframe();
+  ed.update(test::looking(30.0, -5.0, 2), 2);
+  EXPECT_EQ(ed.hud_message(), "placed a keyframe");
+  const std::int64_t later = 2 + Editor::kMessageLifetimeNs + 1;
+  ed.update(test::looking(30.0, -5.0, later), later);
+  EXPECT_NE(ed.hud_message(), "placed a keyframe") << "messages expire";
+  ed.set_loop_status(12.0, true);
+  ed.update(test::looking(30.0, -5.0, later + 1), later + 1);
+  EXPECT_EQ(ed.hud_message(), "loading the video\u2026");
+}
+
+}  // namespace
+}  // namespace vdfx::app
