@@ -12,6 +12,7 @@
 #include "app/cli_util.h"
 #include "app/export_baked.h"
 #include "app/export_file.h"
+#include "app/export_layers.h"
 #include "app/export_path.h"
 #include "app/export_pipeline.h"
 #include "app/export_progress.h"
@@ -172,6 +173,15 @@ int cmd_export(const Args& args) {
             << es.height << ", frames " << range.first << "-" << range.last << " (" << total << ") at "
             << props.fps.num << "/" << props.fps.den << " fps, " << es.codec << " crf " << es.crf << " "
             << chroma << (baked ? ", Spherical Video V2 equirectangular" : "") << "\n";
+  std::optional<PathLayers> layers;
+  if (!baked && (!sidecar.flares.empty() || !sidecar.grains.empty())) {
+    layers.emplace(sidecar);
+    for (const std::string& what : layers->left_out()) std::cerr << "vdfx export: left out: " << what << "\n";
+    if (layers->needs_frame_order()) {
+      std::cerr << "vdfx export: an auto flare light follows the video frame by frame: one render thread\n";
+      threads = 1;
+    }
+  }
   if (baked) {
     std::cerr << "vdfx export: flare and grain are view-dependent and never part of a baked video";
     if (baked_drops_effects(stack)) std::cerr << "; the vignette (measured from the eye's centre) is left out too";
@@ -184,6 +194,10 @@ int cmd_export(const Args& args) {
   ps.hfov_deg = fov;
   ps.width = view_size.width;
   ps.height = view_size.height;
+  if (layers)
+    ps.view_layers = [&](cv::Mat& rgb, const cv::Mat& equirect, const xr::RenderView& view, std::int64_t k) {
+      layers->draw(rgb, equirect, view, k);
+    };
   const FrameRenderer render = [&](const io::Picture& src, std::int64_t k) {
     const cv::Mat rgb = io::to_rgb(src, io::PixelFormat::RgbF32);
     if (baked) return io::rgb_to_ycbcr(render_baked(rgb, stack, k, bo), es.ycbcr);

@@ -98,17 +98,24 @@ effects::StackParams Editor::params_for_view(const Direction& direction, std::in
   if (unaltered_) return {};
   effects::StackParams sp = doc_.interpolator().evaluate(direction, frame);
   const PendingEdit* p = doc_.pending();
-  if (!p) return sp;
+  const auto type = p ? p->target().stack_effect() : std::nullopt;
+  if (!type) return sp;  // a flare's or grain's pending edit is drawn by their layers
   // At a new keyframe itself its values are exact; elsewhere interpolate with it.
   if (!p->moved() && frame == p->key().frame && angle_deg(direction, p->key().direction) < 1e-9) {
-    sp.set(p->effect(), p->key().params);
+    sp.set(*type, p->key().params);
     return sp;
   }
   const auto rbf = p->interpolant();  // a grab that has not moved changes nothing
   if (!rbf) return sp;
   const Eigen::VectorXd v = rbf->evaluate(direction, frame);
-  sp.set(p->effect(), std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
+  sp.set(*type, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
   return sp;
+}
+
+std::shared_ptr<const effects::RbfInterpolator> Editor::interpolant(EditTarget target) const {
+  const PendingEdit* p = doc_.pending();
+  if (p && p->target() == target && p->changes_interpolant()) return p->interpolant();
+  return doc_.keyframe_set(target).solution();
 }
 
 void Editor::sync_pending() {
@@ -141,7 +148,7 @@ void Editor::say(std::string message) {
   status_.message_t = play_.now;
 }
 
-void Editor::select_effect(EffectType type) {
+void Editor::select_effect(EditTarget type) {
   if (type != effect_) {
     sel_.index.reset();
     doc_.cancel_pending();  // a grab of the old effect's keyframe is cancelled
@@ -151,6 +158,28 @@ void Editor::select_effect(EffectType type) {
   effect_ = type;
   panels_.show_effect(type);
   show_editor_state(*this, panels_);
+}
+
+void Editor::set_flare_style(effects::FlareStyle style) {
+  doc_.set_flare_style(style);
+  say(std::string("flare style ") + std::string(effects::flare_style_name(style)));
+}
+
+void Editor::set_light_here() {
+  doc_.set_flare_light(view_);
+  say("flare light set at az " + std::to_string(static_cast<int>(std::lround(view_.azimuth_deg))) + " alt " +
+      std::to_string(static_cast<int>(std::lround(view_.altitude_deg))));
+}
+
+void Editor::set_auto_light(bool on) {
+  if (!on) return set_light_here();
+  doc_.set_flare_light(effects::AutoLight{});
+  say("flare light: the brightest region of each frame");
+}
+
+void Editor::set_grain_style(effects::GrainStyle style) {
+  doc_.set_grain_style(style);
+  say(std::string("grain style ") + std::string(effects::grain_style_name(style)));
 }
 
 void Editor::set_chosen_params(std::vector<double> params) {

@@ -88,7 +88,10 @@ class Editor {
   const effects::Direction& view_direction() const { return view_; }
   /// The input of the last update.
   const xr::InputState& input() const { return input_; }
-  effects::EffectType current_effect() const { return effect_; }
+  EditTarget current_effect() const { return effect_; }
+  /// A target's interpolant as shown now: the pending edit's while one of its keyframes is
+  /// placed or held, else the document's solution (null or empty: no keyframes).
+  std::shared_ptr<const effects::RbfInterpolator> interpolant(EditTarget target) const;
   /// A hand's UI pointer (what its ray hits, the widget under it).
   const ui::Pointer& pointer(xr::Hand hand) const { return controls_.pointer(hand); }
 
@@ -100,7 +103,14 @@ class Editor {
   void set_loop_status(double frames_per_second, bool video_loading);
 
   // ---- actions (the bindings and the panels call these; so can tests)
-  void select_effect(effects::EffectType type);
+  void select_effect(EditTarget target);
+  /// The flare's style (one undo step).
+  void set_flare_style(effects::FlareStyle style);
+  /// "Set light here": the flare's light becomes the view centre (one undo step).
+  void set_light_here();
+  /// The flare's light found in each video frame (on), or fixed at the view centre (off).
+  void set_auto_light(bool on);
+  void set_grain_style(effects::GrainStyle style);
   /// The current effect's chosen values (one undo step unless a group is open).
   void set_chosen_params(std::vector<double> params);
   void set_playing(bool on);
@@ -199,7 +209,7 @@ class Editor {
   io::Rational fps_;
   xr::InputState input_;
   effects::Direction view_{};
-  effects::EffectType effect_ = effects::EffectType::Exposure;
+  EditTarget effect_ = effects::EffectType::Exposure;
   Playhead play_;
   Selection sel_;
   Status status_;

@@ -8,6 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <opencv2/core.hpp>
 
+#include "app/flare_set_of.h"
 #include "effects/effect_shaders.h"
 
 namespace vdfx::app {
@@ -33,6 +34,7 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
   if (thumbnails_)
     if (auto thumbs = thumbnails_->take()) editor_.ui().strip->set_thumbnails(std::move(*thumbs));
   editor_.update(input, t);
+  layers_.update(editor_);
   info.video_frame = editor_.frame();
   info.video_paused = !editor_.playing();
   info.video_loop = true;  // the editor's playhead wraps (or stops) itself; the decoder follows it
@@ -43,7 +45,7 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
   for (const auto& spec : effects::all_effect_specs())
     if (!doc.keyframes(spec.type).empty()) mask |= effects::shader_bit(spec.type);
   const PendingEdit* pending = doc.pending();
-  if (pending) mask |= effects::shader_bit(pending->effect());
+  if (const auto type = pending ? pending->target().stack_effect() : std::nullopt) mask |= effects::shader_bit(*type);
   active_ = mask;
   // params() answers differently after an edit, a finished asynchronous solve, a move of the
   // pending keyframe, or the unaltered switch.
@@ -57,6 +59,16 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
 
 effects::StackParams EditorClient::params(const effects::Direction& direction, std::int64_t video_frame) {
   return editor_.params_for_view(direction, video_frame);
+}
+
+std::vector<effects::FlareLayout> EditorClient::flares(const xr::Pose& head, std::int64_t video_frame,
+                                                       const io::Picture* picture) {
+  return flare_layouts(layers_.flares(), head, video_frame, picture);
+}
+
+std::vector<effects::GrainFrame> EditorClient::grains(const xr::Pose& head, std::int64_t display_time_ns,
+                                                      std::int64_t video_frame) {
+  return layers_.grains().layout({xr::position_of(head), xr::rotation_of(head)}, display_time_ns, video_frame);
 }
 
 std::vector<xr::QuadLayer> EditorClient::quads() {
@@ -88,7 +100,6 @@ std::vector<xr::QuadLayer> EditorClient::quads() {
         r &= whole;
         if (r.empty()) continue;
         inside.push_back(r);
-        uploaded_pixels_ += r.area();
       }
       s.texture = textures_->upload(i, tex, fresh ? std::vector<cv::Rect>{} : inside);
       s.panel = &p;

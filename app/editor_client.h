@@ -20,6 +20,7 @@
 #include <opencv2/core.hpp>
 
 #include "app/editor.h"
+#include "app/editor_layers.h"
 #include "app/frame_client.h"
 #include "app/thumbnail_worker.h"
 
@@ -68,12 +69,15 @@ class EditorClient : public FrameClient {
   std::uint64_t params_revision() const override { return revision_; }
   std::vector<xr::QuadLayer> quads() override;
   bool unaltered() const override { return editor_.unaltered(); }
+  std::vector<effects::FlareLayout> flares(const xr::Pose& head_in_local, std::int64_t video_frame,
+                                           const io::Picture* picture) override;
+  std::vector<effects::GrainFrame> grains(const xr::Pose& head_in_local, std::int64_t display_time_ns,
+                                          std::int64_t video_frame) override;
   std::string status_line() const override;
 
   Editor& editor() { return editor_; }
-  /// Panel uploads so far (whole or partial), and the pixels they carried.
+  /// Panel uploads so far (whole or partial).
   int uploads() const { return uploads_; }
-  std::int64_t uploaded_pixels() const { return uploaded_pixels_; }
   /// Frees the GL textures while the context is still current (see PanelTextures::release).
   void release_textures();
 
@@ -105,9 +109,9 @@ class EditorClient : public FrameClient {
   };
   AnswersKey answers_;
   int uploads_ = 0;
-  std::int64_t uploaded_pixels_ = 0;
   bool follow_window_ = false;
   std::unique_ptr<ThumbnailWorker> thumbnails_;
+  EditorLayers layers_;
   PointerDrawing drawing_;
   std::array<unsigned, 3> pointer_textures_{};  //!< dot, ring, ray
   std::vector<xr::QuadLayer> pointer_quads_;

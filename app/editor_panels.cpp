@@ -29,18 +29,25 @@ xr::Pose offset(glm::dvec3 p, double tilt_deg = 0.0) {
 }
 
 // Hands layout (layout pixels; 1000 px = 0.25 m).
-constexpr int kEffectW = 1000, kEffectH = 1500;
+constexpr int kEffectW = 1000, kEffectH = 1600;
 constexpr int kTimelineW = 2000, kTimelineH = 1200;
 
-std::string title_case(std::string_view s) {
-  std::string n(s);
-  if (!n.empty()) n[0] = static_cast<char>(n[0] - 'a' + 'A');
-  return n;
+// The option rows under the effect widget (flare: style and light; grain: a 2 x 2 style grid).
+constexpr double kMenuInset = 16.0;  // a MenuList's frame around its rows
+
+std::string grain_style_title(effects::GrainStyle s) {
+  switch (s) {
+    case effects::GrainStyle::Headset: return "Headset";
+    case effects::GrainStyle::Surface: return "Surface";
+    case effects::GrainStyle::ObjectCloud: return "Object cloud";
+    case effects::GrainStyle::FreeCloud: return "Free cloud";
+  }
+  return {};
 }
 
 }  // namespace
 
-std::string effect_widget_id(EffectType type) { return std::string(effects::effect_name(type)); }
+std::string effect_widget_id(EditTarget target) { return std::string(target.name()); }
 
 EditorPanels::EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frame_count,
                            PanelLayout layout_, DesktopViewport viewport)
@@ -54,7 +61,7 @@ EditorPanels::EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_
     build_desktop_panels(fonts, frame_count);
     set_viewport(viewport);
   }
-  show_effect(EffectType::Exposure);
+  show_effect(EditTarget(EffectType::Exposure));
 }
 
 void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, int width, int height,
@@ -67,10 +74,11 @@ void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, 
   title = &p.add<Label>("title", "Effects", Label::Role::Title);
   title->set_rect(col.next(64));
   std::vector<std::string> names;
-  for (const auto& s : effects::all_effect_specs()) names.push_back(title_case(s.name));
-  menu = &p.add<MenuList>("effect_menu", names, static_cast<int>(EffectType::Exposure), t.row_height);
-  menu->set_rect(col.next(6 * t.row_height + 16));
+  for (const EditTarget target : all_edit_targets()) names.push_back(target.title());
+  menu = &p.add<MenuList>("effect_menu", names, static_cast<int>(EffectType::Exposure), t.row_height, 2);
+  menu->set_rect(col.next(menu->rows() * t.row_height + kMenuInset));
   effect_widget_rect_ = col.next(330);
+  options_rect_ = col.next(2 * t.row_height + kMenuInset + t.gap);
   blur = &p.add<Slider1D>("blur", "Blur", Axis{0.0, 10.0, 0.1, "%.1f", "\u00b0", ""}, 0.0, 0.0);
   tint = &p.add<ColourWheel>("tint", "Tint");
   exposure = &p.add<Slider1D>("exposure", "Exposure", Axis{-8.0, 8.0, 0.1, "%+.1f", " stops", ""}, 0.0, 0.0);
@@ -78,7 +86,19 @@ void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, 
   contrast = &p.add<Slider1D>("contrast", "Contrast", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
   vignette = &p.add<Pad2D>("vignette", "Vignette", Axis{0.0, 180.0, 1.0, "%.0f", "\u00b0", "radius"},
                            Axis{0.01, 180.0, 1.0, "%.0f", "\u00b0", "falloff"}, glm::dvec2(180.0, 0.01));
-  effect_widgets = {blur, tint, exposure, saturation, contrast, vignette};
+  flare_intensity = &p.add<Slider1D>("flare", "Flare intensity", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 0.0, 0.0);
+  flare_style = &p.add<MenuList>("flare_style", std::vector<std::string>{"Headset", "Directional"},
+                                 static_cast<int>(effects::FlareStyle::Directional), t.row_height, 2);
+  set_light = &p.add<Button>("set_light", "Set light here");
+  auto_light = &p.add<Toggle>("auto_light", "Auto light", true);
+  grain_intensity = &p.add<Slider1D>("grain", "Grain intensity", Axis{0.0, 1.0, 0.01, "%.2f", "", ""}, 0.0, 0.0);
+  Axis size_axis{0.25, 4.0, 0.0, "%.2f", "\u00d7", ""};
+  size_axis.log = true;
+  grain_size = &p.add<Slider1D>("grain_size", "Grain size", size_axis, 1.0, 1.0);
+  std::vector<std::string> styles;
+  for (const auto st : effects::kGrainStyles) styles.push_back(grain_style_title(st));
+  grain_style = &p.add<MenuList>("grain_style", styles, 0, t.row_height, 2);
+  effect_widgets = {blur, tint, exposure, saturation, contrast, vignette, flare_intensity, grain_intensity};
   const Rect row = col.next(t.row_height);
   undo = &p.add<Button>("undo", "\u2190 Undo");
   undo->set_rect(split_cols(row, 2, 0, t.gap));
@@ -164,10 +184,18 @@ void EditorPanels::build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts
   add_visualizations(p, col, t.row_height, false);
 }
 
-void EditorPanels::show_values(EffectType type, std::span<const double> v) {
-  ui::Widget* w = effect_widgets[static_cast<std::size_t>(type)];
-  if (w->pressed()) return;  // it shows its own value while dragged
-  switch (type) {
+void EditorPanels::show_values(EditTarget target, std::span<const double> v) {
+  const auto put = [](ui::Slider1D* slider, double value) {
+    if (!slider->pressed()) slider->set_value(value);  // it shows its own value while dragged
+  };
+  if (target.is_flare()) return put(flare_intensity, v[0]);
+  if (target.is_grain()) {
+    put(grain_intensity, v[0]);
+    put(grain_size, v[1]);
+    return;
+  }
+  if (effect_widgets[static_cast<std::size_t>(target.index())]->pressed()) return;
+  switch (*target.stack_effect()) {
     case EffectType::Tint: {
       const glm::dvec2 hs = ui::hue_sat_from_tint_gain({v[0], v[1], v[2]});
       if (glm::length(hs - glm::dvec2(tint->hue(), tint->sat())) > 1e-6) tint->set_hue_sat(hs.x, hs.y);
@@ -181,21 +209,51 @@ void EditorPanels::show_values(EffectType type, std::span<const double> v) {
   }
 }
 
-std::vector<double> EditorPanels::values_of(EffectType type, const ui::Event& e) {
-  switch (type) {
-    case EffectType::Tint: {
-      const Eigen::Vector3d g = ui::tint_gain_from_hue_sat(e.new_value.x, e.new_value.y);
-      return {g[0], g[1], g[2]};
-    }
-    case EffectType::Vignette: return {e.new_value.x, e.new_value.y};
-    default: return {e.new_value.x};
-  }
+bool EditorPanels::edits_values(EditTarget target, const ui::Widget* w) const {
+  return w == effect_widgets[static_cast<std::size_t>(target.index())] || (target.is_grain() && w == grain_size);
 }
 
-void EditorPanels::show_effect(EffectType type) {
+std::vector<double> EditorPanels::values_of(EditTarget target, const ui::Event& e,
+                                            std::span<const double> current) const {
+  if (target == EffectType::Tint) {
+    const Eigen::Vector3d g = ui::tint_gain_from_hue_sat(e.new_value.x, e.new_value.y);
+    return {g[0], g[1], g[2]};
+  }
+  if (target == EffectType::Vignette) return {e.new_value.x, e.new_value.y};
+  if (target.is_grain()) {
+    std::vector<double> v(current.begin(), current.end());
+    v[e.source == grain_size ? 1 : 0] = e.new_value.x;
+    return v;
+  }
+  return {e.new_value.x};
+}
+
+void EditorPanels::show_options(const effects::FlareEffect& flare, const effects::GrainEffect& grain) {
+  flare_style->select(static_cast<int>(flare.style));
+  auto_light->set_on(std::holds_alternative<effects::AutoLight>(flare.light));
+  const auto it = std::find(effects::kGrainStyles.begin(), effects::kGrainStyles.end(), grain.style);
+  grain_style->select(static_cast<int>(it - effects::kGrainStyles.begin()));
+}
+
+void EditorPanels::show_effect(EditTarget target) {
+  const ui::Theme& t = effect->theme();
   for (std::size_t i = 0; i < effect_widgets.size(); ++i)
-    effect_widgets[i]->set_rect(i == static_cast<std::size_t>(type) ? effect_widget_rect_ : ui::Rect{});
-  menu->select(static_cast<int>(type));
+    effect_widgets[i]->set_rect(static_cast<int>(i) == target.index() ? effect_widget_rect_ : ui::Rect{});
+  for (ui::Widget* w : std::initializer_list<ui::Widget*>{grain_size, flare_style, set_light, auto_light, grain_style})
+    w->set_rect({});
+  if (target.is_grain()) {
+    grain_intensity->set_rect(ui::split_rows(effect_widget_rect_, 2, 0, t.gap));
+    grain_size->set_rect(ui::split_rows(effect_widget_rect_, 2, 1, t.gap));
+    grain_style->set_rect({options_rect_.x, options_rect_.y, options_rect_.w, 2 * t.row_height + kMenuInset});
+  }
+  if (target.is_flare()) {
+    ui::Stack rows(options_rect_, t.gap);
+    flare_style->set_rect(rows.next(t.row_height + kMenuInset));
+    const ui::Rect light = rows.next(t.row_height);
+    set_light->set_rect(ui::split_cols(light, 2, 0, t.gap));
+    auto_light->set_rect(ui::split_cols(light, 2, 1, t.gap));
+  }
+  menu->select(target.index());
 }
 
 std::vector<ui::Panel*> EditorPanels::all() {

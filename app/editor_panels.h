@@ -1,9 +1,11 @@
 /// @file
 /// @brief The editor's panels (ui/): their widgets and where they sit.
 ///
-/// Effect panel: title, effect menu (all six effects), the current effect's widget (tint: colour
-/// wheel; vignette: 2-D pad radius x falloff; blur, exposure, saturation, contrast: a slider with
-/// the contract's range), undo / redo, delete (the selected keyframe, else the nearest) and
+/// Effect panel: title, effect menu (the six effects, Flare and Grain, in two columns), the
+/// current effect's widget (tint: colour wheel; vignette: 2-D pad radius x falloff; blur,
+/// exposure, saturation, contrast, flare intensity: a slider with the contract's range; grain:
+/// intensity and size sliders), its options (flare: style switch, "Set light here", auto light;
+/// grain: style switch), undo / redo, delete (the selected keyframe, else the nearest) and
 /// deselect, the current effect's exponent and time scale, autosave status.
 /// Timeline panel: play/pause, previous / next keyframe, time, the timeline strip with video
 /// thumbnails and keyframe markers.
@@ -28,7 +30,10 @@
 #include <string_view>
 #include <vector>
 
+#include "app/edit_target.h"
 #include "effects/effect_types.h"
+#include "effects/flare.h"
+#include "effects/grain.h"
 #include "effects/keyframe.h"
 #include "ui/button.h"
 #include "ui/colour_wheel.h"
@@ -93,15 +98,20 @@ class EditorPanels {
   const DesktopViewport& viewport() const { return viewport_; }
   /// Desktop: where each panel covers the window (for tests and screenshots); empty for Hands.
   ScreenRect screen_rect(std::string_view panel_id) const;
-  /// Shows only the current effect's widget and selects it in the menu.
-  void show_effect(effects::EffectType type);
-  /// Shows an effect's values (flat, EffectSpec layout) on its widget; a widget the pointer holds
-  /// keeps its own value, and the wheel keeps its hue and saturation unless the gains moved
-  /// them (tint normalisation would nudge a held wheel).
-  void show_values(effects::EffectType type, std::span<const double> values);
-  /// The values (flat, EffectSpec layout) an event of effect `type`'s widget sets: the slider's
-  /// value, the pad's two, the wheel's hue and saturation as normalised tint gains.
-  static std::vector<double> values_of(effects::EffectType type, const ui::Event& event);
+  /// Shows only the current target's widgets and selects it in the menu.
+  void show_effect(EditTarget target);
+  /// Shows a target's values (flat, EditTarget::params() layout) on its widgets; a widget the
+  /// pointer holds keeps its own value, and the wheel keeps its hue and saturation unless the
+  /// gains moved them (tint normalisation would nudge a held wheel).
+  void show_values(EditTarget target, std::span<const double> values);
+  /// Whether `widget` is one of the widgets that set `target`'s values.
+  bool edits_values(EditTarget target, const ui::Widget* widget) const;
+  /// The values (flat) an event of one of `target`'s value widgets sets, the others kept from
+  /// `current`: the slider's value, the pad's two, the wheel's hue and saturation as normalised
+  /// tint gains, the grain's intensity or size.
+  std::vector<double> values_of(EditTarget target, const ui::Event& event, std::span<const double> current) const;
+  /// The flare's and the grain's options as the document has them (style, light).
+  void show_options(const effects::FlareEffect& flare, const effects::GrainEffect& grain);
   /// Every panel, in hit-test order.
   std::vector<ui::Panel*> all();
   /// The panel with this id, or null.
@@ -121,8 +131,9 @@ class EditorPanels {
   // effect panel
   ui::Label* title = nullptr;
   ui::MenuList* menu = nullptr;
-  //! One widget per effect, indexed by EffectType; only the current one has a rectangle.
-  std::array<ui::Widget*, effects::kEffectCount> effect_widgets{};
+  //! One (main) widget per target, indexed by EditTarget::index(); only the current target's
+  //! widgets have rectangles.
+  std::array<ui::Widget*, EditTarget::kCount> effect_widgets{};
   // The same, typed.
   ui::Slider1D* blur = nullptr;
   ui::ColourWheel* tint = nullptr;
@@ -130,6 +141,13 @@ class EditorPanels {
   ui::Slider1D* saturation = nullptr;
   ui::Slider1D* contrast = nullptr;
   ui::Pad2D* vignette = nullptr;
+  ui::Slider1D* flare_intensity = nullptr;
+  ui::MenuList* flare_style = nullptr;  //!< Headset | Directional (effects::FlareStyle order)
+  ui::Button* set_light = nullptr;      //!< "Set light here": the light at the view centre
+  ui::Toggle* auto_light = nullptr;     //!< the light found in each video frame
+  ui::Slider1D* grain_intensity = nullptr;
+  ui::Slider1D* grain_size = nullptr;
+  ui::MenuList* grain_style = nullptr;  //!< effects::kGrainStyles order, two columns
   ui::Button* undo = nullptr;
   ui::Button* redo = nullptr;
   ui::Button* delete_nearest = nullptr;  //!< deletes the selected keyframe, else the nearest
@@ -165,11 +183,12 @@ class EditorPanels {
   void add_transport_row(ui::Panel& p, ui::Stack& col);
 
   DesktopViewport viewport_;
-  ui::Rect effect_widget_rect_;
+  ui::Rect effect_widget_rect_, options_rect_;
   ui::Rect plot_rect_, minimap_rect_;
 };
 
-/// Widget ids of the per-effect widgets ("blur", "tint", ...: the effect's sidecar name).
-std::string effect_widget_id(effects::EffectType type);
+/// Widget ids of the per-target main widgets ("blur", "tint", ..., "flare", "grain": the sidecar
+/// name).
+std::string effect_widget_id(EditTarget target);
 
 }  // namespace vdfx::app

@@ -3,10 +3,14 @@
 #include "app/editor_replay.h"
 
 #include <cstdio>
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 
 #include "app/editor.h"
+#include "app/editor_layers.h"
 #include "effects/equirect_sampler.h"
+#include "effects/flare_render.h"
+#include "effects/grain_render.h"
 #include "effects/view_renderer.h"
 #include "io/frame_decoder.h"
 #include "io/image_write.h"
@@ -15,6 +19,7 @@
 #include "io/recording.h"
 #include "ui/interaction.h"
 #include "xr/input_backend.h"
+#include "xr/render_view.h"
 
 namespace vdfx::app {
 
@@ -79,6 +84,66 @@ void overlay_panels(cv::Mat& rgb8, const effects::ViewCamera& camera, const glm:
   }
 }
 
+namespace {
+
+/// The editor's layout for a recording: the sim's were made with the desktop layout (panels in
+/// front of the head), in the view their header names (older ones: 1280 x 720 at 90 degrees).
+EditorOptions editor_options_for(const io::RecordingHeader& header) {
+  EditorOptions eo;
+  if (header.desktop || header.hmd == "sim") {
+    eo.layout = PanelLayout::Desktop;
+    const io::RecordedDesktopView v = header.desktop.value_or(io::RecordedDesktopView{1280, 720, 90.0});
+    eo.viewport = {v.width, v.height, v.hfov_deg};
+  } else {
+    eo.layout = PanelLayout::Hands;
+  }
+  return eo;
+}
+
+/// Video frame `frame` as RGB float (a still: its only frame).
+cv::Mat decode_frame(io::FrameDecoder& decoder, const fs::path& video, std::int64_t frame) {
+  decoder.seek(decoder.properties().is_still ? 0 : frame);
+  cv::Mat image;
+  if (decoder.read(image) != io::DecodeStatus::Ok)
+    throw io::InputError(video.string() + ": frame " + std::to_string(frame) + " could not be decoded");
+  if (image.type() != CV_32FC3) image.convertTo(image, CV_32FC3, 1.0 / 255.0);
+  return image;
+}
+
+/// What the editor's window shows at display time t_ns, on the CPU, as 8-bit BGR: the head view
+/// with the editor's parameters, then the flares and shader grain as the window draws them (laid
+/// out from the head, which looks along the view as the camera does), then the panels.
+cv::Mat render_replay_frame(Editor& editor, EditorLayers& layers, const cv::Mat& image, std::int64_t frame,
+                            std::int64_t t_ns, const ReplayOptions& o, ReplayResult& result) {
+  effects::EquirectSampler sampler(image);
+  const auto camera = effects::ViewCamera::from_horizontal_fov({editor.view_direction(), 0.0}, o.hfov_deg,
+                                                               o.width, o.height);
+  cv::Mat rendered = effects::render_view(sampler, camera, editor.current_params());
+  const xr::RenderView view = xr::RenderView::look_at(editor.view_direction(), 0.0, o.hfov_deg, o.width, o.height);
+  const glm::dvec3 p = editor.input().head.position;
+  const effects::HeadPose head{Eigen::Vector3d(p.x, p.y, p.z), view.orientation};
+  layers.update(editor);
+  if (layers.flares().uses_auto_light()) layers.flares().observe(frame, image);
+  effects::add_flares(rendered, camera, head.position, layers.flares().layouts(head, frame));
+  for (const effects::GrainFrame& g : layers.grains().layout(head, t_ns, frame)) {
+    if (!effects::is_volumetric(g.style)) {
+      effects::composite_shader_grain(rendered, g, view.orientation, head.position, view.tangents());
+      continue;
+    }
+    const std::string note = "grain style " + std::string(effects::grain_style_name(g.style)) +
+                             " is drawn on the GPU only: not in the replay's frames";
+    if (std::find(result.messages.begin(), result.messages.end(), note) == result.messages.end())
+      result.messages.push_back(note);
+  }
+  cv::Mat rgb8 = effects::to_rgb8(rendered);
+  overlay_panels(rgb8, camera, editor.input().head.position, editor.panels());
+  cv::Mat bgr;
+  cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);
+  return bgr;
+}
+
+}  // namespace
+
 ReplayResult run_replay(const ReplayOptions& o) {
   ReplayResult result;
   // Outputs that would destroy an input, or land on a device, are refused before any work.
@@ -94,25 +159,11 @@ ReplayResult run_replay(const ReplayOptions& o) {
   auto decoder = io::open_frame_decoder(o.video, dec_opts);
   const auto& props = decoder->properties();
 
-  io::Sidecar sidecar;
-  if (o.sidecar_in) {
-    sidecar = io::read_sidecar(*o.sidecar_in);
-  } else {
-    sidecar = io::new_sidecar({o.video.string(), props.fps.value(),
-                               std::max<std::int64_t>(1, props.frames), props.width, props.height});
-  }
-
-  EditorOptions eo;
-  // The sim's recordings were made with the desktop layout (panels in front of the head), in
-  // the view their header names (older ones: 1280 x 720 at 90 degrees).
-  if (rec.header.desktop || rec.header.hmd == "sim") {
-    eo.layout = PanelLayout::Desktop;
-    const io::RecordedDesktopView v = rec.header.desktop.value_or(io::RecordedDesktopView{1280, 720, 90.0});
-    eo.viewport = {v.width, v.height, v.hfov_deg};
-  } else {
-    eo.layout = PanelLayout::Hands;
-  }
-  Editor editor(std::move(sidecar), DocumentOptions{{.async = false}}, eo);
+  const io::Sidecar sidecar =
+      o.sidecar_in ? io::read_sidecar(*o.sidecar_in)
+                   : io::new_sidecar({o.video.string(), props.fps.value(), std::max<std::int64_t>(1, props.frames),
+                                      props.width, props.height});
+  Editor editor(sidecar, DocumentOptions{{.async = false}}, editor_options_for(rec.header));
 
   auto backend = xr::create_replay_backend(std::move(rec), {});
   const auto timeline = backend->timeline();
@@ -128,23 +179,13 @@ ReplayResult run_replay(const ReplayOptions& o) {
       shots.push_back((timeline.size() - 1) * static_cast<std::size_t>(k) / static_cast<std::size_t>(n));
   }
   std::size_t next_shot = 0;
+  EditorLayers layers;  // the document's flares and grain, drawn into the frames
   for (std::size_t i = 0; i < timeline.size(); ++i) {
     editor.update(backend->poll(timeline[i]), timeline[i]);
     while (next_shot < shots.size() && shots[next_shot] == i) {
       const std::int64_t frame = std::clamp<std::int64_t>(editor.frame(), 0, std::max<std::int64_t>(0, props.frames - 1));
-      decoder->seek(props.is_still ? 0 : frame);
-      cv::Mat image;
-      if (decoder->read(image) != io::DecodeStatus::Ok)
-        throw io::InputError(o.video.string() + ": frame " + std::to_string(frame) + " could not be decoded");
-      if (image.type() != CV_32FC3) image.convertTo(image, CV_32FC3, 1.0 / 255.0);
-      effects::EquirectSampler sampler(image);
-      const auto camera = effects::ViewCamera::from_horizontal_fov({editor.view_direction(), 0.0}, o.hfov_deg,
-                                                                   o.width, o.height);
-      cv::Mat rgb8 = effects::to_rgb8(effects::render_view(sampler, camera, editor.current_params()));
-      overlay_panels(rgb8, camera, editor.input().head.position,
-                     editor.panels());
-      cv::Mat bgr;
-      cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);
+      const cv::Mat image = decode_frame(*decoder, o.video, frame);
+      const cv::Mat bgr = render_replay_frame(editor, layers, image, frame, timeline[i], o, result);
       char name[64];
       std::snprintf(name, sizeof name, "replay_%03zu.png", next_shot);
       const fs::path out = *o.frames_dir / name;

@@ -16,23 +16,17 @@ std::string fmt(const char* f, double v) {
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
 }
-std::string title_case(std::string_view s) {
-  std::string n(s);
-  if (!n.empty()) n[0] = static_cast<char>(n[0] - 'a' + 'A');
-  return n;
-}
 }  // namespace
 
 std::string Editor::status_text() const {
   const auto& chosen = widget_values();
-  std::string s = title_case(effects::effect_name(effect_)) + " ";
-  switch (effect_) {
-    case EffectType::Tint: s += fmt("gain %.2f", chosen[0]) + fmt(" %.2f", chosen[1]) + fmt(" %.2f", chosen[2]); break;
-    case EffectType::Vignette: s += fmt("radius %.0f", chosen[0]) + fmt(" falloff %.0f deg", chosen[1]); break;
-    case EffectType::Exposure: s += fmt("%+.1f stops", chosen[0]); break;
-    case EffectType::Blur: s += fmt("%.1f deg", chosen[0]); break;
-    default: s += fmt("%.2f", chosen[0]); break;
-  }
+  std::string s = effect_.title() + " ";
+  if (effect_ == EffectType::Tint) s += fmt("gain %.2f", chosen[0]) + fmt(" %.2f", chosen[1]) + fmt(" %.2f", chosen[2]);
+  else if (effect_ == EffectType::Vignette) s += fmt("radius %.0f", chosen[0]) + fmt(" falloff %.0f deg", chosen[1]);
+  else if (effect_ == EffectType::Exposure) s += fmt("%+.1f stops", chosen[0]);
+  else if (effect_ == EffectType::Blur) s += fmt("%.1f deg", chosen[0]);
+  else if (effect_.is_grain()) s += fmt("intensity %.2f", chosen[0]) + fmt(" size %.2f", chosen[1]);
+  else s += fmt("%.2f", chosen[0]);
   s += " | frame " + std::to_string(play_.frame) + "/" + std::to_string(doc_.video().frames);
   s += " | " + std::to_string(doc_.keyframes(effect_).size()) + " keyframes";
   if (play_.playing) s += " | playing";
@@ -61,7 +55,7 @@ std::string Editor::hud_text() const {
   std::string s = "frame " + std::to_string(play_.frame) + " / " + std::to_string(doc_.video().frames) + "   " +
                   std::to_string(minutes) + ":" + fmt("%05.2f", t - 60.0 * minutes) + "   az " +
                   fmt("%.0f\u00b0", view_.azimuth_deg) + " alt " + fmt("%.0f\u00b0", view_.altitude_deg) +
-                  "   " + title_case(effects::effect_name(effect_)) + " (" +
+                  "   " + effect_.title() + " (" +
                   std::to_string(doc_.keyframes(effect_).size()) + " keyframes)";
   if (sel_.index) s += (grabbing() ? "   moving " : "   selected ") + std::to_string(*sel_.index + 1);
   if (play_.playing) s += "   \u25b6";

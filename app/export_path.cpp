@@ -56,7 +56,7 @@ cv::Mat render_path_frame(const cv::Mat& equirect, const effects::StackInterpola
   const effects::ViewCamera camera = rv.camera(s.width, s.height);
   const effects::EquirectSampler sampler(equirect);
   cv::Mat rgb = effects::render_view(sampler, camera, stack.evaluate(view.look, frame));
-  if (s.view_layers) s.view_layers(rgb, view, frame);
+  if (s.view_layers) s.view_layers(rgb, equirect, rv, frame);
   return effects::to_rgb8(rgb);
 }
 

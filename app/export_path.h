@@ -17,6 +17,7 @@
 #include "effects/stack_interpolator.h"
 #include "io/frame_time.h"
 #include "io/recording.h"
+#include "xr/render_view.h"
 
 namespace vdfx::app {
 
@@ -44,14 +45,16 @@ PathView path_view(const std::vector<HeadSample>& path, std::int64_t frame, io::
 /// The last frame the recording covers: the frame shown at its last sample's time.
 std::int64_t path_last_frame(const std::vector<HeadSample>& path, io::Rational fps);
 
-/// Flare and grain (built separately, docs/export.md) attach here: called on each rendered view
-/// (unclamped RGB float, after the view-dependent effects, before the output clamp).
-using ViewLayersHook = std::function<void(cv::Mat& rgb, const PathView& view, std::int64_t frame)>;
+/// Flare and grain (app/export_layers.h) attach here: called on each rendered view (unclamped
+/// RGB float, after the view-dependent effects, before the output clamp) with the decoded frame
+/// (RGB float equirect) and the view it was rendered for.
+using ViewLayersHook =
+    std::function<void(cv::Mat& rgb, const cv::Mat& equirect, const xr::RenderView& view, std::int64_t frame)>;
 
 struct PathRenderSettings {
   double hfov_deg = 90.0;
   int width = 1280, height = 720;
-  ViewLayersHook view_layers;  //!< empty: no flare or grain yet
+  ViewLayersHook view_layers;  //!< empty: the six effects only
 };
 
 /// One frame of the viewer's-path export: 8-bit RGB, as `vdfx render --mode view` would give for

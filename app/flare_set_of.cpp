@@ -6,6 +6,8 @@
 #include <string>
 
 #include "io/input_error.h"
+#include "io/ycbcr.h"
+#include "xr/session.h"
 
 namespace vdfx::app {
 
@@ -15,6 +17,14 @@ effects::FlareSet flare_set_of(const io::Sidecar& sidecar) {
   } catch (const std::invalid_argument& e) {
     throw io::InputError(std::string("sidecar flares cannot be interpolated: ") + e.what());
   }
+}
+
+std::vector<effects::FlareLayout> flare_layouts(effects::FlareSet& set, const xr::Pose& head,
+                                                std::int64_t frame, const io::Picture* picture) {
+  if (set.empty()) return {};
+  if (set.uses_auto_light() && picture && !set.observed(frame))
+    set.observe(frame, io::to_rgb(*picture, io::PixelFormat::RgbF32));
+  return set.layouts({xr::position_of(head), xr::rotation_of(head)}, frame);
 }
 
 }  // namespace vdfx::app

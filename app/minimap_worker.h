@@ -24,6 +24,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "app/edit_target.h"
 #include "effects/rbf_interpolator.h"
 
 namespace vdfx::app {
@@ -42,7 +43,7 @@ struct MinimapKey {
 struct MinimapJob {
   MinimapKey key;
   std::shared_ptr<const effects::RbfInterpolator> rbf;  //!< null: neutral everywhere
-  effects::EffectType type = effects::EffectType::Exposure;
+  EditTarget type = effects::EffectType::Exposure;
   std::int64_t frame = 0;
   int width = 128, height = 64;
 };

@@ -17,11 +17,6 @@ std::string fmt(const char* f, double v) {
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
 }
-std::string title_case(std::string_view s) {
-  std::string n(s);
-  if (!n.empty()) n[0] = static_cast<char>(n[0] - 'a' + 'A');
-  return n;
-}
 }  // namespace
 
 void handle_panel_event(Editor& ed, EditorPanels& p, const ui::Event& e) {
@@ -29,11 +24,11 @@ void handle_panel_event(Editor& ed, EditorPanels& p, const ui::Event& e) {
   const ui::Widget* w = e.source;
   const bool drag_begin = e.kind == EventKind::DragBegin, drag_end = e.kind == EventKind::DragEnd;
   const bool changed = e.kind == EventKind::ValueChanged, clicked = e.kind == EventKind::Clicked;
-  const EffectType effect = ed.current_effect();
+  const EditTarget effect = ed.current_effect();
   Document& doc = ed.document();
   if (w == p.menu && changed) {
-    ed.select_effect(static_cast<EffectType>(std::clamp(static_cast<int>(e.new_value.x), 0, effects::kEffectCount - 1)));
-  } else if (w == p.effect_widgets[static_cast<std::size_t>(effect)] || w == p.exponent || w == p.time_scale) {
+    ed.select_effect(EditTarget::from_index(static_cast<int>(e.new_value.x)));
+  } else if (p.edits_values(effect, w) || w == p.exponent || w == p.time_scale) {
     // A drag (or a thumbstick gesture) is one undo step.
     if (drag_begin) doc.begin_group(e.widget);
     if (drag_end) doc.end_group();
@@ -44,10 +39,18 @@ void handle_panel_event(Editor& ed, EditorPanels& p, const ui::Event& e) {
       else s.time_scale = effects::time_scale_from_deg_per_s(e.new_value.x);
       doc.set_interpolation(effect, s);
     } else if (ed.selected_keyframe()) {
-      ed.set_selected_params(EditorPanels::values_of(effect, e));
+      ed.set_selected_params(p.values_of(effect, e, ed.widget_values()));
     } else {
-      ed.set_chosen_params(EditorPanels::values_of(effect, e));
+      ed.set_chosen_params(p.values_of(effect, e, ed.widget_values()));
     }
+  } else if (w == p.flare_style && changed) {
+    ed.set_flare_style(static_cast<effects::FlareStyle>(static_cast<int>(e.new_value.x)));
+  } else if (clicked && w == p.set_light) {
+    ed.set_light_here();
+  } else if (w == p.auto_light && changed) {
+    ed.set_auto_light(e.new_value.x > 0.5);
+  } else if (w == p.grain_style && changed) {
+    ed.set_grain_style(effects::kGrainStyles.at(static_cast<std::size_t>(e.new_value.x)));
   } else if (clicked && w == p.undo) {
     ed.undo();
   } else if (clicked && w == p.redo) {
@@ -75,14 +78,15 @@ void handle_panel_event(Editor& ed, EditorPanels& p, const ui::Event& e) {
 
 void show_editor_state(const Editor& ed, EditorPanels& p) {
   const Document& doc = ed.document();
-  const EffectType effect = ed.current_effect();
+  const EditTarget effect = ed.current_effect();
   p.show_values(effect, ed.widget_values());
+  p.show_options(doc.flare(), doc.grain());
   const auto s = doc.interpolation(effect);
   if (!p.exponent->pressed()) p.exponent->set_value(s.exponent);
   if (!p.time_scale->pressed()) p.time_scale->set_value(effects::deg_per_s_from_time_scale(s.time_scale));
   p.undo->set_enabled(doc.undo_stack().can_undo());
   p.redo->set_enabled(doc.undo_stack().can_redo());
-  const std::string name = title_case(effects::effect_name(effect));
+  const std::string name = effect.title();
   if (const auto& sel = ed.selected_keyframe()) {
     const std::string which = std::to_string(*sel + 1) + " of " + std::to_string(doc.keyframes(effect).size());
     p.title->set_text(name + (ed.grabbing() ? " \u2014 moving keyframe " : " \u2014 keyframe ") + which);

@@ -17,9 +17,9 @@ struct PendingEdit::Scratch {
   effects::Keyframe current;         //!< the pending keyframe as the set has it
 };
 
-PendingEdit::PendingEdit(const Document& document, effects::EffectType effect, std::optional<std::size_t> moved,
+PendingEdit::PendingEdit(const Document& document, EditTarget target, std::optional<std::size_t> moved,
                          effects::Keyframe key, effects::KeyframeSetOptions options, PendingStats& stats)
-    : doc_(document), effect_(effect), moved_(moved), key_(std::move(key)), options_(options), stats_(stats) {
+    : doc_(document), target_(target), moved_(moved), key_(std::move(key)), options_(options), stats_(stats) {
   was_changing_ = changes_interpolant();
   version_ = ++stats_.serial;
 }
@@ -38,14 +38,14 @@ void PendingEdit::set_key(effects::Keyframe key) {
 
 bool PendingEdit::changes_interpolant() const {
   if (!moved_) return true;
-  const auto& ks = doc_.keyframes(effect_);
+  const auto& ks = doc_.keyframes(target_);
   if (*moved_ >= ks.size()) return false;
   return !(ks[*moved_].direction == key_.direction) || ks[*moved_].frame != key_.frame;
 }
 
 std::vector<std::size_t> PendingEdit::replaced() const {
   std::vector<std::size_t> out;
-  const auto& ks = doc_.keyframes(effect_);
+  const auto& ks = doc_.keyframes(target_);
   for (std::size_t i = 0; i < ks.size(); ++i)
     if (!(moved_ && i == *moved_) && effects::replaces(key_.direction, key_.frame, ks[i])) out.push_back(i);
   return out;
@@ -83,14 +83,14 @@ std::vector<effects::Keyframe> list_without(const std::vector<effects::Keyframe>
 
 std::vector<effects::Keyframe> PendingEdit::keyframe_list() const {
   std::size_t index = 0;
-  return list_without(doc_.keyframes(effect_), moved_, key_, replaced(), index);
+  return list_without(doc_.keyframes(target_), moved_, key_, replaced(), index);
 }
 
 std::shared_ptr<const effects::RbfInterpolator> PendingEdit::interpolant() const {
   if (!changes_interpolant()) return nullptr;
-  const auto& ks = doc_.keyframes(effect_);
+  const auto& ks = doc_.keyframes(target_);
   Scratch* s = scratch_.get();
-  bool same = s && s->settings == doc_.interpolation(effect_);
+  bool same = s && s->settings == doc_.interpolation(target_);
   if (same && doc_.revision() != s->revision) {
     // The revision also moves for edits that leave these keyframes alone (chosen values).
     same = ks == s->base;
@@ -124,16 +124,15 @@ void PendingEdit::seed(std::vector<std::size_t> dropped) const {
   else scratch_ = std::make_unique<Scratch>();
   Scratch& s = *scratch_;
   if (!seed_by_clone(dropped)) {
-    const auto& spec = effects::effect_spec(effect_);
-    auto list = list_without(doc_.keyframes(effect_), moved_, key_, dropped, s.index);
+    auto list = list_without(doc_.keyframes(target_), moved_, key_, dropped, s.index);
     s.set.reset();
-    s.set = std::make_unique<effects::KeyframeSet>(spec.dimension(), doc_.interpolation(effect_), doc_.video().fps,
-                                                   std::move(list), options_, spec.neutral());
+    s.set = std::make_unique<effects::KeyframeSet>(target_.dimension(), doc_.interpolation(target_), doc_.video().fps,
+                                                   std::move(list), options_, target_.neutral());
     ++stats_.full_seeds;
   }
-  s.base = doc_.keyframes(effect_);
+  s.base = doc_.keyframes(target_);
   s.revision = doc_.revision();
-  s.settings = doc_.interpolation(effect_);
+  s.settings = doc_.interpolation(target_);
   s.dropped = std::move(dropped);
   s.current = key_;
   ++stats_.seeds;
@@ -141,11 +140,11 @@ void PendingEdit::seed(std::vector<std::size_t> dropped) const {
 
 bool PendingEdit::seed_by_clone(const std::vector<std::size_t>& dropped) const {
   Scratch& s = *scratch_;
-  const effects::KeyframeSet& source = doc_.keyframe_set(effect_);
+  const effects::KeyframeSet& source = doc_.keyframe_set(target_);
   s.set = source.clone(options_);
   // The keyframes the pending keyframe replaces go first (from the back, so indices hold); the
   // list keeps its order, as list_without() builds it.
-  const std::size_t count = doc_.keyframes(effect_).size();
+  const std::size_t count = doc_.keyframes(target_).size();
   std::size_t index = moved_ ? *moved_ : 0;
   for (auto it = dropped.rbegin(); it != dropped.rend(); ++it) {
     s.set->remove(*it);

@@ -22,6 +22,7 @@
 #include <optional>
 #include <vector>
 
+#include "app/edit_target.h"
 #include "effects/keyframe_set.h"
 
 namespace vdfx::app {
@@ -40,13 +41,13 @@ class PendingEdit {
  public:
   /// `moved`: the index of the held keyframe, nullopt for a new one; `key`: where the pending
   /// keyframe is, with its values.
-  PendingEdit(const Document& document, effects::EffectType effect, std::optional<std::size_t> moved,
+  PendingEdit(const Document& document, EditTarget target, std::optional<std::size_t> moved,
               effects::Keyframe key, effects::KeyframeSetOptions options, PendingStats& stats);
   ~PendingEdit();
   PendingEdit(const PendingEdit&) = delete;
   PendingEdit& operator=(const PendingEdit&) = delete;
 
-  effects::EffectType effect() const { return effect_; }
+  EditTarget target() const { return target_; }
   /// The held keyframe's index; nullopt while placing a new one.
   const std::optional<std::size_t>& moved() const { return moved_; }
   const effects::Keyframe& key() const { return key_; }
@@ -71,7 +72,7 @@ class PendingEdit {
   bool seed_by_clone(const std::vector<std::size_t>& dropped) const;
 
   const Document& doc_;
-  effects::EffectType effect_;
+  EditTarget target_;
   std::optional<std::size_t> moved_;
   effects::Keyframe key_;
   std::uint64_t version_ = 0;

@@ -99,13 +99,7 @@ effects::StackParams Player::params(const effects::Direction& direction, std::in
 
 std::vector<effects::FlareLayout> Player::flares(const xr::Pose& head, std::int64_t frame,
                                                  const io::Picture* picture) {
-  if (flares_.empty()) return {};
-  // An auto light looks at each video frame once (converted to RGB on the CPU only then).
-  if (flares_.uses_auto_light() && picture && frame != observed_frame_) {
-    flares_.observe(frame, io::to_rgb(*picture, io::PixelFormat::RgbF32));
-    observed_frame_ = frame;
-  }
-  return flares_.layouts({xr::position_of(head), xr::rotation_of(head)}, frame);
+  return flare_layouts(flares_, head, frame, picture);
 }
 
 std::vector<effects::GrainFrame> Player::grains(const xr::Pose& head, std::int64_t display_time_ns,

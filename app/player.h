@@ -58,7 +58,6 @@ class Player : public FrameClient {
   void apply_key(xr::Key key, std::int64_t t_ns);
   effects::StackInterpolator interp_;
   effects::FlareSet flares_;
-  std::int64_t observed_frame_ = -1;  //!< the video frame the auto lights last looked at
   effects::GrainSet grains_;
   unsigned active_ = 0;
   Playhead playhead_;

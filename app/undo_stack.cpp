@@ -10,7 +10,7 @@ void UndoStack::push(const std::string& label, EffectChange change) {
   if (group_depth_ > 0 && group_has_step_) {
     auto& step = done_.back();
     auto it = std::find_if(step.changes.begin(), step.changes.end(),
-                           [&](const EffectChange& c) { return c.type == change.type; });
+                           [&](const EffectChange& c) { return c.target == change.target; });
     if (it != step.changes.end()) it->after = std::move(change.after);
     else step.changes.push_back(std::move(change));
     // A drag that came back to where it started leaves nothing to undo.

@@ -12,6 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "app/edit_target.h"
+#include "effects/flare.h"
+#include "effects/grain.h"
 #include "effects/keyframe.h"
 
 namespace vdfx::app {
@@ -21,11 +24,15 @@ struct EffectSnapshot {
   std::optional<effects::InterpolationSettings> interpolation;  //!< the effect's override
   std::vector<effects::Keyframe> keyframes;
   std::vector<double> params;  //!< the tool's chosen values for this effect
+  /// The flare target: its entry's style, light and settings (keyframes and interpolation empty:
+  /// they are the fields above); nullopt while the sidecar has no flare. Likewise the grain.
+  std::optional<effects::FlareEffect> flare;
+  std::optional<effects::GrainEffect> grain;
   bool operator==(const EffectSnapshot&) const = default;
 };
 
 struct EffectChange {
-  effects::EffectType type = effects::EffectType::Exposure;
+  EditTarget target = effects::EffectType::Exposure;
   EffectSnapshot before;
   EffectSnapshot after;
 };

@@ -28,7 +28,7 @@ VisualizationCache::~VisualizationCache() = default;
 void VisualizationCache::refresh_markers(const Document& doc, const VisualizationInput& in, EditorPanels& panels) {
   // Markers follow the view: recomputed when it moved by a degree, or the keyframes changed.
   const auto& ks = doc.keyframes(in.effect);
-  const int eff = static_cast<int>(in.effect);
+  const int eff = in.effect.index();
   const std::int64_t held_frame = in.held ? in.held->frame : -1;
   if (markers_.revision == doc.revision() && markers_.effect == eff && angle_deg(markers_.view, in.view) <= 1.0 &&
       markers_.held_frame == held_frame)
@@ -49,12 +49,12 @@ void VisualizationCache::refresh_markers(const Document& doc, const Visualizatio
 
 void VisualizationCache::refresh(const Document& doc, const VisualizationInput& in, EditorPanels& panels) {
   const auto& ks = doc.keyframes(in.effect);
-  const int eff = static_cast<int>(in.effect);
+  const int eff = in.effect.index();
   refresh_markers(doc, in, panels);
   // While a keyframe is placed, or held away from its place, the track and the field are the
   // pending edit's interpolant (the one the view shows); each new place is a new version.
   const PendingEdit* pending = doc.pending();
-  const bool shows_pending = pending && pending->effect() == in.effect && pending->changes_interpolant();
+  const bool shows_pending = pending && pending->target() == in.effect && pending->changes_interpolant();
   std::shared_ptr<const effects::RbfInterpolator> rbf;
   auto interpolant = [&] {
     if (!rbf) rbf = shows_pending ? pending->interpolant() : doc.keyframe_set(in.effect).solution();
@@ -115,7 +115,7 @@ void VisualizationCache::refresh(const Document& doc, const VisualizationInput& 
   panels.minimap->set_view(in.view, in.view_hfov_deg, in.view_vfov_deg);
 }
 
-void VisualizationCache::show_minimap(const MinimapKey& key, cv::Mat field, effects::EffectType effect,
+void VisualizationCache::show_minimap(const MinimapKey& key, cv::Mat field, EditTarget effect,
                                       EditorPanels& panels) {
   const auto [lo, hi] = display_range(effect);
   minimap_.field = std::move(field);
@@ -124,9 +124,9 @@ void VisualizationCache::show_minimap(const MinimapKey& key, cv::Mat field, effe
   ++minimap_.computations;
 }
 
-bool VisualizationCache::wait(std::chrono::milliseconds timeout, effects::EffectType effect, EditorPanels& panels) {
+bool VisualizationCache::wait(std::chrono::milliseconds timeout, EditTarget effect, EditorPanels& panels) {
   if (worker_ && worker_->wait_idle(timeout))
-    if (auto r = worker_->take(); r && r->key.effect == static_cast<int>(effect))
+    if (auto r = worker_->take(); r && r->key.effect == effect.index())
       show_minimap(r->key, std::move(r->field), effect, panels);
   return minimap_current();
 }

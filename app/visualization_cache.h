@@ -40,7 +40,7 @@ struct VisualizationOptions {
 
 /// What the visualizations show this frame.
 struct VisualizationInput {
-  effects::EffectType effect = effects::EffectType::Exposure;
+  EditTarget effect = effects::EffectType::Exposure;
   effects::Direction view{};
   std::int64_t frame = 0;
   std::optional<std::size_t> selected;
@@ -59,7 +59,7 @@ class VisualizationCache {
   void refresh(const Document& doc, const VisualizationInput& in, EditorPanels& panels);
   /// Waits for the minimap worker to finish and shows its field (frame thread; tests, replays).
   /// Returns minimap_current(). Immediate without async.
-  bool wait(std::chrono::milliseconds timeout, effects::EffectType effect, EditorPanels& panels);
+  bool wait(std::chrono::milliseconds timeout, EditTarget effect, EditorPanels& panels);
 
   const cv::Mat& minimap_field() const { return minimap_.field; }
   const std::vector<double>& track_values() const { return track_.values; }
@@ -73,7 +73,7 @@ class VisualizationCache {
 
  private:
   void refresh_markers(const Document& doc, const VisualizationInput& in, EditorPanels& panels);
-  void show_minimap(const MinimapKey& key, cv::Mat field, effects::EffectType effect, EditorPanels& panels);
+  void show_minimap(const MinimapKey& key, cv::Mat field, EditTarget effect, EditorPanels& panels);
 
   struct Markers {
     std::uint64_t revision = ~0ull;

@@ -11,14 +11,14 @@ namespace vdfx::app {
 
 using effects::EffectType;
 
-double display_value(EffectType type, std::span<const double> p) {
-  if (type == EffectType::Tint) return ui::hue_sat_from_tint_gain({p[0], p[1], p[2]}).y;
+double display_value(EditTarget target, std::span<const double> p) {
+  if (target == EffectType::Tint) return ui::hue_sat_from_tint_gain({p[0], p[1], p[2]}).y;
   return p[0];
 }
 
-std::pair<double, double> display_range(EffectType type) {
-  if (type == EffectType::Tint) return {0.0, 1.0};
-  const auto& ps = effects::effect_spec(type).params.front();
+std::pair<double, double> display_range(EditTarget target) {
+  if (target == EffectType::Tint) return {0.0, 1.0};
+  const auto& ps = target.params().front();
   return {ps.min, ps.max};
 }
 
@@ -35,25 +35,29 @@ std::vector<std::int64_t> track_sample_frames(std::int64_t frame_count, int max_
 }
 
 namespace {
-double value_at(const effects::RbfInterpolator* rbf, EffectType type, const Eigen::Vector3d& unit,
+// What is drawn at a view: the stack's clamped (tint: normalised) values; a flare's or grain's
+// first value clamped to its range, as their renderers clamp it.
+double value_at(const effects::RbfInterpolator* rbf, EditTarget target, const Eigen::Vector3d& unit,
                 std::int64_t frame) {
-  effects::StackParams sp;
-  if (rbf && !rbf->empty()) {
-    const Eigen::VectorXd v = rbf->evaluate(unit, frame);
-    sp.set(type, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
+  const bool solved = rbf && !rbf->empty();
+  const Eigen::VectorXd v = solved ? rbf->evaluate(unit, frame) : Eigen::VectorXd();
+  if (const auto type = target.stack_effect()) {
+    effects::StackParams sp;
+    if (solved) sp.set(*type, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
+    return display_value(target, sp.get(*type));
   }
-  const auto vals = sp.get(type);
-  return display_value(type, vals);
+  const auto& first = target.params().front();
+  return solved ? std::clamp(v[0], first.min, first.max) : first.neutral;
 }
 }  // namespace
 
-std::vector<double> effect_track(const effects::RbfInterpolator* rbf, EffectType type,
+std::vector<double> effect_track(const effects::RbfInterpolator* rbf, EditTarget target,
                                  const effects::Direction& direction,
                                  std::span<const std::int64_t> frames) {
   const Eigen::Vector3d unit = effects::to_unit(direction);
   std::vector<double> out;
   out.reserve(frames.size());
-  for (const auto f : frames) out.push_back(value_at(rbf, type, unit, f));
+  for (const auto f : frames) out.push_back(value_at(rbf, target, unit, f));
   return out;
 }
 
@@ -61,14 +65,14 @@ effects::Direction minimap_cell_direction(int x, int y, int width, int height) {
   return effects::from_equirect_uv({(x + 0.5) / width, (y + 0.5) / height});
 }
 
-cv::Mat effect_minimap(const effects::RbfInterpolator* rbf, EffectType type, std::int64_t frame,
+cv::Mat effect_minimap(const effects::RbfInterpolator* rbf, EditTarget target, std::int64_t frame,
                        int width, int height, const std::atomic<bool>* cancel) {
   cv::Mat field(height, width, CV_32FC1);
   for (int y = 0; y < height; ++y) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return {};
     for (int x = 0; x < width; ++x)
       field.at<float>(y, x) = static_cast<float>(
-          value_at(rbf, type, effects::to_unit(minimap_cell_direction(x, y, width, height)), frame));
+          value_at(rbf, target, effects::to_unit(minimap_cell_direction(x, y, width, height)), frame));
   }
   return field;
 }

@@ -12,30 +12,32 @@
 
 #include <opencv2/core.hpp>
 
+#include "app/edit_target.h"
 #include "effects/keyframe.h"
 #include "effects/rbf_interpolator.h"
 
 namespace vdfx::app {
 
-/// The one number the plot and the minimap show for an effect: blur sigma, exposure stops,
-/// saturation and contrast amounts, vignette radius; tint: the colour wheel's saturation.
-double display_value(effects::EffectType type, std::span<const double> params);
+/// The one number the plot and the minimap show for a target: blur sigma, exposure stops,
+/// saturation and contrast amounts, vignette radius, flare and grain intensity; tint: the colour
+/// wheel's saturation.
+double display_value(EditTarget target, std::span<const double> params);
 /// The range of display_value (the contract's range; tint saturation [0, 1]).
-std::pair<double, double> display_range(effects::EffectType type);
+std::pair<double, double> display_range(EditTarget target);
 
 /// Frames at which the track is sampled: all frames up to `max_samples`, else evenly spaced
 /// (first and last included).
 std::vector<std::int64_t> track_sample_frames(std::int64_t frame_count, int max_samples);
 
 /// display_value of the interpolant at `direction` for each of `frames` (neutral when null).
-std::vector<double> effect_track(const effects::RbfInterpolator* rbf, effects::EffectType type,
+std::vector<double> effect_track(const effects::RbfInterpolator* rbf, EditTarget target,
                                  const effects::Direction& direction,
                                  std::span<const std::int64_t> frames);
 
 /// display_value over an equirect grid (CV_32FC1, width x height, row 0 at the top); cell (x, y)
 /// is the direction at uv ((x + 0.5) / width, (y + 0.5) / height). `cancel` (optional) is
 /// polled between rows: once true, an empty Mat is returned (MinimapWorker's shutdown).
-cv::Mat effect_minimap(const effects::RbfInterpolator* rbf, effects::EffectType type,
+cv::Mat effect_minimap(const effects::RbfInterpolator* rbf, EditTarget target,
                        std::int64_t frame, int width, int height,
                        const std::atomic<bool>* cancel = nullptr);
 effects::Direction minimap_cell_direction(int x, int y, int width, int height);

@@ -3,6 +3,7 @@
 #include "effects/flare_set.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "effects/flare_light.h"
 
@@ -18,13 +19,28 @@ constexpr double kMinDrawnIntensity = 1e-4;
 
 FlareSet::FlareSet(std::vector<FlareEffect> flares, const InterpolationSettings& defaults,
                    double fps, AutoLightOptions auto_options)
-    : flares_(std::move(flares)), tracker_(auto_options) {
-  for (const FlareEffect& f : flares_) {
-    intensity_.push_back(std::make_shared<const RbfInterpolator>(
+    : tracker_(auto_options) {
+  replace_flares(std::move(flares), defaults, fps);
+}
+
+void FlareSet::replace_flares(std::vector<FlareEffect> flares, const InterpolationSettings& defaults, double fps) {
+  std::vector<std::shared_ptr<const RbfInterpolator>> intensity;
+  bool uses_auto = false;
+  for (const FlareEffect& f : flares) {
+    intensity.push_back(std::make_shared<const RbfInterpolator>(
         f.keyframes, 1, f.interpolation.value_or(defaults), fps,
         std::vector<double>{kFlareIntensitySpec.neutral}));
-    uses_auto_ = uses_auto_ || std::holds_alternative<AutoLight>(f.light);
+    uses_auto = uses_auto || std::holds_alternative<AutoLight>(f.light);
   }
+  flares_ = std::move(flares);
+  intensity_ = std::move(intensity);
+  uses_auto_ = uses_auto;
+}
+
+void FlareSet::set_intensity(std::size_t k, std::shared_ptr<const RbfInterpolator> intensity) {
+  if (!intensity || intensity->dimension() != 1)
+    throw std::invalid_argument("FlareSet::set_intensity: a one-value interpolant is needed");
+  intensity_.at(k) = std::move(intensity);
 }
 
 void FlareSet::observe(std::int64_t frame, const cv::Mat& rgb) {

@@ -35,6 +35,15 @@ class FlareSet {
   int auto_light_window() const { return tracker_.window(); }
   /// Gives the auto-light tracker a video frame (RGB float equirect); nothing without auto lights.
   void observe(std::int64_t frame, const cv::Mat& rgb);
+  /// Whether the tracker has measured `frame` (observe it before asking for its light).
+  bool observed(std::int64_t frame) const { return tracker_.observed(frame); }
+
+  /// New flares (an editor's edit), solved like the constructor's. The auto-light tracker keeps
+  /// what it measured: it is about the video, not the flares.
+  void replace_flares(std::vector<FlareEffect> flares, const InterpolationSettings& defaults, double fps);
+  /// Flare k's intensity from another solution of its keyframes (an editor's pending edit);
+  /// dimension 1.
+  void set_intensity(std::size_t k, std::shared_ptr<const RbfInterpolator> intensity);
 
   /// Flare k's intensity at a gaze direction (unit) and frame, clamped to 0..4.
   double intensity(std::size_t k, const Eigen::Vector3d& gaze, std::int64_t frame) const;

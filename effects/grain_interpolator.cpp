@@ -3,6 +3,7 @@
 #include "effects/grain_interpolator.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace vdfx::effects {
 namespace {
@@ -17,6 +18,11 @@ GrainInterpolator::GrainInterpolator(const GrainEffect& e, const InterpolationSe
                                      double fps)
     : rbf_(std::make_shared<const RbfInterpolator>(
           e.keyframes, kGrainParamCount, e.interpolation.value_or(defaults), fps, neutral())) {}
+
+GrainInterpolator::GrainInterpolator(std::shared_ptr<const RbfInterpolator> rbf) : rbf_(std::move(rbf)) {
+  if (!rbf_ || rbf_->dimension() != kGrainParamCount)
+    throw std::invalid_argument("GrainInterpolator: a two-value interpolant is needed");
+}
 
 GrainParams GrainInterpolator::evaluate(const Eigen::Vector3d& unit, std::int64_t frame) const {
   double v[kGrainParamCount];

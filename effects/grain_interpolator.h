@@ -16,6 +16,8 @@ class GrainInterpolator {
   /// Solves the effect's keyframes (its own interpolation settings override `defaults`).
   /// Throws std::invalid_argument as RbfInterpolator does.
   GrainInterpolator(const GrainEffect& effect, const InterpolationSettings& defaults, double fps);
+  /// Another solution of the keyframes (an editor's pending edit); dimension 2.
+  explicit GrainInterpolator(std::shared_ptr<const RbfInterpolator> rbf);
 
   /// Intensity clamped to [0, 1], size to [0.25, 4] (interpolation may overshoot). Without
   /// keyframes: intensity 0 (the neutral value: nothing is drawn).

@@ -37,6 +37,10 @@ GrainParams GrainSet::params(std::size_t i, const Eigen::Vector3d& unit, std::in
   return effects_.at(i).interp.evaluate(unit, frame);
 }
 
+void GrainSet::set_interpolant(std::size_t i, std::shared_ptr<const RbfInterpolator> rbf) {
+  effects_.at(i).interp = GrainInterpolator(std::move(rbf));
+}
+
 std::vector<GrainFrame> GrainSet::layout(const HeadPose& head, std::int64_t display_time_ns,
                                          std::int64_t video_frame) {
   std::vector<GrainFrame> out;

@@ -61,6 +61,9 @@ class GrainSet {
   std::size_t size() const { return effects_.size(); }
   const GrainEffect& effect(std::size_t i) const { return effects_.at(i).effect; }
   GrainParams params(std::size_t i, const Eigen::Vector3d& unit, std::int64_t frame) const;
+  /// Effect i's intensity and size from another solution of its keyframes (an editor's pending
+  /// edit).
+  void set_interpolant(std::size_t i, std::shared_ptr<const RbfInterpolator> rbf);
 
   /// The visible layers at a display time (file order). Parameters are interpolated at the
   /// head's forward direction; the refresh index comes from the display time alone.

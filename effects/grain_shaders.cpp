@@ -125,12 +125,15 @@ void main() {
   // one that size: it fades as (max / radius)^2 instead of showing as a flake.
   float radius_rad = r / dist;
   if (radius_rad > u_max_radius_rad) alpha *= (u_max_radius_rad / radius_rad) * (u_max_radius_rad / radius_rad);
-  // Coverage-preserving minimum footprint: grow a sub-pixel particle, thin it by the area ratio.
-  float radius_px = radius_rad * u_px_per_tan;
-  float k = max(1.0, u_min_radius_px / max(radius_px, 1e-9));
-  semi *= k;
-  r *= k;
-  alpha /= k * k;
+  // Coverage-preserving minimum footprint: every semi-axis under u_min_radius_px grows to it and
+  // the particle thins by the volume ratio to the 2/3 (its projected area's, on average over
+  // orientations), so a thin or sub-pixel grain covers whole pixels the same way in both eyes
+  // instead of hitting or missing pixel centres by its sampling phase.
+  float min_semi = u_min_radius_px / u_px_per_tan * dist;
+  vec3 grown = max(semi, vec3(min_semi));
+  alpha *= pow((semi.x * semi.y * semi.z) / (grown.x * grown.y * grown.z), 2.0 / 3.0);
+  semi = grown;
+  r = max(r, min_semi);
   v_centre = a_centre;
   v_semi = semi;
   v_rotation = a_rotation;

@@ -36,8 +36,10 @@ inline constexpr double kParticleNearFadeEndM = 0.3;
 /// the coverage of a grain this size: volumetric grain stays grain-sized instead of showing the
 /// nearest particles as flakes. 2 mrad is about 1.2 px of a 1440-px, 100-degree eye.
 inline constexpr double kParticleMaxRadiusRad = 0.002;
-/// Smallest drawn particle radius in pixels: a smaller one is drawn this large with its opacity
-/// scaled by the area ratio (same coverage, no sub-pixel flicker).
-inline constexpr double kParticleMinRadiusPx = 0.75;
+/// Smallest drawn semi-axis in pixels: a smaller one is drawn this large with the opacity scaled
+/// by the volume ratio to the 2/3 (about the same coverage). Whole-pixel footprints keep a grain
+/// from flickering as it moves and make both eyes sample it alike (the stereo test's correlation
+/// of an object cloud: 0.79 at 0.75 px on the largest axis only, 0.93 at 1 px on every axis).
+inline constexpr double kParticleMinRadiusPx = 1.0;
 
 }  // namespace vdfx::effects

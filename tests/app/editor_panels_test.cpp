@@ -62,10 +62,11 @@ TEST_F(PanelWiring, PanelsAreInsideTheSimView) {
 
 TEST_F(PanelWiring, MenuRowsSelectEveryEffect) {
   auto* menu = ed_.ui().menu;
-  for (int row = 0; row < effects::kEffectCount; ++row) {
-    const ui::Rect r = menu->rect();
-    click(test::cursor_for(kEffectPanelId, {r.x + r.w / 2, r.y + 8.0 + (row + 0.5) * 76.0}));
-    EXPECT_EQ(static_cast<int>(ed_.current_effect()), row);
+  ASSERT_EQ(static_cast<int>(menu->items().size()), EditTarget::kCount);
+  for (int item = 0; item < EditTarget::kCount; ++item) {
+    const ui::Rect r = menu->cell(item);
+    click(test::cursor_for(kEffectPanelId, {r.x + r.w / 2, r.y + r.h / 2}));
+    EXPECT_EQ(ed_.current_effect().index(), item) << menu->items()[static_cast<std::size_t>(item)];
   }
 }
 

@@ -33,9 +33,8 @@ std::vector<Keyframe> random_keyframes(int n, unsigned seed) {
 /// Largest difference between `rbf` and a fresh solve of the pending edit's keyframes over a
 /// spread of directions and frames.
 double max_difference(const effects::RbfInterpolator& rbf, const PendingEdit& p, const Document& doc) {
-  const auto& spec = effects::effect_spec(p.effect());
-  const effects::RbfInterpolator fresh(p.keyframe_list(), spec.dimension(), doc.interpolation(p.effect()),
-                                       doc.video().fps, spec.neutral());
+  const effects::RbfInterpolator fresh(p.keyframe_list(), p.target().dimension(), doc.interpolation(p.target()),
+                                       doc.video().fps, p.target().neutral());
   double worst = 0.0;
   for (int i = 0; i < 24; ++i) {
     const Direction d{-172.0 + 15.0 * i, -80.0 + 7.0 * i};

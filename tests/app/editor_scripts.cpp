@@ -81,10 +81,9 @@ glm::dvec2 wheel_cursor(double hue_deg, double sat) {
   return cursor_for(kEffectPanelId, px);
 }
 
-glm::dvec2 menu_cursor(int row) {
-  auto& p = panels_for(1);
-  const ui::Rect r = p.menu->rect();
-  return cursor_for(kEffectPanelId, {r.x + r.w * 0.5, r.y + 8.0 + (row + 0.5) * p.effect->theme().row_height});
+glm::dvec2 menu_cursor(int item) {
+  const ui::Rect r = panels_for(1).menu->cell(item);
+  return cursor_for(kEffectPanelId, {r.x + r.w * 0.5, r.y + r.h * 0.5});
 }
 
 glm::dvec2 strip_cursor(int frame, int frames) {

@@ -227,6 +227,37 @@ fs::path write_path_recording(const fs::path& dir) {
   return p;
 }
 
+TEST(Export, ViewerPathDrawsTheFlareAndGrainAsVdfxRenderDoes) {
+  const Fixture f = make_fixture(kW, kH, 30);
+  const fs::path rec = write_path_recording(f.dir);
+  // The fixture's effects plus a flare whose fixed light is where the path starts looking and a
+  // headset grain (size 4: visible at this small size).
+  std::string text = test_files::slurp(f.sidecar);
+  const std::string layers = R"(,
+    {"type": "flare", "style": "directional", "light": {"azimuth_deg": 30.0, "altitude_deg": 10.0},
+     "keyframes": [{"azimuth_deg": 30.0, "altitude_deg": 10.0, "frame": 0, "params": {"intensity": 3.0}}]},
+    {"type": "grain", "style": "headset", "seed": 3,
+     "keyframes": [{"azimuth_deg": 30.0, "altitude_deg": 10.0, "frame": 0, "params": {"intensity": 1.0, "size": 4.0}}]}
+  ]})";
+  text.replace(text.rfind("\n  ]}"), std::string::npos, layers);
+  const fs::path sidecar = f.dir / "layers.vdfx.json";
+  write_text(sidecar, text);
+  const fs::path out = f.dir / "layers.mp4", plain = f.dir / "plain.mp4";
+  const std::string common = " --path " + rec.string() + " --fov 80 --size 96x64 --crf 0 --chroma 444 --frames 0-2";
+  ASSERT_EQ(run_vdfx("export " + f.clip.string() + " --sidecar " + sidecar.string() + " --out " + out.string() + common).exit_code, 0);
+  ASSERT_EQ(run_vdfx("export " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --out " + plain.string() + common).exit_code, 0);
+  const fs::path png = f.dir / "layers0.png";
+  const auto r = run_vdfx("render " + f.clip.string() + " --sidecar " + sidecar.string() +
+                          " --view 30,10,0 --frame 0 --fov 80 --size 96x64 --out " + png.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  cv::Mat want = cv::imread(png.string()), want_rgb;
+  cv::cvtColor(want, want_rgb, cv::COLOR_BGR2RGB);
+  auto with = io::open_frame_decoder(out), without = io::open_frame_decoder(plain);
+  const cv::Mat got = decoded_rgb8(*with, 0), bare = decoded_rgb8(*without, 0);
+  EXPECT_LE(max_diff(got, want_rgb), 2) << "the path export draws what vdfx render draws";
+  EXPECT_GT(max_diff(got, bare), 40) << "the flare and the grain are in the export";
+}
+
 TEST(Export, ViewerPathFirstAndLastFramesEqualVdfxRender) {
   const Fixture f = make_fixture(kW, kH, 30);
   const fs::path rec = write_path_recording(f.dir);

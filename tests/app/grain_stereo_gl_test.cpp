@@ -143,10 +143,10 @@ struct Case {
   effects::GrainSetting setting;
   double distance;
   bool gpu;
-  /// The shader styles put every grain at one depth. An object cloud also keeps a fifth of its
-  /// grains in the surrounding volume (2.02 to 8 m here, other disparities by design) and its
-  /// grains are a pixel or two wide, sampled at other phases in the two eyes: one shift cannot
-  /// align it all (measured 0.79; the control stays near 0).
+  /// The shader styles put every grain at one depth; an object cloud keeps a fifth of its grains
+  /// in the surrounding volume (2.02 to 8 m here, other disparities by design), smaller and
+  /// fainter, so the shell dominates (measured 0.93 with whole-pixel footprints; 0.79 when thin
+  /// grains hit or missed pixel centres by their phase in each eye).
   double min_correlation = 0.9;
 };
 
@@ -190,7 +190,7 @@ INSTANTIATE_TEST_SUITE_P(Styles, GrainStereo,
                                                 effects::GrainSetting::PlaneM, 0.5, true},
                                            Case{"object_cloud_2m_gpu",
                                                 effects::GrainStyle::ObjectCloud,
-                                                effects::GrainSetting::SphereM, 2.0, true, 0.7}),
+                                                effects::GrainSetting::SphereM, 2.0, true}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -85,6 +85,64 @@ TEST(ReplaySessions, PlaceExposureUndoRedoIsByteIdenticalTwice) {
   }
 }
 
+/// The last frame image of editor_place_exposure over the sunrise (BGR), starting from `start`
+/// (an empty sidecar when null); the written sidecar goes to `out`.
+cv::Mat last_replay_frame(const fs::path& dir, const io::Sidecar* start, io::Sidecar* out = nullptr) {
+  ReplayOptions o;
+  o.recording = kRecordings / "editor_place_exposure.vdrec.jsonl";
+  o.video = kSunrise;
+  o.sidecar_out = dir / "out.vdfx.json";
+  o.frames_dir = dir / "frames";
+  o.width = 320;
+  o.height = 180;
+  if (start) {
+    fs::create_directories(dir);
+    o.sidecar_in = dir / "in.vdfx.json";
+    io::write_sidecar(*o.sidecar_in, *start);
+  }
+  const ReplayResult r = run_replay(o);
+  if (out) *out = r.sidecar;
+  if (r.images.empty()) return {};
+  return cv::imread(r.images.back().string());
+}
+
+double mean_difference(const cv::Mat& a, const cv::Mat& b) {
+  cv::Mat d;
+  cv::absdiff(a, b, d);
+  const cv::Scalar m = cv::mean(d);
+  return (m[0] + m[1] + m[2]) / 3.0;
+}
+
+TEST(ReplaySessions, FramesShowTheSidecarsFlareAndGrain) {
+  const auto root = test::temp_dir("replay_layers");
+  io::Sidecar base;
+  const cv::Mat plain = last_replay_frame(root / "plain", nullptr, &base);
+  ASSERT_FALSE(plain.empty());
+  base.effects.clear();
+  // A flare whose fixed light sits where the session ends looking (az 40, alt 10), strong
+  // everywhere; then a headset grain at full intensity.
+  io::Sidecar with_flare = base;
+  effects::FlareEffect f;
+  f.light = effects::Direction{40.0, 10.0};
+  f.keyframes = {{{40.0, 10.0}, 0, {4.0}}};
+  with_flare.flares = {f};
+  const cv::Mat flared = last_replay_frame(root / "flare", &with_flare);
+  ASSERT_FALSE(flared.empty());
+  EXPECT_GT(mean_difference(flared, plain), 2.0) << "the flare is drawn";
+  // Brighter on the whole: a flare only adds light.
+  EXPECT_GT(cv::mean(flared)[1], cv::mean(plain)[1]);
+
+  io::Sidecar with_grain = base;
+  effects::GrainEffect g;
+  g.style = effects::GrainStyle::Headset;
+  // Size 4: at 320 px over 90 degrees, grain of size 1 is finer than a pixel and band-limited away.
+  g.keyframes = {{{40.0, 10.0}, 0, {1.0, 4.0}}};
+  with_grain.grains = {g};
+  const cv::Mat grained = last_replay_frame(root / "grain", &with_grain);
+  ASSERT_FALSE(grained.empty());
+  EXPECT_GT(mean_difference(grained, plain), 2.0) << "the grain is drawn";
+}
+
 TEST(ReplaySessions, AllWidgetsSessionGivesEveryEffect) {
   const auto dir = test::temp_dir("replay_all");
   const ReplayOptions o = clip_replay(dir, "editor_all_widgets.vdrec.jsonl");
