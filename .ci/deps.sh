@@ -11,6 +11,7 @@ packages=(
   libglfw3-dev libglm-dev libepoxy-dev libstb-dev libhidapi-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   fonts-dejavu-core blender-data ffmpeg
+  gnuplot-nox python3-jsonschema
   xvfb xauth libgl1-mesa-dri mesa-utils
   clang-14 libclang-rt-14-dev llvm-14
 )

@@ -11,6 +11,7 @@ namespace vdfx::app {
 
 const std::vector<CommandInfo>& command_infos() {
   static const std::vector<CommandInfo> list = {
+      {"bench", "the speed-against-error report of every accuracy knob"},
       {"devices", "list HID input devices (gamepads, SpaceMouse) and their ids for --input hid:"},
       {"edit", "the in-headset editor (no VIDEO: the bundled demo)"},
       {"eval", "print the interpolated parameters of every effect at given views"},

@@ -14,9 +14,10 @@ namespace {
 
 CommandFn function_of(const std::string& name) {
   static const std::map<std::string, CommandFn> fns = {
-      {"devices", cmd_devices}, {"edit", cmd_edit},     {"eval", cmd_eval},
-      {"export", cmd_export},   {"hmd", cmd_hmd},       {"play", cmd_play},
-      {"render", cmd_render},   {"replay", cmd_replay}, {"validate", cmd_validate},
+      {"bench", cmd_bench},       {"devices", cmd_devices}, {"edit", cmd_edit},
+      {"eval", cmd_eval},         {"export", cmd_export},   {"hmd", cmd_hmd},
+      {"play", cmd_play},         {"render", cmd_render},   {"replay", cmd_replay},
+      {"validate", cmd_validate},
   };
   const auto it = fns.find(name);
   if (it == fns.end()) throw std::logic_error("command '" + name + "' has no function");
@@ -42,7 +43,8 @@ int gl_unavailable_is_usage(CommandFn fn, const Args& args) {
 const std::vector<Command>& commands() {
   static const std::vector<Command> list = [] {
     std::vector<Command> v;
-    for (const CommandInfo& c : command_infos()) v.push_back({c.name, c.summary, function_of(c.name)});
+    for (const CommandInfo& c : command_infos())
+      v.push_back({c.name, c.summary, function_of(c.name)});
     return v;
   }();
   return list;

@@ -27,6 +27,7 @@ int run_main(const Args& args);
 /// others. The `vdfx` executable runs these itself and loads the media module for the others.
 CommandFn light_command(const std::string& name);
 
+int cmd_bench(const Args& args);
 int cmd_devices(const Args& args);
 int cmd_edit(const Args& args);
 int cmd_eval(const Args& args);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "io/input_error.h"
 
@@ -136,6 +137,18 @@ void Document::record(const std::string& label, EditTarget t, EffectSnapshot bef
 
 void Document::changed() {
   ++revision_;
+  // A drag is one group of many changes (one a frame): the listener (autosave: two atomic writes,
+  // four fsyncs) hears of it once, when the group closes, not on the frame thread every frame.
+  if (undo_.in_group()) {
+    unheard_ = true;
+    return;
+  }
+  if (listener_) listener_();
+}
+
+void Document::end_group() {
+  undo_.end_group();
+  if (undo_.in_group() || !std::exchange(unheard_, false)) return;
   if (listener_) listener_();
 }
 

@@ -99,7 +99,8 @@ class Document {
   const PendingStats& pending_stats() const { return pending_stats_; }
 
   void begin_group(const std::string& label) { undo_.begin_group(label); }
-  void end_group() { undo_.end_group(); }
+  /// Closing the outermost group tells the change listener once about the changes made in it.
+  void end_group();
   bool undo();
   bool redo();
   const UndoStack& undo_stack() const { return undo_; }
@@ -140,6 +141,7 @@ class Document {
   PendingStats pending_stats_;
   std::unique_ptr<PendingEdit> pending_;  //!< after the sets: it reads them
   std::function<void()> listener_;
+  bool unheard_ = false;  //!< changed inside an open group since the listener was last called
 };
 
 }  // namespace vdfx::app

@@ -150,6 +150,8 @@ class Editor {
   bool finish();
   /// The autosave line for the UI ("" without autosave).
   std::string autosave_status() const { return autosave_ ? autosave_->status() : std::string(); }
+  /// Sidecar writes so far (each edit, or each group of edits such as a drag, once).
+  int autosave_saves() const { return autosave_ ? autosave_->saves() : 0; }
 
   Document& document() { return doc_; }
   const Document& document() const { return doc_; }

@@ -1,7 +1,8 @@
 /// @file
 /// @brief Small owning wrappers and error text for FFmpeg's C libraries (libavformat,
-/// libavcodec, libavutil), shared by the decoder, the encoder and their tests. Only io/ sources
-/// and tests include this: nothing else sees the libav headers.
+/// libavcodec, libavutil), shared by the decoder, the encoder and their tests. Only io/ sources,
+/// tests and `vdfx bench`'s plain decode loop (app/bench_media.cpp, the decoder's peer) include
+/// this: nothing else sees the libav headers.
 #pragma once
 
 extern "C" {

@@ -57,6 +57,27 @@ TEST(EditorAutosave, ASessionWithoutEditsReportsNoChanges) {
   EXPECT_EQ(std::filesystem::last_write_time(path), mtime) << "an unchanged file is not rewritten";
 }
 
+TEST(EditorAutosave, ADragIsSavedOnceWhenItEnds) {
+  const auto dir = test::temp_dir("autosave_drag");
+  const auto path = dir / "clip.vdfx.json";
+  Editor ed(test::empty_sidecar(), DocumentOptions{{.async = false}}, with_autosave(path));
+  ed.document().add_keyframe(EffectType::Exposure, {{10.0, 0.0}, 0, {1.0}});
+  ASSERT_EQ(ed.autosave_saves(), 1);
+  // A slider drag: one group, a change every frame.
+  ed.document().begin_group("drag");
+  for (double v : {1.5, 2.0, 2.5, 3.0}) ed.document().set_keyframe_params(EffectType::Exposure, 0, {v});
+  EXPECT_EQ(ed.autosave_saves(), 1) << "nothing written while the drag goes on";
+  EXPECT_DOUBLE_EQ(io::read_sidecar(path).effects.at(0).keyframes.at(0).params.at(0), 1.0);
+  ed.document().end_group();
+  EXPECT_EQ(ed.autosave_saves(), 2) << "one write when it ends";
+  EXPECT_EQ(io::read_sidecar(path), ed.document().sidecar());
+  // A group without changes writes nothing.
+  ed.document().begin_group("nothing");
+  ed.document().end_group();
+  EXPECT_EQ(ed.autosave_saves(), 2);
+  EXPECT_TRUE(ed.finish());
+}
+
 TEST(EditorAutosave, CrashLeavesARecoveryCopyThatIsOffered) {
   const auto dir = test::temp_dir("autosave_crash");
   const auto path = dir / "clip.vdfx.json";

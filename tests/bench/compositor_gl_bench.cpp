@@ -20,6 +20,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "app/bench_inputs.h"
 #include "effects/effect_shaders.h"
 #include "gl_bench_support.h"
 #include "xr/distortion_gl.h"
@@ -56,14 +57,8 @@ Fixture& fixture() {
       f.error = e.what();
       return f;
     }
-    // A 3840 x 1920 frame (a common 4K 360 video size): a synthetic smooth pattern with detail.
-    cv::Mat frame(1920, 3840, CV_8UC3);
-    frame.forEach<cv::Vec3b>([](cv::Vec3b& p, const int* pos) {
-      p = cv::Vec3b(static_cast<uchar>((pos[1] * 7) & 255), static_cast<uchar>((pos[0] * 3) & 255),
-                    static_cast<uchar>(((pos[0] + pos[1]) / 4) & 255));
-    });
     f.video = std::make_unique<VideoLayerGl>();
-    f.video->set_frame(frame);
+    f.video->set_frame(app::bench::synthetic_frame());  // 3840 x 1920, a common 4K 360 size
     f.stack = std::make_unique<EffectStackGl>();
     f.distortion = std::make_unique<DistortionGl>();
     f.a = GlTarget(kW, kH, TexFormat::RGBA16F);
@@ -104,13 +99,7 @@ void BM_GlVideoLayer(benchmark::State& s) {
   run(s, [lod](Fixture& f) { f.video->render(f.a, f.eye, lod); });
 }
 void BM_GlColourEffects(benchmark::State& s) {
-  effects::StackParams p;
-  p.set(effects::EffectType::Tint, std::vector<double>{1.2, 1.0, 0.8});
-  p.exposure_stops = 0.5;
-  p.saturation = 1.3;
-  p.contrast = 1.2;
-  p.vignette_radius_deg = 30;
-  p.vignette_falloff_deg = 20;
+  const effects::StackParams p = app::bench::colour_params();
   run(s, [p](Fixture& f) {
     f.stack->apply(f.a.texture(), f.b, p, effects::non_neutral_mask(p), f.eye);
   });

@@ -6,11 +6,10 @@
 /// get medians.
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "app/bench_inputs.h"
 #include "effects/effect_stack.h"
 #include "effects/equirect_sampler.h"
 #include "effects/gaussian_blur.h"
@@ -31,12 +30,7 @@ struct OneThread {
 };
 
 const cv::Mat& test_view() {
-  static const cv::Mat img = [] {
-    cv::Mat m(kSize, kSize, CV_32FC3);
-    cv::theRNG().state = 42;
-    cv::randu(m, cv::Scalar::all(0.0), cv::Scalar::all(1.0));
-    return m;
-  }();
+  static const cv::Mat img = app::bench::noise_image(kSize);
   return img;
 }
 
@@ -45,23 +39,7 @@ const ViewCamera& test_camera() {
   return cam;
 }
 
-const cv::Mat& sunrise() {
-  static const cv::Mat img = [] {
-    setenv("OPENCV_IO_ENABLE_OPENEXR", "1", 1);
-    cv::Mat bgr = cv::imread("/usr/share/blender/datafiles/studiolights/world/sunrise.exr",
-                             cv::IMREAD_UNCHANGED);
-    if (bgr.empty()) {  // fall back to noise so the benchmark still runs
-      bgr = cv::Mat(512, 1024, CV_32FC3);
-      cv::randu(bgr, cv::Scalar::all(0.0), cv::Scalar::all(1.0));
-    }
-    if (bgr.channels() == 4) cv::cvtColor(bgr, bgr, cv::COLOR_BGRA2BGR);
-    cv::Mat rgb;
-    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-    rgb.convertTo(rgb, CV_32FC3);
-    return rgb;
-  }();
-  return img;
-}
+const cv::Mat& sunrise() { return app::bench::sunrise_rgb(); }
 
 /// range(0) is sigma in hundredths of a degree; the counter reports it in pixels.
 template <cv::Mat (*Blur)(const cv::Mat&, double, double)>
@@ -79,16 +57,7 @@ BENCHMARK_TEMPLATE(BM_Blur, blur_separable)->Name("Effects/BlurSeparable")->Arg(
 BENCHMARK_TEMPLATE(BM_Blur, blur_opencv)->Name("Effects/BlurOpenCv")->Arg(25)->Arg(50)->Arg(200)
     ->Unit(benchmark::kMillisecond);
 
-StackParams colour_params() {
-  StackParams p;
-  p.set(EffectType::Tint, std::vector<double>{1.2, 1.0, 0.7});
-  p.exposure_stops = 0.5;
-  p.saturation = 1.3;
-  p.contrast = 1.2;
-  p.vignette_radius_deg = 30;
-  p.vignette_falloff_deg = 20;
-  return p;
-}
+using app::bench::colour_params;
 
 void BM_ColourStack(benchmark::State& state) {
   const OneThread one;

@@ -16,6 +16,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "app/bench_flare_setup.h"
 #include "effects/auto_light.h"
 #include "effects/effect_shaders.h"
 #include "effects/flare_layout.h"
@@ -36,15 +37,10 @@ using namespace vdfx::xr;
 using bench::head_at;
 using bench::synthetic_frame;
 
-// The gaze 8 degrees from the light: the whole flare, rings spread over the view.
-const effects::Direction kLook{20.0, 5.0}, kLight{27.0, 9.0};
+const effects::Direction kLook = app::bench::kFlareLook, kLight = app::bench::kFlareLight;
 
 effects::FlareLayout layout(effects::FlareStyle style, int rings) {
-  effects::FlareSettings s = effects::default_flare_settings(style);
-  s.rings = rings;
-  const Pose h = head_at(kLook);
-  return *effects::layout_flare(style, s, {position_of(h), rotation_of(h)},
-                                effects::to_unit(kLight), 1.0);
+  return app::bench::flare_layout(style, rings);
 }
 
 /// The play frame's left eye (bench::PlayEye) and the flare layer.

@@ -10,16 +10,14 @@
 #include <functional>
 #include <vector>
 
+#include "app/bench_timing.h"
 #include "xr/gpu_timer.h"
 
 namespace vdfx::bench {
 
-/// Median of `times` (the upper one of an even count).
-inline double median(std::vector<double> times) {
-  const auto mid = times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2);
-  std::nth_element(times.begin(), mid, times.end());
-  return *mid;
-}
+/// Median of `times` (the upper one of an even count): the one `vdfx bench` uses.
+using app::bench::median_of;
+inline double median(std::vector<double> times) { return median_of(std::move(times)); }
 
 /// Median wall time of `work` over `runs` runs, ms.
 inline double median_wall_ms(int runs, const std::function<void()>& work) {

@@ -16,6 +16,8 @@
 #include <memory>
 #include <vector>
 
+#include "app/bench_flare_setup.h"
+#include "app/bench_grain_setup.h"
 #include "effects/grain_layout.h"
 #include "gl_bench_support.h"
 #include "play_eye_fixture.h"
@@ -26,14 +28,13 @@ namespace {
 using namespace vdfx;
 using namespace vdfx::xr;
 
-const effects::Direction kLook{20.0, 5.0};
+using app::bench::grain_set;
 
+/// The play frame's left eye looking where the flare benchmarks look, and the grain layer.
 struct Fixture : bench::PlayEye {
   std::unique_ptr<GrainGl> grain;
-  effects::HeadPose head;
-  Fixture() : PlayEye(bench::head_at(kLook)) {
-    const Pose h = bench::head_at(kLook);
-    head = {position_of(h), rotation_of(h)};
+  effects::HeadPose head = app::bench::grain_head();
+  Fixture() : PlayEye(bench::head_at(app::bench::kFlareLook)) {
     if (ctx) grain = std::make_unique<GrainGl>();
   }
 };
@@ -41,15 +42,6 @@ struct Fixture : bench::PlayEye {
 Fixture& fixture() {
   static Fixture fx;
   return fx;
-}
-
-effects::GrainSet grain_set(effects::GrainStyle style, double intensity, int count) {
-  effects::GrainEffect e;
-  e.style = style;
-  e.seed = 7;
-  e.settings.set(effects::GrainSetting::Count, count);
-  e.keyframes = {{{0, 0}, 0, {intensity, 1.0}}};
-  return effects::GrainSet({e}, {}, 30.0);
 }
 
 /// One eye of the play frame with a grain layer (arg 0: style 0 headset, 1 surface, 2

@@ -7,50 +7,22 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <opencv2/calib3d.hpp>
 #include <vector>
 
+#include "app/bench_inputs.h"
 #include "effects/distortion_mesh.h"
-#include "xr/hmd_profile.h"
 
 namespace {
 
 using vdfx::effects::EyeLens;
 using vdfx::effects::InverseMethod;
 
-const EyeLens& eye() {
-  static const EyeLens e = vdfx::xr::load_hmd_profile("generic90").eye_lens(vdfx::xr::Eye::Left);
-  return e;
-}
-
-/// 4096 panel points on a 64 x 64 grid over the whole viewport, in normalised lens coordinates.
-const std::vector<cv::Point2d>& points() {
-  static const std::vector<cv::Point2d> pts = [] {
-    std::vector<cv::Point2d> out;
-    const double R = eye().lens.params().radius;
-    for (int j = 0; j < 64; ++j) {
-      for (int i = 0; i < 64; ++i) {
-        const Eigen::Vector2d t =
-            eye().pixel_to_tan({(i + 0.5) / 64.0 * eye().width, (j + 0.5) / 64.0 * eye().height});
-        out.emplace_back(t.x() / R, t.y() / R);
-      }
-    }
-    return out;
-  }();
-  return pts;
-}
-
-/// Pixels of the eye image per normalised lens unit (horizontal).
-double px_per_unit() {
-  const auto& e = eye();
-  return e.lens.params().radius * e.width / (e.fov.right - e.fov.left);
-}
+const EyeLens& eye() { return vdfx::app::bench::generic90_left_lens(); }
+const std::vector<cv::Point2d>& points() { return vdfx::app::bench::lens_grid_points(); }
+double px_per_unit() { return vdfx::app::bench::lens_px_per_unit(); }
 
 cv::Point2d invert(const cv::Point2d& p, InverseMethod method) {
-  const double r_d = std::hypot(p.x, p.y);
-  const auto r_u = eye().lens.inverse(r_d, method);
-  const double s = (r_u && r_d > 0.0) ? *r_u / r_d : 1.0;
-  return {p.x * s, p.y * s};
+  return vdfx::app::bench::undistort_point(p, method);
 }
 
 double max_error(const std::vector<cv::Point2d>& got) {
@@ -85,22 +57,11 @@ void BM_InverseNewton(benchmark::State& state) {
   run_inverse(state, InverseMethod::Newton);
 }
 
-/// The peer: OpenCV's iterative undistortion with the same radial model (k1 = c1, k2 = c2, an
-/// identity camera matrix); arg 0 uses OpenCV's default 5 iterations, arg N > 0 up to N with a
-/// 1e-15 tolerance.
+/// The peer (app/bench_inputs.h): arg 0 OpenCV's default 5 iterations, N > 0 up to N.
 void BM_InverseOpenCvUndistortPoints(benchmark::State& state) {
-  const cv::Mat K = cv::Mat::eye(3, 3, CV_64F);
-  const auto& p = eye().lens.params();
-  const cv::Mat D = (cv::Mat_<double>(1, 4) << p.c1, p.c2, 0.0, 0.0);
   std::vector<cv::Point2d> out;
   for (auto _ : state) {
-    if (state.range(0) == 0) {
-      cv::undistortPoints(points(), out, K, D);
-    } else {
-      cv::undistortPoints(points(), out, K, D, cv::noArray(), cv::noArray(),
-                          cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
-                                           static_cast<int>(state.range(0)), 1e-15));
-    }
+    vdfx::app::bench::opencv_undistort_grid(out, static_cast<int>(state.range(0)));
     benchmark::DoNotOptimize(out.data());
   }
   report(state, out);

@@ -10,6 +10,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "app/bench_inputs.h"
 #include "effects/effect_shaders.h"
 #include "gl_bench_support.h"
 #include "xr/compositor.h"
@@ -19,23 +20,9 @@
 
 namespace vdfx::bench {
 
-/// A 3840 x 1920 frame (a common 4K 360 video size): a smooth pattern with detail.
-inline cv::Mat synthetic_frame() {
-  cv::Mat frame(1920, 3840, CV_8UC3);
-  frame.forEach<cv::Vec3b>([](cv::Vec3b& p, const int* pos) {
-    p = cv::Vec3b(static_cast<uchar>((pos[1] * 7) & 255), static_cast<uchar>((pos[0] * 3) & 255),
-                  static_cast<uchar>(((pos[0] + pos[1]) / 4) & 255));
-  });
-  return frame;
-}
-
-/// A head at standing height looking at `look`.
-inline xr::Pose head_at(const effects::Direction& look) {
-  xr::Pose p;
-  p.position = {0.0, 1.6, 0.0};
-  p.orientation = glm::quat_cast(xr::camera_rotation(look, 0.0));
-  return p;
-}
+// The inputs `vdfx bench` uses too (app/bench_inputs.h).
+using app::bench::head_at;
+using app::bench::synthetic_frame;
 
 struct PlayEye {
   std::unique_ptr<xr::GlContext> ctx;

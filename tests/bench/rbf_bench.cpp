@@ -2,8 +2,7 @@
 /// @brief RBF interpolation speed: evaluation, the whole stack, incremental add, full solve.
 #include <benchmark/benchmark.h>
 
-#include <random>
-
+#include "app/bench_inputs.h"
 #include "effects/keyframe_set.h"
 #include "effects/rbf_interpolator.h"
 #include "effects/stack_interpolator.h"
@@ -11,18 +10,7 @@
 namespace vdfx::effects {
 namespace {
 
-std::vector<Keyframe> random_keyframes(int n, int dim, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> az(-180, 180), h(-1, 1), v(0, 4);
-  std::uniform_int_distribution<std::int64_t> f(0, 3000);
-  std::vector<Keyframe> k(static_cast<size_t>(n));
-  for (auto& kf : k) {
-    kf.direction = {az(rng), std::asin(h(rng)) * kRadToDeg};
-    kf.frame = f(rng);
-    for (int i = 0; i < dim; ++i) kf.params.push_back(v(rng));
-  }
-  return k;
-}
+using app::bench::random_keyframes;
 
 void BM_RbfEvaluateOneEffect(benchmark::State& state) {
   const RbfInterpolator rbf(random_keyframes(static_cast<int>(state.range(0)), 1, 1), 1, {}, 30.0);
