@@ -53,7 +53,8 @@ bool Autosave::save(const io::Sidecar& sidecar) {
   const std::string text = io::format_sidecar(sidecar);
   try {
     // The recovery copy first: if the sidecar write fails, the recovery copy still holds the edit.
-    io::write_file_atomic(recovery_path(path_), text);
+    // The recovery copy's name is vdfx's own: a link planted there is refused, not followed.
+    io::write_file_atomic(recovery_path(path_), text, io::OutputName::Generated);
     io::write_file_atomic(path_, text);
   } catch (const std::exception& e) {
     status_ = std::string("autosave FAILED: ") + e.what();

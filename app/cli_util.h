@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/size_limits.h"
 #include "effects/coords.h"
 
 namespace vdfx::app {
@@ -32,10 +33,19 @@ struct ImageSize {
   int height = 0;
 };
 
+/// Validators for numeric options. CLI11's own let NaN through (CLI::Range compares, and every
+/// comparison with NaN is false), saturate an int64 that overflows (2^63 read as 2^63 - 1) and
+/// print their bounds with 309 digits; these parse the text themselves.
+/// A finite number in [lo, hi].
+CLI::Validator finite_range(double lo, double hi);
+/// A whole number in [lo, hi], exactly as written (no rounding, no saturation).
+CLI::Validator whole_range(std::int64_t lo, std::int64_t hi);
+
 /// Each throws CLI::ValidationError (a usage error) with the offending text.
 ViewSpec parse_view(const std::string& text);  //!< "AZ,ALT" or "AZ,ALT,ROLL"
 EvalPoint parse_eval_point(const std::string& text);  //!< "AZ,ALT,FRAME"
-/// "WxH"; a CLI::ValidationError names `option` (the option the text came from).
-ImageSize parse_size(const std::string& text, const std::string& option);
+/// "WxH" within `limit`; `option` names it in the message.
+ImageSize parse_size(const std::string& text, const char* option = "--size",
+                     const SizeLimit& limit = kOutputSizeLimit);
 
 }  // namespace vdfx::app

@@ -150,6 +150,13 @@ int cmd_bench(const Args& args) {
   check_output(json_path, "--json");
   check_output(csv_path, "--csv");
   check_output(md_path, "--markdown");
+  if (!plot_dir.empty()) {  // before the run: a folder that cannot be made is the user's (exit 1)
+    std::error_code ec;
+    std::filesystem::create_directories(plot_dir, ec);
+    if (ec || !std::filesystem::is_directory(plot_dir))
+      throw io::InputError("--plot " + plot_dir + ": cannot create the folder" +
+                           (ec ? " (" + ec.message() + ")" : " (a file of that name exists)"));
+  }
 
   Report report;
   report.command = command_line(args);

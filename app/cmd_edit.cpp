@@ -54,10 +54,7 @@ std::optional<fs::path> handle_recovery(const fs::path& sidecar_path, const std:
       std::cerr << "vdfx edit: not interactive: not recovered (--recover yes loads it)\n";
     }
   }
-  if (yes) {
-    std::cerr << "vdfx edit: recovered " << offer->path.string() << "\n";
-    return offer->path;
-  }
+  if (yes) return offer->path;  // "recovered" is said once it has been read (cmd_edit)
   // Not taken: this session's autosave would overwrite it and its clean exit remove it, so it is
   // set aside, never deleted.
   fs::path kept = offer->path;
@@ -124,8 +121,9 @@ int cmd_edit(const Args& args) {
   if (exists && !demo) load_from = handle_recovery(sidecar_path, recover);
   io::Sidecar sidecar;
   if (exists) sidecar = io::read_sidecar(load_from ? *load_from : sidecar_path);
+  if (load_from) std::cerr << "vdfx edit: recovered " << load_from->string() << "\n";
   const fs::path v = video.empty() ? sidecar_video(sidecar_path, sidecar) : fs::path(video);
-  LoopSetup setup = prepare_loop(loop, v, true);
+  LoopSetup setup = prepare_loop(loop, v, true, {{"--sidecar", sidecar_path}});
   if (!exists) {
     const io::VideoProperties& p = setup.video->properties();
     sidecar = io::new_sidecar({fs::absolute(v).string(), p.fps.value(),

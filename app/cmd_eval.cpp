@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/cli_util.h"
+#include "app/finite_params.h"
 #include "app/flare_set_of.h"
 #include "app/grain_set_of.h"
 #include "effects/stack_interpolator.h"
@@ -46,6 +47,7 @@ int cmd_eval(const Args& args) {
   const effects::GrainSet grains = grain_set_of(sidecar);
   for (const EvalPoint& p : points) {
     const effects::StackParams params = stack.evaluate(p.direction, p.frame);
+    require_finite(params, path, p.direction, p.frame);  // never print "null"
     nlohmann::ordered_json out;
     out["at"] = {{"azimuth_deg", p.direction.azimuth_deg},
                  {"altitude_deg", p.direction.altitude_deg},

@@ -19,6 +19,7 @@
 #include "effects/stack_interpolator.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
+#include "io/output_path.h"
 #include "io/recording.h"
 #include "io/sidecar.h"
 #include "io/video_encoder.h"
@@ -81,7 +82,7 @@ int cmd_export(const Args& args) {
                  "--baked: evaluate the effects exactly every N pixels, bilinear between (1: every "
                  "pixel; default: a grid at most 512 columns wide)")
       ->check(CLI::Range(1, 64));
-  cli.add_option("--fov", fov, "--path: horizontal field of view in degrees")->check(CLI::Range(1.0, 179.0))
+  cli.add_option("--fov", fov, "--path: horizontal field of view in degrees")->check(finite_range(1.0, 179.0))
       ->capture_default_str();
   cli.add_option("--size", size_text, "--path: output size WxH")->capture_default_str();
   if (auto code = parse_cli(cli, args)) return *code;
@@ -97,9 +98,6 @@ int cmd_export(const Args& args) {
     const fs::path out = baked ? baked_out : path_out;
     if (!is_output_name(out))
       throw CLI::ValidationError("export", "'" + out.string() + "': the output must end .mp4, .mov or .mkv");
-    std::error_code ec;
-    if (fs::equivalent(out, video, ec))
-      throw CLI::ValidationError("export", "the output would overwrite the input video");
     if (!frames_text.empty()) range = parse_frames(frames_text);
     view_size = parse_size(size_text, "--size");
     if (baked && (cli.count("--fov") || cli.count("--size")))
@@ -109,7 +107,14 @@ int cmd_export(const Args& args) {
     std::cerr << "vdfx export: " << e.what() << "\n";
     return kExitUsage;
   }
-  const fs::path target = baked ? baked_out : path_out;
+  // An output that is one of the inputs (whatever its name: links count) is refused before any
+  // work, and a link the user named is written through: the file it names is replaced, the link
+  // kept (docs/reliability.md, "Outputs").
+  std::vector<io::NamedInput> inputs = {{"VIDEO", video}, {"--sidecar", sidecar_path}};
+  if (!baked) inputs.push_back({"--path", path_rec});
+  io::check_output_is_not_input(baked ? "--baked" : "--out", baked ? baked_out : path_out, inputs);
+  const fs::path target = baked ? baked_out : path_out;  // as named, for messages and the format
+  const fs::path target_file = io::resolve_output_path(target);
 
   // Inputs: every problem is the user's (exit 1), found before anything is written.
   const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
@@ -202,7 +207,7 @@ int cmd_export(const Args& args) {
   // Signals only set a flag from here on; the guard outlives the temporary file, so the file is
   // gone before the signal is raised again.
   InterruptGuard guard;
-  PendingOutput out(target);
+  PendingOutput out(target_file);
   auto encoder = io::VideoEncoder::create(out.temp(), es);
   const auto start = std::chrono::steady_clock::now();
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };

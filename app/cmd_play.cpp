@@ -46,13 +46,13 @@ int cmd_play(const Args& args) {
   cli.add_flag("--no-loop", no_loop, "stop on the last frame instead of looping");
   cli.add_option("--seek-step", seek_step, "seconds per B / F seek")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 3600.0));
+      ->check(finite_range(0.0, 3600.0));
   add_loop_options(cli, loop);
   cli.footer(play_help_footer());
   if (auto code = parse_cli(cli, args)) return *code;
 
   const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
-  LoopSetup setup = prepare_loop(loop, video, !no_loop);
+  LoopSetup setup = prepare_loop(loop, video, !no_loop, {{"--sidecar", sidecar_path}});
   warn_mismatch(sidecar, setup.video->properties());
   PlayerOptions po;
   po.loop = !no_loop;

@@ -3,19 +3,37 @@
 /// CPU reference path or (--gpu) through the GL compositor, optionally as one HMD eye with lens
 /// pre-distortion.
 #include <iostream>
+#include <limits>
 #include <optional>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "app/cli_util.h"
 #include "app/view_render.h"
-#include "io/atomic_file.h"
+#include "io/excerpt.h"
+#include "io/image_write.h"
 #include "io/input_error.h"
+#include "io/output_path.h"
 #include "io/sidecar.h"
 #include "xr/blur_method.h"
 #include "xr/hmd_profile.h"
 
 namespace vdfx::app {
+
+namespace {
+
+/// Options that would have no effect in this combination are usage errors, not silently
+/// ignored (`--eye right` without `--hmd` rendered the plain view, exit 0).
+void check_option_combinations(const CLI::App& cli, const std::string& hmd_name,
+                               const RenderRequest& r) {
+  if (cli.count("--eye") > 0 && hmd_name.empty())
+    throw CLI::ValidationError("--eye", "needs --hmd (the eye is one of the headset's)");
+  if (cli.count("--no-lca") > 0 && r.distortion.method == xr::DistortionMethod::None)
+    throw CLI::ValidationError("--no-lca", "needs --distort pixel or mesh:N");
+  if (cli.count("--bake") > 0 && !(r.gpu && r.mode == effects::RenderMode::Pixel))
+    throw CLI::ValidationError("--bake", "needs --gpu --mode pixel (the CPU's pixel mode is exact)");
+}
+
+}  // namespace
 
 int cmd_render(const Args& args) {
   CLI::App cli{"Renders one view of INPUT (a panorama image or a video, equirectangular) with the\n"
@@ -30,9 +48,10 @@ int cmd_render(const Args& args) {
   cli.add_option("INPUT", input, "equirect image (PNG, JPEG, EXR, HDR) or video")->required();
   cli.add_option("--sidecar", sidecar_path, "the effects (.vdfx.json)")->required();
   cli.add_option("--view", view_text, "where to look: AZ,ALT[,ROLL] in degrees")->required();
-  cli.add_option("--frame", frame, "video frame index (0-based)")->check(CLI::NonNegativeNumber);
+  cli.add_option("--frame", frame, "video frame index (0-based)")
+      ->check(whole_range(0, std::numeric_limits<std::int64_t>::max()));
   cli.add_option("--fov", fov, "horizontal field of view in degrees (not with --hmd)")
-      ->check(CLI::Range(1.0, 179.0));
+      ->check(finite_range(1.0, 179.0));
   cli.add_option("--size", size_text, "output size WxH (with --hmd: default the eye's size)");
   cli.add_option("--mode", mode_text,
                  "view: parameters interpolated once at the view centre (the paper's method);\n"
@@ -63,6 +82,7 @@ int cmd_render(const Args& args) {
     request.roll_deg = view.roll_deg;
     request.mode = mode_text == "pixel" ? effects::RenderMode::Pixel : effects::RenderMode::View;
     request.gpu = gpu;
+    request.sidecar_name = sidecar_path;
     request.frame = frame;
     try {
       request.distortion = parse_distortion(distort_text);
@@ -71,7 +91,7 @@ int cmd_render(const Args& args) {
     }
     request.distortion.correct_lca = !no_lca;
     if (!size_text.empty()) {
-      const ImageSize s = parse_size(size_text, "--size");
+      const ImageSize s = parse_size(size_text, "--size", kOutputSizeLimit);
       request.width = s.width;
       request.height = s.height;
     }
@@ -84,13 +104,14 @@ int cmd_render(const Args& args) {
     } else if (fov > 0.0) {
       throw CLI::ValidationError("--fov", "the eye's field of view comes from --hmd; drop --fov");
     }
+    check_option_combinations(cli, hmd_name, request);
     const std::optional<xr::BlurMethod> blur = xr::blur_method_from_name(blur_text);
     if (!blur)
-      throw CLI::ValidationError("--blur", "'" + blur_text + "': expected exact or pyramid");
+      throw CLI::ValidationError("--blur", "'" + io::excerpt(blur_text, 40) + "': expected exact or pyramid");
     request.blur = *blur;
     if (!gpu && request.blur != xr::BlurMethod::Exact)
       throw CLI::ValidationError("--blur", "the CPU reference blur is exact; pyramid needs --gpu");
-    const ImageSize bake = parse_size(bake_text, "--bake");
+    const ImageSize bake = parse_size(bake_text, "--bake", kBakeSizeLimit);
     request.bake_width = bake.width;
     request.bake_height = bake.height;
   } catch (const CLI::ValidationError& e) {
@@ -100,7 +121,18 @@ int cmd_render(const Args& args) {
   if (!hmd_name.empty()) {
     request.hmd = xr::load_hmd_profile(hmd_name);
     request.eye = eye_text == "right" ? xr::Eye::Right : xr::Eye::Left;
+    const xr::EyeProfile& ep = request.hmd->eye(request.eye);
+    if (size_text.empty() && std::int64_t{ep.width} * ep.height > kOutputSizeLimit.max_pixels)
+      throw io::InputError(request.hmd->source + ": the " + std::string(xr::eye_name(request.eye)) +
+                           " eye's " + std::to_string(ep.width) + "x" + std::to_string(ep.height) +
+                           " pixels are more than a render may have (" +
+                           std::to_string(kOutputSizeLimit.max_pixels) + "); give --size");
   }
+  // Before any work: an --out that would destroy an input, or a device, is refused up front.
+  std::vector<io::NamedInput> inputs = {{"INPUT", input}, {"--sidecar", sidecar_path}};
+  if (request.hmd) inputs.push_back({"--hmd", request.hmd->source});
+  io::check_output_is_not_input("--out", out_path, inputs);
+  io::resolve_output_path(out_path);
 
   const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
   if (const auto g = first_gpu_only_grain(sidecar); g && !gpu) {
@@ -112,10 +144,7 @@ int cmd_render(const Args& args) {
   const cv::Mat rgb8 = render_request(input, sidecar, request);
   cv::Mat bgr;
   cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);
-  std::vector<unsigned char> png;
-  if (!cv::imencode(".png", bgr, png)) throw std::runtime_error("PNG encoding failed");
-  io::write_file_atomic(out_path, std::string_view(reinterpret_cast<const char*>(png.data()),
-                                                   png.size()));
+  io::write_png(out_path, bgr);
   std::cout << out_path << ": " << rgb8.cols << "x" << rgb8.rows << "\n";
   return kExitOk;
 }

@@ -33,12 +33,16 @@ void print_help(std::ostream& out) {
     name.resize(10, ' ');
     out << "  " << name << c.summary << "\n";
   }
-  out << "\nexit codes: 0 success, 1 the input was wrong, 2 usage error, 3 internal error\n";
+  out << "\n--verbose (anywhere): keep the media libraries' own messages (FFmpeg, OpenCV)\n"
+         "exit codes: 0 success, 1 the input was wrong, 2 usage error, 3 internal error\n";
 }
 
-int run_guarded(const char* name, CommandFn run, const Args& args) {
+int run_guarded(const char* name, const std::function<int(const Args&)>& run, const Args& args) {
   try {
     return run(args);
+  } catch (const UsageError& e) {
+    std::cerr << "vdfx " << name << ": " << e.what() << "\n";
+    return kExitUsage;
   } catch (const io::InputError& e) {
     std::cerr << "vdfx " << name << ": " << e.what() << "\n";
     return kExitBadInput;
@@ -48,7 +52,33 @@ int run_guarded(const char* name, CommandFn run, const Args& args) {
   }
 }
 
-int dispatch(const Args& args, const std::function<int(const CommandInfo&, const Args&)>& run) {
+namespace {
+
+/// ARGS without --verbose before "--".
+Args without_verbose(const Args& raw) {
+  Args args;
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    if (raw[i] == "--") {
+      args.insert(args.end(), raw.begin() + static_cast<std::ptrdiff_t>(i), raw.end());
+      break;
+    }
+    if (raw[i] != "--verbose") args.push_back(raw[i]);
+  }
+  return args;
+}
+
+}  // namespace
+
+bool wants_verbose(const Args& args) {
+  for (const std::string& a : args) {
+    if (a == "--") return false;
+    if (a == "--verbose") return true;
+  }
+  return false;
+}
+
+int dispatch(const Args& raw_args, const std::function<int(const CommandInfo&, const Args&)>& run) {
+  const Args args = without_verbose(raw_args);
   if (args.empty()) {
     print_help(std::cerr);
     return kExitUsage;

@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,14 @@ namespace vdfx::app {
 enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitInternal = 3 };
 
 using Args = std::vector<std::string>;
+
+/// A usage error found after parsing, where only the running system can tell (an option beyond
+/// the GL implementation's largest texture, no display for a GL command): run_guarded reports it
+/// as exit 2, like a parse error.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 using CommandFn = int (*)(const Args& args);
 
 struct CommandInfo {
@@ -29,12 +38,16 @@ const std::vector<CommandInfo>& command_infos();
 
 void print_help(std::ostream& out);
 
-/// Runs one command, mapping io::InputError to exit 1 and any other exception to 3 (the message
-/// goes to stderr, prefixed with "vdfx NAME:").
-int run_guarded(const char* name, CommandFn run, const Args& args);
+/// Runs one command, mapping UsageError to exit 2, io::InputError to exit 1 and any other
+/// exception to 3 (the message goes to stderr, prefixed with "vdfx NAME:").
+int run_guarded(const char* name, const std::function<int(const Args&)>& run, const Args& args);
+
+/// True when ARGS hold --verbose before any "--": keep the media libraries' own messages.
+bool wants_verbose(const Args& args);
 
 /// `vdfx ARGS...` (without the program name): no arguments, --help, --version and unknown
-/// commands here; a known command goes to `run` with the arguments after its name.
+/// commands here; a known command goes to `run` with the arguments after its name. --verbose,
+/// anywhere before "--", is taken out first (run_main acts on it: wants_verbose).
 int dispatch(const Args& args, const std::function<int(const CommandInfo&, const Args&)>& run);
 
 }  // namespace vdfx::app

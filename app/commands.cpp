@@ -6,6 +6,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/library_logs.h"
+#include "xr/gl_context.h"
+
 namespace vdfx::app {
 namespace {
 
@@ -21,6 +24,20 @@ CommandFn function_of(const std::string& name) {
   return it->second;
 }
 
+/// Runs `fn`. No display or no GL 4.3 here is how the command was run, not the input or a bug:
+/// a usage error (exit 2).
+int gl_unavailable_is_usage(CommandFn fn, const Args& args) {
+#if VDFX_WITH_GL
+  try {
+    return fn(args);
+  } catch (const xr::GlUnavailableError& e) {
+    throw UsageError(e.what());
+  }
+#else
+  return fn(args);
+#endif
+}
+
 }  // namespace
 
 const std::vector<Command>& commands() {
@@ -34,8 +51,11 @@ const std::vector<Command>& commands() {
 }
 
 int run_main(const Args& args) {
+  if (!wants_verbose(args)) io::quiet_library_logs();
   return dispatch(args, [](const CommandInfo& c, const Args& rest) {
-    return run_guarded(c.name, function_of(c.name), rest);
+    const CommandFn fn = function_of(c.name);
+    return run_guarded(
+        c.name, [fn](const Args& a) { return gl_unavailable_is_usage(fn, a); }, rest);
   });
 }
 

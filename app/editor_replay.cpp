@@ -4,7 +4,6 @@
 
 #include <cstdio>
 #include <algorithm>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "app/editor.h"
@@ -14,7 +13,9 @@
 #include "effects/grain_render.h"
 #include "effects/view_renderer.h"
 #include "io/frame_decoder.h"
+#include "io/image_write.h"
 #include "io/input_error.h"
+#include "io/output_path.h"
 #include "io/recording.h"
 #include "ui/interaction.h"
 #include "xr/input_backend.h"
@@ -145,6 +146,11 @@ cv::Mat render_replay_frame(Editor& editor, EditorLayers& layers, const cv::Mat&
 
 ReplayResult run_replay(const ReplayOptions& o) {
   ReplayResult result;
+  // Outputs that would destroy an input, or land on a device, are refused before any work.
+  std::vector<io::NamedInput> inputs = {{"recording", o.recording}, {"--video", o.video}};
+  if (o.sidecar_in) inputs.push_back({"--sidecar-in", *o.sidecar_in});
+  io::check_output_is_not_input("--sidecar-out", o.sidecar_out, inputs);
+  io::resolve_output_path(o.sidecar_out);
   io::Recording rec = io::read_recording(o.recording);
   for (const auto& w : rec.warnings) result.messages.push_back(w);
 
@@ -163,7 +169,11 @@ ReplayResult run_replay(const ReplayOptions& o) {
   const auto timeline = backend->timeline();
   std::vector<std::size_t> shots;
   if (o.frames_dir && !timeline.empty()) {
-    fs::create_directories(*o.frames_dir);
+    std::error_code ec;
+    fs::create_directories(*o.frames_dir, ec);
+    if (ec || !fs::is_directory(*o.frames_dir))
+      throw io::InputError("--frames " + o.frames_dir->string() + ": cannot create the folder" +
+                           (ec ? " (" + ec.message() + ")" : " (a file of that name exists)"));
     const int n = std::max(1, o.frame_images);
     for (int k = 1; k <= n; ++k)
       shots.push_back((timeline.size() - 1) * static_cast<std::size_t>(k) / static_cast<std::size_t>(n));
@@ -179,7 +189,8 @@ ReplayResult run_replay(const ReplayOptions& o) {
       char name[64];
       std::snprintf(name, sizeof name, "replay_%03zu.png", next_shot);
       const fs::path out = *o.frames_dir / name;
-      if (!cv::imwrite(out.string(), bgr)) throw io::InputError(out.string() + ": cannot write the PNG");
+      io::check_output_is_not_input("--frames", out, inputs);
+      io::write_png(out, bgr, io::OutputName::Generated);
       result.images.push_back(out);
       ++next_shot;
     }

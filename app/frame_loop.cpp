@@ -22,6 +22,7 @@
 #include "app/frame_loop_stats.h"
 #include "app/glfw_input_glue.h"
 #include "effects/effect_shaders.h"
+#include "io/image_write.h"
 #include "io/input_error.h"
 #include "io/video_source.h"
 #include "xr/compositor.h"
@@ -182,8 +183,7 @@ struct FrameLoop::Impl {
     xr::GlTarget target(w, h, xr::TexFormat::RGBA8);
     compositor->draw_mirror(mirror, &target, w, h);
     const cv::Mat bgr = xr::to_bgr8(target.read_float());
-    if (!cv::imwrite(o.screenshot.string(), bgr))
-      throw io::InputError(o.screenshot.string() + ": cannot write the screenshot (PNG)");
+    io::write_png(o.screenshot, bgr);
   }
 
   FrameLoopResult run() {

@@ -3,6 +3,7 @@
 #include "app/frame_loop_cli.h"
 
 #include <iostream>
+#include <limits>
 
 #include "app/cli_util.h"
 #include "io/input_error.h"
@@ -10,17 +11,36 @@
 
 namespace vdfx::app {
 namespace {
-/// A CLI11 check of a WxH option (its message names `option`).
-auto size_check(const char* option) {
-  return [option](const std::string& text) -> std::string {
-    try {
-      parse_size(text, option);
-      return {};
-    } catch (const CLI::ValidationError& e) {
-      return e.what();
-    }
-  };
+std::string size_problem(const std::string& text, const char* option, const SizeLimit& limit) {
+  try {
+    parse_size(text, option, limit);
+    return {};
+  } catch (const CLI::ValidationError& e) {
+    return e.what();
+  }
 }
+std::string window_problem(const std::string& text) {
+  return size_problem(text, "--window", kOutputSizeLimit);
+}
+std::string bake_problem(const std::string& text) {
+  return size_problem(text, "--bake", kBakeSizeLimit);
+}
+
+// --record and --screenshot must not destroy an input, and must be regular files (or new).
+void check_loop_outputs(const LoopCli& o, const std::filesystem::path& video_path,
+                        const std::string& profile_source,
+                        const std::vector<io::NamedInput>& other_inputs) {
+  std::vector<io::NamedInput> inputs = other_inputs;
+  inputs.push_back({"VIDEO", video_path});
+  inputs.push_back({"--hmd", profile_source});
+  if (o.input.rfind("replay:", 0) == 0) inputs.push_back({"--input replay:", o.input.substr(7)});
+  for (const auto& [role, path] : {std::pair{"--record", o.record}, {"--screenshot", o.screenshot}}) {
+    if (path.empty()) continue;
+    io::check_output_is_not_input(role, path, inputs);
+    io::resolve_output_path(path);
+  }
+}
+
 }  // namespace
 
 void add_loop_options(CLI::App& cli, LoopCli& o) {
@@ -35,9 +55,9 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
                  "eye buffers at this fraction of the profile's resolution (1 = full; the default "
                  "keeps llvmpipe interactive)")
       ->capture_default_str()
-      ->check(CLI::Range(0.01, 4.0));
+      ->check(finite_range(0.01, 4.0));
   cli.add_option("--frames,--exit-after-frames", o.frames, "stop after N frames")
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_range(0, std::numeric_limits<std::int64_t>::max()));
   cli.add_option("--screenshot", o.screenshot, "write the mirror of the last frame to this PNG");
   cli.add_option("--mirror", o.mirror,
                  "what the window shows: desktop (one undistorted view for a monitor), pre "
@@ -48,19 +68,17 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
       ->check(CLI::IsMember({"auto", "desktop", "pre", "lens", "eye"}));
   cli.add_option("--fov", o.fov, "horizontal field of view of the desktop view, degrees")
       ->capture_default_str()
-      ->check(CLI::Range(20.0, 160.0));
-  cli.add_option("--window", o.window, "window size WxH")
-      ->capture_default_str()
-      ->check(size_check("--window"));
+      ->check(finite_range(20.0, 160.0));
+  cli.add_option("--window", o.window, "window size WxH")->capture_default_str()->check(window_problem);
   cli.add_flag("--hidden", o.hidden, "no visible window (offscreen; --screenshot still works)");
   cli.add_flag("--no-vsync", o.no_vsync, "do not wait for the display's vsync (live input)");
   cli.add_option("--decode-timeout", o.decode_timeout_ms,
                  "ms a frame may wait for the decoder (0: never wait, show the previous frame)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 10000.0));
+      ->check(finite_range(0.0, 10000.0));
   cli.add_option("--bake", o.bake, "per-pixel mode's parameter grid WxH (speed/error knob)")
       ->capture_default_str()
-      ->check(size_check("--bake"));
+      ->check(bake_problem);
   cli.add_option("--blur", o.blur,
                  "GPU blur: pyramid (halvings + small residual blur, the live default) or exact "
                  "(full-resolution separable Gaussian, as vdfx render --gpu)")
@@ -68,12 +86,14 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
       ->check(CLI::IsMember({"exact", "pyramid"}));
 }
 
-LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video) {
+LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video,
+                       const std::vector<io::NamedInput>& other_inputs) {
   LoopSetup s;
   FrameLoopOptions& f = s.options;
   f.profile = xr::load_hmd_profile(o.hmd);
-  const ImageSize window = parse_size(o.window, "--window");
-  const ImageSize bake = parse_size(o.bake, "--bake");
+  check_loop_outputs(o, video_path, f.profile.source, other_inputs);
+  const ImageSize window = parse_size(o.window, "--window", kOutputSizeLimit);
+  const ImageSize bake = parse_size(o.bake, "--bake", kBakeSizeLimit);
   f.window_width = window.width;
   f.window_height = window.height;
   f.bake_width = bake.width;

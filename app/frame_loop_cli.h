@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/frame_loop.h"
+#include "io/output_path.h"
 #include "io/video_source.h"
 #include "xr/input_backend.h"
 
@@ -48,8 +49,11 @@ struct LoopSetup {
 };
 
 /// Loads the profile, opens the video (a still is a one-frame video) and the input backend
-/// (wrapped in the recording decorator with --record). Throws io::InputError naming what is wrong.
-LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video);
+/// (wrapped in the recording decorator with --record). Throws io::InputError naming what is wrong,
+/// including a --record or --screenshot that is the same file as the video, the profile, the
+/// replayed recording or one of `other_inputs` (the command's sidecar).
+LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video,
+                       const std::vector<io::NamedInput>& other_inputs = {});
 
 /// Prints the run's summary line (frames, late frames, frames per second) to stderr.
 void report_loop(const char* command, const FrameLoopResult& r);

@@ -52,6 +52,8 @@ class UndoStack {
   /// Opens a group; nested calls are counted. Changes until the matching end_group form one step.
   void begin_group(const std::string& label);
   void end_group();
+  /// A group is open (a drag): the document tells its listener once, when it closes.
+  bool in_group() const { return group_depth_ > 0; }
 
   bool can_undo() const { return !done_.empty(); }
   bool can_redo() const { return !undone_.empty(); }

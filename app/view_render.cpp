@@ -2,20 +2,27 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "app/command_table.h"
+#include "app/finite_params.h"
 #include "app/flare_set_of.h"
 #include "app/grain_set_of.h"
+#include "app/size_limits.h"
 #include "effects/distortion_mesh.h"
 #include "effects/effect_shaders.h"
 #include "effects/flare_render.h"
 #include "effects/grain_render.h"
 #include "effects/stack_interpolator.h"
 #include "effects/view_camera.h"
+#include "io/excerpt.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
 #include "xr/compositor.h"
+#include "xr/effect_stack_gl.h"
 #include "xr/eye_views.h"
 #include "xr/flare_gl.h"
 #include "xr/grain_gl.h"
@@ -60,10 +67,10 @@ xr::DistortionSettings parse_distortion(const std::string& text) {
     int value = 0;
     const auto [ptr, ec] = std::from_chars(n.data(), n.data() + n.size(), value);
     if (n.empty() || ec != std::errc() || ptr != n.data() + n.size() || value < 2 || value > 257)
-      throw std::invalid_argument("'" + text + "': N must be a whole number in 2..257");
+      throw std::invalid_argument("'" + io::excerpt(text, 40) + "': N must be a whole number in 2..257");
     s.mesh_n = value;
   } else {
-    throw std::invalid_argument("'" + text + "': expected none, pixel or mesh:N");
+    throw std::invalid_argument("'" + io::excerpt(text, 40) + "': expected none, pixel or mesh:N");
   }
   return s;
 }
@@ -173,7 +180,13 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
                        const RenderRequest& r) {
   const cv::Mat equirect = load_equirect_frame(input, r.frame);
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
-  const effects::StackParams view_params = stack.evaluate(r.look, r.frame);
+  // Every evaluation goes through this check: view mode once, per-pixel mode per cell or pixel.
+  const auto evaluate = [&](const effects::Direction& d) {
+    effects::StackParams p = stack.evaluate(d, r.frame);
+    require_finite(p, r.sidecar_name, d, r.frame);
+    return p;
+  };
+  const effects::StackParams view_params = evaluate(r.look);
 
   std::optional<EyeSetup> eye;
   if (r.hmd) eye = eye_setup(r);
@@ -192,6 +205,18 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
 
   if (r.gpu) {
     auto context = xr::GlContext::create({});
+    // Sizes beyond what this GL implementation takes are refused before any texture exists
+    // (they were GL errors, reported as internal).
+    const int max_side = context->max_image_side();
+    if (equirect.cols > max_side || equirect.rows > max_side)
+      throw io::InputError(input.string() + ": the frame is " + std::to_string(equirect.cols) + "x" +
+                           std::to_string(equirect.rows) + "; this GL implementation (" +
+                           context->renderer() + ") takes at most " + std::to_string(max_side) +
+                           " pixels per side (render without --gpu)");
+    if (r.bake_width > max_side || r.bake_height > max_side)
+      throw UsageError("--bake " + std::to_string(r.bake_width) + "x" + std::to_string(r.bake_height) +
+                       ": this GL implementation takes at most " + std::to_string(max_side) +
+                       " per side");
     cv::Mat bgr_in;
     cv::cvtColor(equirect, bgr_in, cv::COLOR_RGB2BGR);
     xr::GpuViewOptions options;
@@ -209,12 +234,22 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
     if (r.mode == effects::RenderMode::Pixel) {
       // Per-pixel mode: the parameters baked on an equirect grid, read along each pixel's ray;
       // an effect neutral in every cell is not compiled in.
-      grid = xr::bake_param_grid([&](const effects::Direction& d) { return stack.evaluate(d, r.frame); },
-                                 r.bake_width, r.bake_height);
+      grid = xr::bake_param_grid(evaluate, r.bake_width, r.bake_height);
       mask = 0;
       for (const effects::StackParams& p : grid->cells) mask |= effects::non_neutral_mask(p);
       options.param_grid = &*grid;
     }
+    effects::StackParams widest = view_params;
+    if (grid) widest.blur_sigma_deg = grid->max_blur_sigma_deg();
+    const int margin = xr::blur_margin(widest, mask, view, w, h);
+    const std::int64_t area_w = w + 2 * margin, area_h = h + 2 * margin;
+    if (area_w > max_side || area_h > max_side || area_w * area_h > kGpuRenderLimit.max_pixels)
+      throw UsageError("--size " + std::to_string(w) + "x" + std::to_string(h) + ": with the blur's margin of " +
+                       std::to_string(margin) + " pixels the GPU renders " + std::to_string(area_w) + "x" +
+                       std::to_string(area_h) + "; it takes at most " + std::to_string(max_side) +
+                       " per side (this GL implementation) and " +
+                       std::to_string(kGpuRenderLimit.max_pixels) + " pixels (" + kGpuRenderLimit.example +
+                       ") in all");
     const cv::Mat bgr = xr::render_view_gpu(bgr_in, view, w, h, view_params, mask, options);
     cv::Mat rgb;
     cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
@@ -227,9 +262,7 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
   if (r.mode == effects::RenderMode::View) {
     rendered = effects::render_view(sampler, camera, view_params);
   } else {
-    const effects::ParamsAt at = [&](const effects::Direction& d) {
-      return stack.evaluate(d, r.frame);
-    };
+    const effects::ParamsAt at = evaluate;
     rendered = effects::render_view(sampler, camera, at, effects::RenderMode::Pixel);
   }
   effects::add_flares(rendered, camera, view.position, flares);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <opencv2/core.hpp>
 #include <optional>
+#include <string>
 
 #include "effects/lens_model.h"
 #include "effects/view_renderer.h"
@@ -31,6 +32,7 @@ struct RenderRequest {
   std::optional<xr::HmdProfile> hmd;
   xr::Eye eye = xr::Eye::Left;
   xr::DistortionSettings distortion{xr::DistortionMethod::None};
+  std::string sidecar_name;  //!< names the sidecar when its values evaluate to NaN or infinity
   /// Display time that picks the grain pattern (docs/grain.md); default the frame's start,
   /// effects::frame_display_time_ns(frame, fps).
   std::optional<std::int64_t> display_time_ns;

@@ -3,11 +3,13 @@
 #include "io/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <string>
 
@@ -46,31 +48,63 @@ class TempFile {
   bool released_ = false;
 };
 
+std::string temp_prefix(const std::filesystem::path& path) {
+  return "." + path.filename().string() + ".tmp-";
+}
+
 std::filesystem::path temp_name(const std::filesystem::path& path) {
   static std::atomic<unsigned> counter{0};
   // Hidden, in the same folder (rename is only atomic within one file system), unique per
   // process and call; O_EXCL below guards against anything left by another process.
-  return path.parent_path() / ("." + path.filename().string() + ".tmp-" +
-                               std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  return path.parent_path() /
+         (temp_prefix(path) + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+}
+
+/// Removes `.NAME.tmp-PID-N` files that a killed writer of this very file left behind: only names
+/// of exactly that form, and only when no process PID exists on this machine (a live writer's
+/// file is never touched). Best effort: a file that cannot be removed is left.
+void remove_stale_temps(const std::filesystem::path& path, const std::filesystem::path& dir) {
+  const std::string prefix = temp_prefix(path);
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const char* p = name.data() + prefix.size();
+    const char* last = name.data() + name.size();
+    long pid = 0;
+    unsigned long n = 0;
+    const auto a = std::from_chars(p, last, pid);
+    if (a.ec != std::errc() || a.ptr == last || *a.ptr != '-' || pid <= 0) continue;
+    const auto b = std::from_chars(a.ptr + 1, last, n);
+    if (b.ec != std::errc() || b.ptr != last) continue;
+    if (pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+    std::error_code ignored;
+    std::filesystem::remove(it->path(), ignored);
+  }
 }
 
 }  // namespace
 
-void write_file_atomic(const std::filesystem::path& path, std::string_view bytes) {
-  if (path.filename().empty()) throw InputError("cannot write " + path.string() + ": not a file name");
+void write_file_atomic(const std::filesystem::path& user_path, std::string_view bytes,
+                       OutputName name) {
+  if (user_path.filename().empty())
+    throw InputError("cannot write " + user_path.string() + ": not a file name");
+  // Through a symbolic link to the file it names (the link stays a link); devices, pipes and
+  // folders are refused rather than replaced by a regular file.
+  const std::filesystem::path path = resolve_output_path(user_path, name);
   const std::filesystem::path dir = path.parent_path().empty() ? "." : path.parent_path();
 
   struct stat old {};
   const bool existed = ::stat(path.c_str(), &old) == 0;
-  if (existed && S_ISDIR(old.st_mode)) fail(path, "it is a folder", EISDIR);
+  remove_stale_temps(path, dir);
 
   const std::filesystem::path tmp_path = temp_name(path);
   const int fd = ::open(tmp_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) fail(path, "cannot create temporary file " + tmp_path.string(), errno);
+  if (fd < 0) fail(user_path, "cannot create temporary file " + tmp_path.string(), errno);
   TempFile tmp(tmp_path, fd);
 
   if (existed && ::fchmod(tmp.fd(), old.st_mode & 07777) != 0)
-    fail(path, "cannot keep the file's mode", errno);
+    fail(user_path, "cannot keep the file's mode", errno);
 
   const char* p = bytes.data();
   std::size_t left = bytes.size();
@@ -78,23 +112,27 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view bytes
     const ssize_t n = ::write(tmp.fd(), p, left);
     if (n < 0) {
       if (errno == EINTR) continue;
-      fail(path, "write failed", errno);
+      fail(user_path, "write failed", errno);
     }
     p += n;
     left -= static_cast<std::size_t>(n);
   }
-  if (::fsync(tmp.fd()) != 0) fail(path, "fsync failed", errno);
-  if (tmp.close() != 0) fail(path, "close failed", errno);
-  if (::rename(tmp.path().c_str(), path.c_str()) != 0) fail(path, "rename failed", errno);
+  if (::fsync(tmp.fd()) != 0) fail(user_path, "fsync failed", errno);
+  if (tmp.close() != 0) fail(user_path, "close failed", errno);
+  if (::rename(tmp.path().c_str(), path.c_str()) != 0) fail(user_path, "rename failed", errno);
   tmp.release();
 
-  // The new name is only durable once the folder's entry is on disk too.
+  // The new name is only durable once the folder's entry is on disk too. The file is already
+  // replaced here, so a failure says so instead of "cannot write". File systems that cannot sync
+  // a folder at all (EINVAL) are taken as synced.
   const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dfd < 0) fail(path, "cannot open folder to fsync", errno);
-  const int r = ::fsync(dfd);
+  const int r = dfd < 0 ? -1 : ::fsync(dfd);
   const int err = errno;
-  ::close(dfd);
-  if (r != 0) fail(path, "fsync of folder failed", err);
+  if (dfd >= 0) ::close(dfd);
+  if (r != 0 && err != EINVAL)
+    throw InputError(user_path.string() + ": written, but not yet durable: the fsync of its folder " +
+                     dir.string() + " failed (" + std::strerror(err) +
+                     "); a power cut now could still lose the new contents");
 }
 
 }  // namespace vdfx::io

@@ -4,15 +4,16 @@
 
 #include "io/image_source.h"
 #include "io/input_error.h"
+#include "io/input_file.h"
+
+#include <limits>
 
 namespace vdfx::io {
 
 std::unique_ptr<FrameDecoder> open_frame_decoder(const std::filesystem::path& path,
                                                  const DecoderOptions& options) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": no such file");
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path.string() + ": is a folder, not a video or image");
+  // A regular file only: a named pipe with no writer would block the backends forever.
+  check_input_file(path, std::numeric_limits<std::uintmax_t>::max(), "a video or image");
   if (is_still_image_path(path)) return create_still_decoder(path, options);
   return create_libav_decoder(path, options);
 }

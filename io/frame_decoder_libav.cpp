@@ -26,6 +26,7 @@ extern "C" {
 }
 
 #include "io/frame_decoder.h"
+#include "io/image_source.h"
 #include "io/input_error.h"
 #include "io/libav_util.h"
 #include "io/ycbcr.h"
@@ -159,6 +160,7 @@ class LibavDecoder final : public FrameDecoder {
     if (read_picture(first) != DecodeStatus::Ok)
       throw InputError(name_ + ": cannot decode the first frame (corrupt or unsupported " +
                        props_.codec + " stream)");
+    check_frame_size(name_, first.width(), first.height());
     props_.width = first.width();
     props_.height = first.height();
     held_ = std::move(first);
@@ -255,6 +257,9 @@ class LibavDecoder final : public FrameDecoder {
       throw InputError(name_ + ": no decoder for its video codec (" + avcodec_get_name(id) + ")");
     }
     stream_ = s;
+    // The size limit (docs/reliability.md) before the decoder allocates anything for the frames.
+    const AVCodecParameters* par = fmt_->streams[s]->codecpar;
+    if (par->width > 0 && par->height > 0) check_frame_size(name_, par->width, par->height);
     for (unsigned i = 0; i < fmt_->nb_streams; ++i)
       if (static_cast<int>(i) != stream_) fmt_->streams[i]->discard = AVDISCARD_ALL;
     codec_.reset(avcodec_alloc_context3(dec));

@@ -7,11 +7,13 @@
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include "io/input_error.h"
+#include "io/input_file.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -66,11 +68,19 @@ LoadedImage to_display_rgb(const cv::Mat& decoded, const ToneMapSettings& tone) 
   return out;
 }
 
+void check_frame_size(const std::string& file, int width, int height) {
+  if (width > kMaxFrameSide || height > kMaxFrameSide ||
+      std::int64_t{width} * height > kMaxFramePixels)
+    throw InputError(file + ": the image is " + std::to_string(width) + "x" +
+                     std::to_string(height) + "; vdfx takes frames of at most " +
+                     std::to_string(kMaxFrameSide) + " pixels per side and " +
+                     std::to_string(kMaxFramePixels) + " pixels in all (16384x8192)");
+}
+
 LoadedImage load_image(const std::filesystem::path& path, const ToneMapSettings& tone) {
   const std::string name = path.string();
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(name + ": no such file");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(name + ": is a folder, not an image");
+  // A regular file only: OpenCV would block forever on a named pipe with no writer.
+  check_input_file(path, std::numeric_limits<std::uintmax_t>::max(), "an image");
   if (!std::ifstream(path, std::ios::binary)) throw InputError(name + ": cannot open for reading");
   enable_openexr();
   cv::Mat decoded;
@@ -81,6 +91,9 @@ LoadedImage load_image(const std::filesystem::path& path, const ToneMapSettings&
   }
   if (decoded.empty())
     throw InputError(name + ": cannot decode image (not a format OpenCV reads, or corrupt)");
+  // OpenCV 4.6 cannot report the size without decoding; its own limit (2^30 pixels) bounds the
+  // decode, and the check comes before the float copy, the largest allocation.
+  check_frame_size(name, decoded.cols, decoded.rows);
   try {
     return to_display_rgb(decoded, tone);
   } catch (const std::invalid_argument& e) {

@@ -7,7 +7,9 @@
 /// repeated to three channels; an alpha channel is dropped.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include <opencv2/core.hpp>
 #include "io/tone_map.h"
@@ -22,6 +24,16 @@ void enable_openexr();
 /// True for file names whose extension load_image takes as a still image (.png, .jpg, .jpeg,
 /// .exr, .hdr, .pic, .tif, .tiff, .bmp, .webp; case-insensitive).
 bool is_still_image_path(const std::filesystem::path& path);
+
+/// The largest frame vdfx takes as an input, still or video (docs/reliability.md, "Limits"):
+/// each side at most 16384 (the largest texture common GL implementations take) and at most
+/// 2^27 pixels (16384x8192, an equirect of 16K): about 1.6 GiB as float RGB.
+inline constexpr int kMaxFrameSide = 16384;
+inline constexpr std::int64_t kMaxFramePixels = std::int64_t{1} << 27;
+
+/// Throws io::InputError naming `file`, its size and the limit when a frame of width x height is
+/// beyond kMaxFrameSide / kMaxFramePixels.
+void check_frame_size(const std::string& file, int width, int height);
 
 struct LoadedImage {
   cv::Mat rgb;               //!< CV_32FC3, RGB order, display-encoded, [0, 1]

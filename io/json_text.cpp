@@ -3,6 +3,9 @@
 #include "io/json_text.h"
 
 #include <set>
+#include <utility>
+
+#include "io/excerpt.h"
 
 namespace vdfx::io {
 
@@ -16,9 +19,28 @@ std::string json_pointer_token(std::string_view key) {
   return out;
 }
 
+std::string JsonTextError::place() const {
+  if (line == 0) return pointer.empty() ? std::string("(document)") : pointer;
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
 namespace {
 
 using json = nlohmann::json;
+
+/// 1-based line and column (in bytes) of byte offset `at`.
+std::pair<std::size_t, std::size_t> line_and_column(std::string_view text, std::size_t at) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < at && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
 
 /// Forwards every event to nlohmann's own DOM builder and tracks where it is, so that a
 /// duplicate key can be named by pointer and a parse error by line and column.
@@ -47,7 +69,7 @@ class TrackingSax {
     Level& top = stack_.back();
     top.key = k;
     if (!top.seen.insert(k).second)
-      errors_.push_back({0, 0, pointer(), "duplicate key \"" + k + "\" (a reader would drop one)"});
+      errors_.push_back({0, 0, pointer(), "duplicate key \"" + excerpt(k) + "\" (a reader would drop one)"});
     return dom_.key(k);
   }
   bool end_object() {
@@ -70,15 +92,7 @@ class TrackingSax {
     std::size_t at = position > 0 ? position - 1 : 0;
     if (ex.id == 406) at = position > token.size() ? position - token.size() : 0;
     if (at > text_.size()) at = text_.size();
-    std::size_t line = 1, column = 1;
-    for (std::size_t i = 0; i < at; ++i) {
-      if (text_[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
-    }
+    const auto [line, column] = line_and_column(text_, at);
     std::string msg = ex.what();
     // Drop nlohmann's "[json.exception.parse_error.101] parse error at line 1, column 2: "
     // prefix: the place is given by our own line and column.
@@ -86,7 +100,8 @@ class TrackingSax {
     if (const auto p = msg.find(": "); p != std::string::npos && msg.find("parse error") < p)
       msg = msg.substr(p + 2);
     while (!msg.empty() && msg.front() == ' ') msg.erase(msg.begin());
-    errors_.push_back({line, column, {}, "invalid JSON: " + msg});
+    // nlohmann quotes what it read: a 10 MB number made a 10 MB line.
+    errors_.push_back({line, column, {}, "invalid JSON: " + excerpt_quoted(msg), ex.id});
     return false;
   }
 
@@ -106,7 +121,7 @@ class TrackingSax {
   std::string pointer() const {
     std::string p;
     for (const Level& l : stack_)
-      p += "/" + (l.array ? std::to_string(l.current) : json_pointer_token(l.key));
+      p += "/" + (l.array ? std::to_string(l.current) : excerpt(json_pointer_token(l.key)));
     return p;
   }
 
@@ -120,6 +135,15 @@ class TrackingSax {
 
 JsonText parse_json_text(std::string_view text) {
   JsonText out;
+  // nlohmann takes a NUL byte for the end of the input: text after it was silently ignored, and
+  // one inside the document read as "unexpected end of input". JSON text never holds one.
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    const auto [line, column] = line_and_column(text, nul);
+    out.errors.push_back({line, column, {}, "invalid JSON: a NUL byte (\\x00); JSON text cannot "
+                                            "contain one (a binary or damaged file?)"});
+    out.value = json(json::value_t::discarded);
+    return out;
+  }
   TrackingSax sax(out.value, text, out.errors);
   const bool ok = json::sax_parse(text.begin(), text.end(), &sax);
   if (!ok) out.value = json(json::value_t::discarded);

@@ -16,6 +16,9 @@ struct JsonTextError {
   std::size_t column = 0;  //!< 1-based, in bytes
   std::string pointer;     //!< JSON pointer of the offending member (duplicate keys)
   std::string message;
+  int code = 0;  //!< nlohmann's error id (1xx syntax, 406 number overflow); 0: vdfx's own check
+  /// "line L, column C", or the pointer when there is no line.
+  std::string place() const;
 };
 
 struct JsonText {

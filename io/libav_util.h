@@ -15,6 +15,8 @@ extern "C" {
 #include <memory>
 #include <string>
 
+#include "io/library_logs.h"
+
 namespace vdfx::io::av {
 
 struct InputCloser {
@@ -46,10 +48,12 @@ inline std::string error_text(int code) {
 }
 
 /// libav prints encoder statistics and stream notes at "info" level on stderr; vdfx reports what
-/// matters itself, so only libav's errors pass (set once per process, before the first use).
+/// matters itself, so only libav's errors pass (set once per process, before the first use), and
+/// none once the command line asked for quiet libraries (io/library_logs.h: vdfx's own message
+/// about a damaged file is then the one line the user sees; `--verbose` keeps libav's errors).
 inline void limit_logs() {
   static const bool done = [] {
-    av_log_set_level(AV_LOG_ERROR);
+    av_log_set_level(library_logs_quiet() ? AV_LOG_QUIET : AV_LOG_ERROR);
     return true;
   }();
   (void)done;

@@ -2,13 +2,25 @@
 /// @brief Recording reader (validating, line-numbered errors) and incremental writer.
 #include "io/recording.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "io/excerpt.h"
 #include "io/input_error.h"
+#include "io/input_file.h"
+#include "io/json_text.h"
+#include "io/output_path.h"
 
 namespace vdfx::io {
 
@@ -40,7 +52,7 @@ void reject_unknown(const Where& w, const Json& obj, const std::string& ptr,
   for (auto it = obj.begin(); it != obj.end(); ++it) {
     bool ok = false;
     for (const char* k : known) ok = ok || it.key() == k;
-    if (!ok) w.fail(ptr, "unknown field \"" + it.key() + "\"");
+    if (!ok) w.fail(ptr, "unknown field \"" + excerpt(it.key()) + "\"");
   }
 }
 
@@ -118,6 +130,10 @@ RecordedHand parse_hand(const Where& w, const Json& v, const std::string& ptr, b
 std::int64_t parse_time(const Where& w, const Json& obj) {
   const Json& t = field(w, obj, "", "t_ns");
   if (!t.is_number_integer()) w.fail("/t_ns", "expected an integer number of nanoseconds");
+  // nlohmann keeps 2^63 and above as unsigned; read as int64 they wrapped to negative times that
+  // a first sample had nothing to be compared with.
+  if (t.is_number_unsigned() && t.get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX))
+    w.fail("/t_ns", "time " + t.dump() + " is beyond the largest time, 2^63 - 1 ns (292 years)");
   return t.get<std::int64_t>();
 }
 
@@ -149,6 +165,32 @@ RecordedHid parse_hid(const Where& w, const Json& obj, std::int64_t t) {
   return out;
 }
 
+/// The next line into `line` (without its newline), read in small pieces and never past
+/// kMaxRecordingLineBytes + 1 bytes; `terminated` says whether a newline ended it. False at the
+/// end of the input.
+bool read_line(std::istream& in, std::string& line, bool& terminated) {
+  line.clear();
+  char piece[4096];
+  while (true) {
+    in.getline(piece, sizeof piece);
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (in.bad()) throw InputError("read error");
+    if (in.eof()) {  // the input ended before a newline
+      line.append(piece, got);
+      terminated = false;
+      return !line.empty();
+    }
+    if (!in.fail()) {  // the newline ended the line (it is counted in gcount, not stored)
+      line.append(piece, got - 1);
+      terminated = true;
+      return true;
+    }
+    line.append(piece, got);  // the piece filled up: the line goes on
+    in.clear();
+    if (line.size() > kMaxRecordingLineBytes) return true;  // the caller reports it
+  }
+}
+
 RecordedSample parse_sample(const Where& w, const Json& obj, std::int64_t t) {
   reject_unknown(w, obj, "", {"t_ns", "head", "left", "right"});
   RecordedSample s;
@@ -163,12 +205,12 @@ RecordingHeader parse_header(const Where& w, const Json& obj) {
   if (!obj.is_object()) w.fail("", "the first line must be the recording header object");
   const Json& format = field(w, obj, "", "format");
   if (format != "vdfx.recording") {
-    w.fail("/format", "expected \"vdfx.recording\", got " + format.dump());
+    w.fail("/format", "expected \"vdfx.recording\", got " + excerpt(format.dump()));
   }
   const Json& version = field(w, obj, "", "version");
   if (!version.is_number_integer()) w.fail("/version", "expected an integer");
   if (version.get<long long>() != 1) {
-    w.fail("/version", "unsupported version " + version.dump() + " (this build reads version 1)");
+    w.fail("/version", "unsupported version " + excerpt(version.dump()) + " (this build reads version 1)");
   }
   reject_unknown(w, obj, "", {"format", "version", "hmd", "video", "note", "desktop"});
   RecordingHeader h;
@@ -249,7 +291,7 @@ std::vector<std::uint8_t> from_hex(const std::string& hex) {
     if (c >= '0' && c <= '9') return c - '0';
     if (c >= 'a' && c <= 'f') return c - 'a' + 10;
     if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    throw std::invalid_argument(std::string("not a hex digit: '") + c + "'");
+    throw std::invalid_argument("not a hex digit: '" + excerpt(std::string(1, c)) + "'");
   };
   std::vector<std::uint8_t> out(hex.size() / 2);
   for (std::size_t i = 0; i < out.size(); ++i) {
@@ -259,35 +301,41 @@ std::vector<std::uint8_t> from_hex(const std::string& hex) {
 }
 
 Recording parse_recording(std::istream& in, const std::string& name) {
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   Recording rec;
   rec.name = name;
-  std::size_t pos = 0;
   int line_no = 0;
   bool have_header = false;
   std::int64_t last_t = 0;
   std::optional<std::int64_t> last_sample_t;
   bool any_line = false;
-  while (pos < text.size()) {
-    const std::size_t nl = text.find('\n', pos);
-    const bool terminated = nl != std::string::npos;
-    std::string line = text.substr(pos, terminated ? nl - pos : std::string::npos);
-    pos = terminated ? nl + 1 : text.size();
+  // One line at a time, never more than the limit: a file without newlines (or /dev/zero) is
+  // refused at its first line instead of being read whole.
+  std::string line;
+  bool terminated = false;
+  while (read_line(in, line, terminated)) {
+    if (line.size() > kMaxRecordingLineBytes)
+      Where{name, line_no + 1}.fail("", "line longer than " + byte_size_text(kMaxRecordingLineBytes) +
+                                            " (the limit of a recording line)");
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const Where w{name, line_no};
-    Json obj;
-    try {
-      obj = Json::parse(line);
-    } catch (const Json::exception& e) {  // syntax errors, and numbers beyond double (1e999)
-      if (!terminated && have_header && e.id >= 100 && e.id < 200) {
+    if (line.empty()) w.fail("", "empty line");
+    // As the sidecar's reader: NUL bytes, duplicate keys and overflowing numbers are errors, and
+    // what the message quotes of the line is cut short.
+    JsonText parsed = parse_json_text(line);
+    if (!parsed.errors.empty()) {
+      const JsonTextError& e = parsed.errors.front();
+      const std::string what = e.line == 0 ? e.message : "bad JSON at column " + std::to_string(e.column) +
+                                                             ": " + e.message.substr(e.message.find(": ") + 2);
+      if (!terminated && have_header && e.code >= 100 && e.code < 200) {
         // A crash while writing leaves a partial last line; the rest is still good.
-        rec.warnings.push_back(name + ":" + std::to_string(line_no) +
-                               ": truncated last line ignored (" + e.what() + ")");
+        rec.warnings.push_back(name + ":" + std::to_string(line_no) + ": truncated last line ignored (" +
+                               what + ")");
         break;
       }
-      w.fail("", line.empty() ? "empty line" : std::string("bad JSON: ") + e.what());
+      w.fail(e.pointer, what);
     }
+    const Json& obj = parsed.value;
     if (!have_header) {
       rec.header = parse_header(w, obj);
       have_header = true;
@@ -320,6 +368,7 @@ Recording parse_recording(std::istream& in, const std::string& name) {
 }
 
 Recording read_recording(const std::filesystem::path& path) {
+  check_input_file(path, kMaxRecordingBytes, "a recording");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string() + ": cannot open the recording");
   return parse_recording(in, path.string());
@@ -356,18 +405,46 @@ std::string format_hid_line(const RecordedHid& h) {
 }
 
 RecordingWriter::RecordingWriter(const std::filesystem::path& path, const RecordingHeader& header)
-    : path_(path), out_(path, std::ios::binary | std::ios::trunc) {
-  if (!out_) throw InputError(path.string() + ": cannot create the recording");
+    : path_(path) {
+  // Through a link to its file; a device or pipe is refused, never replaced or blocked on.
+  fd_ = ::open(resolve_output_path(path).c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd_ < 0)
+    throw InputError(path.string() + ": cannot create the recording (" + std::strerror(errno) + ")");
   write_line(format_header_line(header));
+}
+
+RecordingWriter::~RecordingWriter() {
+  if (fd_ >= 0) ::close(fd_);
 }
 
 void RecordingWriter::write(const RecordedSample& sample) { write_line(format_sample_line(sample)); }
 void RecordingWriter::write(const RecordedHid& hid) { write_line(format_hid_line(hid)); }
 
-void RecordingWriter::write_line(const std::string& line) {
-  out_ << line << '\n';
-  out_.flush();  // a crash loses at most this line
-  if (!out_) throw std::runtime_error(path_.string() + ": write failed (disk full?)");
+void RecordingWriter::write_line(const std::string& text) {
+  if (fd_ < 0)
+    throw InputError(path_.string() + ": the recording stopped after line " + std::to_string(lines_) +
+                     " (an earlier write failed)");
+  const std::string line = text + '\n';
+  std::size_t done = 0;
+  while (done < line.size()) {
+    const ssize_t n = ::write(fd_, line.data() + done, line.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      // The user chose where to record, so a full disk is their input's problem (exit 1). The
+      // part of this line that did get out is cut off again: a partial line followed by more
+      // lines would make the whole file unreadable.
+      const std::string why = n < 0 ? std::strerror(errno) : "nothing written";
+      const bool cut = ::ftruncate(fd_, static_cast<off_t>(whole_)) == 0;
+      ::close(fd_);
+      fd_ = -1;
+      throw InputError(path_.string() + ": cannot write the recording (" + why + "); its first " +
+                       std::to_string(lines_) + " lines are kept" +
+                       (cut ? "" : " (the last one may be cut short: the reader drops it)"));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  whole_ += line.size();
+  ++lines_;
 }
 
 }  // namespace vdfx::io

@@ -9,7 +9,6 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -85,6 +84,12 @@ struct Recording {
 /// Quaternions whose norm differs from 1 by more than this are rejected.
 inline constexpr double kRecordingUnitTolerance = 1e-3;
 
+/// The longest line a recording may have (a sample line is about 500 bytes, a generic gamepad's
+/// descriptor line at most about 8 KiB) and the largest recording file: about 5 hours of samples
+/// at 90 Hz. Both are read with their limit, never past it (docs/reliability.md).
+inline constexpr std::size_t kMaxRecordingLineBytes = std::size_t{1} << 20;
+inline constexpr std::uintmax_t kMaxRecordingBytes = std::uintmax_t{1} << 30;
+
 /// Reads and validates a recording; throws InputError naming the file and line of the first
 /// problem (bad JSON, header, version, types, ranges, NaN/infinity, non-unit quaternion, time
 /// order: samples strictly increasing, every line not before the one above it). A truncated last
@@ -96,11 +101,17 @@ Recording parse_recording(std::istream& in, const std::string& name);
 std::string to_hex(const std::vector<std::uint8_t>& bytes);
 std::vector<std::uint8_t> from_hex(const std::string& hex);
 
-/// Writes a recording line by line, flushing after each, so a crash loses at most the line being
-/// written (which the reader then tolerates as a truncated last line).
+/// Writes a recording line by line, each straight to the file (no buffer in the process), so a
+/// crash loses at most the line being written, which the reader then tolerates as a truncated
+/// last line. A write that fails (full disk) cuts the file back to its last whole line and throws
+/// io::InputError naming the file; the writer then stays failed. The file is always one the
+/// reader takes: a header and whole lines.
 class RecordingWriter {
  public:
   RecordingWriter(const std::filesystem::path& path, const RecordingHeader& header);
+  ~RecordingWriter();
+  RecordingWriter(const RecordingWriter&) = delete;
+  RecordingWriter& operator=(const RecordingWriter&) = delete;
   void write(const RecordedSample& sample);
   void write(const RecordedHid& hid);
   const std::filesystem::path& path() const { return path_; }
@@ -108,7 +119,9 @@ class RecordingWriter {
  private:
   void write_line(const std::string& line);
   std::filesystem::path path_;
-  std::ofstream out_;
+  int fd_ = -1;             //!< -1 once failed
+  std::uint64_t whole_ = 0;  //!< bytes of whole lines written
+  int lines_ = 0;
 };
 
 /// One line of JSON for a sample or a HID report, exactly as written to the file (no newline).

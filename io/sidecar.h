@@ -45,6 +45,26 @@ Sidecar new_sidecar(VideoInfo video);
 
 inline constexpr const char* kSidecarFormat = "vdfx.sidecar";
 inline constexpr int kSidecarVersion = 1;
+/// Bounds on the RBF's time axis, checked by the validator (docs/sidecar.md, "Derived values"):
+/// one frame is 24 / fps * time_scale apart in the RBF distance. Over the whole clip that must
+/// stay at most kMaxScaledTimeSpan, where d^exponent (exponent < 4) and the solve still have
+/// 1e60 of headroom before overflowing to infinity and NaN (fps 1e-200 evaluated to null). One
+/// frame must stay at least kMinScaledFrameStep apart, or keyframes one frame apart at one
+/// direction are no longer told apart and are not reproduced (measured: exact to 1e-6 at 8e-6,
+/// off by 7e-5 at 8e-7 and 3e-3 at 8e-8 with exponent 3.99).
+inline constexpr double kMaxScaledTimeSpan = 1e60;
+inline constexpr double kMinScaledFrameStep = 1e-5;
+
+/// The most keyframes one effect may have (docs/reliability.md, "Limits"). The RBF solve takes
+/// O(N^2) memory and O(N^3) time: measured for one effect, 4096 keyframes evaluate in 1.2 s and
+/// 290 MB, 8192 in 8.4 s and 0.9 GB, and 100000 ended in std::bad_alloc. The editor's
+/// incremental solver keeps two N x N buffers per effect. Until the solver scales to film
+/// lengths this is checked when a sidecar is read.
+inline constexpr std::size_t kMaxKeyframesPerEffect = 4096;
+
+/// The largest sidecar file read (docs/reliability.md): far above what kMaxKeyframesPerEffect
+/// keyframes in every effect take, small enough to hold in memory several times over.
+inline constexpr std::uintmax_t kMaxSidecarBytes = std::uintmax_t{64} << 20;
 
 /// Reads and validates a sidecar. Throws io::InputError listing every problem (one per line:
 /// "FILE: POINTER: what is wrong") when the file is unreadable or invalid.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "effects/keyframe.h"
+#include "io/excerpt.h"
 #include "io/json_text.h"
 #include "io/sidecar_validate.h"
 
@@ -73,8 +74,8 @@ class Checker {
       if (!ok) {
         std::string list;
         for (const char* n : known) list += std::string(list.empty() ? "" : ", ") + n;
-        error(ptr + "/" + json_pointer_token(k),
-              "unknown field \"" + k + "\" (expected: " + list + ")");
+        error(ptr + "/" + excerpt(json_pointer_token(k)),
+              "unknown field \"" + excerpt(k) + "\" (expected: " + list + ")");
       }
     }
   }
@@ -169,6 +170,10 @@ inline bool has_type(const json& entry, const char* type) {
 /// An effect's "interpolation" override object (format 1's checks).
 void read_interpolation_settings(Checker& c, const json& v, const std::string& ptr,
                                  effects::InterpolationSettings& out);
+
+/// False, reported at `ptr`, when an array holds more than kMaxKeyframesPerEffect keyframes (the
+/// solver's limit): then they are not read at all, one clear message and no time spent.
+bool keyframe_count_ok(Checker& c, const json& keyframes, const std::string& ptr);
 
 /// A keyframe's direction and frame (format 1's checks, frame within [0, frames) when known);
 /// its "params" must be an object, whose fields the caller reads.

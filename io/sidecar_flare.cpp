@@ -165,6 +165,7 @@ void read_keyframes(Checker& c, const json& v, const std::string& ptr,
     c.error(ptr, std::string("expected an array, found ") + detail::type_name(v));
     return;
   }
+  if (!detail::keyframe_count_ok(c, v, ptr)) return;
   out.resize(v.size());
   for (std::size_t i = 0; i < v.size(); ++i) {
     const std::string kp = ptr + "/" + std::to_string(i);
@@ -221,7 +222,7 @@ void read_flare(Checker& c, const json& entry, const std::string& ptr,
         out.style = *style;
       else
         c.error(ptr + "/style",
-                "unknown flare style \"" + *s + "\" (expected headset or directional)");
+                "unknown flare style \"" + excerpt(*s) + "\" (expected headset or directional)");
     }
   }
   // Missing settings take the style's defaults (plane_m differs between the styles).

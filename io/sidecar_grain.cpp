@@ -37,12 +37,13 @@ void read_settings(Checker& c, const json& v, const std::string& ptr,
   const json* obj = c.object(v, ptr);
   if (!obj) return;
   for (const auto& [key, value] : obj->items()) {
-    const std::string kp = ptr + "/" + json_pointer_token(key);
+    const std::string kp = ptr + "/" + excerpt(json_pointer_token(key));
     const effects::GrainSettingSpec* spec = nullptr;
     for (const auto& s : effects::grain_setting_specs())
       if (s.name == key) spec = &s;
     if (!spec) {
-      c.error(kp, "unknown field \"" + key + "\" (expected: " + settings_list(style) + ")");
+      c.error(kp,
+              "unknown field \"" + excerpt(key) + "\" (expected: " + settings_list(style) + ")");
       continue;
     }
     if (style && !effects::grain_style_has_setting(*style, spec->id)) {
@@ -70,6 +71,7 @@ void read_keyframes(Checker& c, const json& v, const std::string& ptr,
     c.error(ptr, std::string("expected an array, found ") + detail::type_name(v));
     return;
   }
+  if (!detail::keyframe_count_ok(c, v, ptr)) return;
   const auto& specs = effects::grain_param_specs();
   out.resize(v.size());
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -138,7 +140,7 @@ void read_grain(Checker& c, const json& entry, const std::string& ptr,
         out.style = *style;
       else
         c.error(ptr + "/style",
-                "unknown grain style \"" + *s + "\" (expected: " + style_list() + ")");
+                "unknown grain style \"" + excerpt(*s) + "\" (expected: " + style_list() + ")");
     }
   }
   if (const json* p = c.member(entry, ptr, "seed"))

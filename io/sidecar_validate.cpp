@@ -5,12 +5,13 @@
 #include "io/sidecar_validate.h"
 
 #include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <limits>
 #include <map>
-#include <sstream>
 
 #include "effects/interpolation_check.h"
+#include "io/excerpt.h"
+#include "io/input_file.h"
 #include "io/json_text.h"
 #include "io/sidecar_checker.h"
 #include "io/sidecar_flare.h"
@@ -32,6 +33,13 @@ std::string SidecarReport::to_string() const {
 }
 
 namespace {
+
+/// A derived value for messages: three significant digits ("2.4e+201", "0.8").
+std::string short_num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
 
 constexpr std::int64_t kIntMax = std::numeric_limits<int>::max();
 constexpr double kDoubleMax = std::numeric_limits<double>::max();
@@ -82,7 +90,7 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
     if (auto s = c.string(*p, ptr + "/distance")) {
       if (*s == "chordal") out.distance = effects::AngularDistance::Chordal;
       else if (*s == "geodesic") out.distance = effects::AngularDistance::Geodesic;
-      else c.error(ptr + "/distance", "unknown distance \"" + *s + "\" (expected chordal or geodesic)");
+      else c.error(ptr + "/distance", "unknown distance \"" + excerpt(*s) + "\" (expected chordal or geodesic)");
     }
   }
   // Extension of format 1: optional, hold when absent (docs/sidecar.md).
@@ -90,7 +98,7 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
     if (auto s = c.string(*p, ptr + "/outside_span")) {
       if (*s == "hold") out.outside = effects::TimeOutside::Hold;
       else if (*s == "extrapolate") out.outside = effects::TimeOutside::Extrapolate;
-      else c.error(ptr + "/outside_span", "unknown value \"" + *s + "\" (expected hold or extrapolate)");
+      else c.error(ptr + "/outside_span", "unknown value \"" + excerpt(*s) + "\" (expected hold or extrapolate)");
     }
   }
 }
@@ -109,7 +117,7 @@ void read_params(Checker& c, const json& v, const std::string& ptr, const effect
       names += (names.empty() ? "" : ", ") + std::string(ps.name);
     }
     if (!known)
-      c.error(ptr + "/" + json_pointer_token(k), "unknown parameter \"" + k + "\" for effect " +
+      c.error(ptr + "/" + excerpt(json_pointer_token(k)), "unknown parameter \"" + excerpt(k) + "\" for effect " +
                                                      std::string(spec.name) + " (expected: " + names + ")");
   }
   std::size_t offset = 0;
@@ -179,10 +187,10 @@ void read_effect(Checker& c, const json& v, const std::string& ptr, std::optiona
         spec = &effects::effect_spec(*t);
         out.type = *t;
         if (auto [it, inserted] = seen.emplace(*t, ptr); !inserted)
-          c.error(ptr + "/type", "effect type \"" + *s + "\" appears twice (first at " + it->second +
+          c.error(ptr + "/type", "effect type \"" + excerpt(*s) + "\" appears twice (first at " + it->second +
                                      "); each effect has one keyframe set");
       } else {
-        c.error(ptr + "/type", "unknown effect type \"" + *s + "\" (known: " + known_types() + ")");
+        c.error(ptr + "/type", "unknown effect type \"" + excerpt(*s) + "\" (known: " + known_types() + ")");
       }
     }
   }
@@ -197,15 +205,74 @@ void read_effect(Checker& c, const json& v, const std::string& ptr, std::optiona
       c.error(kp, std::string("expected an array, found ") + type_name(*p));
       return;
     }
+    if (!keyframe_count_ok(c, *p, kp)) return;
     out.keyframes.resize(p->size());
     for (std::size_t i = 0; i < p->size(); ++i)
       read_keyframe(c, (*p)[i], kp + "/" + std::to_string(i), spec, frames, out.keyframes[i]);
   }
 }
 
+/// True when some problem was reported at `ptr` or below it.
+bool has_problem_at(const std::vector<Problem>& problems, std::size_t first, const std::string& ptr) {
+  for (std::size_t i = first; i < problems.size(); ++i)
+    if (problems[i].pointer == ptr || problems[i].pointer.rfind(ptr + "/", 0) == 0) return true;
+  return false;
+}
+
+/// An entry's own interpolation settings and where they are ("/effects/3/interpolation").
+using Override = std::pair<std::string, effects::InterpolationSettings>;
+
+/// The values the maths derives from fps, frames and time_scale must stay finite and usable:
+/// one frame is 24 / fps * time_scale apart in the RBF distance (contract). Checked for the
+/// file's interpolation and each entry's own (effects, flares, grains), once those fields are
+/// themselves valid.
+void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Override>& overrides,
+                        const std::vector<Problem>& problems, std::size_t first) {
+  if (has_problem_at(problems, first, "/video/fps") || has_problem_at(problems, first, "/video/frames") ||
+      s.video.frames < 2)
+    return;  // one frame: there is no time axis to scale
+  const double gaps = static_cast<double>(s.video.frames - 1);
+  const auto check = [&](const effects::InterpolationSettings& in, const std::string& ptr,
+                         bool own) {
+    if (has_problem_at(problems, first, ptr)) return;
+    const double step = 24.0 / s.video.fps * in.time_scale;
+    const double span = gaps * step;
+    // The remedy names the value at the pointer: fps for the file's interpolation, the
+    // effect's own time_scale for an override.
+    const std::string blame = own ? ptr + "/time_scale" : "/video/fps";
+    const std::string what = "one frame is 24 / fps * time_scale = " + short_num(step) +
+                             " apart in the RBF distance";
+    if (!(span <= kMaxScaledTimeSpan)) {  // also catches inf and NaN
+      const std::string fix =
+          own ? "time_scale must be at most " + short_num(kMaxScaledTimeSpan * s.video.fps / (24.0 * gaps))
+              : "fps must be at least " + short_num(24.0 * in.time_scale * gaps / kMaxScaledTimeSpan);
+      c.error(blame, what + ", the clip's " + std::to_string(s.video.frames) + " frames " +
+                         short_num(span) + ": beyond " + short_num(kMaxScaledTimeSpan) +
+                         ", where its distances overflow (" + fix + ")");
+    } else if (!(step >= kMinScaledFrameStep)) {
+      const std::string fix =
+          own ? "time_scale must be at least " + short_num(kMinScaledFrameStep * s.video.fps / 24.0)
+              : "fps must be at most " + short_num(24.0 * in.time_scale / kMinScaledFrameStep);
+      c.error(blame, what + ": below " + short_num(kMinScaledFrameStep) +
+                         ", where keyframes one frame apart are no longer told apart (" + fix + ")");
+    }
+  };
+  check(s.interpolation, "/interpolation", false);
+  for (const auto& [ptr, settings] : overrides) check(settings, ptr, true);
+}
+
 }  // namespace
 
 namespace detail {
+
+bool keyframe_count_ok(Checker& c, const json& keyframes, const std::string& ptr) {
+  if (keyframes.size() <= kMaxKeyframesPerEffect) return true;
+  c.error(ptr, std::to_string(keyframes.size()) + " keyframes, more than the " +
+                   std::to_string(kMaxKeyframesPerEffect) +
+                   " an effect may have (the interpolation's memory grows with the square of the "
+                   "count, its solve time with the cube)");
+  return false;
+}
 
 void read_interpolation_settings(Checker& c, const json& v, const std::string& ptr,
                                  effects::InterpolationSettings& out) {
@@ -222,6 +289,8 @@ void read_keyframe_place(Checker& c, const json& v, const std::string& ptr,
 Sidecar parse_sidecar(const json& document, const std::string& file_for_messages,
                       std::vector<Problem>& problems) {
   Sidecar out;
+  const std::size_t first_problem = problems.size();
+  std::vector<Override> overrides;
   Checker c(file_for_messages, problems);
   const json* root = c.object(document, "");
   if (!root) return out;
@@ -231,7 +300,7 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
   const json* format = c.member(*root, "", "format");
   if (format) {
     if (auto s = c.string(*format, "/format"); s && *s != kSidecarFormat) {
-      c.error("/format", "expected \"" + std::string(kSidecarFormat) + "\", found \"" + *s + "\"");
+      c.error("/format", "expected \"" + std::string(kSidecarFormat) + "\", found \"" + excerpt(*s) + "\"");
       return out;
     }
   }
@@ -263,15 +332,23 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
       for (std::size_t i = 0; i < p->size(); ++i) {
         const std::string ep = "/effects/" + std::to_string(i);
         // Extension types (several may coexist) have readers of their own.
-        if (is_flare_entry((*p)[i]))
+        const std::optional<effects::InterpolationSettings>* own = nullptr;
+        if (is_flare_entry((*p)[i])) {
           read_flare(c, (*p)[i], ep, frames, out.flares.emplace_back());
-        else if (is_grain_entry((*p)[i]))
+          own = &out.flares.back().interpolation;
+        } else if (is_grain_entry((*p)[i])) {
           read_grain(c, (*p)[i], ep, frames, out.grains.emplace_back());
-        else
+          own = &out.grains.back().interpolation;
+        } else {
           read_effect(c, (*p)[i], ep, frames, seen, out.effects.emplace_back());
+          own = &out.effects.back().interpolation;
+        }
+        if (*own) overrides.emplace_back(ep + "/interpolation", **own);
       }
     }
   }
+  // Checks across fields, each in a function of its own.
+  check_time_scaling(c, out, overrides, problems, first_problem);
   return out;
 }
 
@@ -290,28 +367,14 @@ SidecarReport validate_sidecar_text(std::string_view text, const std::string& fi
 }
 
 SidecarReport validate_sidecar_file(const std::filesystem::path& path) {
-  std::error_code dir_ec;
-  if (std::filesystem::is_directory(path, dir_ec)) {
+  std::string why;
+  const std::optional<std::string> text = try_read_input_file(path, kMaxSidecarBytes, "a sidecar", why);
+  if (!text) {
     SidecarReport r;
-    r.problems.push_back({path.string(), "", "is a folder, not a sidecar file"});
+    r.problems.push_back({path.string(), "", why});
     return r;
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    SidecarReport r;
-    std::error_code ec;
-    const bool exists = std::filesystem::exists(path, ec);
-    r.problems.push_back({path.string(), "", exists ? "cannot open the file for reading" : "no such file"});
-    return r;
-  }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) {
-    SidecarReport r;
-    r.problems.push_back({path.string(), "", "read error"});
-    return r;
-  }
-  return validate_sidecar_text(ss.str(), path.string());
+  return validate_sidecar_text(*text, path.string());
 }
 
 }  // namespace vdfx::io

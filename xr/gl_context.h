@@ -20,6 +20,13 @@ class GlError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// No OpenGL 4.3 context can be had here at all (no display, no X server, an older driver):
+/// the environment, not a bug, so the command line reports it as a usage error (exit 2).
+class GlUnavailableError : public GlError {
+ public:
+  using GlError::GlError;
+};
+
 struct GlContextOptions {
   int width = 1280;          //!< window size (the hidden window of an offscreen context is tiny)
   int height = 720;
@@ -49,6 +56,10 @@ class GlContext {
   /// GL_RENDERER and GL_VERSION strings, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   std::string renderer() const;
   std::string version() const;
+  /// The largest width or height of an image this implementation renders and samples: the
+  /// smallest of GL_MAX_TEXTURE_SIZE, GL_MAX_RENDERBUFFER_SIZE and GL_MAX_VIEWPORT_DIMS. Sizes
+  /// are checked against it before any texture is allocated (a larger one is a GL error).
+  int max_image_side() const;
 
  private:
   explicit GlContext(GLFWwindow* w) : window_(w) {}

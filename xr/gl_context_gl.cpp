@@ -11,6 +11,8 @@
 
 #include "xr/gl_context.h"
 
+#include <algorithm>
+
 namespace vdfx::xr {
 namespace {
 
@@ -44,11 +46,11 @@ std::unique_ptr<GlContext> GlContext::create(const GlContextOptions& o) {
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   if ((!display || !*display) && (!wayland || !*wayland))
-    throw GlError(
+    throw GlUnavailableError(
         "cannot create an OpenGL context: no display (DISPLAY is not set). "
         "Run under a desktop session or a virtual one: `xvfb-run -a <command>`.");
   if (live_contexts() == 0 && glfwInit() != GLFW_TRUE)
-    throw GlError("cannot create an OpenGL context: glfwInit failed on DISPLAY='" +
+    throw GlUnavailableError("cannot create an OpenGL context: glfwInit failed on DISPLAY='" +
                   std::string(display ? display : "") + "' (" + last_glfw_error() +
                   "). Is the X server running? Try `xvfb-run -a <command>`.");
   glfwDefaultWindowHints();
@@ -63,7 +65,7 @@ std::unique_ptr<GlContext> GlContext::create(const GlContextOptions& o) {
   GLFWwindow* window = glfwCreateWindow(w, h, o.title.c_str(), nullptr, nullptr);
   if (!window) {
     if (live_contexts() == 0) glfwTerminate();
-    throw GlError("cannot create an OpenGL 4.3 core context (" + last_glfw_error() +
+    throw GlUnavailableError("cannot create an OpenGL 4.3 core context (" + last_glfw_error() +
                   "). The driver must offer OpenGL 4.3 core; Mesa llvmpipe offers 4.5.");
   }
   ++live_contexts();
@@ -71,7 +73,7 @@ std::unique_ptr<GlContext> GlContext::create(const GlContextOptions& o) {
   ctx->make_current();
   glfwSwapInterval(o.visible && o.vsync ? 1 : 0);
   if (epoxy_gl_version() < 43)
-    throw GlError("OpenGL " + ctx->version() + " is older than the 4.3 core the compositor needs");
+    throw GlUnavailableError("OpenGL " + ctx->version() + " is older than the 4.3 core the compositor needs");
   if (o.debug_output) {
     glEnable(GL_DEBUG_OUTPUT);
     glDebugMessageCallback(on_gl_debug, nullptr);
@@ -101,11 +103,23 @@ std::string GlContext::version() const {
   return s ? s : "";
 }
 
+int GlContext::max_image_side() const {
+  GLint tex = 0, rb = 0;
+  GLint viewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &tex);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &rb);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  return std::min({tex, rb, viewport[0], viewport[1]});
+}
+
 void check_gl(const char* where) {
   const GLenum e = glGetError();
   if (e == GL_NO_ERROR) return;
   std::ostringstream s;
   s << "OpenGL error 0x" << std::hex << e << " after " << where;
+  // The one error a user can meet with valid options (a machine with less memory than the sizes
+  // need): say so in words.
+  if (e == GL_OUT_OF_MEMORY) s << " (GL_OUT_OF_MEMORY: the GL implementation ran out of memory)";
   throw GlError(s.str());
 }
 

@@ -210,11 +210,13 @@ bool GenericGamepadDecoder::apply(GamepadState& s, std::span<const std::uint8_t>
       case Role::LeftTrigger: s.left_trigger = normalize_trigger(v, b.field); break;
       case Role::RightTrigger: s.right_trigger = normalize_trigger(v, b.field); break;
       case Role::Hat: {
-        const std::int32_t span = b.field.logical_max - b.field.logical_min + 1;
-        int pos = v - b.field.logical_min;
+        // In 64 bits: a descriptor's range can span all of int32 (found by fuzzing: the
+        // difference overflowed).
+        const std::int64_t span = std::int64_t{b.field.logical_max} - b.field.logical_min + 1;
+        std::int64_t pos = std::int64_t{v} - b.field.logical_min;
         if (pos < 0 || pos >= span) pos = -1;  // the null state: released
         else if (span == 4) pos *= 2;          // 4-way hats: N, E, S, W
-        set_hat8(s, pos);
+        set_hat8(s, pos > 7 ? -1 : static_cast<int>(pos));
         break;
       }
       case Role::Button: {
@@ -224,8 +226,9 @@ bool GenericGamepadDecoder::apply(GamepadState& s, std::span<const std::uint8_t>
             cleared_array_buttons = true;
           }
           if (v < b.field.logical_min || v > b.field.logical_max) break;
-          const int usage = b.field.usage + (v - b.field.logical_min);
-          if (usage >= 1 && usage <= static_cast<int>(order.size())) s.set(order[usage - 1], true);
+          const std::int64_t usage = b.field.usage + (std::int64_t{v} - b.field.logical_min);
+          if (usage >= 1 && usage <= static_cast<std::int64_t>(order.size()))
+            s.set(order[static_cast<std::size_t>(usage - 1)], true);
         } else if (b.field.usage >= 1 && b.field.usage <= order.size()) {
           s.set(order[b.field.usage - 1], v != 0);
         }

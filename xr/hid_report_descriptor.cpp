@@ -124,6 +124,15 @@ HidReportDescriptor parse_report_descriptor(std::span<const std::uint8_t> bytes)
         const bool variable = raw & 2;
         const bool relative = raw & 4;
         std::uint32_t& pos = bit_pos[g.report_id];
+        // A Report Count read from four bytes can be 2^32 - 1: the fields of one report must fit
+        // in the largest report a device can send, and the descriptor in a bounded field list
+        // (found by fuzzing: a 100-byte descriptor allocated gigabytes, and the bit counter of a
+        // constant item could wrap).
+        const std::uint64_t bits = std::uint64_t{g.report_size} * g.report_count;
+        if (pos + bits > std::uint64_t{kMaxHidReportBytes} * 8)
+          fail(at, "the report would be longer than " + std::to_string(kMaxHidReportBytes) + " bytes");
+        if (!constant && out.inputs.size() + g.report_count > kMaxHidInputFields)
+          fail(at, "more than " + std::to_string(kMaxHidInputFields) + " input fields");
         auto page_of = [&](std::uint32_t u) { return static_cast<std::uint16_t>(u >> 16 ? u >> 16 : g.usage_page); };
         if (constant) {
           pos += g.report_size * g.report_count;

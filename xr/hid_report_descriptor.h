@@ -41,8 +41,13 @@ struct HidReportDescriptor {
   std::uint16_t application_usage = 0;
 };
 
-/// Throws HidDescriptorError on a truncated item, unbalanced collections or a field without a
-/// report size/count.
+/// The longest input report a descriptor may describe (Linux's HID_MAX_BUFFER_SIZE) and the most
+/// input fields in all (a gamepad has a few dozen).
+inline constexpr std::size_t kMaxHidReportBytes = 16384;
+inline constexpr std::size_t kMaxHidInputFields = 4096;
+
+/// Throws HidDescriptorError on a truncated item, unbalanced collections, a field without a
+/// report size/count, or a report or field list beyond the limits above.
 HidReportDescriptor parse_report_descriptor(std::span<const std::uint8_t> bytes);
 
 /// The raw value of a field in a report (report[0] is the ID byte when the device uses IDs),

@@ -5,13 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
 #include "effects/coords.h"
+#include "io/excerpt.h"
 #include "io/input_error.h"
+#include "io/input_file.h"
+#include "io/json_text.h"
 
 namespace vdfx::xr {
 namespace {
@@ -48,7 +50,7 @@ class Checker {
                    std::initializer_list<const char*> keys) {
     const std::set<std::string> known(keys.begin(), keys.end());
     for (const auto& [k, v] : j.items()) {
-      if (!known.count(k)) fail(pointer + "/" + k, "unknown key");
+      if (!known.count(k)) fail(pointer + "/" + io::excerpt(io::json_pointer_token(k)), "unknown key");
     }
   }
 
@@ -223,10 +225,10 @@ HmdProfile parse_hmd_profile(const json& doc, const std::string& source) {
       doc, "",
       {"format", "version", "name", "description", "refresh_hz", "ipd_m", "distortion", "eyes"});
   if (const std::string f = check.string(doc, "format", "/format"); !f.empty() && f != "vdfx.hmd") {
-    check.fail("/format", "must be \"vdfx.hmd\", got \"" + f + "\"");
+    check.fail("/format", "must be \"vdfx.hmd\", got \"" + io::excerpt(f) + "\"");
   }
   if (const json* v = check.child(doc, "version", "/version"); v && *v != 1) {
-    check.fail("/version", "unsupported version " + v->dump() + " (this vdfx reads version 1)");
+    check.fail("/version", "unsupported version " + io::excerpt(v->dump()) + " (this vdfx reads version 1)");
   }
   p.name = check.string(doc, "name", "/name");
   if (doc.contains("name") && doc["name"].is_string() && p.name.empty()) {
@@ -256,6 +258,17 @@ HmdProfile parse_hmd_profile(const json& doc, const std::string& source) {
   return p;
 }
 
+HmdProfile parse_hmd_profile_text(std::string_view text, const std::string& source) {
+  io::JsonText parsed = io::parse_json_text(text);
+  if (!parsed.errors.empty()) {
+    std::string msg;
+    for (const io::JsonTextError& e : parsed.errors)
+      msg += (msg.empty() ? "" : "\n") + source + ": " + e.place() + ": " + e.message;
+    throw io::InputError(msg);
+  }
+  return parse_hmd_profile(parsed.value, source);
+}
+
 std::filesystem::path hmd_profile_dir() {
   if (const char* env = std::getenv("VDFX_HMD_PROFILE_DIR"); env && *env) return env;
   return std::filesystem::path(VDFX_SOURCE_DIR) / "xr" / "profiles";
@@ -283,19 +296,14 @@ HmdProfile load_hmd_profile(std::string_view name_or_path) {
     if (!std::filesystem::is_regular_file(path)) {
       std::string known;
       for (const auto& n : list_hmd_profiles()) known += (known.empty() ? "" : ", ") + n;
-      throw io::InputError("unknown HMD profile '" + arg + "' (in " + hmd_profile_dir().string() +
+      throw io::InputError("unknown HMD profile '" + io::excerpt(arg) + "' (in " + hmd_profile_dir().string() +
                            ": " + (known.empty() ? "none" : known) + ")");
     }
   }
-  std::ifstream in(path);
-  if (!in) throw io::InputError(path.string() + ": cannot open HMD profile");
-  json doc;
-  try {
-    doc = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw io::InputError(path.string() + ": not valid JSON: " + e.what());
-  }
-  return parse_hmd_profile(doc, path.string());
+  // Bounded and non-blocking (a pipe or /dev/zero named as a profile is refused); the JSON is
+  // parsed like a sidecar's: line and column of a syntax error, duplicate keys refused.
+  return parse_hmd_profile_text(io::read_input_file(path, kMaxHmdProfileBytes, "an HMD profile"),
+                                path.string());
 }
 
 }  // namespace vdfx::xr

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -53,6 +54,9 @@ struct HmdProfile {
   effects::EyeLens eye_lens(Eye e) const;
 };
 
+/// The largest profile file read (the bundled ones are about 1 KiB).
+inline constexpr std::uintmax_t kMaxHmdProfileBytes = std::uintmax_t{1} << 20;
+
 /// Where named profiles are looked up: $VDFX_HMD_PROFILE_DIR when set, else the source tree's
 /// xr/profiles (VDFX_SOURCE_DIR).
 std::filesystem::path hmd_profile_dir();
@@ -64,6 +68,10 @@ HmdProfile load_hmd_profile(std::string_view name_or_path);
 
 /// Validates and converts a parsed profile; `source` names the file in error messages.
 HmdProfile parse_hmd_profile(const nlohmann::json& doc, const std::string& source);
+
+/// Parses and validates a profile's text (as a sidecar's: line and column of a syntax error, NUL
+/// bytes and duplicate keys refused); `source` names the file in error messages.
+HmdProfile parse_hmd_profile_text(std::string_view text, const std::string& source);
 
 /// Names of the profiles in hmd_profile_dir(), sorted.
 std::vector<std::string> list_hmd_profiles();

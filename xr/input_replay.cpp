@@ -7,6 +7,7 @@
 /// live devices, and those drive the actions (sample lines are then only a record of the result).
 #include <algorithm>
 
+#include "io/excerpt.h"
 #include "io/input_error.h"
 #include "xr/input_backend.h"
 #include "xr/input_state_io.h"
@@ -71,7 +72,7 @@ class ReplayInputBackend final : public InputBackend {
           throw io::InputError(where + e.what());
         }
       } else if (!probe.knows(h.hid.device)) {
-        throw io::InputError(where + "device \"" + h.hid.device +
+        throw io::InputError(where + "device \"" + io::excerpt(h.hid.device) +
                              "\" is not a known vendor:product and has no descriptor line before it");
       }
     }

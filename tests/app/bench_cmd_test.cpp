@@ -209,6 +209,15 @@ TEST(BenchCommand, UsageAndInputErrorsUseTheContractsExitCodes) {
                                 (dir / "no" / "such" / "r.json").string());
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.output.find("does not exist"), std::string::npos);
+  // A plot folder that cannot be made is found before the run, not after it as an internal error.
+  testing::write_text(dir / "afile", "x");
+  const auto plot = run_vdfx("bench --quick --filter '^rbf\\.solve/N=10$' --plot " +
+                             (dir / "afile" / "plots").string());
+  EXPECT_EQ(plot.exit_code, 1) << plot.output;
+  EXPECT_NE(plot.output.find("--plot " + (dir / "afile" / "plots").string() + ": cannot create the folder"),
+            std::string::npos)
+      << plot.output;
+  EXPECT_EQ(plot.output.find("rbf.solve"), std::string::npos) << plot.output;  // nothing ran
   const auto list = run_vdfx("bench --quick --list");
   EXPECT_EQ(list.exit_code, 0);
   EXPECT_NE(list.output.find("lens.mesh/N=65  (GL)"), std::string::npos);

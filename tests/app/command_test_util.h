@@ -35,6 +35,12 @@ inline CommandResult run_vdfx(const std::string& args, const std::string& env_pr
   return r;
 }
 
+/// `vdfx ARGS` without a display (nothing may open a window) and under a time limit: a command
+/// that would block (on a pipe, say) fails with exit 124 instead of hanging the test.
+inline CommandResult run_vdfx_headless(const std::string& args) {
+  return run_vdfx(args, "env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 ");
+}
+
 /// A fresh folder under the build tree, named after the running test.
 inline std::filesystem::path test_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -99,6 +105,23 @@ inline cv::Mat render(const std::filesystem::path& dir, const std::string& args,
                                    (dir / out).string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return cv::imread((dir / out).string(), cv::IMREAD_COLOR);
+}
+
+/// A two-line recording at `path`: the header and first sample of a committed one.
+inline void write_short_recording(const std::filesystem::path& path) {
+  std::ifstream in(test_files::recordings_dir() / "sim_look_and_place.vdrec.jsonl");
+  std::string header, sample;
+  std::getline(in, header);
+  std::getline(in, sample);
+  write_text(path, header + "\n" + sample + "\n");
+}
+
+/// pano.png (write_test_panorama) and s.vdfx.json (exposure_sidecar) in a fresh test folder.
+inline std::filesystem::path panorama_and_sidecar() {
+  const std::filesystem::path dir = test_dir();
+  write_test_panorama(dir);
+  write_text(dir / "s.vdfx.json", exposure_sidecar());
+  return dir;
 }
 
 }  // namespace vdfx::app::testing

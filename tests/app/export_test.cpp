@@ -380,7 +380,8 @@ TEST(Export, BadUsageAndBadInputGiveTheContractsExitCodes) {
       {base + " --baked a.mp4 --path r.vdrec.jsonl --out b.mp4", 2, "either --baked"},
       {base + " --path r.vdrec.jsonl", 2, "--out"},
       {base + " --baked out.avi", 2, ".mp4, .mov or .mkv"},
-      {base + " --baked " + f.clip.string(), 2, "overwrite the input"},
+      {base + " --baked " + f.clip.string(), 1, "it is the VIDEO input"},
+      {base + " --baked " + (f.dir / "link.mp4").string(), 1, "the same file as the --sidecar input"},
       {base + " --baked o.mp4 --frames 3", 2, "A-B"},
       {base + " --baked o.mp4 --frames 5-2", 2, "A-B"},
       {base + " --baked o.mp4 --fov 70", 2, "--path"},
@@ -396,6 +397,7 @@ TEST(Export, BadUsageAndBadInputGiveTheContractsExitCodes) {
   };
   write_path_recording(f.dir);
   fs::rename(f.dir / "path.vdrec.jsonl", f.dir / "r.vdrec.jsonl");
+  fs::create_symlink(f.sidecar, f.dir / "link.mp4");  // an output name that leads to an input
   for (const auto& c : cases) {
     const auto r = run_vdfx(c.args);
     EXPECT_EQ(r.exit_code, c.code) << c.args << "\n" << r.output;

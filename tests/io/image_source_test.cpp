@@ -194,5 +194,22 @@ TEST(ImageSource, StillImageExtensions) {
   EXPECT_FALSE(is_still_image_path("png"));
 }
 
+TEST(ImageSource, FramesBeyondTheSizeLimitAreRefusedNamingTheFile) {
+  // Issue 11, class 3: a 100000x1 image was taken and failed later with a GL error.
+  const auto dir = testing::temp_dir("image_too_large");
+  const auto wide = dir / "wide.png";
+  cv::imwrite(wide.string(), cv::Mat(1, kMaxFrameSide + 1, CV_8UC3, cv::Scalar(1, 2, 3)));
+  try {
+    load_image(wide);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(wide.string() + ": the image is 16385x1"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW(check_frame_size("f", kMaxFrameSide, kMaxFrameSide / 2));
+  EXPECT_THROW(check_frame_size("f", kMaxFrameSide, kMaxFrameSide), InputError);  // 2^28 pixels
+  EXPECT_THROW(check_frame_size("f", 1, kMaxFrameSide + 1), InputError);
+}
+
 }  // namespace
 }  // namespace vdfx::io

@@ -3,6 +3,9 @@
 #include "io/recording.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <csignal>
 
 #include <filesystem>
 #include <fstream>
@@ -156,6 +159,9 @@ const BadCase kBad[] = {
     {"hid_both_keys", kHeader + "\n" + R"({"t_ns":1,"hid":{"device":"054c:05c4","report":"00","descriptor":"00"}})" "\n", 2, "exactly one of"},
     {"truncated_middle_line", kHeader + "\n" + kSample1.substr(0, 40) + "\n" + kSample2 + "\n", 2, "bad JSON"},
     {"blank_line", kHeader + "\n\n" + kSample2 + "\n", 2, "empty line"},
+    // Issue 11, class 7: 2^63 ns wrapped to a negative time, accepted on the first sample.
+    {"time_beyond_int64", kHeader + "\n" + R"({"t_ns":9223372036854775808,"head":{"q":[1,0,0,0],"p":[0,0,0]}})" "\n", 2, "/t_ns: time 9223372036854775808 is beyond the largest time"},
+    {"hid_time_beyond_int64", kHeader + "\n" + R"({"t_ns":18446744073709551615,"hid":{"device":"054c:05c4","report":"00"}})" "\n", 2, "is beyond the largest time"},
 };
 
 class RecordingErrors : public ::testing::TestWithParam<BadCase> {};
@@ -206,6 +212,43 @@ TEST(Recording, MissingFileNamesIt) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/x.vdrec.jsonl"), std::string::npos);
   }
+}
+
+TEST(Recording, AFullDiskIsAnInputErrorNamingTheFileAndKeepsEarlierLines) {
+  // Issue 11, class 6: `play --record` onto a full disk was exit 3 (std::runtime_error). The
+  // file-size limit makes the kernel refuse writes past 2000 bytes (EFBIG) as a full disk would
+  // (ENOSPC); SIGXFSZ is ignored so the write fails instead of killing the test.
+  const auto path = out_dir() / "full.vdrec.jsonl";
+  rlimit old{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  std::string message;
+  int written = 0;
+  {
+    RecordingWriter w(path, {"sim", std::nullopt, "full disk"});
+    rlimit small = old;
+    small.rlim_cur = 2000;
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+    try {
+      for (; written < 100; ++written) w.write(full_sample(1000 + written));
+    } catch (const InputError& e) {
+      message = e.what();
+    }
+    ::setrlimit(RLIMIT_FSIZE, &old);
+  }
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_NE(message.find(path.string() + ": cannot write the recording"), std::string::npos) << message;
+  EXPECT_GT(written, 0);
+  EXPECT_LT(written, 100);
+  // Exactly the lines written before the failure read back: the part of the failed line that got
+  // out was cut off (it used to stay, followed by the rest of the buffer on close: the whole
+  // recording was then unreadable).
+  const Recording rec = read_recording(path);
+  EXPECT_EQ(rec.lines.size(), static_cast<std::size_t>(written));
+  EXPECT_TRUE(rec.warnings.empty());
+  EXPECT_NE(message.find("its first " + std::to_string(written + 1) + " lines are kept"),
+            std::string::npos)
+      << message;
 }
 
 }  // namespace

@@ -235,5 +235,23 @@ TEST(DeviceKinds, DeviceIdParsing) {
   }
 }
 
+TEST(HidParsers, AHatWhoseRangeSpansAllOfInt32IsReleasedNotOverflowed) {
+  // Found by fuzzing (UBSan): logical_max - logical_min + 1 overflowed int32.
+  const std::vector<std::uint8_t> descriptor = {
+      0x05, 0x01, 0x09, 0x05, 0xA1, 0x01,  // Generic Desktop, Game Pad, Collection (Application)
+      0x09, 0x39,                          //   Usage (Hat switch)
+      0x17, 0x00, 0x00, 0x00, 0x80,        //   Logical Minimum (-2^31)
+      0x27, 0xFF, 0xFF, 0xFF, 0x7F,        //   Logical Maximum (2^31 - 1)
+      0x75, 0x20, 0x95, 0x01, 0x81, 0x02,  //   32 bits x 1, Input (Data, Var, Abs)
+      0xC0};
+  const GenericGamepadDecoder decoder(parse_report_descriptor(descriptor));
+  GamepadState s;
+  s.set(PadButton::DpadUp, true);
+  const std::vector<std::uint8_t> report = {0x00, 0x00, 0x00, 0x00};  // 0: 2^31 above the minimum
+  EXPECT_TRUE(decoder.apply(s, report));
+  EXPECT_FALSE(s.pressed(PadButton::DpadUp));
+  EXPECT_FALSE(s.pressed(PadButton::DpadDown));
+}
+
 }  // namespace
 }  // namespace vdfx::xr

@@ -136,6 +136,15 @@ const BadDescriptor kBadDescriptors[] = {
     {"input_without_size", {0x95, 0x01, 0x81, 0x02}, "byte 2: Input needs a Report Size"},
     {"report_id_zero", {0x85, 0x00}, "report ID must be 1..255"},
     {"pop_without_push", {0xB4}, "Pop without Push"},
+    // Issue 11, found by fuzzing: a four-byte Report Count allocated a field per count.
+    {"report_count_2_to_the_32", {0x75, 0x08, 0x97, 0xFF, 0xFF, 0xFF, 0xFF, 0x81, 0x02},
+     "byte 7: the report would be longer than 16384 bytes"},
+    // A constant (padding) item's bit counter could wrap around.
+    {"padding_2_to_the_32_bits", {0x75, 0x20, 0x97, 0x00, 0x00, 0x00, 0x08, 0x81, 0x01},
+     "byte 7: the report would be longer than 16384 bytes"},
+    // Many fields within the report length: 8 x 1024 one-bit fields.
+    {"too_many_fields", {0x75, 0x01, 0x96, 0x00, 0x04, 0x81, 0x02, 0x81, 0x02, 0x81, 0x02, 0x81, 0x02,
+                         0x81, 0x02}, "byte 13: more than 4096 input fields"},
 };
 
 class BadDescriptors : public ::testing::TestWithParam<BadDescriptor> {};

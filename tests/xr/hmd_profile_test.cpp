@@ -4,6 +4,7 @@
 #include "xr/hmd_profile.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -178,10 +179,57 @@ TEST(HmdProfile, InvalidJsonNamesTheFile) {
     load_hmd_profile(f.string());
     FAIL() << "accepted";
   } catch (const io::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(f.string() + ": not valid JSON"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find(f.string() + ": line 1, column 33: invalid JSON"),
+              std::string::npos)
         << e.what();
   }
   std::filesystem::remove(f);
+}
+
+TEST(HmdProfile, TakesOnlyARegularFileWithinItsLimit) {
+  // Issue 11, classes 2 and 6: a pipe would block the reader, a folder or /dev/zero made it
+  // fail with an internal error or read without end.
+  const std::filesystem::path dir =
+      std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "hmd_profile_special";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "folder.json");
+  ASSERT_EQ(::mkfifo((dir / "pipe.json").c_str(), 0600), 0);
+  std::ofstream(dir / "big.json") << "{";
+  std::filesystem::resize_file(dir / "big.json", kMaxHmdProfileBytes + 1);
+  const struct {
+    std::filesystem::path path;
+    const char* says;
+  } rows[] = {
+      {dir / "folder.json", "is a folder, not an HMD profile"},
+      {dir / "pipe.json", "is a named pipe (FIFO)"},
+      {"/dev/zero", "is a character device"},
+      {dir / "big.json", "more than the 1 MiB an HMD profile may be"},
+  };
+  for (const auto& row : rows) {
+    try {
+      load_hmd_profile(row.path.string());
+      ADD_FAILURE() << row.path << ": accepted";
+    } catch (const io::InputError& e) {
+      EXPECT_EQ(std::string(e.what()).find(row.path.string() + ": "), 0u) << e.what();
+      EXPECT_NE(std::string(e.what()).find(row.says), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(HmdProfile, DuplicateKeysAreRefusedAsInASidecar) {
+  // Issue 11, class 8: nlohmann kept the last of two keys silently; the sidecar reader refused.
+  const std::filesystem::path f = std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "hmd_duplicate.json";
+  std::ifstream in(hmd_profile_dir() / "generic90.json");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.replace(text.find("\"name\""), 6, "\"ipd_m\": 0.05, \"name\"");
+  std::ofstream(f) << text;
+  try {
+    load_hmd_profile(f.string());
+    FAIL() << "accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(f.string() + ": /ipd_m: duplicate key"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
