@@ -4,6 +4,8 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/.ci/deps.sh"
+# Formatting first: seconds, and a mis-formatted file fails before the long build.
+if git -C "$root" rev-parse --git-dir > /dev/null 2>&1; then "$root/.ci/format.sh"; fi
 "$root/.ci/build.sh" -DVDFX_WERROR=ON
 build=${VDFX_BUILD_DIR:-$root/build}
 cd "$build"

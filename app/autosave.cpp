@@ -80,7 +80,8 @@ bool Autosave::finish(const io::Sidecar& sidecar) {
     }
   }
   if (saves_ == 0)
-    status_ = path_.filename().string() + (on_disk ? ": no changes" : ": new sidecar written (no keyframes yet)");
+    status_ = path_.filename().string() +
+              (on_disk ? ": no changes" : ": new sidecar written (no keyframes yet)");
   std::error_code ec;
   fs::remove(recovery_path(path_), ec);
   return !ec;

@@ -4,8 +4,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <iostream>
+#include <limits>
 #include <vector>
 
 #include "io/excerpt.h"
@@ -32,7 +32,9 @@ std::optional<int> parse_cli(CLI::App& cli, const Args& args) {
 namespace {
 
 /// The text quoted in a message: at most 40 bytes of it, control bytes spelled out.
-std::string cli_quote(const std::string& text) { return "'" + io::excerpt(text, 40) + "'"; }
+std::string cli_quote(const std::string& text) {
+  return "'" + io::excerpt(text, 40) + "'";
+}
 
 std::vector<double> split_numbers(const std::string& text, char sep, const char* what) {
   std::vector<double> values;
@@ -45,7 +47,8 @@ std::vector<double> split_numbers(const std::string& text, char sep, const char*
     const char* last = part.data() + part.size();
     const auto [ptr, ec] = std::from_chars(first, last, v);
     if (part.empty() || ec != std::errc() || ptr != last || !std::isfinite(v))
-      throw CLI::ValidationError(what, cli_quote(text) + ": " + cli_quote(part) + " is not a finite number");
+      throw CLI::ValidationError(
+          what, cli_quote(text) + ": " + cli_quote(part) + " is not a finite number");
     values.push_back(v);
     if (end == std::string::npos) break;
     start = end + 1;
@@ -68,7 +71,6 @@ std::string bound_text(double v) {
   return buf;
 }
 
-
 }  // namespace
 
 CLI::Validator finite_range(double lo, double hi) {
@@ -77,7 +79,8 @@ CLI::Validator finite_range(double lo, double hi) {
       [lo, hi, range](std::string& text) -> std::string {
         double v = 0.0;
         const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v))
+        if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() ||
+            !std::isfinite(v))
           return cli_quote(text) + " is not a finite number";
         if (v < lo || v > hi) return cli_quote(text) + " is out of range " + range;
         return {};
@@ -115,8 +118,8 @@ EvalPoint parse_eval_point(const std::string& text) {
   // FRAME is read as an integer, exactly: through a double, 9007199254740993 would round.
   const std::size_t last_comma = text.rfind(',');
   const std::string frame_text = last_comma == std::string::npos ? "" : text.substr(last_comma + 1);
-  const auto v = split_numbers(text.substr(0, last_comma == std::string::npos ? text.size() : last_comma),
-                               ',', "--at");
+  const auto v = split_numbers(
+      text.substr(0, last_comma == std::string::npos ? text.size() : last_comma), ',', "--at");
   if (v.size() != 2 || last_comma == std::string::npos)
     throw CLI::ValidationError("--at", cli_quote(text) + ": expected AZ,ALT,FRAME");
   std::string frame_copy = frame_text;
@@ -134,14 +137,15 @@ ImageSize parse_size(const std::string& text, const char* option, const SizeLimi
   const auto v = split_numbers(text, 'x', option);
   const std::string side = std::to_string(limit.max_side);
   if (v.size() != 2 || v[0] < 1 || v[1] < 1 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
-    throw CLI::ValidationError(option, cli_quote(text) + ": expected WxH, whole numbers 1.." + side);
+    throw CLI::ValidationError(option,
+                               cli_quote(text) + ": expected WxH, whole numbers 1.." + side);
   if (v[0] > limit.max_side || v[1] > limit.max_side)
     throw CLI::ValidationError(option, cli_quote(text) + ": each side must be at most " + side);
   if (v[0] * v[1] > static_cast<double>(limit.max_pixels))
-    throw CLI::ValidationError(option, cli_quote(text) + ": " + std::to_string(std::llround(v[0] * v[1])) +
-                                           " pixels, more than the " +
-                                           std::to_string(limit.max_pixels) + " allowed (" +
-                                           limit.example + ")");
+    throw CLI::ValidationError(
+        option, cli_quote(text) + ": " + std::to_string(std::llround(v[0] * v[1])) +
+                    " pixels, more than the " + std::to_string(limit.max_pixels) + " allowed (" +
+                    limit.example + ")");
   return {static_cast<int>(v[0]), static_cast<int>(v[1])};
 }
 

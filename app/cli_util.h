@@ -42,7 +42,7 @@ CLI::Validator finite_range(double lo, double hi);
 CLI::Validator whole_range(std::int64_t lo, std::int64_t hi);
 
 /// Each throws CLI::ValidationError (a usage error) with the offending text.
-ViewSpec parse_view(const std::string& text);  //!< "AZ,ALT" or "AZ,ALT,ROLL"
+ViewSpec parse_view(const std::string& text);         //!< "AZ,ALT" or "AZ,ALT,ROLL"
 EvalPoint parse_eval_point(const std::string& text);  //!< "AZ,ALT,FRAME"
 /// "WxH" within `limit`; `option` names it in the message.
 ImageSize parse_size(const std::string& text, const char* option = "--size",

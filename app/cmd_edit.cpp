@@ -27,7 +27,9 @@ namespace fs = std::filesystem;
 /// `vdfx edit`'s default --scale (the player keeps kDefaultEyeScale).
 constexpr double kEditDefaultEyeScale = 0.5;
 
-fs::path demo_sidecar() { return fs::path(VDFX_SOURCE_DIR) / "app" / "demo" / "interior.vdfx.json"; }
+fs::path demo_sidecar() {
+  return fs::path(VDFX_SOURCE_DIR) / "app" / "demo" / "interior.vdfx.json";
+}
 
 // The sidecar's video path, relative to the sidecar's folder when relative.
 fs::path sidecar_video(const fs::path& sidecar_path, const io::Sidecar& s) {
@@ -46,7 +48,8 @@ std::optional<fs::path> handle_recovery(const fs::path& sidecar_path, const std:
   bool yes = recover == "yes";
   if (recover == "ask") {
     if (isatty(STDIN_FILENO)) {
-      std::cerr << "vdfx edit: load the recovery copy " << offer->path.string() << "? [y/N] " << std::flush;
+      std::cerr << "vdfx edit: load the recovery copy " << offer->path.string() << "? [y/N] "
+                << std::flush;
       std::string answer;
       std::getline(std::cin, answer);
       yes = !answer.empty() && (answer[0] == 'y' || answer[0] == 'Y');
@@ -64,28 +67,34 @@ std::optional<fs::path> handle_recovery(const fs::path& sidecar_path, const std:
   if (ec) {
     std::cerr << "vdfx edit: cannot set the recovery copy aside (" << ec.message() << ")\n";
   } else {
-    std::cerr << "vdfx edit: recovery copy set aside as " << kept.string() << "; to recover it later: mv "
-              << kept.string() << " " << offer->path.string() << " and run with --recover yes\n";
+    std::cerr << "vdfx edit: recovery copy set aside as " << kept.string()
+              << "; to recover it later: mv " << kept.string() << " " << offer->path.string()
+              << " and run with --recover yes\n";
   }
   return std::nullopt;
 }
 
 std::string edit_help_footer() {
   return "\nEditor controls (OpenXR actions):\n" + EditorClient::controls_text() +
-         "Window keys:\n" + frame_loop_keys_text() +
-         "Simulated controllers (--input sim):\n" + xr::sim_bindings_text(xr::SimConfig{}) +
-         "\nNo VIDEO and no --sidecar: the bundled demo (app/demo/interior.vdfx.json), edited without "
+         "Window keys:\n" + frame_loop_keys_text() + "Simulated controllers (--input sim):\n" +
+         xr::sim_bindings_text(xr::SimConfig{}) +
+         "\nNo VIDEO and no --sidecar: the bundled demo (app/demo/interior.vdfx.json), edited "
+         "without "
          "saving (copy it and pass --sidecar COPY to keep edits). VIDEO without --sidecar edits "
-         "VIDEO's NAME.vdfx.json next to it; a --sidecar that does not exist yet is created for VIDEO. "
-         "Every change is saved at once (plus a NAME.vdfx.json.autosave recovery copy, removed on a "
+         "VIDEO's NAME.vdfx.json next to it; a --sidecar that does not exist yet is created for "
+         "VIDEO. "
+         "Every change is saved at once (plus a NAME.vdfx.json.autosave recovery copy, removed on "
+         "a "
          "clean exit; one left by a crash is offered at the next start: --recover).\n"
-         "With --input replay:REC the loop takes its times from the recording and stops at its end.\n";
+         "With --input replay:REC the loop takes its times from the recording and stops at its "
+         "end.\n";
 }
 
 }  // namespace
 
 int cmd_edit(const Args& args) {
-  CLI::App cli("author view-dependent effects in the simulated headset (no VIDEO: the demo)", "vdfx edit");
+  CLI::App cli("author view-dependent effects in the simulated headset (no VIDEO: the demo)",
+               "vdfx edit");
   std::string video, sidecar_arg, recover = "ask";
   LoopCli loop;
   // Panel text must be legible in the mirror: at the player's 0.25 the timeline's small text
@@ -95,9 +104,10 @@ int cmd_edit(const Args& args) {
   cli.add_option("--sidecar", sidecar_arg,
                  "effects file (.vdfx.json) to edit, created when missing; default: VIDEO's "
                  "NAME.vdfx.json, or the bundled demo without VIDEO");
-  cli.add_option("--recover", recover,
-                 "an autosave left by a crash: yes loads it, no sets it aside (NAME.autosave.declined); "
-                 "default: ask on a terminal, else no")
+  cli.add_option(
+         "--recover", recover,
+         "an autosave left by a crash: yes loads it, no sets it aside (NAME.autosave.declined); "
+         "default: ask on a terminal, else no")
       ->capture_default_str()
       ->check(CLI::IsMember({"ask", "yes", "no"}));
   add_loop_options(cli, loop);
@@ -115,7 +125,8 @@ int cmd_edit(const Args& args) {
   }
   const bool exists = fs::exists(sidecar_path);
   if (!exists && video.empty())
-    throw io::InputError(sidecar_path.string() + ": no such sidecar (give VIDEO to start a new one)");
+    throw io::InputError(sidecar_path.string() +
+                         ": no such sidecar (give VIDEO to start a new one)");
 
   std::optional<fs::path> load_from;
   if (exists && !demo) load_from = handle_recovery(sidecar_path, recover);
@@ -128,7 +139,8 @@ int cmd_edit(const Args& args) {
     const io::VideoProperties& p = setup.video->properties();
     sidecar = io::new_sidecar({fs::absolute(v).string(), p.fps.value(),
                                std::max<std::int64_t>(1, p.frames), p.width, p.height});
-    std::cerr << "vdfx edit: new sidecar " << sidecar_path.string() << " for " << v.string() << "\n";
+    std::cerr << "vdfx edit: new sidecar " << sidecar_path.string() << " for " << v.string()
+              << "\n";
   }
   if (demo)
     std::cerr << "vdfx edit: the bundled demo, not saved (copy " << sidecar_path.string()
@@ -140,9 +152,11 @@ int cmd_edit(const Args& args) {
   const bool desktop = loop.input == "sim" || setup.recorded_desktop.has_value();
   eo.layout = desktop ? PanelLayout::Desktop : PanelLayout::Hands;
   if (setup.recorded_desktop)
-    eo.viewport = {setup.recorded_desktop->width, setup.recorded_desktop->height, setup.recorded_desktop->hfov_deg};
+    eo.viewport = {setup.recorded_desktop->width, setup.recorded_desktop->height,
+                   setup.recorded_desktop->hfov_deg};
   else
-    eo.viewport = {setup.options.window_width, setup.options.window_height, setup.options.desktop_hfov_deg};
+    eo.viewport = {setup.options.window_width, setup.options.window_height,
+                   setup.options.desktop_hfov_deg};
   if (!demo) eo.autosave_path = sidecar_path;
   DocumentOptions dopts;
   // Replays are exact: every solve and minimap finishes before the frame that shows it. Live,
@@ -151,7 +165,8 @@ int cmd_edit(const Args& args) {
   if (replay) dopts.keyframes.async = false;
   eo.visuals.async = !replay;
   Editor editor(std::move(sidecar), dopts, eo);
-  EditorClient client(editor, create_gl_panel_textures(), /*follow_window=*/desktop && !setup.recorded_desktop);
+  EditorClient client(editor, create_gl_panel_textures(),
+                      /*follow_window=*/desktop && !setup.recorded_desktop);
   if (!setup.video->properties().is_still) {
     auto thumbs = std::make_unique<ThumbnailWorker>(v, kTimelineThumbnails, cv::Size(192, 96));
     // A replay must look the same every run: its thumbnails are there from the first frame.

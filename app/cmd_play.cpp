@@ -39,8 +39,9 @@ int cmd_play(const Args& args) {
   LoopCli loop;
   cli.add_option("VIDEO", video, "video file, or a still image (a one-frame video)")->required();
   cli.add_option("--sidecar", sidecar_path, "the effects (.vdfx.json)")->required();
-  cli.add_option("--mode", mode, "view (view-dependent, the paper) or pixel (per-pixel baseline); "
-                                 "V switches while playing")
+  cli.add_option("--mode", mode,
+                 "view (view-dependent, the paper) or pixel (per-pixel baseline); "
+                 "V switches while playing")
       ->capture_default_str()
       ->check(CLI::IsMember({"view", "pixel"}));
   cli.add_flag("--no-loop", no_loop, "stop on the last frame instead of looping");

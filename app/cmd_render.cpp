@@ -4,8 +4,8 @@
 /// pre-distortion.
 #include <iostream>
 #include <limits>
-#include <optional>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
 #include "app/cli_util.h"
 #include "app/view_render.h"
@@ -30,15 +30,17 @@ void check_option_combinations(const CLI::App& cli, const std::string& hmd_name,
   if (cli.count("--no-lca") > 0 && r.distortion.method == xr::DistortionMethod::None)
     throw CLI::ValidationError("--no-lca", "needs --distort pixel or mesh:N");
   if (cli.count("--bake") > 0 && !(r.gpu && r.mode == effects::RenderMode::Pixel))
-    throw CLI::ValidationError("--bake", "needs --gpu --mode pixel (the CPU's pixel mode is exact)");
+    throw CLI::ValidationError("--bake",
+                               "needs --gpu --mode pixel (the CPU's pixel mode is exact)");
 }
 
 }  // namespace
 
 int cmd_render(const Args& args) {
-  CLI::App cli{"Renders one view of INPUT (a panorama image or a video, equirectangular) with the\n"
-               "sidecar's view-dependent effects to an 8-bit sRGB PNG.",
-               "vdfx render"};
+  CLI::App cli{
+      "Renders one view of INPUT (a panorama image or a video, equirectangular) with the\n"
+      "sidecar's view-dependent effects to an 8-bit sRGB PNG.",
+      "vdfx render"};
   std::string input, sidecar_path, view_text, size_text, mode_text = "view", out_path;
   std::string hmd_name, eye_text = "left", distort_text = "none", blur_text = "exact";
   std::string bake_text = "1024x512";
@@ -58,9 +60,10 @@ int cmd_render(const Args& args) {
                  "pixel: at each pixel's own direction (the static per-pixel baseline)")
       ->check(CLI::IsMember({"view", "pixel"}));
   cli.add_flag("--gpu", gpu, "render through the OpenGL compositor (offscreen)");
-  cli.add_option("--blur", blur_text,
-                 "with --gpu: exact (full-resolution separable Gaussian, the contract's kernel) or\n"
-                 "pyramid (halvings + a small residual blur; faster, small error)")
+  cli.add_option(
+         "--blur", blur_text,
+         "with --gpu: exact (full-resolution separable Gaussian, the contract's kernel) or\n"
+         "pyramid (halvings + a small residual blur; faster, small error)")
       ->capture_default_str();
   cli.add_option("--bake", bake_text,
                  "with --gpu --mode pixel: the parameter grid WxH the GPU reads per pixel")
@@ -97,7 +100,8 @@ int cmd_render(const Args& args) {
     }
     if (hmd_name.empty()) {
       if (fov <= 0.0) throw CLI::ValidationError("--fov", "required (unless --hmd is given)");
-      if (size_text.empty()) throw CLI::ValidationError("--size", "required (unless --hmd is given)");
+      if (size_text.empty())
+        throw CLI::ValidationError("--size", "required (unless --hmd is given)");
       if (request.distortion.method != xr::DistortionMethod::None)
         throw CLI::ValidationError("--distort", "needs --hmd (the lens comes from the profile)");
       request.hfov_deg = fov;
@@ -107,7 +111,8 @@ int cmd_render(const Args& args) {
     check_option_combinations(cli, hmd_name, request);
     const std::optional<xr::BlurMethod> blur = xr::blur_method_from_name(blur_text);
     if (!blur)
-      throw CLI::ValidationError("--blur", "'" + io::excerpt(blur_text, 40) + "': expected exact or pyramid");
+      throw CLI::ValidationError("--blur",
+                                 "'" + io::excerpt(blur_text, 40) + "': expected exact or pyramid");
     request.blur = *blur;
     if (!gpu && request.blur != xr::BlurMethod::Exact)
       throw CLI::ValidationError("--blur", "the CPU reference blur is exact; pyramid needs --gpu");

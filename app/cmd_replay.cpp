@@ -9,7 +9,8 @@
 namespace vdfx::app {
 
 int cmd_replay(const Args& args) {
-  CLI::App cli{"replay a recorded editing session headless, deterministically, as fast as it goes", "vdfx replay"};
+  CLI::App cli{"replay a recorded editing session headless, deterministically, as fast as it goes",
+               "vdfx replay"};
   ReplayOptions o;
   std::string rec, video, in, out, frames;
   cli.add_option("recording", rec, "the recorded session (.vdrec.jsonl)")->required();
@@ -27,8 +28,8 @@ int cmd_replay(const Args& args) {
   for (const auto& m : r.messages) std::cerr << "vdfx replay: " << m << "\n";
   std::size_t keys = 0;
   for (const auto& e : r.sidecar.effects) keys += e.keyframes.size();
-  std::cout << "replayed " << r.samples << " samples: " << r.sidecar.effects.size() << " effects, " << keys
-            << " keyframes -> " << out << "\n";
+  std::cout << "replayed " << r.samples << " samples: " << r.sidecar.effects.size() << " effects, "
+            << keys << " keyframes -> " << out << "\n";
   for (const auto& p : r.images) std::cout << "wrote " << p.string() << "\n";
   return kExitOk;
 }

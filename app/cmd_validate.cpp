@@ -8,9 +8,10 @@
 namespace vdfx::app {
 
 int cmd_validate(const Args& args) {
-  CLI::App cli{"Checks a sidecar file (.vdfx.json) against format 1 and lists every problem with\n"
-               "its JSON pointer. Exit 0 when valid, 1 otherwise.",
-               "vdfx validate"};
+  CLI::App cli{
+      "Checks a sidecar file (.vdfx.json) against format 1 and lists every problem with\n"
+      "its JSON pointer. Exit 0 when valid, 1 otherwise.",
+      "vdfx validate"};
   std::string path;
   bool quiet = false;
   cli.add_option("SIDECAR", path, "the sidecar file")->required();

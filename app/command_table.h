@@ -1,5 +1,6 @@
 /// @file
-/// @brief The list of vdfx commands (names and summaries) and the top-level dispatch: help, version, unknown commands, exceptions mapped to exit codes.
+/// @brief The list of vdfx commands (names and summaries) and the top-level dispatch: help,
+/// version, unknown commands, exceptions mapped to exit codes.
 ///
 /// Kept free of the commands themselves, so that the `vdfx` executable can dispatch without
 /// linking the commands that need video, image or GL libraries: those live in the media module

@@ -66,7 +66,8 @@ io::Sidecar Document::sidecar() const {
     s.effects.push_back({spec.type, overrides_[i], sets_[i]->keyframes()});
   }
   // The edited entry first, when there is one to write, then the rest as read.
-  const auto put = [&](auto& out, const auto& head, const auto& fresh, const auto& more, EditTarget t) {
+  const auto put = [&](auto& out, const auto& head, const auto& fresh, const auto& more,
+                       EditTarget t) {
     const auto i = idx(t);
     if (head || !sets_[i]->keyframes().empty() || overrides_[i]) {
       auto& e = out.emplace_back(head.value_or(fresh));
@@ -95,8 +96,9 @@ effects::StackInterpolator Document::interpolator() const {
 
 std::vector<double> Document::clamp_params(EditTarget t, std::vector<double> params) {
   if (static_cast<int>(params.size()) != t.dimension())
-    throw std::invalid_argument("Document: " + std::string(t.name()) + " takes " + std::to_string(t.dimension()) +
-                                " values, got " + std::to_string(params.size()));
+    throw std::invalid_argument("Document: " + std::string(t.name()) + " takes " +
+                                std::to_string(t.dimension()) + " values, got " +
+                                std::to_string(params.size()));
   std::size_t k = 0;
   for (const auto& p : t.params())
     for (int c = 0; c < p.size; ++c, ++k) params[k] = std::clamp(params[k], p.min, p.max);
@@ -108,7 +110,8 @@ std::vector<double> Document::clamp_params(EditTarget t, std::vector<double> par
 }
 
 EffectSnapshot Document::snapshot(EditTarget t) const {
-  EffectSnapshot s{overrides_[idx(t)], sets_[idx(t)]->keyframes(), params_[idx(t)], std::nullopt, std::nullopt};
+  EffectSnapshot s{overrides_[idx(t)], sets_[idx(t)]->keyframes(), params_[idx(t)], std::nullopt,
+                   std::nullopt};
   if (t.is_flare()) s.flare = flare_;
   if (t.is_grain()) s.grain = grain_;
   return s;
@@ -116,8 +119,9 @@ EffectSnapshot Document::snapshot(EditTarget t) const {
 
 void Document::rebuild(EditTarget t, std::vector<effects::Keyframe> keyframes) {
   try {
-    sets_[idx(t)] = std::make_unique<effects::KeyframeSet>(t.dimension(), interpolation(t), video_.fps,
-                                                           std::move(keyframes), options_.keyframes, t.neutral());
+    sets_[idx(t)] = std::make_unique<effects::KeyframeSet>(t.dimension(), interpolation(t),
+                                                           video_.fps, std::move(keyframes),
+                                                           options_.keyframes, t.neutral());
   } catch (const std::invalid_argument& e) {
     throw io::InputError(std::string(t.name()) + ": " + e.what());
   }
@@ -163,7 +167,8 @@ effects::KeyframeSet::Edit Document::add_keyframe(EditTarget t, const effects::K
 }
 
 effects::KeyframeSet::Edit Document::move_keyframe(EditTarget t, std::size_t index,
-                                                   const effects::Direction& direction, std::int64_t frame) {
+                                                   const effects::Direction& direction,
+                                                   std::int64_t frame) {
   const auto& ks = sets_[idx(t)]->keyframes();
   if (index < ks.size() && ks[index].frame == frame && ks[index].direction == direction)
     return {index, std::nullopt, true};
@@ -235,16 +240,19 @@ void Document::set_grain_style(effects::GrainStyle style) {
   record("grain style", EditTarget::grain(), std::move(before));
 }
 
-PendingEdit& Document::begin_pending(EditTarget t, std::optional<std::size_t> moved, effects::Keyframe key) {
+PendingEdit& Document::begin_pending(EditTarget t, std::optional<std::size_t> moved,
+                                     effects::Keyframe key) {
   pending_.reset();
-  pending_ = std::make_unique<PendingEdit>(*this, t, moved, std::move(key), options_.keyframes, pending_stats_);
+  pending_ = std::make_unique<PendingEdit>(*this, t, moved, std::move(key), options_.keyframes,
+                                           pending_stats_);
   return *pending_;
 }
 
 std::optional<effects::KeyframeSet::Edit> Document::commit_pending() {
   if (!pending_) return std::nullopt;
   const std::unique_ptr<PendingEdit> p = std::move(pending_);
-  if (p->moved()) return move_keyframe(p->target(), *p->moved(), p->key().direction, p->key().frame);
+  if (p->moved())
+    return move_keyframe(p->target(), *p->moved(), p->key().direction, p->key().frame);
   return add_keyframe(p->target(), p->key());
 }
 
@@ -257,7 +265,8 @@ std::uint64_t Document::solutions_version() const {
 bool Document::undo() {
   const auto step = undo_.undo();
   if (!step) return false;
-  for (auto it = step->changes.rbegin(); it != step->changes.rend(); ++it) restore(it->target, it->before);
+  for (auto it = step->changes.rbegin(); it != step->changes.rend(); ++it)
+    restore(it->target, it->before);
   changed();
   return true;
 }

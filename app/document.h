@@ -45,7 +45,9 @@ class Document {
   io::Sidecar sidecar() const;
 
   const effects::KeyframeSet& keyframe_set(EditTarget t) const { return *sets_[idx(t)]; }
-  const std::vector<effects::Keyframe>& keyframes(EditTarget t) const { return sets_[idx(t)]->keyframes(); }
+  const std::vector<effects::Keyframe>& keyframes(EditTarget t) const {
+    return sets_[idx(t)]->keyframes();
+  }
   /// Effective settings: the target's override, else the file's default.
   effects::InterpolationSettings interpolation(EditTarget t) const;
   const std::optional<effects::InterpolationSettings>& interpolation_override(EditTarget t) const {
@@ -71,8 +73,8 @@ class Document {
   /// Moves a keyframe; one it lands on (within 0.5 deg at the same frame) is removed, like a
   /// placement replaces it. Returns where the moved keyframe now is and what it replaced. Moving
   /// a keyframe to where it is already is no edit.
-  effects::KeyframeSet::Edit move_keyframe(EditTarget t, std::size_t index, const effects::Direction& direction,
-                                           std::int64_t frame);
+  effects::KeyframeSet::Edit move_keyframe(EditTarget t, std::size_t index,
+                                           const effects::Direction& direction, std::int64_t frame);
   void remove_keyframe(EditTarget t, std::size_t index);
   /// A keyframe's values (clamped; tint normalised); equal values are no edit.
   void set_keyframe_params(EditTarget t, std::size_t index, std::vector<double> params);

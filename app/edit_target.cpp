@@ -10,7 +10,9 @@
 
 namespace vdfx::app {
 
-EditTarget EditTarget::from_index(int index) { return EditTarget(std::clamp(index, 0, kCount - 1)); }
+EditTarget EditTarget::from_index(int index) {
+  return EditTarget(std::clamp(index, 0, kCount - 1));
+}
 
 std::optional<effects::EffectType> EditTarget::stack_effect() const {
   if (index_ >= effects::kEffectCount) return std::nullopt;
@@ -50,8 +52,10 @@ std::vector<double> EditTarget::neutral() const {
 
 const std::array<EditTarget, EditTarget::kCount>& all_edit_targets() {
   static const auto all = []<std::size_t... I>(std::index_sequence<I...>) {
-    return std::array<EditTarget, EditTarget::kCount>{EditTarget::from_index(static_cast<int>(I))...};
-  }(std::make_index_sequence<EditTarget::kCount>{});
+    return std::array<EditTarget, EditTarget::kCount>{
+        EditTarget::from_index(static_cast<int>(I))...};
+  }
+  (std::make_index_sequence<EditTarget::kCount>{});
   return all;
 }
 

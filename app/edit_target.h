@@ -22,7 +22,8 @@ class EditTarget {
  public:
   static constexpr int kCount = effects::kEffectCount + 2;
 
-  constexpr EditTarget(effects::EffectType type) : index_(static_cast<int>(type)) {}  // NOLINT: implicit
+  constexpr EditTarget(effects::EffectType type)
+      : index_(static_cast<int>(type)) {}  // NOLINT: implicit
   static constexpr EditTarget flare() { return EditTarget(effects::kEffectCount); }
   static constexpr EditTarget grain() { return EditTarget(effects::kEffectCount + 1); }
   /// The target at menu position `index` (clamped to 0..kCount-1).

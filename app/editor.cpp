@@ -26,7 +26,8 @@ double angle_deg(const Direction& a, const Direction& b) {
 Editor::Editor(io::Sidecar sidecar, DocumentOptions document_options, EditorOptions options)
     : doc_(std::move(sidecar), document_options),
       options_(options),
-      panels_(fonts_or_default(options.fonts), doc_.video().frames, options.layout, options.viewport),
+      panels_(fonts_or_default(options.fonts), doc_.video().frames, options.layout,
+              options.viewport),
       visuals_(options.visuals, doc_.video().frames),
       fps_(io::fps_to_rational(doc_.video().fps)),
       input_(xr::neutral_input_state(0)) {
@@ -38,11 +39,13 @@ Editor::Editor(io::Sidecar sidecar, DocumentOptions document_options, EditorOpti
 }
 
 void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
-  const double dt = play_.last_t ? std::max<double>(0.0, static_cast<double>(t_ns - *play_.last_t) * 1e-9) : 0.0;
+  const double dt =
+      play_.last_t ? std::max<double>(0.0, static_cast<double>(t_ns - *play_.last_t) * 1e-9) : 0.0;
   play_.last_t = t_ns;
   play_.now = t_ns;
   input_ = input;
-  if (!status_.message.empty() && t_ns - status_.message_t > kMessageLifetimeNs) status_.message.clear();
+  if (!status_.message.empty() && t_ns - status_.message_t > kMessageLifetimeNs)
+    status_.message.clear();
   if (input.head_tracked) view_ = xr::forward_direction(input.head);
   if (play_.playing) {
     // Frames elapsed since play was pressed, from the elapsed time itself (adding two rounded
@@ -57,15 +60,18 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
   for (const auto& e : events) handle_panel_event(*this, panels_, e);
   for (const EditorCommand c : controls_.commands(input.edges)) run(c);
   unaltered_ = EditorControls::held(input.edges, EditorCommand::Unaltered);
-  if (status_.look_target && angle_deg(*status_.look_target, view_) < 5.0) status_.look_target.reset();
+  if (status_.look_target && angle_deg(*status_.look_target, view_) < 5.0)
+    status_.look_target.reset();
   sync_pending();
   show_editor_state(*this, panels_);
-  VisualizationInput vi{effect_, view_, play_.frame, sel_.index, selected_preview(), previewing(), 90.0, 90.0};
+  VisualizationInput vi{effect_,      view_, play_.frame, sel_.index, selected_preview(),
+                        previewing(), 90.0,  90.0};
   if (options_.layout == PanelLayout::Desktop) {
     const DesktopViewport& v = panels_.viewport();
     vi.view_hfov_deg = v.hfov_deg;
-    vi.view_vfov_deg = 2.0 * std::atan(std::tan(0.5 * v.hfov_deg * effects::kDegToRad) * v.height / v.width) *
-                       effects::kRadToDeg;
+    vi.view_vfov_deg =
+        2.0 * std::atan(std::tan(0.5 * v.hfov_deg * effects::kDegToRad) * v.height / v.width) *
+        effects::kRadToDeg;
   }
   visuals_.refresh(doc_, vi, panels_);
 }
@@ -121,8 +127,10 @@ std::shared_ptr<const effects::RbfInterpolator> Editor::interpolant(EditTarget t
 void Editor::sync_pending() {
   PendingEdit* p = doc_.pending();
   if (!p) return;
-  if (!p->moved()) p->set_key({view_, play_.frame, doc_.params(effect_)});
-  else if (const auto k = selected_preview()) p->set_key(*k);
+  if (!p->moved())
+    p->set_key({view_, play_.frame, doc_.params(effect_)});
+  else if (const auto k = selected_preview())
+    p->set_key(*k);
 }
 
 const std::vector<double>& Editor::widget_values() const {
@@ -141,7 +149,9 @@ void Editor::set_loop_status(double frames_per_second, bool video_loading) {
   status_.video_loading = video_loading;
 }
 
-bool Editor::finish() { return autosave_ ? autosave_->finish(doc_.sidecar()) : true; }
+bool Editor::finish() {
+  return autosave_ ? autosave_->finish(doc_.sidecar()) : true;
+}
 
 void Editor::say(std::string message) {
   status_.message = std::move(message);
@@ -167,8 +177,8 @@ void Editor::set_flare_style(effects::FlareStyle style) {
 
 void Editor::set_light_here() {
   doc_.set_flare_light(view_);
-  say("flare light set at az " + std::to_string(static_cast<int>(std::lround(view_.azimuth_deg))) + " alt " +
-      std::to_string(static_cast<int>(std::lround(view_.altitude_deg))));
+  say("flare light set at az " + std::to_string(static_cast<int>(std::lround(view_.azimuth_deg))) +
+      " alt " + std::to_string(static_cast<int>(std::lround(view_.altitude_deg))));
 }
 
 void Editor::set_auto_light(bool on) {
@@ -226,8 +236,8 @@ bool Editor::delete_nearest() {
     return true;
   }
   const auto& ks = doc_.keyframes(effect_);
-  const auto i =
-      nearest_keyframe(ks, view_, play_.frame, doc_.interpolation(effect_).time_scale, doc_.video().fps);
+  const auto i = nearest_keyframe(ks, view_, play_.frame, doc_.interpolation(effect_).time_scale,
+                                  doc_.video().fps);
   if (!i) {
     say("no keyframe to delete");
     return false;

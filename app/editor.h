@@ -60,7 +60,8 @@ class Editor {
   effects::StackParams current_params() const { return params_for_view(view_, play_.frame); }
   /// The same at any direction (per-eye centres, per-pixel mode): while a keyframe is placed or
   /// held, the current effect's interpolant is the pending edit's.
-  effects::StackParams params_for_view(const effects::Direction& direction, std::int64_t frame) const;
+  effects::StackParams params_for_view(const effects::Direction& direction,
+                                       std::int64_t frame) const;
   /// The panels for quad layers, with world poses (Panel::pose()) and textures (Panel::texture()).
   std::vector<ui::Panel*> panels() { return panels_.all(); }
   std::string status_text() const;

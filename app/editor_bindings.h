@@ -21,11 +21,11 @@ enum class EditorCommand {
   Grab,         //!< hold the selected keyframe (else select the nearest and hold it)
   GrabRelease,  //!< commit the held keyframe's move
   Deselect,
-  Unaltered,    //!< the plain film while held
-  Delete,       //!< the selected keyframe, else the one nearest the view
+  Unaltered,  //!< the plain film while held
+  Delete,     //!< the selected keyframe, else the one nearest the view
   Undo,
   Redo,
-  Fine,         //!< while held, drags move a tenth of the pointer's motion (UI pointers)
+  Fine,  //!< while held, drags move a tenth of the pointer's motion (UI pointers)
 };
 
 /// When a binding fires: on the press, on the release, every frame while down or while up.

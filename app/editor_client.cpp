@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/quaternion.hpp>
 #include <opencv2/core.hpp>
 
@@ -13,11 +12,13 @@
 
 namespace vdfx::app {
 
-EditorClient::EditorClient(Editor& editor, std::unique_ptr<PanelTextures> textures, bool follow_window)
+EditorClient::EditorClient(Editor& editor, std::unique_ptr<PanelTextures> textures,
+                           bool follow_window)
     : editor_(editor), textures_(std::move(textures)), follow_window_(follow_window) {}
 
 void EditorClient::on_desktop_event(const xr::DesktopEvent& event) {
-  if (const auto* g = std::get_if<xr::ViewGeometryEvent>(&event); g && follow_window_ && g->width_px > 0)
+  if (const auto* g = std::get_if<xr::ViewGeometryEvent>(&event);
+      g && follow_window_ && g->width_px > 0)
     editor_.set_viewport({g->width_px, g->height_px, g->hfov_deg});
 }
 
@@ -45,7 +46,8 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
   for (const auto& spec : effects::all_effect_specs())
     if (!doc.keyframes(spec.type).empty()) mask |= effects::shader_bit(spec.type);
   const PendingEdit* pending = doc.pending();
-  if (const auto type = pending ? pending->target().stack_effect() : std::nullopt) mask |= effects::shader_bit(*type);
+  if (const auto type = pending ? pending->target().stack_effect() : std::nullopt)
+    mask |= effects::shader_bit(*type);
   active_ = mask;
   // params() answers differently after an edit, a finished asynchronous solve, a move of the
   // pending keyframe, or the unaltered switch.
@@ -57,18 +59,22 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
   }
 }
 
-effects::StackParams EditorClient::params(const effects::Direction& direction, std::int64_t video_frame) {
+effects::StackParams EditorClient::params(const effects::Direction& direction,
+                                          std::int64_t video_frame) {
   return editor_.params_for_view(direction, video_frame);
 }
 
-std::vector<effects::FlareLayout> EditorClient::flares(const xr::Pose& head, std::int64_t video_frame,
+std::vector<effects::FlareLayout> EditorClient::flares(const xr::Pose& head,
+                                                       std::int64_t video_frame,
                                                        const io::Picture* picture) {
   return flare_layouts(layers_.flares(), head, video_frame, picture);
 }
 
-std::vector<effects::GrainFrame> EditorClient::grains(const xr::Pose& head, std::int64_t display_time_ns,
+std::vector<effects::GrainFrame> EditorClient::grains(const xr::Pose& head,
+                                                      std::int64_t display_time_ns,
                                                       std::int64_t video_frame) {
-  return layers_.grains().layout({xr::position_of(head), xr::rotation_of(head)}, display_time_ns, video_frame);
+  return layers_.grains().layout({xr::position_of(head), xr::rotation_of(head)}, display_time_ns,
+                                 video_frame);
 }
 
 std::vector<xr::QuadLayer> EditorClient::quads() {
@@ -130,12 +136,14 @@ cv::Mat mark_image(int size, double ring_width) {
     for (int x = 0; x < size; ++x) {
       const double d = std::hypot(x + 0.5 - c, y + 0.5 - c);
       const double inner = ring_width > 0.0 ? outer - ring_width : -1.0;
-      const double cover = std::clamp(outer - d + 0.5, 0.0, 1.0) * std::clamp(d - inner + 0.5, 0.0, 1.0);
+      const double cover =
+          std::clamp(outer - d + 0.5, 0.0, 1.0) * std::clamp(d - inner + 0.5, 0.0, 1.0);
       const double edge = 0.18 * size;  // dark outline on both edges
       const bool dark = outer - d < edge || (ring_width > 0.0 && d - inner < edge);
       const double v = (dark ? 20.0 : 250.0) * cover;  // premultiplied
-      img.at<cv::Vec4b>(y, x) = {static_cast<uchar>(std::lround(v)), static_cast<uchar>(std::lround(v)),
-                                 static_cast<uchar>(std::lround(v)), static_cast<uchar>(std::lround(255.0 * cover))};
+      img.at<cv::Vec4b>(y, x) = {
+          static_cast<uchar>(std::lround(v)), static_cast<uchar>(std::lround(v)),
+          static_cast<uchar>(std::lround(v)), static_cast<uchar>(std::lround(255.0 * cover))};
     }
   return img;
 }
@@ -146,17 +154,19 @@ cv::Mat ray_image() {
   for (int y = 0; y < img.rows; ++y)
     for (int x = 0; x < img.cols; ++x) {
       const double t = 1.0 - std::abs(x + 0.5 - 8.0) / 8.0, a = 200.0 / 255.0 * t * t;
-      img.at<cv::Vec4b>(y, x) = {static_cast<uchar>(std::lround(120 * a)), static_cast<uchar>(std::lround(200 * a)),
-                                 static_cast<uchar>(std::lround(255 * a)), static_cast<uchar>(std::lround(255 * a))};
+      img.at<cv::Vec4b>(y, x) = {
+          static_cast<uchar>(std::lround(120 * a)), static_cast<uchar>(std::lround(200 * a)),
+          static_cast<uchar>(std::lround(255 * a)), static_cast<uchar>(std::lround(255 * a))};
     }
   return img;
 }
 
 /// A quad centred at `centre` whose +z is `facing` (towards the viewer), `up` giving its +y.
-xr::QuadLayer billboard(const glm::dvec3& centre, const glm::dvec3& facing, glm::dvec3 up, glm::dvec2 size,
-                        unsigned texture) {
+xr::QuadLayer billboard(const glm::dvec3& centre, const glm::dvec3& facing, glm::dvec3 up,
+                        glm::dvec2 size, unsigned texture) {
   glm::dvec3 z = glm::normalize(facing);
-  if (std::abs(glm::dot(z, glm::normalize(up))) > 0.999) up = std::abs(z.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+  if (std::abs(glm::dot(z, glm::normalize(up))) > 0.999)
+    up = std::abs(z.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
   const glm::dvec3 x = glm::normalize(glm::cross(up, z));
   const glm::dvec3 y = glm::cross(z, x);
   xr::QuadLayer q;
@@ -179,7 +189,8 @@ void EditorClient::add_pointer_quads(std::vector<xr::QuadLayer>& out) {
   const std::size_t base = 1000;  // texture slots after the panels'
   if (!pointer_textures_[0]) {
     const cv::Mat dot = mark_image(64, 0.0), ring = mark_image(64, 12.0), ray = ray_image();
-    pointer_textures_ = {texture_of(base, dot), texture_of(base + 1, ring), texture_of(base + 2, ray)};
+    pointer_textures_ = {texture_of(base, dot), texture_of(base + 1, ring),
+                         texture_of(base + 2, ray)};
   }
   const xr::InputState& in = editor_.input();
   const glm::dvec3 eye = in.head.position;
@@ -195,8 +206,10 @@ void EditorClient::add_pointer_quads(std::vector<xr::QuadLayer>& out) {
     const glm::dvec3 origin = hs.aim.position, dir = xr::forward(hs.aim);
     // The dot sits where the ray meets a panel, else far along it, over the video.
     const bool on_panel = ptr.hit().has_value();
-    if (h == xr::Hand::Left && editor_.ui().layout == PanelLayout::Desktop) continue;  // the sim's resting hand
-    glm::dvec3 end = on_panel ? ptr.hit()->panel->world_of_pixel(ptr.hit()->pixel) : origin + drawing_.far_m * dir;
+    if (h == xr::Hand::Left && editor_.ui().layout == PanelLayout::Desktop)
+      continue;  // the sim's resting hand
+    glm::dvec3 end = on_panel ? ptr.hit()->panel->world_of_pixel(ptr.hit()->pixel)
+                              : origin + drawing_.far_m * dir;
     if (on_panel) end += 0.002 * ptr.hit()->panel->normal();  // just in front of the panel
     const double d = size_at(drawing_.dot_deg, end);
     pointer_quads_.push_back(billboard(end, back, up, {d, d}, pointer_textures_[0]));
@@ -204,8 +217,9 @@ void EditorClient::add_pointer_quads(std::vector<xr::QuadLayer>& out) {
     // the eye, as the sim's mouse ray does in the desktop view.
     const glm::dvec3 seg = end - origin;
     if (glm::length(origin - eye) > 0.02 && glm::length(seg) > 0.02)
-      pointer_quads_.push_back(billboard(0.5 * (origin + end), eye - 0.5 * (origin + end), glm::normalize(seg),
-                                         {drawing_.ray_width_m, glm::length(seg)}, pointer_textures_[2]));
+      pointer_quads_.push_back(
+          billboard(0.5 * (origin + end), eye - 0.5 * (origin + end), glm::normalize(seg),
+                    {drawing_.ray_width_m, glm::length(seg)}, pointer_textures_[2]));
   }
   // The placement reticle at the view centre, head-locked.
   const glm::dvec3 centre = eye + 2.0 * xr::forward(in.head);
@@ -219,7 +233,9 @@ void EditorClient::release_textures() {
   for (Slot& s : slots_) s = Slot{};
 }
 
-std::string EditorClient::status_line() const { return editor_.status_text(); }
+std::string EditorClient::status_line() const {
+  return editor_.status_text();
+}
 
 std::string EditorClient::controls_text() {
   return "On a desktop (--input sim, the desktop view):\n"
@@ -239,15 +255,19 @@ std::string EditorClient::controls_text() {
          "  right trigger (on a panel) use the panel\n"
          "  left trigger + left aim   use the panels not held by the left hand\n"
          "  right a                   delete the selected keyframe, else the one nearest the view\n"
-         "  right squeeze (held)      grab the selected keyframe (else the nearest); release moves it\n"
-         "  right thumbstick click    deselect (so does the Deselect button or a trigger placement)\n"
+         "  right squeeze (held)      grab the selected keyframe (else the nearest); release moves "
+         "it\n"
+         "  right thumbstick click    deselect (so does the Deselect button or a trigger "
+         "placement)\n"
          "  right b (held)            unaltered film (no effects) while held\n"
          "  left x / left y           undo / redo\n"
          "  thumbstick                step the widget under that hand's pointer (else its focus)\n"
          "  left squeeze (held)       fine adjustment while dragging\n"
-         "Panels: effects (menu, the effect's widget, undo / redo, delete, deselect, exponent, the\n"
+         "Panels: effects (menu, the effect's widget, undo / redo, delete, deselect, exponent, "
+         "the\n"
          "time scale as degrees of view per second of video, autosave status), timeline (play,\n"
-         "previous / next keyframe, time, thumbnails and keyframes on the strip), plot and minimap\n"
+         "previous / next keyframe, time, thumbnails and keyframes on the strip), plot and "
+         "minimap\n"
          "(with toggles and lock in world), and on the desktop a heads-up line (frame, time,\n"
          "heading, effect, selection, frame rate, the latest message).\n";
 }

@@ -14,10 +14,9 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "app/editor.h"
 #include "app/editor_layers.h"
@@ -34,7 +33,8 @@ class PanelTextures {
   virtual ~PanelTextures() = default;
   /// Uploads `regions` of `image` (its whole size when empty, which also (re)allocates) to the
   /// texture of `slot`; returns the texture's name (non-zero).
-  virtual unsigned upload(std::size_t slot, const cv::Mat& image, const std::vector<cv::Rect>& regions) = 0;
+  virtual unsigned upload(std::size_t slot, const cv::Mat& image,
+                          const std::vector<cv::Rect>& regions) = 0;
   /// Frees the textures (needs the context that made them current; the destructor frees nothing,
   /// since the window's context may already be gone by then).
   virtual void release() {}
@@ -64,14 +64,16 @@ class EditorClient : public FrameClient {
   void set_thumbnails(std::unique_ptr<ThumbnailWorker> worker) { thumbnails_ = std::move(worker); }
   void on_desktop_event(const xr::DesktopEvent& event) override;
   void update(const xr::InputState& input, std::int64_t display_time_ns, FrameInfo& info) override;
-  effects::StackParams params(const effects::Direction& direction, std::int64_t video_frame) override;
+  effects::StackParams params(const effects::Direction& direction,
+                              std::int64_t video_frame) override;
   unsigned active_effects() const override { return active_; }
   std::uint64_t params_revision() const override { return revision_; }
   std::vector<xr::QuadLayer> quads() override;
   bool unaltered() const override { return editor_.unaltered(); }
   std::vector<effects::FlareLayout> flares(const xr::Pose& head_in_local, std::int64_t video_frame,
                                            const io::Picture* picture) override;
-  std::vector<effects::GrainFrame> grains(const xr::Pose& head_in_local, std::int64_t display_time_ns,
+  std::vector<effects::GrainFrame> grains(const xr::Pose& head_in_local,
+                                          std::int64_t display_time_ns,
                                           std::int64_t video_frame) override;
   std::string status_line() const override;
 

@@ -22,10 +22,13 @@ ui::PointerInput pointer_input(const xr::HandState& h, bool fine) {
 
 }  // namespace
 
-std::vector<ui::Event> EditorControls::pointers(const xr::InputState& in, EditorPanels& panels, double dt) {
-  auto events = left_.update(panels.reachable_by(xr::Hand::Left), pointer_input(in.left, false), dt);
-  const auto right = right_.update(panels.reachable_by(xr::Hand::Right),
-                                   pointer_input(in.right, held(in.edges, EditorCommand::Fine)), dt);
+std::vector<ui::Event> EditorControls::pointers(const xr::InputState& in, EditorPanels& panels,
+                                                double dt) {
+  auto events =
+      left_.update(panels.reachable_by(xr::Hand::Left), pointer_input(in.left, false), dt);
+  const auto right =
+      right_.update(panels.reachable_by(xr::Hand::Right),
+                    pointer_input(in.right, held(in.edges, EditorCommand::Fine)), dt);
   events.insert(events.end(), right.begin(), right.end());
   return events;
 }
@@ -37,7 +40,8 @@ std::vector<EditorCommand> EditorControls::commands(const xr::ActionEdges& edges
     // The right trigger is the pointer's (with its hysteresis); a press on a panel is the UI's.
     const bool pointer = b.hand == xr::Hand::Right && b.control == xr::Control::Trigger;
     if (!(pointer ? fires(b, right_) : fires(b, edges))) continue;
-    if (b.command == EditorCommand::Preview && (right_.hit() || !right_.pressed_widget().empty())) continue;
+    if (b.command == EditorCommand::Preview && (right_.hit() || !right_.pressed_widget().empty()))
+      continue;
     out.push_back(b.command);
   }
   return out;

@@ -27,7 +27,9 @@ class EditorControls {
   std::vector<EditorCommand> commands(const xr::ActionEdges& edges) const;
   /// Whether a binding of `command` is down this frame (the unaltered film, fine drags).
   static bool held(const xr::ActionEdges& edges, EditorCommand command);
-  const ui::Pointer& pointer(xr::Hand hand) const { return hand == xr::Hand::Left ? left_ : right_; }
+  const ui::Pointer& pointer(xr::Hand hand) const {
+    return hand == xr::Hand::Left ? left_ : right_;
+  }
 
  private:
   ui::Pointer left_, right_;

@@ -11,8 +11,10 @@ EditorLayers::EditorLayers() : flares_({}, effects::InterpolationSettings{}, 30.
 void EditorLayers::update(const Editor& editor) {
   const Document& doc = editor.document();
   const PendingEdit* p = doc.pending();
-  const bool pending_flare = p && p->target().is_flare(), pending_grain = p && p->target().is_grain();
-  if (doc.revision() != revision_ || pending_flare != pending_flare_ || pending_grain != pending_grain_) {
+  const bool pending_flare = p && p->target().is_flare(),
+             pending_grain = p && p->target().is_grain();
+  if (doc.revision() != revision_ || pending_flare != pending_flare_ ||
+      pending_grain != pending_grain_) {
     revision_ = doc.revision();
     pending_flare_ = pending_flare;
     pending_grain_ = pending_grain;
@@ -28,9 +30,11 @@ void EditorLayers::update(const Editor& editor) {
   }
   // The editor's interpolants: the pending edit's while there is one, else the solutions.
   if (edited_flare_)
-    if (auto rbf = editor.interpolant(EditTarget::flare()); rbf && !rbf->empty()) flares_.set_intensity(0, rbf);
+    if (auto rbf = editor.interpolant(EditTarget::flare()); rbf && !rbf->empty())
+      flares_.set_intensity(0, rbf);
   if (edited_grain_)
-    if (auto rbf = editor.interpolant(EditTarget::grain()); rbf && !rbf->empty()) grains_.set_interpolant(0, rbf);
+    if (auto rbf = editor.interpolant(EditTarget::grain()); rbf && !rbf->empty())
+      grains_.set_interpolant(0, rbf);
 }
 
 }  // namespace vdfx::app

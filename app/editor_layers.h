@@ -26,8 +26,9 @@ class EditorLayers {
   effects::FlareSet flares_;
   effects::GrainSet grains_;
   std::uint64_t revision_ = ~0ull;
-  bool pending_flare_ = false, pending_grain_ = false;  //!< the pending edit's target at the rebuild
-  bool edited_flare_ = false, edited_grain_ = false;    //!< entry 0 of the set is the edited one
+  bool pending_flare_ = false,
+       pending_grain_ = false;                        //!< the pending edit's target at the rebuild
+  bool edited_flare_ = false, edited_grain_ = false;  //!< entry 0 of the set is the edited one
 };
 
 }  // namespace vdfx::app

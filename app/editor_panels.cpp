@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/quaternion.hpp>
 
 namespace vdfx::app {
@@ -47,7 +46,9 @@ std::string grain_style_title(effects::GrainStyle s) {
 
 }  // namespace
 
-std::string effect_widget_id(EditTarget target) { return std::string(target.name()); }
+std::string effect_widget_id(EditTarget target) {
+  return std::string(target.name());
+}
 
 EditorPanels::EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frame_count,
                            PanelLayout layout_, DesktopViewport viewport)
@@ -64,8 +65,8 @@ EditorPanels::EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_
   show_effect(EditTarget(EffectType::Exposure));
 }
 
-void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, int width, int height,
-                                      glm::dvec2 size_m) {
+void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, int width,
+                                      int height, glm::dvec2 size_m) {
   using namespace ui;
   effect = std::make_unique<Panel>(kEffectPanelId, width, height, size_m, fonts);
   Panel& p = *effect;
@@ -75,30 +76,39 @@ void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, 
   title->set_rect(col.next(64));
   std::vector<std::string> names;
   for (const EditTarget target : all_edit_targets()) names.push_back(target.title());
-  menu = &p.add<MenuList>("effect_menu", names, static_cast<int>(EffectType::Exposure), t.row_height, 2);
+  menu = &p.add<MenuList>("effect_menu", names, static_cast<int>(EffectType::Exposure),
+                          t.row_height, 2);
   menu->set_rect(col.next(menu->rows() * t.row_height + kMenuInset));
   effect_widget_rect_ = col.next(330);
   options_rect_ = col.next(2 * t.row_height + kMenuInset + t.gap);
   blur = &p.add<Slider1D>("blur", "Blur", Axis{0.0, 10.0, 0.1, "%.1f", "\u00b0", ""}, 0.0, 0.0);
   tint = &p.add<ColourWheel>("tint", "Tint");
-  exposure = &p.add<Slider1D>("exposure", "Exposure", Axis{-8.0, 8.0, 0.1, "%+.1f", " stops", ""}, 0.0, 0.0);
-  saturation = &p.add<Slider1D>("saturation", "Saturation", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
-  contrast = &p.add<Slider1D>("contrast", "Contrast", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
-  vignette = &p.add<Pad2D>("vignette", "Vignette", Axis{0.0, 180.0, 1.0, "%.0f", "\u00b0", "radius"},
-                           Axis{0.01, 180.0, 1.0, "%.0f", "\u00b0", "falloff"}, glm::dvec2(180.0, 0.01));
-  flare_intensity = &p.add<Slider1D>("flare", "Flare intensity", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 0.0, 0.0);
-  flare_style = &p.add<MenuList>("flare_style", std::vector<std::string>{"Headset", "Directional"},
-                                 static_cast<int>(effects::FlareStyle::Directional), t.row_height, 2);
+  exposure = &p.add<Slider1D>("exposure", "Exposure", Axis{-8.0, 8.0, 0.1, "%+.1f", " stops", ""},
+                              0.0, 0.0);
+  saturation =
+      &p.add<Slider1D>("saturation", "Saturation", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
+  contrast =
+      &p.add<Slider1D>("contrast", "Contrast", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 1.0, 1.0);
+  vignette =
+      &p.add<Pad2D>("vignette", "Vignette", Axis{0.0, 180.0, 1.0, "%.0f", "\u00b0", "radius"},
+                    Axis{0.01, 180.0, 1.0, "%.0f", "\u00b0", "falloff"}, glm::dvec2(180.0, 0.01));
+  flare_intensity =
+      &p.add<Slider1D>("flare", "Flare intensity", Axis{0.0, 4.0, 0.05, "%.2f", "", ""}, 0.0, 0.0);
+  flare_style =
+      &p.add<MenuList>("flare_style", std::vector<std::string>{"Headset", "Directional"},
+                       static_cast<int>(effects::FlareStyle::Directional), t.row_height, 2);
   set_light = &p.add<Button>("set_light", "Set light here");
   auto_light = &p.add<Toggle>("auto_light", "Auto light", true);
-  grain_intensity = &p.add<Slider1D>("grain", "Grain intensity", Axis{0.0, 1.0, 0.01, "%.2f", "", ""}, 0.0, 0.0);
+  grain_intensity =
+      &p.add<Slider1D>("grain", "Grain intensity", Axis{0.0, 1.0, 0.01, "%.2f", "", ""}, 0.0, 0.0);
   Axis size_axis{0.25, 4.0, 0.0, "%.2f", "\u00d7", ""};
   size_axis.log = true;
   grain_size = &p.add<Slider1D>("grain_size", "Grain size", size_axis, 1.0, 1.0);
   std::vector<std::string> styles;
   for (const auto st : effects::kGrainStyles) styles.push_back(grain_style_title(st));
   grain_style = &p.add<MenuList>("grain_style", styles, 0, t.row_height, 2);
-  effect_widgets = {blur, tint, exposure, saturation, contrast, vignette, flare_intensity, grain_intensity};
+  effect_widgets = {blur,     tint,     exposure,        saturation,
+                    contrast, vignette, flare_intensity, grain_intensity};
   const Rect row = col.next(t.row_height);
   undo = &p.add<Button>("undo", "\u2190 Undo");
   undo->set_rect(split_cols(row, 2, 0, t.gap));
@@ -110,7 +120,8 @@ void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, 
   deselect = &p.add<Button>("deselect", "Deselect");
   deselect->set_rect(split_cols(keys, 2, 1, t.gap));
   deselect->set_enabled(false);
-  exponent = &p.add<Slider1D>("exponent", "Exponent \u03b1", Axis{0.1, 3.9, 0.1, "%.1f", "", ""}, 1.0, 1.0);
+  exponent = &p.add<Slider1D>("exponent", "Exponent \u03b1", Axis{0.1, 3.9, 0.1, "%.1f", "", ""},
+                              1.0, 1.0);
   exponent->set_rect(col.next(130));
   // In an author's unit: how many degrees of view one second of video weighs like
   // (docs/interpolation.md, "Time"), on a logarithmic track.
@@ -123,7 +134,8 @@ void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, 
   status->set_rect(col.next(60));
 }
 
-void EditorPanels::add_visualizations(ui::Panel& p, ui::Stack& col, double toggles_h, bool stacked) {
+void EditorPanels::add_visualizations(ui::Panel& p, ui::Stack& col, double toggles_h,
+                                      bool stacked) {
   using namespace ui;
   const Theme& t = p.theme();
   if (stacked) {  // Desktop: two rows of toggles, then the minimap over the plot
@@ -136,7 +148,8 @@ void EditorPanels::add_visualizations(ui::Panel& p, ui::Stack& col, double toggl
     lock->set_rect(col.next(toggles_h));
     const Rect rest = col.rest();
     minimap_rect_ = {rest.x, rest.y, rest.w, 0.5 * rest.w + 90.0};
-    plot_rect_ = {rest.x, minimap_rect_.bottom() + t.gap, rest.w, rest.bottom() - minimap_rect_.bottom() - t.gap};
+    plot_rect_ = {rest.x, minimap_rect_.bottom() + t.gap, rest.w,
+                  rest.bottom() - minimap_rect_.bottom() - t.gap};
   } else {  // Hands: toggles in one row, the hint, then the plot beside the minimap
     Stack toggles(col.next(toggles_h), t.gap, Stack::Axis::Horizontal);
     show_tracks = &p.add<Toggle>("show_tracks", "Track plot", true);
@@ -172,9 +185,11 @@ void EditorPanels::add_transport_row(ui::Panel& p, ui::Stack& col) {
   time->set_rect(top.rest());
 }
 
-void EditorPanels::build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames) {
+void EditorPanels::build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts,
+                                        std::int64_t frames) {
   using namespace ui;
-  timeline = std::make_unique<Panel>(kTimelinePanelId, kTimelineW, kTimelineH, glm::dvec2(0.5, 0.3), fonts);
+  timeline = std::make_unique<Panel>(kTimelinePanelId, kTimelineW, kTimelineH, glm::dvec2(0.5, 0.3),
+                                     fonts);
   Panel& p = *timeline;
   const Theme& t = p.theme();
   Stack col(Rect{0, 0, kTimelineW, kTimelineH}.inset(40.0), t.gap);
@@ -198,7 +213,8 @@ void EditorPanels::show_values(EditTarget target, std::span<const double> v) {
   switch (*target.stack_effect()) {
     case EffectType::Tint: {
       const glm::dvec2 hs = ui::hue_sat_from_tint_gain({v[0], v[1], v[2]});
-      if (glm::length(hs - glm::dvec2(tint->hue(), tint->sat())) > 1e-6) tint->set_hue_sat(hs.x, hs.y);
+      if (glm::length(hs - glm::dvec2(tint->hue(), tint->sat())) > 1e-6)
+        tint->set_hue_sat(hs.x, hs.y);
       break;
     }
     case EffectType::Vignette: vignette->set_value({v[0], v[1]}); break;
@@ -210,7 +226,8 @@ void EditorPanels::show_values(EditTarget target, std::span<const double> v) {
 }
 
 bool EditorPanels::edits_values(EditTarget target, const ui::Widget* w) const {
-  return w == effect_widgets[static_cast<std::size_t>(target.index())] || (target.is_grain() && w == grain_size);
+  return w == effect_widgets[static_cast<std::size_t>(target.index())] ||
+         (target.is_grain() && w == grain_size);
 }
 
 std::vector<double> EditorPanels::values_of(EditTarget target, const ui::Event& e,
@@ -228,23 +245,28 @@ std::vector<double> EditorPanels::values_of(EditTarget target, const ui::Event& 
   return {e.new_value.x};
 }
 
-void EditorPanels::show_options(const effects::FlareEffect& flare, const effects::GrainEffect& grain) {
+void EditorPanels::show_options(const effects::FlareEffect& flare,
+                                const effects::GrainEffect& grain) {
   flare_style->select(static_cast<int>(flare.style));
   auto_light->set_on(std::holds_alternative<effects::AutoLight>(flare.light));
-  const auto it = std::find(effects::kGrainStyles.begin(), effects::kGrainStyles.end(), grain.style);
+  const auto it =
+      std::find(effects::kGrainStyles.begin(), effects::kGrainStyles.end(), grain.style);
   grain_style->select(static_cast<int>(it - effects::kGrainStyles.begin()));
 }
 
 void EditorPanels::show_effect(EditTarget target) {
   const ui::Theme& t = effect->theme();
   for (std::size_t i = 0; i < effect_widgets.size(); ++i)
-    effect_widgets[i]->set_rect(static_cast<int>(i) == target.index() ? effect_widget_rect_ : ui::Rect{});
-  for (ui::Widget* w : std::initializer_list<ui::Widget*>{grain_size, flare_style, set_light, auto_light, grain_style})
+    effect_widgets[i]->set_rect(static_cast<int>(i) == target.index() ? effect_widget_rect_
+                                                                      : ui::Rect{});
+  for (ui::Widget* w : std::initializer_list<ui::Widget*>{grain_size, flare_style, set_light,
+                                                          auto_light, grain_style})
     w->set_rect({});
   if (target.is_grain()) {
     grain_intensity->set_rect(ui::split_rows(effect_widget_rect_, 2, 0, t.gap));
     grain_size->set_rect(ui::split_rows(effect_widget_rect_, 2, 1, t.gap));
-    grain_style->set_rect({options_rect_.x, options_rect_.y, options_rect_.w, 2 * t.row_height + kMenuInset});
+    grain_style->set_rect(
+        {options_rect_.x, options_rect_.y, options_rect_.w, 2 * t.row_height + kMenuInset});
   }
   if (target.is_flare()) {
     ui::Stack rows(options_rect_, t.gap);
@@ -278,7 +300,8 @@ ui::Panel* EditorPanels::panel_of(const ui::Widget* widget) {
 
 void EditorPanels::place(const xr::InputState& input) {
   const auto put = [&](ui::Panel* p, const PanelPlacement& place) {
-    if (p && place.anchor != Anchor::World) p->set_world_pose(anchor_pose(place.anchor, input) * place.offset);
+    if (p && place.anchor != Anchor::World)
+      p->set_world_pose(anchor_pose(place.anchor, input) * place.offset);
   };
   put(effect.get(), effect_place);
   put(timeline.get(), timeline_place);

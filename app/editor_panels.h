@@ -88,8 +88,8 @@ PanelPlacement desktop_placement(const DesktopViewport& v, const ScreenRect& r, 
 
 class EditorPanels {
  public:
-  EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frame_count, PanelLayout layout,
-               DesktopViewport viewport = {});
+  EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frame_count,
+               PanelLayout layout, DesktopViewport viewport = {});
 
   /// Moves the panels to their anchors (locked panels stay).
   void place(const xr::InputState& input);
@@ -109,7 +109,8 @@ class EditorPanels {
   /// The values (flat) an event of one of `target`'s value widgets sets, the others kept from
   /// `current`: the slider's value, the pad's two, the wheel's hue and saturation as normalised
   /// tint gains, the grain's intensity or size.
-  std::vector<double> values_of(EditTarget target, const ui::Event& event, std::span<const double> current) const;
+  std::vector<double> values_of(EditTarget target, const ui::Event& event,
+                                std::span<const double> current) const;
   /// The flare's and the grain's options as the document has them (style, light).
   void show_options(const effects::FlareEffect& flare, const effects::GrainEffect& grain);
   /// Every panel, in hit-test order.
@@ -151,9 +152,9 @@ class EditorPanels {
   ui::Button* undo = nullptr;
   ui::Button* redo = nullptr;
   ui::Button* delete_nearest = nullptr;  //!< deletes the selected keyframe, else the nearest
-  ui::Button* deselect = nullptr;        //!< leaves the selected keyframe (right thumbstick click too)
+  ui::Button* deselect = nullptr;  //!< leaves the selected keyframe (right thumbstick click too)
   ui::Slider1D* exponent = nullptr;
-  ui::Slider1D* time_scale = nullptr;    //!< degrees of view one second of video weighs like
+  ui::Slider1D* time_scale = nullptr;  //!< degrees of view one second of video weighs like
   ui::Label* status = nullptr;
 
   // timeline panel
@@ -176,7 +177,8 @@ class EditorPanels {
   ui::Label* hud_message = nullptr;  //!< the latest message (expires), or what to do now
 
  private:
-  void build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, int width, int height, glm::dvec2 size_m);
+  void build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, int width, int height,
+                          glm::dvec2 size_m);
   void build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames);
   void build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames);
   void add_visualizations(ui::Panel& p, ui::Stack& col, double toggles_h, bool stacked);

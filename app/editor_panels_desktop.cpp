@@ -3,7 +3,6 @@
 /// head-locked quads that cover them exactly, rendered at their on-screen resolution.
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/editor_panels.h"
@@ -29,7 +28,6 @@ double desktop_ui_scale(const DesktopViewport& v) {
   return std::clamp(s, 0.25, 1.0);
 }
 
-
 PanelPlacement desktop_placement(const DesktopViewport& v, const ScreenRect& r, double distance_m,
                                  glm::dvec2* size_m) {
   // The desktop camera's tangents (xr::desktop_view): square pixels, centred.
@@ -39,15 +37,18 @@ PanelPlacement desktop_placement(const DesktopViewport& v, const ScreenRect& r, 
   const auto tan_y = [&](double py) { return ty - py / v.height * 2.0 * ty; };
   const double cx = tan_x(r.x + 0.5 * r.w), cy = tan_y(r.y + 0.5 * r.h);
   if (size_m)
-    *size_m = {(tan_x(r.x + r.w) - tan_x(r.x)) * distance_m, (tan_y(r.y) - tan_y(r.y + r.h)) * distance_m};
-  return {Anchor::Head, xr::Pose{{cx * distance_m, cy * distance_m, -distance_m}, {1.0, 0.0, 0.0, 0.0}}};
+    *size_m = {(tan_x(r.x + r.w) - tan_x(r.x)) * distance_m,
+               (tan_y(r.y) - tan_y(r.y + r.h)) * distance_m};
+  return {Anchor::Head,
+          xr::Pose{{cx * distance_m, cy * distance_m, -distance_m}, {1.0, 0.0, 0.0, 0.0}}};
 }
 
-
-void EditorPanels::build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames) {
+void EditorPanels::build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts,
+                                        std::int64_t frames) {
   using namespace ui;
   build_effect_panel(fonts, kDeskEffectW, kDeskEffectH, glm::dvec2(0.2, 0.4));
-  timeline = std::make_unique<Panel>(kTimelinePanelId, kDeskTimelineW, kDeskTimelineH, glm::dvec2(0.5, 0.12), fonts);
+  timeline = std::make_unique<Panel>(kTimelinePanelId, kDeskTimelineW, kDeskTimelineH,
+                                     glm::dvec2(0.5, 0.12), fonts);
   {
     Panel& p = *timeline;
     Stack col(Rect{0, 0, kDeskTimelineW, kDeskTimelineH}.inset(40.0), p.theme().gap);
@@ -55,7 +56,8 @@ void EditorPanels::build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts
     strip = &p.add<TimelineStrip>("strip", static_cast<int>(frames));
     strip->set_rect(col.rest());
   }
-  views = std::make_unique<Panel>(kViewsPanelId, kDeskViewsW, kDeskViewsH, glm::dvec2(0.2, 0.26), fonts);
+  views = std::make_unique<Panel>(kViewsPanelId, kDeskViewsW, kDeskViewsH, glm::dvec2(0.2, 0.26),
+                                  fonts);
   {
     Panel& p = *views;
     Stack col(Rect{0, 0, kDeskViewsW, kDeskViewsH}.inset(40.0), p.theme().gap);
@@ -71,7 +73,6 @@ void EditorPanels::build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts
     hud_message->set_rect(split_rows(inner, 2, 1, 2.0));
   }
 }
-
 
 void EditorPanels::set_viewport(const DesktopViewport& v) {
   viewport_ = v;
@@ -90,7 +91,6 @@ void EditorPanels::set_viewport(const DesktopViewport& v) {
   put(*hud, hud_place, screen_rect(kHudPanelId));
 }
 
-
 ScreenRect EditorPanels::screen_rect(std::string_view id) const {
   if (layout != PanelLayout::Desktop) return {};
   const DesktopViewport& v = viewport_;
@@ -99,11 +99,12 @@ ScreenRect EditorPanels::screen_rect(std::string_view id) const {
   const int m = kDeskMargin;
   if (id == kEffectPanelId) return {m, m, px(kDeskEffectW), px(kDeskEffectH)};
   if (id == kTimelinePanelId)
-    return {v.width - m - px(kDeskTimelineW), v.height - m - px(kDeskTimelineH), px(kDeskTimelineW), px(kDeskTimelineH)};
-  if (id == kViewsPanelId) return {v.width - m - px(kDeskViewsW), m, px(kDeskViewsW), px(kDeskViewsH)};
+    return {v.width - m - px(kDeskTimelineW), v.height - m - px(kDeskTimelineH), px(kDeskTimelineW),
+            px(kDeskTimelineH)};
+  if (id == kViewsPanelId)
+    return {v.width - m - px(kDeskViewsW), m, px(kDeskViewsW), px(kDeskViewsH)};
   if (id == kHudPanelId) return {(v.width - px(kDeskHudW)) / 2, m, px(kDeskHudW), px(kDeskHudH)};
   return {};
 }
-
 
 }  // namespace vdfx::app

@@ -2,8 +2,8 @@
 /// @brief run_replay: recording -> replay backend -> Editor -> sidecar (+ PNG frames).
 #include "app/editor_replay.h"
 
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <opencv2/imgproc.hpp>
 
 #include "app/editor.h"
@@ -67,8 +67,7 @@ void overlay_panels(cv::Mat& rgb8, const effects::ViewCamera& camera, const glm:
     const double on_screen = screen_width(camera, eye, *p, full.size());
     const double scale = on_screen > 1.0 ? std::min(1.0, on_screen / full.cols) : 1.0;
     cv::Mat tex = full;
-    if (scale < 1.0)
-      cv::resize(full, tex, cv::Size(), scale, scale, cv::INTER_AREA);
+    if (scale < 1.0) cv::resize(full, tex, cv::Size(), scale, scale, cv::INTER_AREA);
     for (int j = 0; j < rgb8.rows; ++j) {
       auto* row = rgb8.ptr<cv::Vec3b>(j);
       for (int i = 0; i < rgb8.cols; ++i) {
@@ -92,7 +91,8 @@ EditorOptions editor_options_for(const io::RecordingHeader& header) {
   EditorOptions eo;
   if (header.desktop || header.hmd == "sim") {
     eo.layout = PanelLayout::Desktop;
-    const io::RecordedDesktopView v = header.desktop.value_or(io::RecordedDesktopView{1280, 720, 90.0});
+    const io::RecordedDesktopView v =
+        header.desktop.value_or(io::RecordedDesktopView{1280, 720, 90.0});
     eo.viewport = {v.width, v.height, v.hfov_deg};
   } else {
     eo.layout = PanelLayout::Hands;
@@ -105,7 +105,8 @@ cv::Mat decode_frame(io::FrameDecoder& decoder, const fs::path& video, std::int6
   decoder.seek(decoder.properties().is_still ? 0 : frame);
   cv::Mat image;
   if (decoder.read(image) != io::DecodeStatus::Ok)
-    throw io::InputError(video.string() + ": frame " + std::to_string(frame) + " could not be decoded");
+    throw io::InputError(video.string() + ": frame " + std::to_string(frame) +
+                         " could not be decoded");
   if (image.type() != CV_32FC3) image.convertTo(image, CV_32FC3, 1.0 / 255.0);
   return image;
 }
@@ -113,13 +114,15 @@ cv::Mat decode_frame(io::FrameDecoder& decoder, const fs::path& video, std::int6
 /// What the editor's window shows at display time t_ns, on the CPU, as 8-bit BGR: the head view
 /// with the editor's parameters, then the flares and shader grain as the window draws them (laid
 /// out from the head, which looks along the view as the camera does), then the panels.
-cv::Mat render_replay_frame(Editor& editor, EditorLayers& layers, const cv::Mat& image, std::int64_t frame,
-                            std::int64_t t_ns, const ReplayOptions& o, ReplayResult& result) {
+cv::Mat render_replay_frame(Editor& editor, EditorLayers& layers, const cv::Mat& image,
+                            std::int64_t frame, std::int64_t t_ns, const ReplayOptions& o,
+                            ReplayResult& result) {
   effects::EquirectSampler sampler(image);
-  const auto camera = effects::ViewCamera::from_horizontal_fov({editor.view_direction(), 0.0}, o.hfov_deg,
-                                                               o.width, o.height);
+  const auto camera = effects::ViewCamera::from_horizontal_fov({editor.view_direction(), 0.0},
+                                                               o.hfov_deg, o.width, o.height);
   cv::Mat rendered = effects::render_view(sampler, camera, editor.current_params());
-  const xr::RenderView view = xr::RenderView::look_at(editor.view_direction(), 0.0, o.hfov_deg, o.width, o.height);
+  const xr::RenderView view =
+      xr::RenderView::look_at(editor.view_direction(), 0.0, o.hfov_deg, o.width, o.height);
   const glm::dvec3 p = editor.input().head.position;
   const effects::HeadPose head{Eigen::Vector3d(p.x, p.y, p.z), view.orientation};
   layers.update(editor);
@@ -127,7 +130,8 @@ cv::Mat render_replay_frame(Editor& editor, EditorLayers& layers, const cv::Mat&
   effects::add_flares(rendered, camera, head.position, layers.flares().layouts(head, frame));
   for (const effects::GrainFrame& g : layers.grains().layout(head, t_ns, frame)) {
     if (!effects::is_volumetric(g.style)) {
-      effects::composite_shader_grain(rendered, g, view.orientation, head.position, view.tangents());
+      effects::composite_shader_grain(rendered, g, view.orientation, head.position,
+                                      view.tangents());
       continue;
     }
     const std::string note = "grain style " + std::string(effects::grain_style_name(g.style)) +
@@ -160,9 +164,10 @@ ReplayResult run_replay(const ReplayOptions& o) {
   const auto& props = decoder->properties();
 
   const io::Sidecar sidecar =
-      o.sidecar_in ? io::read_sidecar(*o.sidecar_in)
-                   : io::new_sidecar({o.video.string(), props.fps.value(), std::max<std::int64_t>(1, props.frames),
-                                      props.width, props.height});
+      o.sidecar_in
+          ? io::read_sidecar(*o.sidecar_in)
+          : io::new_sidecar({o.video.string(), props.fps.value(),
+                             std::max<std::int64_t>(1, props.frames), props.width, props.height});
   Editor editor(sidecar, DocumentOptions{{.async = false}}, editor_options_for(rec.header));
 
   auto backend = xr::create_replay_backend(std::move(rec), {});
@@ -176,14 +181,16 @@ ReplayResult run_replay(const ReplayOptions& o) {
                            (ec ? " (" + ec.message() + ")" : " (a file of that name exists)"));
     const int n = std::max(1, o.frame_images);
     for (int k = 1; k <= n; ++k)
-      shots.push_back((timeline.size() - 1) * static_cast<std::size_t>(k) / static_cast<std::size_t>(n));
+      shots.push_back((timeline.size() - 1) * static_cast<std::size_t>(k) /
+                      static_cast<std::size_t>(n));
   }
   std::size_t next_shot = 0;
   EditorLayers layers;  // the document's flares and grain, drawn into the frames
   for (std::size_t i = 0; i < timeline.size(); ++i) {
     editor.update(backend->poll(timeline[i]), timeline[i]);
     while (next_shot < shots.size() && shots[next_shot] == i) {
-      const std::int64_t frame = std::clamp<std::int64_t>(editor.frame(), 0, std::max<std::int64_t>(0, props.frames - 1));
+      const std::int64_t frame =
+          std::clamp<std::int64_t>(editor.frame(), 0, std::max<std::int64_t>(0, props.frames - 1));
       const cv::Mat image = decode_frame(*decoder, o.video, frame);
       const cv::Mat bgr = render_replay_frame(editor, layers, image, frame, timeline[i], o, result);
       char name[64];

@@ -4,11 +4,10 @@
 #pragma once
 
 #include <filesystem>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "effects/view_camera.h"
 #include "io/sidecar.h"
@@ -23,8 +22,8 @@ struct ReplayOptions {
   std::optional<std::filesystem::path> sidecar_in;  //!< start from it (else an empty sidecar)
   std::filesystem::path sidecar_out;
   std::optional<std::filesystem::path> frames_dir;  //!< write mirror-like PNGs here
-  int frame_images = 5;   //!< evenly spaced over the session, the last sample included
-  int width = 1280;        //!< of each PNG
+  int frame_images = 5;  //!< evenly spaced over the session, the last sample included
+  int width = 1280;      //!< of each PNG
   int height = 720;
   double hfov_deg = 90.0;
   std::string log_prefix = "vdfx replay";

@@ -16,14 +16,15 @@ std::optional<effects::Keyframe> Editor::selected_preview() const {
   // The keyframe keeps the offset from the view centre (in azimuth and altitude) and from the
   // playhead (in frames) that it had when grabbed, so grabbing alone moves nothing and a
   // keyframe grabbed while looking at it stays at the view centre.
-  k.direction.azimuth_deg =
-      effects::wrap_azimuth_deg(sel_.key0.direction.azimuth_deg + (view_.azimuth_deg - sel_.view0.azimuth_deg));
+  k.direction.azimuth_deg = effects::wrap_azimuth_deg(sel_.key0.direction.azimuth_deg +
+                                                      (view_.azimuth_deg - sel_.view0.azimuth_deg));
   k.direction.altitude_deg =
-      std::clamp(sel_.key0.direction.altitude_deg + (view_.altitude_deg - sel_.view0.altitude_deg), -90.0, 90.0);
-  k.frame = std::clamp<std::int64_t>(sel_.key0.frame + (play_.frame - sel_.frame0), 0, doc_.video().frames - 1);
+      std::clamp(sel_.key0.direction.altitude_deg + (view_.altitude_deg - sel_.view0.altitude_deg),
+                 -90.0, 90.0);
+  k.frame = std::clamp<std::int64_t>(sel_.key0.frame + (play_.frame - sel_.frame0), 0,
+                                     doc_.video().frames - 1);
   return k;
 }
-
 
 void Editor::validate_selection() {
   if (sel_.index && *sel_.index >= doc_.keyframes(effect_).size()) {
@@ -32,11 +33,10 @@ void Editor::validate_selection() {
   }
 }
 
-
 bool Editor::select_nearest() {
   const auto& ks = doc_.keyframes(effect_);
-  const auto i =
-      nearest_keyframe(ks, view_, play_.frame, doc_.interpolation(effect_).time_scale, doc_.video().fps);
+  const auto i = nearest_keyframe(ks, view_, play_.frame, doc_.interpolation(effect_).time_scale,
+                                  doc_.video().fps);
   if (!i) {
     say("no keyframe to select");
     return false;
@@ -47,7 +47,6 @@ bool Editor::select_nearest() {
   return true;
 }
 
-
 bool Editor::select_keyframe(std::size_t index) {
   if (grabbing() || index >= doc_.keyframes(effect_).size()) return false;
   sel_.index = index;
@@ -56,7 +55,6 @@ bool Editor::select_keyframe(std::size_t index) {
   return true;
 }
 
-
 void Editor::keep_selection_if_stable(std::size_t count_before) {
   // An undone or redone step that added or removed keyframes (a place, a delete, a move that
   // replaced another) renumbers them: the index would then name another keyframe.
@@ -64,14 +62,12 @@ void Editor::keep_selection_if_stable(std::size_t count_before) {
   validate_selection();
 }
 
-
 void Editor::deselect() {
   if (!sel_.index) return;
   sel_.index.reset();
   if (grabbing()) doc_.cancel_pending();  // a grab in progress is cancelled, not committed
   say("deselected");
 }
-
 
 bool Editor::grab() {
   validate_selection();
@@ -83,7 +79,6 @@ bool Editor::grab() {
   say("holding keyframe " + std::to_string(*sel_.index + 1));
   return true;
 }
-
 
 void Editor::grab_release() {
   if (!grabbing()) return;
@@ -99,10 +94,8 @@ void Editor::grab_release() {
   say(edit->replaced ? "moved a keyframe onto another (replaced it)" : "moved a keyframe");
 }
 
-
 void Editor::set_selected_params(std::vector<double> params) {
   if (sel_.index) doc_.set_keyframe_params(effect_, *sel_.index, std::move(params));
 }
-
 
 }  // namespace vdfx::app

@@ -4,9 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
-
 #include <opencv2/core/utility.hpp>
+#include <vector>
 
 #include "effects/coords.h"
 #include "effects/equirect_blur.h"
@@ -43,8 +42,10 @@ Axis axis_weights(int n, const std::vector<int>& pos, bool wrap) {
     const bool last = g + 1 == pos.size();
     const int next = last ? (wrap ? pos[0] + n : pos[g]) : pos[g + 1];
     ax.a[static_cast<std::size_t>(i)] = static_cast<int>(g);
-    ax.b[static_cast<std::size_t>(i)] = last ? (wrap ? 0 : static_cast<int>(g)) : static_cast<int>(g + 1);
-    ax.t[static_cast<std::size_t>(i)] = next == pos[g] ? 0.0 : static_cast<double>(i - pos[g]) / (next - pos[g]);
+    ax.b[static_cast<std::size_t>(i)] =
+        last ? (wrap ? 0 : static_cast<int>(g)) : static_cast<int>(g + 1);
+    ax.t[static_cast<std::size_t>(i)] =
+        next == pos[g] ? 0.0 : static_cast<double>(i - pos[g]) / (next - pos[g]);
   }
   return ax;
 }
@@ -94,12 +95,13 @@ namespace {
 
 /// The exact parameters at the grid's pixels (flattened, kFields per entry, row by row), from the
 /// cache when the frame every active effect evaluates at is the one it was computed for.
-BakedGridCache::Grid parameter_grid(const effects::StackInterpolator& stack, std::int64_t frame, int w, int h,
-                                    int step, const std::vector<int>& gx, const std::vector<int>& gy,
-                                    BakedGridCache* cache) {
+BakedGridCache::Grid parameter_grid(const effects::StackInterpolator& stack, std::int64_t frame,
+                                    int w, int h, int step, const std::vector<int>& gx,
+                                    const std::vector<int>& gy, BakedGridCache* cache) {
   std::vector<std::int64_t> key{w, h, step};
   for (int t = 0; t < effects::kEffectCount; ++t)
-    if (const auto* rbf = stack.interpolator(static_cast<EffectType>(t))) key.push_back(rbf->effective_frame(frame));
+    if (const auto* rbf = stack.interpolator(static_cast<EffectType>(t)))
+      key.push_back(rbf->effective_frame(frame));
   if (cache)
     if (auto hit = cache->find(key)) return hit;
   const std::size_t cols = gx.size();
@@ -107,8 +109,9 @@ BakedGridCache::Grid parameter_grid(const effects::StackInterpolator& stack, std
   cv::parallel_for_(cv::Range(0, static_cast<int>(gy.size())), [&](const cv::Range& r) {
     for (int j = r.start; j < r.end; ++j)
       for (std::size_t i = 0; i < cols; ++i)
-        flatten(stack.evaluate(pixel_direction(gx[i], gy[static_cast<std::size_t>(j)], w, h), frame),
-                &(*grid)[(static_cast<std::size_t>(j) * cols + i) * kFields]);
+        flatten(
+            stack.evaluate(pixel_direction(gx[i], gy[static_cast<std::size_t>(j)], w, h), frame),
+            &(*grid)[(static_cast<std::size_t>(j) * cols + i) * kFields]);
   });
   if (cache) cache->store(std::move(key), grid);
   return grid;
@@ -140,7 +143,8 @@ void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, st
   const int w = rgb.cols, h = rgb.rows;
   const int step = baked_param_step(options, w);
   const std::vector<int> gx = grid_positions(w, step, false), gy = grid_positions(h, step, true);
-  const BakedGridCache::Grid grid_ptr = parameter_grid(stack, frame, w, h, step, gx, gy, options.cache);
+  const BakedGridCache::Grid grid_ptr =
+      parameter_grid(stack, frame, w, h, step, gx, gy, options.cache);
   const std::vector<double>& grid = *grid_ptr;
   const Axis ax = axis_weights(w, gx, true), ay = axis_weights(h, gy, false);
   // Bilinear, split: the two grid rows around image row y are blended once per row, then each

@@ -18,9 +18,8 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
-#include <vector>
-
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "app/export_pipeline.h"
 #include "effects/stack_interpolator.h"

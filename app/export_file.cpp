@@ -30,7 +30,8 @@ void fsync_path(const std::filesystem::path& p, int flags) {
   ::close(fd);
 }
 
-struct sigaction g_old_int {}, g_old_term {};
+struct sigaction g_old_int {
+}, g_old_term{};
 
 }  // namespace
 
@@ -38,7 +39,8 @@ PendingOutput::PendingOutput(std::filesystem::path target) : target_(std::move(t
   const std::filesystem::path dir = target_.parent_path().empty() ? "." : target_.parent_path();
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec))
-    throw io::InputError("cannot write " + target_.string() + ": folder " + dir.string() + " does not exist");
+    throw io::InputError("cannot write " + target_.string() + ": folder " + dir.string() +
+                         " does not exist");
   if (std::filesystem::is_directory(target_, ec))
     throw io::InputError("cannot write " + target_.string() + ": it is a folder");
   temp_ = dir / ("." + target_.stem().string() + ".tmp-" + std::to_string(::getpid()) +
@@ -76,7 +78,11 @@ InterruptGuard::~InterruptGuard() {
   if (const int sig = g_signal.load()) std::raise(sig);
 }
 
-const std::atomic<bool>& InterruptGuard::interrupted() const { return g_interrupted; }
-int InterruptGuard::signal() const { return g_signal.load(); }
+const std::atomic<bool>& InterruptGuard::interrupted() const {
+  return g_interrupted;
+}
+int InterruptGuard::signal() const {
+  return g_signal.load();
+}
 
 }  // namespace vdfx::app

@@ -9,17 +9,22 @@
 namespace vdfx::app {
 
 PathLayers::PathLayers(const io::Sidecar& sidecar)
-    : flares_(flare_set_of(sidecar)), grains_(sidecar.grains, sidecar.interpolation, sidecar.video.fps), fps_(sidecar.video.fps) {}
+    : flares_(flare_set_of(sidecar)),
+      grains_(sidecar.grains, sidecar.interpolation, sidecar.video.fps),
+      fps_(sidecar.video.fps) {}
 
 std::vector<std::string> PathLayers::left_out() const {
   std::vector<std::string> out;
   for (std::size_t i = 0; i < grains_.size(); ++i)
     if (effects::is_volumetric(grains_.effect(i).style))
-      out.push_back("grain style " + std::string(effects::grain_style_name(grains_.effect(i).style)) + " (GPU only)");
+      out.push_back("grain style " +
+                    std::string(effects::grain_style_name(grains_.effect(i).style)) +
+                    " (GPU only)");
   return out;
 }
 
-void PathLayers::draw(cv::Mat& rgb, const cv::Mat& equirect, const xr::RenderView& view, std::int64_t frame) {
+void PathLayers::draw(cv::Mat& rgb, const cv::Mat& equirect, const xr::RenderView& view,
+                      std::int64_t frame) {
   // The video is a sphere at infinity seen from the origin; the head sits there, looking along
   // the view (its roll included), as in `vdfx render --view`.
   const effects::HeadPose head{Eigen::Vector3d::Zero(), view.orientation};

@@ -7,10 +7,9 @@
 
 #include <cstdint>
 #include <mutex>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "effects/flare_set.h"
 #include "effects/grain_layout.h"

@@ -52,7 +52,8 @@ std::int64_t path_last_frame(const std::vector<HeadSample>& path, io::Rational f
 
 cv::Mat render_path_frame(const cv::Mat& equirect, const effects::StackInterpolator& stack,
                           const PathView& view, std::int64_t frame, const PathRenderSettings& s) {
-  const xr::RenderView rv = xr::RenderView::look_at(view.look, view.roll_deg, s.hfov_deg, s.width, s.height);
+  const xr::RenderView rv =
+      xr::RenderView::look_at(view.look, view.roll_deg, s.hfov_deg, s.width, s.height);
   const effects::ViewCamera camera = rv.camera(s.width, s.height);
   const effects::EquirectSampler sampler(equirect);
   cv::Mat rgb = effects::render_view(sampler, camera, stack.evaluate(view.look, frame));

@@ -8,10 +8,9 @@
 
 #include <cstdint>
 #include <functional>
-#include <vector>
-
 #include <glm/gtc/quaternion.hpp>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "effects/coords.h"
 #include "effects/stack_interpolator.h"
@@ -48,8 +47,8 @@ std::int64_t path_last_frame(const std::vector<HeadSample>& path, io::Rational f
 /// Flare and grain (app/export_layers.h) attach here: called on each rendered view (unclamped
 /// RGB float, after the view-dependent effects, before the output clamp) with the decoded frame
 /// (RGB float equirect) and the view it was rendered for.
-using ViewLayersHook =
-    std::function<void(cv::Mat& rgb, const cv::Mat& equirect, const xr::RenderView& view, std::int64_t frame)>;
+using ViewLayersHook = std::function<void(cv::Mat& rgb, const cv::Mat& equirect,
+                                          const xr::RenderView& view, std::int64_t frame)>;
 
 struct PathRenderSettings {
   double hfov_deg = 90.0;
@@ -60,6 +59,7 @@ struct PathRenderSettings {
 /// One frame of the viewer's-path export: 8-bit RGB, as `vdfx render --mode view` would give for
 /// (look, roll, frame, fov, size) on the CPU.
 cv::Mat render_path_frame(const cv::Mat& equirect, const effects::StackInterpolator& stack,
-                          const PathView& view, std::int64_t frame, const PathRenderSettings& settings);
+                          const PathView& view, std::int64_t frame,
+                          const PathRenderSettings& settings);
 
 }  // namespace vdfx::app

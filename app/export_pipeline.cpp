@@ -28,10 +28,10 @@ struct Job {
 struct State {
   std::mutex m;
   std::condition_variable changed;
-  std::deque<Job> jobs;                         //!< decoded, waiting for a worker
-  std::map<std::int64_t, io::Picture> done;     //!< rendered, waiting for their turn
+  std::deque<Job> jobs;                      //!< decoded, waiting for a worker
+  std::map<std::int64_t, io::Picture> done;  //!< rendered, waiting for their turn
   std::int64_t next_to_sink = 0;
-  std::int64_t decoded_end = -1;                //!< set when decoding stopped: one past the last frame
+  std::int64_t decoded_end = -1;  //!< set when decoding stopped: one past the last frame
   bool stop = false;
   std::exception_ptr error;
 
@@ -78,7 +78,8 @@ PipelineResult run_export_pipeline(io::FrameDecoder& decoder, const FrameRendere
           return;
         }
         if (status == io::DecodeStatus::Error)
-          throw io::InputError(name + ": frame " + std::to_string(k) + " could not be decoded (damaged file?)");
+          throw io::InputError(name + ": frame " + std::to_string(k) +
+                               " could not be decoded (damaged file?)");
         std::lock_guard lock(st.m);
         st.jobs.push_back({k, std::move(pic)});
         st.changed.notify_all();
@@ -128,7 +129,8 @@ PipelineResult run_export_pipeline(io::FrameDecoder& decoder, const FrameRendere
         // notify, so it is polled too.
         while (!st.changed.wait_for(lock, std::chrono::milliseconds(100), [&] {
           return st.stop || st.done.count(st.next_to_sink) ||
-                 (st.decoded_end >= 0 && st.next_to_sink >= st.decoded_end) || (s.cancel && s.cancel->load());
+                 (st.decoded_end >= 0 && st.next_to_sink >= st.decoded_end) ||
+                 (s.cancel && s.cancel->load());
         })) {
         }
         if (st.stop) break;

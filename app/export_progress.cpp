@@ -14,8 +14,10 @@ std::string clock_text(double s) {
   if (!std::isfinite(s) || s < 0) return "--:--";
   const long t = std::lround(s);
   char buf[32];
-  if (t >= 3600) std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, t / 60 % 60, t % 60);
-  else std::snprintf(buf, sizeof buf, "%ld:%02ld", t / 60, t % 60);
+  if (t >= 3600)
+    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, t / 60 % 60, t % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%ld:%02ld", t / 60, t % 60);
   return buf;
 }
 
@@ -33,7 +35,8 @@ Rates rates(std::int64_t done, std::int64_t total, double elapsed_s) {
 
 }  // namespace
 
-ProgressReporter::ProgressReporter(std::ostream& out, bool terminal, std::int64_t total, double interval)
+ProgressReporter::ProgressReporter(std::ostream& out, bool terminal, std::int64_t total,
+                                   double interval)
     : out_(out), terminal_(terminal), total_(total), interval_(interval) {}
 
 std::string ProgressReporter::bar_text(std::int64_t done, std::int64_t total, double elapsed_s) {
@@ -43,15 +46,17 @@ std::string ProgressReporter::bar_text(std::int64_t done, std::int64_t total, do
   std::snprintf(buf, sizeof buf, "[%s%s] %3d%%  %lld/%lld frames  %.1f frames/s  ETA %s",
                 std::string(static_cast<std::size_t>(filled), '#').c_str(),
                 std::string(static_cast<std::size_t>(20 - filled), ' ').c_str(), r.percent,
-                static_cast<long long>(done), static_cast<long long>(total), r.fps, clock_text(r.eta_s).c_str());
+                static_cast<long long>(done), static_cast<long long>(total), r.fps,
+                clock_text(r.eta_s).c_str());
   return buf;
 }
 
 std::string ProgressReporter::line_text(std::int64_t done, std::int64_t total, double elapsed_s) {
   const Rates r = rates(done, total, elapsed_s);
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%lld/%lld frames (%d%%), %.1f frames/s, ETA %s", static_cast<long long>(done),
-                static_cast<long long>(total), r.percent, r.fps, clock_text(r.eta_s).c_str());
+  std::snprintf(buf, sizeof buf, "%lld/%lld frames (%d%%), %.1f frames/s, ETA %s",
+                static_cast<long long>(done), static_cast<long long>(total), r.percent, r.fps,
+                clock_text(r.eta_s).c_str());
   return buf;
 }
 
@@ -61,14 +66,18 @@ void ProgressReporter::update(std::int64_t done, double elapsed_s) {
   if (elapsed_s - last_ < gap && done < total_) return;
   last_ = elapsed_s;
   last_done_ = done;
-  if (terminal_) out_ << "\r" << bar_text(done, total_, elapsed_s) << std::flush;
-  else out_ << "export: " << line_text(done, total_, elapsed_s) << "\n" << std::flush;
+  if (terminal_)
+    out_ << "\r" << bar_text(done, total_, elapsed_s) << std::flush;
+  else
+    out_ << "export: " << line_text(done, total_, elapsed_s) << "\n" << std::flush;
 }
 
 void ProgressReporter::finish(std::int64_t done, double elapsed_s) {
   if (!terminal_ && done == last_done_) return;  // that line is out already
-  if (terminal_) out_ << "\r" << bar_text(done, total_, elapsed_s) << "\n" << std::flush;
-  else out_ << "export: " << line_text(done, total_, elapsed_s) << "\n" << std::flush;
+  if (terminal_)
+    out_ << "\r" << bar_text(done, total_, elapsed_s) << "\n" << std::flush;
+  else
+    out_ << "export: " << line_text(done, total_, elapsed_s) << "\n" << std::flush;
 }
 
 }  // namespace vdfx::app

@@ -12,7 +12,8 @@ namespace vdfx::app {
 class ProgressReporter {
  public:
   /// `terminal`: redraw a bar with '\r'; otherwise a line at most every `line_interval_s`.
-  ProgressReporter(std::ostream& out, bool terminal, std::int64_t total, double line_interval_s = 5.0);
+  ProgressReporter(std::ostream& out, bool terminal, std::int64_t total,
+                   double line_interval_s = 5.0);
   void update(std::int64_t done, double elapsed_s);
   /// The last state, and a newline after the bar.
   void finish(std::int64_t done, double elapsed_s);

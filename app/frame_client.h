@@ -16,8 +16,8 @@
 #include "effects/coords.h"
 #include "effects/effect_types.h"
 #include "effects/flare_layout.h"
-#include "io/picture.h"
 #include "effects/grain_layout.h"
+#include "io/picture.h"
 #include "xr/actions.h"
 #include "xr/input_events.h"
 #include "xr/session.h"
@@ -77,7 +77,8 @@ class FrameClient {
   /// picks the grain pattern (one per refresh_ms); the frame, with the head's direction, the
   /// keyframed intensity and size.
   virtual std::vector<effects::GrainFrame> grains(const xr::Pose& head_in_local,
-                                                  std::int64_t display_time_ns, std::int64_t video_frame) {
+                                                  std::int64_t display_time_ns,
+                                                  std::int64_t video_frame) {
     (void)head_in_local, (void)display_time_ns, (void)video_frame;
     return {};
   }

@@ -13,11 +13,10 @@
 #include <GLFW/glfw3.h>
 
 #include <iostream>
-#include <optional>
-#include <thread>
-
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
+#include <thread>
 
 #include "app/frame_loop_stats.h"
 #include "app/glfw_input_glue.h"
@@ -27,8 +26,8 @@
 #include "io/video_source.h"
 #include "xr/compositor.h"
 #include "xr/flare_gl.h"
-#include "xr/grain_gl.h"
 #include "xr/gl_context.h"
+#include "xr/grain_gl.h"
 #include "xr/input_backend.h"
 #include "xr/param_grid.h"
 #include "xr/session.h"
@@ -48,8 +47,10 @@ std::optional<xr::MirrorMode> mirror_for_key(xr::Key key) {
 
 std::string frame_loop_keys_text() {
   return "  1                         window: desktop view (one undistorted view for a monitor)\n"
-         "  2                         window: headset mirror, pre-distorted panels (as the displays show them)\n"
-         "  3                         window: headset mirror, through the lens (as the wearer sees them)\n"
+         "  2                         window: headset mirror, pre-distorted panels (as the "
+         "displays show them)\n"
+         "  3                         window: headset mirror, through the lens (as the wearer sees "
+         "them)\n"
          "  4                         window: headset mirror, left eye, undistorted\n"
          "  Escape                    quit (closing the window too)\n";
 }
@@ -145,9 +146,9 @@ struct FrameLoop::Impl {
   /// it; the effect shader reads it per pixel (all six effects).
   void bake(std::int64_t frame, FrameLoopStats& stats) {
     const auto t0 = Clock::now();
-    const xr::ParamGrid grid = xr::bake_param_grid(
-        [&](const effects::Direction& d) { return client.params(d, frame); }, o.bake_width,
-        o.bake_height);
+    const xr::ParamGrid grid =
+        xr::bake_param_grid([&](const effects::Direction& d) { return client.params(d, frame); },
+                            o.bake_width, o.bake_height);
     compositor->set_param_grid(grid);
     stats.add_cpu("bake", ms_since(t0));
     grid_valid = true;
@@ -172,10 +173,13 @@ struct FrameLoop::Impl {
     const io::VideoStats st = video.stats();
     const bool gave_up = st.ended_early && st.decoded == 0;
     if (!gave_up && Clock::now() - wall0 < o.start_timeout) return;
-    std::string why = gave_up ? "the decoder found no frame (" + std::to_string(st.decode_errors) + " failed)"
-                              : "no frame was decoded within " +
-                                    std::to_string(std::chrono::duration_cast<std::chrono::seconds>(o.start_timeout).count()) +
-                                    " s";
+    std::string why =
+        gave_up
+            ? "the decoder found no frame (" + std::to_string(st.decode_errors) + " failed)"
+            : "no frame was decoded within " +
+                  std::to_string(
+                      std::chrono::duration_cast<std::chrono::seconds>(o.start_timeout).count()) +
+                  " s";
     throw io::InputError(video.properties().path.string() + ": cannot show the video: " + why);
   }
 
@@ -218,7 +222,8 @@ struct FrameLoop::Impl {
       }
       int fbw = 0, fbh = 0;
       gl->framebuffer_size(&fbw, &fbh);
-      // A hidden window (tests, screenshots) renders at the size asked for; so does a minimised one.
+      // A hidden window (tests, screenshots) renders at the size asked for; so does a minimised
+      // one.
       if (!o.visible || fbw <= 0 || fbh <= 0) fbw = o.window_width, fbh = o.window_height;
       bool geometry_changed = false;
       if (fbw != geometry_w || fbh != geometry_h) {
@@ -241,7 +246,8 @@ struct FrameLoop::Impl {
           geometry_changed = false;
         }
       }
-      if (geometry_changed && cursor) routed.push_back(cursor_event(cursor->x, cursor->y, fbw, fbh));
+      if (geometry_changed && cursor)
+        routed.push_back(cursor_event(cursor->x, cursor->y, fbw, fbh));
       for (const auto& e : routed) {
         input.push_event(e);
         client.on_desktop_event(e);
@@ -333,8 +339,8 @@ struct FrameLoop::Impl {
       if (o.keep_records) result.records.push_back(rec);
       if (o.stats) stats.add_gpu(compositor->stage_times());
       stats.add_cpu("frame", ms_since(frame_t0));
-      if (o.stats && std::chrono::duration<double>(Clock::now() - last_stats).count() >=
-                         o.stats_period_s) {
+      if (o.stats &&
+          std::chrono::duration<double>(Clock::now() - last_stats).count() >= o.stats_period_s) {
         last_stats = Clock::now();
         out << "stats: frame " << n << ", late " << result.late_frames << ": "
             << FrameLoopStats::format(stats.take_window()) << "\n";
@@ -365,7 +371,9 @@ FrameLoop::FrameLoop(FrameLoopOptions options, xr::InputBackend& input, io::Vide
                      FrameClient& client)
     : impl_(std::make_unique<Impl>(std::move(options), input, video, client)) {}
 FrameLoop::~FrameLoop() = default;
-FrameLoopResult FrameLoop::run() { return impl_->run(); }
+FrameLoopResult FrameLoop::run() {
+  return impl_->run();
+}
 
 #else  // no OpenGL in this build
 
@@ -374,7 +382,9 @@ FrameLoop::FrameLoop(FrameLoopOptions, xr::InputBackend&, io::VideoSource&, Fram
   throw std::runtime_error("this vdfx was built without OpenGL (VDFX_WITH_GL=OFF): no window");
 }
 FrameLoop::~FrameLoop() = default;
-FrameLoopResult FrameLoop::run() { return {}; }
+FrameLoopResult FrameLoop::run() {
+  return {};
+}
 
 #endif
 

@@ -52,9 +52,9 @@ struct FrameLoopOptions {
   double eye_scale = kDefaultEyeScale;  //!< eye buffers are the profile's resolution x this
   int window_width = 1280;
   int window_height = 720;
-  bool visible = true;       //!< false: hidden window (tests), the mirror still renders
-  bool vsync = true;         //!< live mode only; replay never waits
-  bool resizable = true;     //!< false while recording the sim (its panels follow the window)
+  bool visible = true;    //!< false: hidden window (tests), the mirror still renders
+  bool vsync = true;      //!< live mode only; replay never waits
+  bool resizable = true;  //!< false while recording the sim (its panels follow the window)
   /// What the window shows: the desktop view (one undistorted view filling the window, the
   /// sim's default) or a headset mirror; keys 1-4 switch.
   xr::MirrorMode mirror = xr::MirrorMode::Desktop;
@@ -65,17 +65,17 @@ struct FrameLoopOptions {
   /// The first decoded frame may take this long (a 4K long-GOP clip on two cores); the window
   /// shows "loading" meanwhile. No frame by then is an input error naming the video.
   std::chrono::milliseconds start_timeout{20000};
-  std::int64_t max_frames = -1;          //!< stop after this many frames (-1: no limit)
-  std::filesystem::path screenshot;      //!< write the last frame's mirror here (PNG)
-  bool stats = false;                    //!< GPU timer per stage, medians printed
-  double stats_period_s = 2.0;           //!< wall seconds between periodic stats lines
-  std::ostream* stats_out = nullptr;     //!< default std::cout
+  std::int64_t max_frames = -1;                //!< stop after this many frames (-1: no limit)
+  std::filesystem::path screenshot;            //!< write the last frame's mirror here (PNG)
+  bool stats = false;                          //!< GPU timer per stage, medians printed
+  double stats_period_s = 2.0;                 //!< wall seconds between periodic stats lines
+  std::ostream* stats_out = nullptr;           //!< default std::cout
   std::chrono::nanoseconds decode_timeout{0};  //!< how long a frame may wait for the decoder
   int bake_width = 256, bake_height = 128;     //!< per-pixel mode's parameter grid
   /// The GPU blur (live default: the pyramid, ~10x cheaper than exact at sigma 2 deg;
   /// docs/compositor.md has the error table).
   xr::BlurMethod blur = xr::BlurMethod::Pyramid;
-  bool keep_records = false;             //!< fill FrameLoopResult::records (tests)
+  bool keep_records = false;  //!< fill FrameLoopResult::records (tests)
   /// Called after each frame is rendered (before the mirror), with the compositor (tests read
   /// eye buffers here).
   std::function<void(xr::Compositor&, std::int64_t loop_frame)> on_frame;

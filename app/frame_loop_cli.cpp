@@ -34,7 +34,8 @@ void check_loop_outputs(const LoopCli& o, const std::filesystem::path& video_pat
   inputs.push_back({"VIDEO", video_path});
   inputs.push_back({"--hmd", profile_source});
   if (o.input.rfind("replay:", 0) == 0) inputs.push_back({"--input replay:", o.input.substr(7)});
-  for (const auto& [role, path] : {std::pair{"--record", o.record}, {"--screenshot", o.screenshot}}) {
+  for (const auto& [role, path] :
+       {std::pair{"--record", o.record}, {"--screenshot", o.screenshot}}) {
     if (path.empty()) continue;
     io::check_output_is_not_input(role, path, inputs);
     io::resolve_output_path(path);
@@ -49,8 +50,9 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
   cli.add_option("--input", o.input, "sim | hid[:SEL,...] | replay:REC.vdrec.jsonl")
       ->capture_default_str();
   cli.add_option("--record", o.record, "record the input to this .vdrec.jsonl file");
-  cli.add_flag("--stats", o.stats, "GPU time per stage (video, effects, distortion): medians, "
-                                   "printed every 2 s and at exit");
+  cli.add_flag("--stats", o.stats,
+               "GPU time per stage (video, effects, distortion): medians, "
+               "printed every 2 s and at exit");
   cli.add_option("--scale", o.scale,
                  "eye buffers at this fraction of the profile's resolution (1 = full; the default "
                  "keeps llvmpipe interactive)")
@@ -69,7 +71,9 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
   cli.add_option("--fov", o.fov, "horizontal field of view of the desktop view, degrees")
       ->capture_default_str()
       ->check(finite_range(20.0, 160.0));
-  cli.add_option("--window", o.window, "window size WxH")->capture_default_str()->check(window_problem);
+  cli.add_option("--window", o.window, "window size WxH")
+      ->capture_default_str()
+      ->check(window_problem);
   cli.add_flag("--hidden", o.hidden, "no visible window (offscreen; --screenshot still works)");
   cli.add_flag("--no-vsync", o.no_vsync, "do not wait for the display's vsync (live input)");
   cli.add_option("--decode-timeout", o.decode_timeout_ms,
@@ -118,12 +122,15 @@ LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path
   bool desktop_input = o.input == "sim";
   if (o.input.rfind(replay_prefix, 0) == 0) {
     const io::RecordingHeader h = io::read_recording(o.input.substr(replay_prefix.size())).header;
-    if (h.desktop) s.recorded_desktop = h.desktop;
-    else if (h.hmd == "sim") s.recorded_desktop = io::RecordedDesktopView{1280, 720, 90.0};  // before the extension
+    if (h.desktop)
+      s.recorded_desktop = h.desktop;
+    else if (h.hmd == "sim")
+      s.recorded_desktop = io::RecordedDesktopView{1280, 720, 90.0};  // before the extension
     desktop_input = s.recorded_desktop.has_value();
   }
-  f.mirror = o.mirror == "auto" ? (desktop_input ? xr::MirrorMode::Desktop : xr::MirrorMode::PreDistorted)
-                                : *xr::mirror_mode_from_name(o.mirror);
+  f.mirror = o.mirror == "auto"
+                 ? (desktop_input ? xr::MirrorMode::Desktop : xr::MirrorMode::PreDistorted)
+                 : *xr::mirror_mode_from_name(o.mirror);
 
   xr::InputBackendOptions io_opts;
   io_opts.sim.window_width = window.width;

@@ -25,7 +25,7 @@ struct LoopCli {
   double scale = kDefaultEyeScale;
   std::int64_t frames = -1;
   std::string screenshot;
-  std::string mirror = "auto";  //!< auto | desktop | pre | lens | eye
+  std::string mirror = "auto";          //!< auto | desktop | pre | lens | eye
   double fov = kDefaultDesktopHfovDeg;  //!< the desktop view's horizontal FOV
   std::string window = "1280x720";
   bool hidden = false;

@@ -10,9 +10,9 @@
 namespace vdfx::app {
 namespace {
 // GPU stages in pipeline order, then the CPU parts; anything else after them by name.
-constexpr std::array<const char*, 8> kOrder{"gpu video", "gpu effects", "gpu quads",
-                                            "gpu distortion", "cpu frame", "cpu upload",
-                                            "cpu bake", "cpu params"};
+constexpr std::array<const char*, 8> kOrder{"gpu video",      "gpu effects", "gpu quads",
+                                            "gpu distortion", "cpu frame",   "cpu upload",
+                                            "cpu bake",       "cpu params"};
 int rank(const std::string& s) {
   for (std::size_t i = 0; i < kOrder.size(); ++i)
     if (s == kOrder[i]) return static_cast<int>(i);
@@ -59,12 +59,15 @@ std::vector<StageMedian> FrameLoopStats::take_window() {
   return m;
 }
 
-std::vector<StageMedian> FrameLoopStats::total() const { return medians(all_); }
+std::vector<StageMedian> FrameLoopStats::total() const {
+  return medians(all_);
+}
 
 std::string FrameLoopStats::format(const std::vector<StageMedian>& m) {
   std::ostringstream s;
   s << std::fixed << std::setprecision(2);
-  for (std::size_t i = 0; i < m.size(); ++i) s << (i ? ", " : "") << m[i].stage << " " << m[i].ms << " ms";
+  for (std::size_t i = 0; i < m.size(); ++i)
+    s << (i ? ", " : "") << m[i].stage << " " << m[i].ms << " ms";
   return s.str();
 }
 

@@ -19,20 +19,34 @@ using xr::Key;
 
 // GLFW's key codes are ASCII for letters and digits; the rest are listed.
 constexpr std::array<std::pair<int, Key>, 28> kNamedKeys{{
-    {GLFW_KEY_SPACE, Key::Space},           {GLFW_KEY_ENTER, Key::Enter},
-    {GLFW_KEY_KP_ENTER, Key::Enter},        {GLFW_KEY_ESCAPE, Key::Escape},
-    {GLFW_KEY_TAB, Key::Tab},               {GLFW_KEY_BACKSPACE, Key::Backspace},
-    {GLFW_KEY_DELETE, Key::Delete},         {GLFW_KEY_LEFT, Key::Left},
-    {GLFW_KEY_RIGHT, Key::Right},           {GLFW_KEY_UP, Key::Up},
-    {GLFW_KEY_DOWN, Key::Down},             {GLFW_KEY_LEFT_SHIFT, Key::LeftShift},
-    {GLFW_KEY_RIGHT_SHIFT, Key::RightShift}, {GLFW_KEY_LEFT_CONTROL, Key::LeftControl},
-    {GLFW_KEY_RIGHT_CONTROL, Key::RightControl}, {GLFW_KEY_LEFT_ALT, Key::LeftAlt},
-    {GLFW_KEY_RIGHT_ALT, Key::RightAlt},    {GLFW_KEY_F1, Key::F1},
-    {GLFW_KEY_F2, Key::F2},                 {GLFW_KEY_F3, Key::F3},
-    {GLFW_KEY_F4, Key::F4},                 {GLFW_KEY_F5, Key::F5},
-    {GLFW_KEY_F6, Key::F6},                 {GLFW_KEY_F7, Key::F7},
-    {GLFW_KEY_F8, Key::F8},                 {GLFW_KEY_F9, Key::F9},
-    {GLFW_KEY_F10, Key::F10},               {GLFW_KEY_F11, Key::F11},
+    {GLFW_KEY_SPACE, Key::Space},
+    {GLFW_KEY_ENTER, Key::Enter},
+    {GLFW_KEY_KP_ENTER, Key::Enter},
+    {GLFW_KEY_ESCAPE, Key::Escape},
+    {GLFW_KEY_TAB, Key::Tab},
+    {GLFW_KEY_BACKSPACE, Key::Backspace},
+    {GLFW_KEY_DELETE, Key::Delete},
+    {GLFW_KEY_LEFT, Key::Left},
+    {GLFW_KEY_RIGHT, Key::Right},
+    {GLFW_KEY_UP, Key::Up},
+    {GLFW_KEY_DOWN, Key::Down},
+    {GLFW_KEY_LEFT_SHIFT, Key::LeftShift},
+    {GLFW_KEY_RIGHT_SHIFT, Key::RightShift},
+    {GLFW_KEY_LEFT_CONTROL, Key::LeftControl},
+    {GLFW_KEY_RIGHT_CONTROL, Key::RightControl},
+    {GLFW_KEY_LEFT_ALT, Key::LeftAlt},
+    {GLFW_KEY_RIGHT_ALT, Key::RightAlt},
+    {GLFW_KEY_F1, Key::F1},
+    {GLFW_KEY_F2, Key::F2},
+    {GLFW_KEY_F3, Key::F3},
+    {GLFW_KEY_F4, Key::F4},
+    {GLFW_KEY_F5, Key::F5},
+    {GLFW_KEY_F6, Key::F6},
+    {GLFW_KEY_F7, Key::F7},
+    {GLFW_KEY_F8, Key::F8},
+    {GLFW_KEY_F9, Key::F9},
+    {GLFW_KEY_F10, Key::F10},
+    {GLFW_KEY_F11, Key::F11},
 }};
 
 GlfwInputGlue* glue_of(GLFWwindow* w) {
@@ -91,12 +105,20 @@ GlfwInputGlue::~GlfwInputGlue() {
   glfwSetWindowUserPointer(window_, nullptr);
 }
 
-std::vector<xr::DesktopEvent> GlfwInputGlue::drain() { return std::exchange(queue_, {}); }
+std::vector<xr::DesktopEvent> GlfwInputGlue::drain() {
+  return std::exchange(queue_, {});
+}
 
 #else
-std::optional<xr::Key> translate_glfw_key(int) { return std::nullopt; }
-std::optional<xr::MouseButton> translate_glfw_mouse_button(int) { return std::nullopt; }
-std::optional<xr::DesktopEvent> key_event(int, int) { return std::nullopt; }
+std::optional<xr::Key> translate_glfw_key(int) {
+  return std::nullopt;
+}
+std::optional<xr::MouseButton> translate_glfw_mouse_button(int) {
+  return std::nullopt;
+}
+std::optional<xr::DesktopEvent> key_event(int, int) {
+  return std::nullopt;
+}
 #endif
 
 }  // namespace vdfx::app

@@ -19,10 +19,9 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <thread>
-
-#include <opencv2/core.hpp>
 
 #include "app/edit_target.h"
 #include "effects/rbf_interpolator.h"
@@ -51,7 +50,7 @@ struct MinimapJob {
 struct MinimapResult {
   std::uint64_t serial = 0;  //!< request() returned it: later requests have larger serials
   MinimapKey key;
-  cv::Mat field;             //!< CV_32FC1, as effect_minimap
+  cv::Mat field;  //!< CV_32FC1, as effect_minimap
 };
 
 class MinimapWorker {

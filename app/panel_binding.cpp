@@ -6,18 +6,11 @@
 #include <cstdio>
 
 #include "app/editor.h"
+#include "app/text_format.h"
 
 namespace vdfx::app {
 
 using effects::EffectType;
-
-namespace {
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-}  // namespace
 
 void handle_panel_event(Editor& ed, EditorPanels& p, const ui::Event& e) {
   using ui::EventKind;
@@ -35,8 +28,10 @@ void handle_panel_event(Editor& ed, EditorPanels& p, const ui::Event& e) {
     if (!changed) return;
     if (w == p.exponent || w == p.time_scale) {
       auto s = doc.interpolation(effect);
-      if (w == p.exponent) s.exponent = e.new_value.x;
-      else s.time_scale = effects::time_scale_from_deg_per_s(e.new_value.x);
+      if (w == p.exponent)
+        s.exponent = e.new_value.x;
+      else
+        s.time_scale = effects::time_scale_from_deg_per_s(e.new_value.x);
       doc.set_interpolation(effect, s);
     } else if (ed.selected_keyframe()) {
       ed.set_selected_params(p.values_of(effect, e, ed.widget_values()));
@@ -83,13 +78,16 @@ void show_editor_state(const Editor& ed, EditorPanels& p) {
   p.show_options(doc.flare(), doc.grain());
   const auto s = doc.interpolation(effect);
   if (!p.exponent->pressed()) p.exponent->set_value(s.exponent);
-  if (!p.time_scale->pressed()) p.time_scale->set_value(effects::deg_per_s_from_time_scale(s.time_scale));
+  if (!p.time_scale->pressed())
+    p.time_scale->set_value(effects::deg_per_s_from_time_scale(s.time_scale));
   p.undo->set_enabled(doc.undo_stack().can_undo());
   p.redo->set_enabled(doc.undo_stack().can_redo());
   const std::string name = effect.title();
   if (const auto& sel = ed.selected_keyframe()) {
-    const std::string which = std::to_string(*sel + 1) + " of " + std::to_string(doc.keyframes(effect).size());
-    p.title->set_text(name + (ed.grabbing() ? " \u2014 moving keyframe " : " \u2014 keyframe ") + which);
+    const std::string which =
+        std::to_string(*sel + 1) + " of " + std::to_string(doc.keyframes(effect).size());
+    p.title->set_text(name + (ed.grabbing() ? " \u2014 moving keyframe " : " \u2014 keyframe ") +
+                      which);
   } else {
     p.title->set_text("Effects \u2014 " + name);
   }

@@ -15,7 +15,8 @@ namespace {
 
 class GlPanelTextures : public PanelTextures {
  public:
-  unsigned upload(std::size_t slot, const cv::Mat& image, const std::vector<cv::Rect>& regions) override {
+  unsigned upload(std::size_t slot, const cv::Mat& image,
+                  const std::vector<cv::Rect>& regions) override {
     if (image.type() != CV_8UC4 || !image.isContinuous())
       throw std::invalid_argument("GlPanelTextures::upload: continuous RGBA8 image expected");
     if (names_.size() <= slot) names_.resize(slot + 1, 0u);
@@ -37,7 +38,8 @@ class GlPanelTextures : public PanelTextures {
       for (const cv::Rect& r : regions) {
         glPixelStorei(GL_UNPACK_SKIP_PIXELS, r.x);
         glPixelStorei(GL_UNPACK_SKIP_ROWS, r.y);
-        glTexSubImage2D(GL_TEXTURE_2D, 0, r.x, r.y, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE, image.data);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, r.x, r.y, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        image.data);
       }
       glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
       glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
@@ -60,12 +62,15 @@ class GlPanelTextures : public PanelTextures {
 
 }  // namespace
 
-std::unique_ptr<PanelTextures> create_gl_panel_textures() { return std::make_unique<GlPanelTextures>(); }
+std::unique_ptr<PanelTextures> create_gl_panel_textures() {
+  return std::make_unique<GlPanelTextures>();
+}
 
 #else
 
 std::unique_ptr<PanelTextures> create_gl_panel_textures() {
-  throw std::runtime_error("this vdfx was built without OpenGL (VDFX_WITH_GL=OFF): no panel textures");
+  throw std::runtime_error(
+      "this vdfx was built without OpenGL (VDFX_WITH_GL=OFF): no panel textures");
 }
 
 #endif

@@ -17,9 +17,15 @@ struct PendingEdit::Scratch {
   effects::Keyframe current;         //!< the pending keyframe as the set has it
 };
 
-PendingEdit::PendingEdit(const Document& document, EditTarget target, std::optional<std::size_t> moved,
-                         effects::Keyframe key, effects::KeyframeSetOptions options, PendingStats& stats)
-    : doc_(document), target_(target), moved_(moved), key_(std::move(key)), options_(options), stats_(stats) {
+PendingEdit::PendingEdit(const Document& document, EditTarget target,
+                         std::optional<std::size_t> moved, effects::Keyframe key,
+                         effects::KeyframeSetOptions options, PendingStats& stats)
+    : doc_(document),
+      target_(target),
+      moved_(moved),
+      key_(std::move(key)),
+      options_(options),
+      stats_(stats) {
   was_changing_ = changes_interpolant();
   version_ = ++stats_.serial;
 }
@@ -47,7 +53,8 @@ std::vector<std::size_t> PendingEdit::replaced() const {
   std::vector<std::size_t> out;
   const auto& ks = doc_.keyframes(target_);
   for (std::size_t i = 0; i < ks.size(); ++i)
-    if (!(moved_ && i == *moved_) && effects::replaces(key_.direction, key_.frame, ks[i])) out.push_back(i);
+    if (!(moved_ && i == *moved_) && effects::replaces(key_.direction, key_.frame, ks[i]))
+      out.push_back(i);
   return out;
 }
 
@@ -55,8 +62,10 @@ namespace {
 /// The document's keyframes without `dropped`, the pending one in place of `moved` (or appended);
 /// `index` receives where it is.
 std::vector<effects::Keyframe> list_without(const std::vector<effects::Keyframe>& ks,
-                                            const std::optional<std::size_t>& moved, const effects::Keyframe& key,
-                                            const std::vector<std::size_t>& dropped, std::size_t& index) {
+                                            const std::optional<std::size_t>& moved,
+                                            const effects::Keyframe& key,
+                                            const std::vector<std::size_t>& dropped,
+                                            std::size_t& index) {
   std::vector<effects::Keyframe> out;
   out.reserve(ks.size() + 1);
   std::size_t d = 0;
@@ -120,14 +129,17 @@ std::shared_ptr<const effects::RbfInterpolator> PendingEdit::interpolant() const
 }
 
 void PendingEdit::seed(std::vector<std::size_t> dropped) const {
-  if (scratch_) scratch_->set.reset();  // its worker (if any) stops before the new one starts
-  else scratch_ = std::make_unique<Scratch>();
+  if (scratch_)
+    scratch_->set.reset();  // its worker (if any) stops before the new one starts
+  else
+    scratch_ = std::make_unique<Scratch>();
   Scratch& s = *scratch_;
   if (!seed_by_clone(dropped)) {
     auto list = list_without(doc_.keyframes(target_), moved_, key_, dropped, s.index);
     s.set.reset();
-    s.set = std::make_unique<effects::KeyframeSet>(target_.dimension(), doc_.interpolation(target_), doc_.video().fps,
-                                                   std::move(list), options_, target_.neutral());
+    s.set = std::make_unique<effects::KeyframeSet>(target_.dimension(), doc_.interpolation(target_),
+                                                   doc_.video().fps, std::move(list), options_,
+                                                   target_.neutral());
     ++stats_.full_seeds;
   }
   s.base = doc_.keyframes(target_);

@@ -2,8 +2,6 @@
 /// @brief Player: playhead, keys, and the sidecar's interpolated effects.
 #include "app/player.h"
 
-#include "io/ycbcr.h"
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -13,6 +11,7 @@
 #include "app/grain_set_of.h"
 #include "effects/effect_shaders.h"
 #include "io/input_error.h"
+#include "io/ycbcr.h"
 
 namespace vdfx::app {
 namespace {
@@ -61,8 +60,8 @@ void Player::on_desktop_event(const xr::DesktopEvent& event) {
 }
 
 void Player::apply_key(xr::Key key, std::int64_t t) {
-  const auto step = static_cast<std::int64_t>(
-      std::llround(options_.seek_step_s * playhead_.fps().value()));
+  const auto step =
+      static_cast<std::int64_t>(std::llround(options_.seek_step_s * playhead_.fps().value()));
   switch (key) {
     case xr::Key::P: playhead_.set_paused(!playhead_.paused(), t); break;
     case xr::Key::B: playhead_.seek_by(-step, t); break;

@@ -47,8 +47,7 @@ void Playhead::seek_to(std::int64_t frame, std::int64_t t_ns) {
 
 void Playhead::seek_by(std::int64_t delta, std::int64_t t_ns) {
   std::int64_t f = frame_at(t_ns) + delta;
-  if (loop_)
-    f = ((f % frames_) + frames_) % frames_;
+  if (loop_) f = ((f % frames_) + frames_) % frames_;
   seek_to(f, t_ns);
 }
 

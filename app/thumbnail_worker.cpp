@@ -4,9 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <utility>
-
 #include <opencv2/imgproc.hpp>
+#include <utility>
 
 #include "io/frame_decoder.h"
 
@@ -23,7 +22,8 @@ ThumbnailWorker::~ThumbnailWorker() {
 std::vector<std::int64_t> ThumbnailWorker::frames_for(std::int64_t frame_count, int count) {
   std::vector<std::int64_t> out;
   for (int k = 0; k < count; ++k)
-    out.push_back(std::min(frame_count - 1, static_cast<std::int64_t>((k + 0.5) * frame_count / count)));
+    out.push_back(
+        std::min(frame_count - 1, static_cast<std::int64_t>((k + 0.5) * frame_count / count)));
   return out;
 }
 

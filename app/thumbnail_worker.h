@@ -14,12 +14,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <mutex>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 namespace vdfx::app {
 

@@ -11,8 +11,10 @@ void UndoStack::push(const std::string& label, EffectChange change) {
     auto& step = done_.back();
     auto it = std::find_if(step.changes.begin(), step.changes.end(),
                            [&](const EffectChange& c) { return c.target == change.target; });
-    if (it != step.changes.end()) it->after = std::move(change.after);
-    else step.changes.push_back(std::move(change));
+    if (it != step.changes.end())
+      it->after = std::move(change.after);
+    else
+      step.changes.push_back(std::move(change));
     // A drag that came back to where it started leaves nothing to undo.
     std::erase_if(step.changes, [](const EffectChange& c) { return c.before == c.after; });
     return;

@@ -25,8 +25,8 @@
 #include "xr/effect_stack_gl.h"
 #include "xr/eye_views.h"
 #include "xr/flare_gl.h"
-#include "xr/grain_gl.h"
 #include "xr/gl_context.h"
+#include "xr/grain_gl.h"
 #include "xr/param_grid.h"
 #include "xr/render_view.h"
 
@@ -44,8 +44,8 @@ cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t fra
   try {
     decoder->seek(frame);
   } catch (const std::exception& e) {
-    throw io::InputError(input.string() + ": cannot seek to frame " + std::to_string(frame) +
-                         ": " + e.what());
+    throw io::InputError(input.string() + ": cannot seek to frame " + std::to_string(frame) + ": " +
+                         e.what());
   }
   cv::Mat image;
   if (decoder->read(image) != io::DecodeStatus::Ok || image.empty())
@@ -67,7 +67,8 @@ xr::DistortionSettings parse_distortion(const std::string& text) {
     int value = 0;
     const auto [ptr, ec] = std::from_chars(n.data(), n.data() + n.size(), value);
     if (n.empty() || ec != std::errc() || ptr != n.data() + n.size() || value < 2 || value > 257)
-      throw std::invalid_argument("'" + io::excerpt(text, 40) + "': N must be a whole number in 2..257");
+      throw std::invalid_argument("'" + io::excerpt(text, 40) +
+                                  "': N must be a whole number in 2..257");
     s.mesh_n = value;
   } else {
     throw std::invalid_argument("'" + io::excerpt(text, 40) + "': expected none, pixel or mesh:N");
@@ -160,11 +161,13 @@ std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input
 
 /// The sidecar's grain layers for a head pose at `frame`, at the request's display time (by
 /// default the frame's own start, so a frame always shows the same grain: docs/grain.md).
-std::vector<effects::GrainFrame> view_grains(const io::Sidecar& sidecar, const effects::HeadPose& head,
+std::vector<effects::GrainFrame> view_grains(const io::Sidecar& sidecar,
+                                             const effects::HeadPose& head,
                                              const RenderRequest& r) {
   if (sidecar.grains.empty()) return {};
   effects::GrainSet grains = grain_set_of(sidecar);
-  const std::int64_t t = r.display_time_ns.value_or(effects::frame_display_time_ns(r.frame, sidecar.video.fps));
+  const std::int64_t t =
+      r.display_time_ns.value_or(effects::frame_display_time_ns(r.frame, sidecar.video.fps));
   return grains.layout(head, t, r.frame);
 }
 
@@ -209,14 +212,14 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
     // (they were GL errors, reported as internal).
     const int max_side = context->max_image_side();
     if (equirect.cols > max_side || equirect.rows > max_side)
-      throw io::InputError(input.string() + ": the frame is " + std::to_string(equirect.cols) + "x" +
-                           std::to_string(equirect.rows) + "; this GL implementation (" +
+      throw io::InputError(input.string() + ": the frame is " + std::to_string(equirect.cols) +
+                           "x" + std::to_string(equirect.rows) + "; this GL implementation (" +
                            context->renderer() + ") takes at most " + std::to_string(max_side) +
                            " pixels per side (render without --gpu)");
     if (r.bake_width > max_side || r.bake_height > max_side)
-      throw UsageError("--bake " + std::to_string(r.bake_width) + "x" + std::to_string(r.bake_height) +
-                       ": this GL implementation takes at most " + std::to_string(max_side) +
-                       " per side");
+      throw UsageError("--bake " + std::to_string(r.bake_width) + "x" +
+                       std::to_string(r.bake_height) + ": this GL implementation takes at most " +
+                       std::to_string(max_side) + " per side");
     cv::Mat bgr_in;
     cv::cvtColor(equirect, bgr_in, cv::COLOR_RGB2BGR);
     xr::GpuViewOptions options;
@@ -244,12 +247,12 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
     const int margin = xr::blur_margin(widest, mask, view, w, h);
     const std::int64_t area_w = w + 2 * margin, area_h = h + 2 * margin;
     if (area_w > max_side || area_h > max_side || area_w * area_h > kGpuRenderLimit.max_pixels)
-      throw UsageError("--size " + std::to_string(w) + "x" + std::to_string(h) + ": with the blur's margin of " +
-                       std::to_string(margin) + " pixels the GPU renders " + std::to_string(area_w) + "x" +
-                       std::to_string(area_h) + "; it takes at most " + std::to_string(max_side) +
-                       " per side (this GL implementation) and " +
-                       std::to_string(kGpuRenderLimit.max_pixels) + " pixels (" + kGpuRenderLimit.example +
-                       ") in all");
+      throw UsageError(
+          "--size " + std::to_string(w) + "x" + std::to_string(h) + ": with the blur's margin of " +
+          std::to_string(margin) + " pixels the GPU renders " + std::to_string(area_w) + "x" +
+          std::to_string(area_h) + "; it takes at most " + std::to_string(max_side) +
+          " per side (this GL implementation) and " + std::to_string(kGpuRenderLimit.max_pixels) +
+          " pixels (" + kGpuRenderLimit.example + ") in all");
     const cv::Mat bgr = xr::render_view_gpu(bgr_in, view, w, h, view_params, mask, options);
     cv::Mat rgb;
     cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);

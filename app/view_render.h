@@ -28,7 +28,7 @@ struct RenderRequest {
   effects::RenderMode mode = effects::RenderMode::View;
   bool gpu = false;
   xr::BlurMethod blur = xr::BlurMethod::Exact;  //!< --gpu only (the CPU blur is the exact gather)
-  int bake_width = 1024, bake_height = 512;    //!< --gpu --mode pixel: the parameter grid
+  int bake_width = 1024, bake_height = 512;     //!< --gpu --mode pixel: the parameter grid
   std::optional<xr::HmdProfile> hmd;
   xr::Eye eye = xr::Eye::Left;
   xr::DistortionSettings distortion{xr::DistortionMethod::None};

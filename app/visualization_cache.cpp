@@ -25,13 +25,14 @@ VisualizationCache::VisualizationCache(VisualizationOptions options, std::int64_
 
 VisualizationCache::~VisualizationCache() = default;
 
-void VisualizationCache::refresh_markers(const Document& doc, const VisualizationInput& in, EditorPanels& panels) {
+void VisualizationCache::refresh_markers(const Document& doc, const VisualizationInput& in,
+                                         EditorPanels& panels) {
   // Markers follow the view: recomputed when it moved by a degree, or the keyframes changed.
   const auto& ks = doc.keyframes(in.effect);
   const int eff = in.effect.index();
   const std::int64_t held_frame = in.held ? in.held->frame : -1;
-  if (markers_.revision == doc.revision() && markers_.effect == eff && angle_deg(markers_.view, in.view) <= 1.0 &&
-      markers_.held_frame == held_frame)
+  if (markers_.revision == doc.revision() && markers_.effect == eff &&
+      angle_deg(markers_.view, in.view) <= 1.0 && markers_.held_frame == held_frame)
     return;
   markers_.near = keyframes_near_view(ks, in.view, options_.marker_cone_deg);
   std::vector<int> frames, highlighted;
@@ -47,14 +48,16 @@ void VisualizationCache::refresh_markers(const Document& doc, const Visualizatio
   markers_.held_frame = held_frame;
 }
 
-void VisualizationCache::refresh(const Document& doc, const VisualizationInput& in, EditorPanels& panels) {
+void VisualizationCache::refresh(const Document& doc, const VisualizationInput& in,
+                                 EditorPanels& panels) {
   const auto& ks = doc.keyframes(in.effect);
   const int eff = in.effect.index();
   refresh_markers(doc, in, panels);
   // While a keyframe is placed, or held away from its place, the track and the field are the
   // pending edit's interpolant (the one the view shows); each new place is a new version.
   const PendingEdit* pending = doc.pending();
-  const bool shows_pending = pending && pending->target() == in.effect && pending->changes_interpolant();
+  const bool shows_pending =
+      pending && pending->target() == in.effect && pending->changes_interpolant();
   std::shared_ptr<const effects::RbfInterpolator> rbf;
   auto interpolant = [&] {
     if (!rbf) rbf = shows_pending ? pending->interpolant() : doc.keyframe_set(in.effect).solution();
@@ -83,8 +86,8 @@ void VisualizationCache::refresh(const Document& doc, const VisualizationInput& 
   }
   {
     const auto it = std::lower_bound(track_.frames.begin(), track_.frames.end(), in.frame);
-    panels.plot->set_playhead(static_cast<int>(
-        std::min<std::ptrdiff_t>(it - track_.frames.begin(), static_cast<std::ptrdiff_t>(track_.frames.size()) - 1)));
+    panels.plot->set_playhead(static_cast<int>(std::min<std::ptrdiff_t>(
+        it - track_.frames.begin(), static_cast<std::ptrdiff_t>(track_.frames.size()) - 1)));
   }
   MinimapKey mk = base;
   mk.frame = in.frame;
@@ -93,23 +96,27 @@ void VisualizationCache::refresh(const Document& doc, const VisualizationInput& 
     minimap_.nearest = nearest_keyframe(ks, in.view, in.frame, s.time_scale, doc.video().fps);
     minimap_.requested = mk;
     if (worker_)
-      worker_->request({mk, interpolant(), in.effect, in.frame, options_.minimap_width, options_.minimap_height});
+      worker_->request({mk, interpolant(), in.effect, in.frame, options_.minimap_width,
+                        options_.minimap_height});
     else
-      show_minimap(mk, effect_minimap(interpolant().get(), in.effect, in.frame, options_.minimap_width,
-                                      options_.minimap_height),
+      show_minimap(mk,
+                   effect_minimap(interpolant().get(), in.effect, in.frame, options_.minimap_width,
+                                  options_.minimap_height),
                    in.effect, panels);
   }
   // A field finished for an earlier frame or edit is shown until the current one is ready (a
   // frame or two while playing large sets); one for another effect is dropped.
   if (worker_)
-    if (auto r = worker_->take(); r && r->key.effect == eff) show_minimap(r->key, std::move(r->field), in.effect, panels);
+    if (auto r = worker_->take(); r && r->key.effect == eff)
+      show_minimap(r->key, std::move(r->field), in.effect, panels);
   {
     // Keyframe dots: the selected one ringed (and carried along while held). Setters compare,
     // so an unchanged set costs no redraw.
     std::vector<effects::Direction> dirs;
     for (std::size_t i = 0; i < ks.size(); ++i)
       dirs.push_back(in.held && i == *in.selected ? in.held->direction : ks[i].direction);
-    panels.minimap->set_keyframes(std::move(dirs), minimap_.nearest ? static_cast<int>(*minimap_.nearest) : -1,
+    panels.minimap->set_keyframes(std::move(dirs),
+                                  minimap_.nearest ? static_cast<int>(*minimap_.nearest) : -1,
                                   in.selected ? static_cast<int>(*in.selected) : -1);
   }
   panels.minimap->set_view(in.view, in.view_hfov_deg, in.view_vfov_deg);
@@ -124,7 +131,8 @@ void VisualizationCache::show_minimap(const MinimapKey& key, cv::Mat field, Edit
   ++minimap_.computations;
 }
 
-bool VisualizationCache::wait(std::chrono::milliseconds timeout, EditTarget effect, EditorPanels& panels) {
+bool VisualizationCache::wait(std::chrono::milliseconds timeout, EditTarget effect,
+                              EditorPanels& panels) {
   if (worker_ && worker_->wait_idle(timeout))
     if (auto r = worker_->take(); r && r->key.effect == effect.index())
       show_minimap(r->key, std::move(r->field), effect, panels);

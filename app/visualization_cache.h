@@ -15,10 +15,9 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "app/minimap_worker.h"
 #include "effects/keyframe.h"
@@ -46,7 +45,7 @@ struct VisualizationInput {
   std::optional<std::size_t> selected;
   /// The selected keyframe where a grab holds it now (else as it is); nullopt without selection.
   std::optional<effects::Keyframe> held;
-  bool previewing = false;  //!< a new keyframe is placed at the playhead
+  bool previewing = false;                            //!< a new keyframe is placed at the playhead
   double view_hfov_deg = 90.0, view_vfov_deg = 90.0;  //!< the footprint drawn on the minimap
 };
 
@@ -89,8 +88,8 @@ class VisualizationCache {
     std::vector<std::int64_t> frames;
   };
   struct Minimap {
-    MinimapKey shown;      //!< what the field shown was computed for
-    MinimapKey requested;  //!< what it should show now
+    MinimapKey shown;                    //!< what the field shown was computed for
+    MinimapKey requested;                //!< what it should show now
     std::optional<std::size_t> nearest;  //!< nearest keyframe at the last request
     cv::Mat field;
     int computations = 0;

@@ -29,8 +29,8 @@ std::vector<std::int64_t> track_sample_frames(std::int64_t frame_count, int max_
     return out;
   }
   for (int i = 0; i < max_samples; ++i)
-    out.push_back(static_cast<std::int64_t>(
-        std::llround(static_cast<double>(i) * static_cast<double>(frame_count - 1) / (max_samples - 1))));
+    out.push_back(static_cast<std::int64_t>(std::llround(
+        static_cast<double>(i) * static_cast<double>(frame_count - 1) / (max_samples - 1))));
   return out;
 }
 
@@ -43,7 +43,8 @@ double value_at(const effects::RbfInterpolator* rbf, EditTarget target, const Ei
   const Eigen::VectorXd v = solved ? rbf->evaluate(unit, frame) : Eigen::VectorXd();
   if (const auto type = target.stack_effect()) {
     effects::StackParams sp;
-    if (solved) sp.set(*type, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
+    if (solved)
+      sp.set(*type, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
     return display_value(target, sp.get(*type));
   }
   const auto& first = target.params().front();
@@ -71,8 +72,8 @@ cv::Mat effect_minimap(const effects::RbfInterpolator* rbf, EditTarget target, s
   for (int y = 0; y < height; ++y) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return {};
     for (int x = 0; x < width; ++x)
-      field.at<float>(y, x) = static_cast<float>(
-          value_at(rbf, target, effects::to_unit(minimap_cell_direction(x, y, width, height)), frame));
+      field.at<float>(y, x) = static_cast<float>(value_at(
+          rbf, target, effects::to_unit(minimap_cell_direction(x, y, width, height)), frame));
   }
   return field;
 }
@@ -82,7 +83,8 @@ std::vector<std::size_t> keyframes_near_view(std::span<const effects::Keyframe> 
   const Eigen::Vector3d v = effects::to_unit(view);
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < keyframes.size(); ++i)
-    if (effects::angle_between(v, effects::to_unit(keyframes[i].direction)) * effects::kRadToDeg <= cone_deg)
+    if (effects::angle_between(v, effects::to_unit(keyframes[i].direction)) * effects::kRadToDeg <=
+        cone_deg)
       out.push_back(i);
   return out;
 }
@@ -95,7 +97,8 @@ std::optional<std::size_t> nearest_keyframe(std::span<const effects::Keyframe> k
   double best_d = 0.0;
   for (std::size_t i = 0; i < keyframes.size(); ++i) {
     const double a = effects::angle_between(v, effects::to_unit(keyframes[i].direction));
-    const double dt = static_cast<double>(std::llabs(keyframes[i].frame - frame)) * (24.0 / fps) * time_scale;
+    const double dt =
+        static_cast<double>(std::llabs(keyframes[i].frame - frame)) * (24.0 / fps) * time_scale;
     const double d = std::hypot(a, dt);
     if (!best || d < best_d) best = i, best_d = d;
   }

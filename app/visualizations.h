@@ -6,11 +6,10 @@
 
 #include <atomic>
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <span>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "app/edit_target.h"
 #include "effects/keyframe.h"
@@ -37,9 +36,8 @@ std::vector<double> effect_track(const effects::RbfInterpolator* rbf, EditTarget
 /// display_value over an equirect grid (CV_32FC1, width x height, row 0 at the top); cell (x, y)
 /// is the direction at uv ((x + 0.5) / width, (y + 0.5) / height). `cancel` (optional) is
 /// polled between rows: once true, an empty Mat is returned (MinimapWorker's shutdown).
-cv::Mat effect_minimap(const effects::RbfInterpolator* rbf, EditTarget target,
-                       std::int64_t frame, int width, int height,
-                       const std::atomic<bool>* cancel = nullptr);
+cv::Mat effect_minimap(const effects::RbfInterpolator* rbf, EditTarget target, std::int64_t frame,
+                       int width, int height, const std::atomic<bool>* cancel = nullptr);
 effects::Direction minimap_cell_direction(int x, int y, int width, int height);
 
 /// Indices of the keyframes within `cone_deg` of the view direction (any frame).

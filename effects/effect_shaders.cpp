@@ -70,8 +70,8 @@ std::string level_function(int levels) {
   s += "vec3 blur_level(int j, vec2 p) {\n  switch (j) {\n";
   for (int j = 1; j <= levels; ++j) {
     const std::string n = "u_level" + std::to_string(j), k = std::to_string(j - 1);
-    s += "    case " + std::to_string(j) + ": return textureLod(" + n + ", p / (u_level_scale[" + k +
-         "] * vec2(textureSize(" + n + ", 0))), 0.0).rgb;\n";
+    s += "    case " + std::to_string(j) + ": return textureLod(" + n + ", p / (u_level_scale[" +
+         k + "] * vec2(textureSize(" + n + ", 0))), 0.0).rgb;\n";
   }
   s += "  }\n  return texelFetch(u_src, ivec2(p), 0).rgb;\n}\n";
   return s;
@@ -82,7 +82,9 @@ std::string level_function(int levels) {
 std::string stack_fragment_source(const StackShader& v) {
   using B = StackShader::Blur;
   std::string s;
-  const auto def = [&](const char* name, bool on) { s += std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
+  const auto def = [&](const char* name, bool on) {
+    s += std::string("#define ") + name + (on ? " 1\n" : " 0\n");
+  };
   const auto has = [&](EffectType t) { return (v.mask & shader_bit(t)) != 0; };
   def("HAS_TINT", has(EffectType::Tint));
   def("HAS_EXPOSURE", has(EffectType::Exposure));
@@ -205,7 +207,8 @@ void main() {
 std::string stack_fragment_source(unsigned mask) {
   StackShader v;
   v.mask = mask;
-  v.blur = (mask & shader_bit(EffectType::Blur)) ? StackShader::Blur::FusedVertical : StackShader::Blur::None;
+  v.blur = (mask & shader_bit(EffectType::Blur)) ? StackShader::Blur::FusedVertical
+                                                 : StackShader::Blur::None;
   return stack_fragment_source(v);
 }
 

@@ -23,7 +23,9 @@
 namespace vdfx::effects {
 
 /// Bit of one effect in a shader mask.
-constexpr unsigned shader_bit(EffectType t) { return 1u << static_cast<unsigned>(t); }
+constexpr unsigned shader_bit(EffectType t) {
+  return 1u << static_cast<unsigned>(t);
+}
 inline constexpr unsigned kAllEffectsMask = (1u << kEffectCount) - 1u;
 
 /// The effects of `p` that change some pixel (StackParams::is_neutral is false).
@@ -35,7 +37,7 @@ inline constexpr int kMaxBlurLevels = 12;
 /// One variant of the stack pass.
 struct StackShader {
   enum class Blur { None, FusedVertical, Blurred, Levels };
-  unsigned mask = 0;      //!< effects compiled in (blur's bit is implied by `blur`)
+  unsigned mask = 0;  //!< effects compiled in (blur's bit is implied by `blur`)
   Blur blur = Blur::None;
   bool per_pixel = false;  //!< parameters from the grid textures instead of uniforms
   int levels = 0;          //!< Levels: number of blurred levels (1..kMaxBlurLevels)
@@ -61,10 +63,10 @@ std::string downsample_fragment_source();
 /// u_centre_weight (as blur_1d, vertical); Blurred: u_blurred, u_blurred_scale (source pixels per
 /// texel of u_blurred); Levels: u_level1..u_levelN, u_level_scale[N], u_tau1_deg,
 /// u_level_log2r (log2 of the level ratio r); view mode: u_tint (vec3 gain), u_exposure_gain
-/// (2^stops), u_saturation, u_contrast, u_vignette (radius, falloff in radians); per_pixel: u_grid0 (tint r, g, b, stops), u_grid1 (saturation, contrast,
-/// vignette radius and falloff in radians), u_grid2 (blur sigma in degrees), u_rot (eye ->
-/// world); geometry: u_tan (left, right, down, up tangents), u_size (pixels), u_centre_tan
-/// (optical centre).
+/// (2^stops), u_saturation, u_contrast, u_vignette (radius, falloff in radians); per_pixel: u_grid0
+/// (tint r, g, b, stops), u_grid1 (saturation, contrast, vignette radius and falloff in radians),
+/// u_grid2 (blur sigma in degrees), u_rot (eye -> world); geometry: u_tan (left, right, down, up
+/// tangents), u_size (pixels), u_centre_tan (optical centre).
 std::string stack_fragment_source(const StackShader& variant);
 /// View-mode variant of `mask` with the exact (fused) blur.
 std::string stack_fragment_source(unsigned mask);

@@ -87,8 +87,8 @@ cv::Mat apply_colour_stack(const cv::Mat& rgb, const StackParams& p, const cv::M
       const auto* ang = angle_deg.ptr<double>(j);
       auto* o = out.ptr<cv::Vec3f>(j);
       for (int i = 0; i < rgb.cols; ++i) {
-        const Eigen::Vector3d c = apply_colour_stack(
-            Eigen::Vector3d(in[i][0], in[i][1], in[i][2]), p, ang[i]);
+        const Eigen::Vector3d c =
+            apply_colour_stack(Eigen::Vector3d(in[i][0], in[i][1], in[i][2]), p, ang[i]);
         o[i] = cv::Vec3f(static_cast<float>(c.x()), static_cast<float>(c.y()),
                          static_cast<float>(c.z()));
       }

@@ -3,9 +3,9 @@
 /// values"), in the paper's order: blur, tint, exposure, saturation, contrast, vignette.
 ///
 /// Colours are RGB (not OpenCV's BGR) in the video's encoded values, nominally [0, 1], with no
-/// linearisation; images are CV_32FC3. Every formula is computed in double per pixel, each effect on
-/// the output of the one before, with no clamping in between: clamp_output() (or to_rgb8() of the
-/// view renderer) clamps once at the very end. An effect at its neutral value is skipped
+/// linearisation; images are CV_32FC3. Every formula is computed in double per pixel, each effect
+/// on the output of the one before, with no clamping in between: clamp_output() (or to_rgb8() of
+/// the view renderer) clamps once at the very end. An effect at its neutral value is skipped
 /// (StackParams::is_neutral), so it is exactly the identity.
 #pragma once
 

@@ -41,7 +41,9 @@ std::optional<EffectType> effect_type_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-std::string_view effect_name(EffectType type) { return effect_spec(type).name; }
+std::string_view effect_name(EffectType type) {
+  return effect_spec(type).name;
+}
 
 Eigen::Vector3d normalize_tint(const Eigen::Vector3d& gain) {
   const double luma = kLumaR * gain.x() + kLumaG * gain.y() + kLumaB * gain.z();
@@ -50,7 +52,9 @@ Eigen::Vector3d normalize_tint(const Eigen::Vector3d& gain) {
 }
 
 namespace {
-double clamp_to(const ParamSpec& p, double v) { return std::clamp(v, p.min, p.max); }
+double clamp_to(const ParamSpec& p, double v) {
+  return std::clamp(v, p.min, p.max);
+}
 }  // namespace
 
 void StackParams::set(EffectType type, std::span<const double> values) {
@@ -62,8 +66,8 @@ void StackParams::set(EffectType type, std::span<const double> values) {
   switch (type) {
     case EffectType::Blur: blur_sigma_deg = clamp_to(p0, values[0]); break;
     case EffectType::Tint:
-      tint_gain = normalize_tint({clamp_to(p0, values[0]), clamp_to(p0, values[1]),
-                                  clamp_to(p0, values[2])});
+      tint_gain = normalize_tint(
+          {clamp_to(p0, values[0]), clamp_to(p0, values[1]), clamp_to(p0, values[2])});
       break;
     case EffectType::Exposure: exposure_stops = clamp_to(p0, values[0]); break;
     case EffectType::Saturation: saturation = clamp_to(p0, values[0]); break;

@@ -4,11 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
-#include <vector>
-
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <vector>
 
 namespace vdfx::effects {
 namespace {
@@ -16,7 +15,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 /// Altitude (radians) of row y's texel centres in an image `h` rows high.
-double row_altitude(int y, int h) { return 0.5 * kPi - (y + 0.5) * kPi / h; }
+double row_altitude(int y, int h) {
+  return 0.5 * kPi - (y + 0.5) * kPi / h;
+}
 
 /// The exact angular gather at this image's own resolution (sigma in radians).
 cv::Mat gather(const cv::Mat& img, double sigma) {
@@ -126,7 +127,8 @@ cv::Vec3f sample_level(const cv::Mat& level, int x, int y, int w, int h) {
   const int xa = ((x0 % level.cols) + level.cols) % level.cols, xb = (xa + 1) % level.cols;
   const int ya = std::clamp(y0, 0, level.rows - 1), yb = std::clamp(y0 + 1, 0, level.rows - 1);
   const cv::Vec3f top = level.at<cv::Vec3f>(ya, xa) * (1 - fx) + level.at<cv::Vec3f>(ya, xb) * fx;
-  const cv::Vec3f bottom = level.at<cv::Vec3f>(yb, xa) * (1 - fx) + level.at<cv::Vec3f>(yb, xb) * fx;
+  const cv::Vec3f bottom =
+      level.at<cv::Vec3f>(yb, xa) * (1 - fx) + level.at<cv::Vec3f>(yb, xb) * fx;
   return top * (1 - fy) + bottom * fy;
 }
 
@@ -145,7 +147,8 @@ cv::Mat blur_equirect(const cv::Mat& rgb, double sigma_deg) {
   cv::Mat out(rgb.size(), CV_32FC3);
   cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& r) {
     for (int y = r.start; y < r.end; ++y)
-      for (int x = 0; x < rgb.cols; ++x) out.at<cv::Vec3f>(y, x) = sample_level(level.image, x, y, rgb.cols, rgb.rows);
+      for (int x = 0; x < rgb.cols; ++x)
+        out.at<cv::Vec3f>(y, x) = sample_level(level.image, x, y, rgb.cols, rgb.rows);
   });
   return out;
 }
@@ -153,7 +156,8 @@ cv::Mat blur_equirect(const cv::Mat& rgb, double sigma_deg) {
 cv::Mat blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, double ratio) {
   check_input(rgb);
   if (sigma_deg.size() != rgb.size() || sigma_deg.type() != CV_32FC1)
-    throw std::invalid_argument("equirect blur: the sigma map must be CV_32FC1 of the image's size");
+    throw std::invalid_argument(
+        "equirect blur: the sigma map must be CV_32FC1 of the image's size");
   if (!(ratio > 1.0)) throw std::invalid_argument("equirect blur: level ratio must exceed 1");
   double max_sigma = 0.0;
   cv::minMaxLoc(sigma_deg, nullptr, &max_sigma);
@@ -180,8 +184,10 @@ cv::Mat blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, doub
         while (k + 1 < levels.size() && levels[k].sigma_deg < s) ++k;
         const Level& a = levels[k - 1];
         const Level& b = levels[k];
-        const float t = static_cast<float>(std::clamp((s - a.sigma_deg) / (b.sigma_deg - a.sigma_deg), 0.0, 1.0));
-        dst[x] = sample_level(a.image, x, y, w, h) * (1.0f - t) + sample_level(b.image, x, y, w, h) * t;
+        const float t = static_cast<float>(
+            std::clamp((s - a.sigma_deg) / (b.sigma_deg - a.sigma_deg), 0.0, 1.0));
+        dst[x] =
+            sample_level(a.image, x, y, w, h) * (1.0f - t) + sample_level(b.image, x, y, w, h) * t;
       }
     }
   });

@@ -29,6 +29,7 @@ cv::Mat blur_equirect(const cv::Mat& rgb, double sigma_deg);
 
 /// Angular Gaussian blur with a sigma per pixel (`sigma_deg`: CV_32FC1, the image's size,
 /// degrees, >= 0) by mixing blur_equirect levels. Pixels with sigma 0 are unchanged.
-cv::Mat blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, double ratio = 1.4142135623730951);
+cv::Mat blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg,
+                              double ratio = 1.4142135623730951);
 
 }  // namespace vdfx::effects

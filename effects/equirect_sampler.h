@@ -1,5 +1,6 @@
 /// @file
-/// @brief Sampling an equirect image at a direction (contract: u = 0.5 + az/360, v = 0.5 - alt/180).
+/// @brief Sampling an equirect image at a direction (contract: u = 0.5 + az/360, v = 0.5 -
+/// alt/180).
 ///
 /// Images are RGB (not OpenCV's BGR: io converts at load time), CV_32FC3, encoded values (no
 /// linearisation). Bilinear filtering with texel centres at (i + 0.5) / W: columns wrap at the
@@ -10,9 +11,9 @@
 /// Near the poles one view pixel covers many equirect columns (a row's length shrinks with
 /// cos(altitude)), so plain bilinear sampling aliases there. The area-aware filter keeps a
 /// "ripmap": levels (lx, ly) of width W / 2^lx and height H / 2^ly (ly <= lx, box-averaged with
-/// cv::resize INTER_AREA), and picks lx from the footprint's horizontal extent in texels and ly from
-/// its vertical extent, blending linearly between neighbouring levels (4 bilinear lookups). The
-/// horizontal level can thus grow towards the poles without blurring vertically.
+/// cv::resize INTER_AREA), and picks lx from the footprint's horizontal extent in texels and ly
+/// from its vertical extent, blending linearly between neighbouring levels (4 bilinear lookups).
+/// The horizontal level can thus grow towards the poles without blurring vertically.
 #pragma once
 
 #include <Eigen/Core>

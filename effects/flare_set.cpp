@@ -23,7 +23,8 @@ FlareSet::FlareSet(std::vector<FlareEffect> flares, const InterpolationSettings&
   replace_flares(std::move(flares), defaults, fps);
 }
 
-void FlareSet::replace_flares(std::vector<FlareEffect> flares, const InterpolationSettings& defaults, double fps) {
+void FlareSet::replace_flares(std::vector<FlareEffect> flares,
+                              const InterpolationSettings& defaults, double fps) {
   std::vector<std::shared_ptr<const RbfInterpolator>> intensity;
   bool uses_auto = false;
   for (const FlareEffect& f : flares) {

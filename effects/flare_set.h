@@ -40,7 +40,8 @@ class FlareSet {
 
   /// New flares (an editor's edit), solved like the constructor's. The auto-light tracker keeps
   /// what it measured: it is about the video, not the flares.
-  void replace_flares(std::vector<FlareEffect> flares, const InterpolationSettings& defaults, double fps);
+  void replace_flares(std::vector<FlareEffect> flares, const InterpolationSettings& defaults,
+                      double fps);
   /// Flare k's intensity from another solution of its keyframes (an editor's pending edit);
   /// dimension 1.
   void set_intensity(std::size_t k, std::shared_ptr<const RbfInterpolator> intensity);

@@ -115,9 +115,9 @@ cv::Mat blur_opencv(const cv::Mat& src, double sigma_x_px, double sigma_y_px) {
   const double sx = sigma_x_px > 0.0 ? sigma_x_px : 1e-9;
   const double sy = sigma_y_px > 0.0 ? sigma_y_px : 1e-9;
   cv::Mat dst;
-  cv::GaussianBlur(src, dst,
-                   cv::Size(2 * gaussian_radius(sigma_x_px) + 1, 2 * gaussian_radius(sigma_y_px) + 1),
-                   sx, sy, cv::BORDER_REPLICATE);
+  cv::GaussianBlur(
+      src, dst, cv::Size(2 * gaussian_radius(sigma_x_px) + 1, 2 * gaussian_radius(sigma_y_px) + 1),
+      sx, sy, cv::BORDER_REPLICATE);
   return dst;
 }
 

@@ -19,7 +19,8 @@ GrainInterpolator::GrainInterpolator(const GrainEffect& e, const InterpolationSe
     : rbf_(std::make_shared<const RbfInterpolator>(
           e.keyframes, kGrainParamCount, e.interpolation.value_or(defaults), fps, neutral())) {}
 
-GrainInterpolator::GrainInterpolator(std::shared_ptr<const RbfInterpolator> rbf) : rbf_(std::move(rbf)) {
+GrainInterpolator::GrainInterpolator(std::shared_ptr<const RbfInterpolator> rbf)
+    : rbf_(std::move(rbf)) {
   if (!rbf_ || rbf_->dimension() != kGrainParamCount)
     throw std::invalid_argument("GrainInterpolator: a two-value interpolant is needed");
 }

@@ -24,7 +24,8 @@ std::string out_of_range(const char* name, double v, const std::string& range) {
 std::optional<std::string> exponent_problem(double exponent) {
   // Written so that NaN fails too.
   if (exponent > kExponentMin && exponent < kExponentMax) return std::nullopt;
-  return out_of_range("exponent", exponent, "(" + num(kExponentMin) + ", " + num(kExponentMax) + ")");
+  return out_of_range("exponent", exponent,
+                      "(" + num(kExponentMin) + ", " + num(kExponentMax) + ")");
 }
 
 std::optional<std::string> time_scale_problem(double time_scale) {
@@ -37,7 +38,8 @@ std::optional<std::string> interpolation_problem(const InterpolationSettings& s)
   if (auto p = exponent_problem(s.exponent)) return p;
   if (auto p = time_scale_problem(s.time_scale)) return p;
   if (s.distance != AngularDistance::Chordal && s.distance != AngularDistance::Geodesic)
-    return "distance " + std::to_string(static_cast<int>(s.distance)) + " is neither chordal nor geodesic";
+    return "distance " + std::to_string(static_cast<int>(s.distance)) +
+           " is neither chordal nor geodesic";
   if (s.outside != TimeOutside::Hold && s.outside != TimeOutside::Extrapolate)
     return "outside_span " + std::to_string(static_cast<int>(s.outside)) +
            " is neither hold nor extrapolate";

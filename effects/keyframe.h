@@ -41,8 +41,8 @@ struct InterpolationSettings {
 
 /// Accepted ranges (sidecar validation and the RBF agree on these). Exponent 2 is accepted and
 /// handled explicitly by the solver (r^2 is a polynomial kernel; see docs/interpolation.md).
-inline constexpr double kExponentMin = 0.0;  //!< exclusive
-inline constexpr double kExponentMax = 4.0;  //!< exclusive
+inline constexpr double kExponentMin = 0.0;   //!< exclusive
+inline constexpr double kExponentMax = 4.0;   //!< exclusive
 inline constexpr double kTimeScaleMin = 0.0;  //!< exclusive: time must separate frames
 inline constexpr double kTimeScaleMax = 1000.0;
 
@@ -53,7 +53,9 @@ inline constexpr double kDegreesPerRadian = 57.295779513082320876798;
 constexpr double time_scale_from_deg_per_s(double deg_per_s) {
   return deg_per_s / (24.0 * kDegreesPerRadian);
 }
-constexpr double deg_per_s_from_time_scale(double c) { return c * 24.0 * kDegreesPerRadian; }
+constexpr double deg_per_s_from_time_scale(double c) {
+  return c * 24.0 * kDegreesPerRadian;
+}
 
 /// The time scale vdfx writes into new documents: one second of video weighs like
 /// kAuthorDegPerSecond degrees of view (docs/interpolation.md, "Time" explains the choice

@@ -58,7 +58,9 @@ struct KeyframeSet::State {
 namespace {
 
 /// Spare slots kept after a full solve: edits add this many centres before a reallocation.
-int spare_slots(int n) { return std::max(32, n / 8); }
+int spare_slots(int n) {
+  return std::max(32, n / 8);
+}
 
 /// Exchanges slots j and l = n - 1 of the symmetric matrix whose lower triangle is stored in
 /// s.topLeftCorner(n, n) (a symmetric permutation: rows and columns together), O(n).
@@ -117,12 +119,9 @@ void symmetric_column(const Eigen::MatrixXd& s, int j, int n, Eigen::VectorXd& o
 
 namespace {
 
-std::shared_ptr<const RbfInterpolator> make_interpolator(const RbfPoints& points,
-                                                         const RbfKernel& kernel,
-                                                         const PolynomialBasis& basis,
-                                                         const Eigen::MatrixXd& z,
-                                                         const RbfDiagnostics& diagnostics,
-                                                         const Eigen::VectorXd& neutral) {
+std::shared_ptr<const RbfInterpolator> make_interpolator(
+    const RbfPoints& points, const RbfKernel& kernel, const PolynomialBasis& basis,
+    const Eigen::MatrixXd& z, const RbfDiagnostics& diagnostics, const Eigen::VectorXd& neutral) {
   RbfSolution s;
   s.coefficients = z.topRows(basis.size());
   s.weights = z.middleRows(basis.size(), points.size());
@@ -163,8 +162,8 @@ std::unique_ptr<KeyframeSet::State> KeyframeSet::solve_full(const std::vector<Ke
   st->keyframe_of_centre.assign(static_cast<size_t>(st->m()), -1);
   for (size_t k = 0; k < st->centre_of_keyframe.size(); ++k)
     st->keyframe_of_centre[static_cast<size_t>(st->centre_of_keyframe[k])] = static_cast<int>(k);
-  st->interpolator = make_interpolator(st->points, kernel, st->basis, st->z,
-                                       st->diagnostics, neutral);
+  st->interpolator =
+      make_interpolator(st->points, kernel, st->basis, st->z, st->diagnostics, neutral);
   return st;
 }
 
@@ -235,8 +234,10 @@ std::unique_ptr<KeyframeSet> KeyframeSet::clone(KeyframeSetOptions options) cons
     // has adopted yet (ready_ is only read under the publication lock).
     std::lock_guard lock(pub_mu_);
     const State* exact = nullptr;
-    if (state_ && state_->version == version_) exact = state_.get();
-    else if (ready_ && ready_->version == version_) exact = ready_.get();
+    if (state_ && state_->version == version_)
+      exact = state_.get();
+    else if (ready_ && ready_->version == version_)
+      exact = ready_.get();
     if (exact && published_version_ == version_) st = std::make_unique<State>(*exact);
   }
   if (st) {
@@ -288,8 +289,7 @@ std::uint64_t KeyframeSet::solution_version() const {
   return published_version_;
 }
 
-bool KeyframeSet::wait_for_version(std::uint64_t version,
-                                   std::chrono::milliseconds timeout) const {
+bool KeyframeSet::wait_for_version(std::uint64_t version, std::chrono::milliseconds timeout) const {
   std::unique_lock lock(pub_mu_);
   return pub_cv_.wait_for(lock, timeout, [&] { return published_version_ >= version; });
 }
@@ -301,8 +301,8 @@ void KeyframeSet::adopt_worker_result() {
 }
 
 bool replaces(const Direction& direction, std::int64_t frame, const Keyframe& other) {
-  return other.frame == frame &&
-         angle_between(to_unit(direction), to_unit(other.direction)) <= kReplaceAngleDeg * kDegToRad;
+  return other.frame == frame && angle_between(to_unit(direction), to_unit(other.direction)) <=
+                                     kReplaceAngleDeg * kDegToRad;
 }
 
 std::optional<std::size_t> KeyframeSet::find_coincident(const Direction& d, std::int64_t frame,
@@ -330,8 +330,7 @@ bool KeyframeSet::try_add_centre(std::size_t ki) {
   Eigen::VectorXd b(n);
   st.basis.row(dir, t, b.data());
   kernel_row(st.points, kernel_, dir, t, b.tail(m).array());
-  const Eigen::VectorXd u =
-      st.inverse.topLeftCorner(n, n).selfadjointView<Eigen::Lower>() * b;
+  const Eigen::VectorXd u = st.inverse.topLeftCorner(n, n).selfadjointView<Eigen::Lower>() * b;
   const double s = -b.dot(u);  // Schur complement: 0 - b^T M^-1 b
   if (!(std::abs(s) > 1e-13 * b.norm() * u.norm())) return false;
   if (st.reserve(n + 1)) ++stats_.storage_growths;
@@ -423,8 +422,7 @@ bool KeyframeSet::finish_incremental(int checked_centre) {
   st.diagnostics.refined = refined;
   st.diagnostics.max_residual = check;
   st.diagnostics.relative_residual = scale > 0 ? check / scale : check;
-  st.interpolator =
-      make_interpolator(st.points, kernel_, st.basis, st.z, st.diagnostics, neutral_);
+  st.interpolator = make_interpolator(st.points, kernel_, st.basis, st.z, st.diagnostics, neutral_);
   publish(st.interpolator, version_);
   return true;
 }

@@ -37,7 +37,7 @@ inline constexpr double kReplaceAngleDeg = 0.5;
 bool replaces(const Direction& direction, std::int64_t frame, const Keyframe& other);
 
 struct KeyframeSetOptions {
-  bool async = true;               //!< false: full re-solves inline (batch tools, tests)
+  bool async = true;  //!< false: full re-solves inline (batch tools, tests)
   //! Relative residual above which an update falls back to a full solve. Bordered updates of an
   //! explicit inverse carry ~cond * eps error (2e-9 at N = 1000 random keyframes, cond 3e7).
   double residual_tolerance = 1e-8;

@@ -143,7 +143,9 @@ Eigen::Vector2d EyeLens::tan_to_pixel(const Eigen::Vector2d& t) const {
   return fov.pixel_at(t, width, height);
 }
 
-Eigen::Vector2d EyeLens::tan_to_uv(const Eigen::Vector2d& t) const { return fov.uv_of(t); }
+Eigen::Vector2d EyeLens::tan_to_uv(const Eigen::Vector2d& t) const {
+  return fov.uv_of(t);
+}
 
 ChannelSamples panel_source_uv(const EyeLens& eye, const Eigen::Vector2d& px, bool lca_correction,
                                InverseMethod method) {

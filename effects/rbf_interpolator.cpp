@@ -33,9 +33,8 @@ RbfInterpolator::RbfInterpolator(std::span<const Keyframe> keyframes, int dimens
   find_frame_span();
 }
 
-RbfInterpolator::RbfInterpolator(RbfPoints points, const RbfKernel& kernel,
-                                 PolynomialBasis basis, const RbfSolution& solution,
-                                 Eigen::VectorXd neutral)
+RbfInterpolator::RbfInterpolator(RbfPoints points, const RbfKernel& kernel, PolynomialBasis basis,
+                                 const RbfSolution& solution, Eigen::VectorXd neutral)
     : points_(std::move(points)),
       kernel_(kernel),
       basis_(std::move(basis)),

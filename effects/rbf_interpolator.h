@@ -56,7 +56,7 @@ class RbfInterpolator {
  private:
   void find_frame_span();
 
-  RbfPoints points_;          // structure of arrays: x, y, z, t contiguous
+  RbfPoints points_;  // structure of arrays: x, y, z, t contiguous
   RbfKernel kernel_;
   PolynomialBasis basis_;
   Eigen::MatrixXd weights_t_;  // D x m: one column per centre

@@ -20,12 +20,12 @@ namespace vdfx::effects {
 inline constexpr double kMergeChordTolerance = 1e-12;
 
 struct RbfPoints {
-  Eigen::ArrayXd x, y, z;          //!< unit direction of each centre (OpenXR axes)
-  Eigen::ArrayXd t;                //!< frame - frame_origin, an exact integer
+  Eigen::ArrayXd x, y, z;           //!< unit direction of each centre (OpenXR axes)
+  Eigen::ArrayXd t;                 //!< frame - frame_origin, an exact integer
   std::vector<std::int64_t> frame;  //!< the frame of each centre
   std::int64_t frame_origin = 0;
-  Eigen::MatrixXd values;          //!< m x D: the (averaged) parameters
-  std::vector<int> counts;         //!< keyframes merged into each centre
+  Eigen::MatrixXd values;              //!< m x D: the (averaged) parameters
+  std::vector<int> counts;             //!< keyframes merged into each centre
   std::vector<int> point_of_keyframe;  //!< input keyframe -> centre
 
   int size() const { return static_cast<int>(x.size()); }

@@ -19,11 +19,11 @@
 namespace vdfx::effects {
 
 enum class RbfSolveMethod {
-  Empty,           //!< no keyframes
-  Polynomial,      //!< one centre: the constant only
+  Empty,       //!< no keyframes
+  Polynomial,  //!< one centre: the constant only
   NullSpaceCholesky,
-  NullSpaceLu,     //!< Cholesky failed: the projected block is not definite
-  LeastSquares,    //!< the projected block is singular: minimum-norm solution
+  NullSpaceLu,   //!< Cholesky failed: the projected block is not definite
+  LeastSquares,  //!< the projected block is singular: minimum-norm solution
 };
 std::string_view to_string(RbfSolveMethod m);
 
@@ -33,8 +33,8 @@ struct RbfDiagnostics {
   int merged = 0;        //!< keyframes - centres
   int active_terms = 0;  //!< polynomial columns kept (of 1, x, y, z, t)
   RbfSolveMethod method = RbfSolveMethod::Empty;
-  double max_residual = 0.0;       //!< max |interpolant - value| over the centres, absolute
-  double relative_residual = 0.0;  //!< max_residual / max |value| (0 when all values are 0)
+  double max_residual = 0.0;        //!< max |interpolant - value| over the centres, absolute
+  double relative_residual = 0.0;   //!< max_residual / max |value| (0 when all values are 0)
   double condition_estimate = 1.0;  //!< 1-norm condition estimate of the projected block
   bool refined = false;             //!< an iterative refinement step ran
 };

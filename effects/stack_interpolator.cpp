@@ -18,9 +18,8 @@ StackInterpolator::StackInterpolator(const std::vector<EffectTrack>& tracks,
                                   std::string(effect_name(t.type)));
     if (t.keyframes.empty()) continue;
     const EffectSpec& spec = effect_spec(t.type);
-    slot = std::make_shared<const RbfInterpolator>(t.keyframes, spec.dimension(),
-                                                   t.interpolation.value_or(defaults), fps,
-                                                   spec.neutral());
+    slot = std::make_shared<const RbfInterpolator>(
+        t.keyframes, spec.dimension(), t.interpolation.value_or(defaults), fps, spec.neutral());
   }
 }
 
@@ -40,7 +39,8 @@ StackParams StackInterpolator::evaluate(const Eigen::Vector3d& unit, std::int64_
     const auto& s = solutions_[static_cast<std::size_t>(e)];
     if (!s) continue;
     s->evaluate_into(unit, frame, values);
-    p.set(static_cast<EffectType>(e), std::span<const double>(values, static_cast<std::size_t>(s->dimension())));
+    p.set(static_cast<EffectType>(e),
+          std::span<const double>(values, static_cast<std::size_t>(s->dimension())));
   }
   return p;
 }

@@ -30,7 +30,9 @@ class StackInterpolator {
   StackParams evaluate(const Eigen::Vector3d& unit, std::int64_t frame) const;
 
   bool active(EffectType type) const { return solutions_[index(type)] != nullptr; }
-  const RbfInterpolator* interpolator(EffectType type) const { return solutions_[index(type)].get(); }
+  const RbfInterpolator* interpolator(EffectType type) const {
+    return solutions_[index(type)].get();
+  }
 
  private:
   static std::size_t index(EffectType t) { return static_cast<std::size_t>(t); }

@@ -30,8 +30,9 @@ ViewCamera ViewCamera::from_horizontal_fov(const ViewPose& pose, double hfov_deg
                                            int height) {
   check_size(width, height, "ViewCamera::from_horizontal_fov");
   if (!(hfov_deg > 0.0 && hfov_deg < 180.0))
-    throw std::invalid_argument("ViewCamera::from_horizontal_fov: fov must be in (0, 180) degrees, got " +
-                                std::to_string(hfov_deg));
+    throw std::invalid_argument(
+        "ViewCamera::from_horizontal_fov: fov must be in (0, 180) degrees, got " +
+        std::to_string(hfov_deg));
   const double f = 0.5 * width / std::tan(0.5 * hfov_deg * kDegToRad);
   return ViewCamera(pose_rotation(pose), f, f, 0.5 * width, 0.5 * height, width, height);
 }
@@ -57,14 +58,20 @@ ViewCamera ViewCamera::from_tangents(const Eigen::Matrix3d& camera_to_world, con
   check_size(width, height, "ViewCamera::from_tangents");
   if (!(fov.right > fov.left) || !(fov.up > fov.down) || !std::isfinite(fov.right - fov.left) ||
       !std::isfinite(fov.up - fov.down))
-    throw std::invalid_argument("ViewCamera::from_tangents: need left < right and down < up, finite");
+    throw std::invalid_argument(
+        "ViewCamera::from_tangents: need left < right and down < up, finite");
   const double fx = width / (fov.right - fov.left), fy = height / (fov.up - fov.down);
   return ViewCamera(camera_to_world, fx, fy, -fov.left * fx, fov.up * fy, width, height);
 }
 
 ViewCamera::ViewCamera(const Eigen::Matrix3d& camera_to_world, double fx, double fy, double cx,
                        double cy, int width, int height)
-    : rotation_(camera_to_world), fx_(fx), fy_(fy), cx_(cx), cy_(cy), width_(width),
+    : rotation_(camera_to_world),
+      fx_(fx),
+      fy_(fy),
+      cx_(cx),
+      cy_(cy),
+      width_(width),
       height_(height) {
   check_size(width, height, "ViewCamera");
   if (!(fx > 0.0 && fy > 0.0 && std::isfinite(fx) && std::isfinite(fy)))

@@ -22,8 +22,8 @@ cv::Mat sample_view(const EquirectSampler& sampler, const ViewCamera& camera) {
         const double x = i + 0.5, y = j + 0.5;
         const Eigen::Vector3d dir = camera.ray(x, y);
         const Eigen::Vector3d c =
-            area ? sampler.sample(dir, sampler.footprint(dir, camera.ray(x + 1.0, y),
-                                                         camera.ray(x, y + 1.0)))
+            area ? sampler.sample(
+                       dir, sampler.footprint(dir, camera.ray(x + 1.0, y), camera.ray(x, y + 1.0)))
                  : sampler.sample(dir);
         o[i] = cv::Vec3f(static_cast<float>(c.x()), static_cast<float>(c.y()),
                          static_cast<float>(c.z()));
@@ -57,9 +57,9 @@ cv::Mat render_pixel_mode(const EquirectSampler& sampler, const ViewCamera& came
       any_blur = true;
     }
   }
-  const cv::Mat base = any_blur ? blur_varying(sample_view(sampler, camera.with_margin(margin)),
-                                               margin, sigma)
-                                : sample_view(sampler, camera);
+  const cv::Mat base =
+      any_blur ? blur_varying(sample_view(sampler, camera.with_margin(margin)), margin, sigma)
+               : sample_view(sampler, camera);
   const cv::Mat angles = vignette_angle_map(camera);
   cv::Mat out(h, w, CV_32FC3);
   cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& rows) {
@@ -97,7 +97,8 @@ cv::Mat render_view(const EquirectSampler& sampler, const ViewCamera& camera,
 cv::Mat render_view(const EquirectSampler& sampler, const ViewCamera& camera,
                     const ParamsAt& params_at, RenderMode mode) {
   if (!params_at) throw std::invalid_argument("render_view: empty parameter function");
-  if (mode == RenderMode::View) return render_view(sampler, camera, params_at(camera.centre_direction()));
+  if (mode == RenderMode::View)
+    return render_view(sampler, camera, params_at(camera.centre_direction()));
   return render_pixel_mode(sampler, camera, params_at);
 }
 

@@ -130,8 +130,9 @@ void write_file_atomic(const std::filesystem::path& user_path, std::string_view 
   const int err = errno;
   if (dfd >= 0) ::close(dfd);
   if (r != 0 && err != EINVAL)
-    throw InputError(user_path.string() + ": written, but not yet durable: the fsync of its folder " +
-                     dir.string() + " failed (" + std::strerror(err) +
+    throw InputError(user_path.string() +
+                     ": written, but not yet durable: the fsync of its folder " + dir.string() +
+                     " failed (" + std::strerror(err) +
                      "); a power cut now could still lose the new contents");
 }
 

@@ -2,11 +2,11 @@
 /// @brief open_frame_decoder: picks the still or the video backend by file name.
 #include "io/frame_decoder.h"
 
+#include <limits>
+
 #include "io/image_source.h"
 #include "io/input_error.h"
 #include "io/input_file.h"
-
-#include <limits>
 
 namespace vdfx::io {
 

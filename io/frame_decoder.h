@@ -22,12 +22,12 @@ struct VideoProperties {
   /// Frames per second. Constant-rate videos: exact, from the timestamps (30000/1001); variable
   /// rate: the average rate; stills: DecoderOptions::still_fps.
   Rational fps;
-  std::int64_t frames = 0;   //!< frames present (presentation order); stills: 1
-  int width = 0;             //!< as displayed (after rotation)
+  std::int64_t frames = 0;  //!< frames present (presentation order); stills: 1
+  int width = 0;            //!< as displayed (after rotation)
   int height = 0;
   bool is_still = false;
-  std::string backend;       //!< "libav" or "image"
-  std::string codec;         //!< decoder name ("h264", "hevc"); empty for stills
+  std::string backend;  //!< "libav" or "image"
+  std::string codec;    //!< decoder name ("h264", "hevc"); empty for stills
   /// The container's own frame count when it declares one (0: none). More than `frames` means
   /// the file was cut short.
   std::int64_t declared_frames = 0;
@@ -63,7 +63,9 @@ class FrameDecoder {
   }
   /// The container's presentation timestamp of frame `index` in properties().time_base units,
   /// when the file has timestamps (exports keep them).
-  virtual std::optional<std::int64_t> timestamp(std::int64_t /*index*/) const { return std::nullopt; }
+  virtual std::optional<std::int64_t> timestamp(std::int64_t /*index*/) const {
+    return std::nullopt;
+  }
 };
 
 struct DecoderOptions {

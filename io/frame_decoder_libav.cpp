@@ -54,13 +54,31 @@ void siting_of(AVChromaLocation loc, int log2_w, int log2_h, double& x, double& 
   const double cy = log2_h ? 0.5 * ((1 << log2_h) - 1) : 0.0;
   const double ey = log2_h ? (1 << log2_h) - 1 : 0.0;  // on the last luma row of the pair
   switch (loc) {
-    case AVCHROMA_LOC_CENTER: x = cx; y = cy; break;
-    case AVCHROMA_LOC_TOPLEFT: x = 0.0; y = 0.0; break;
-    case AVCHROMA_LOC_TOP: x = cx; y = 0.0; break;
-    case AVCHROMA_LOC_BOTTOMLEFT: x = 0.0; y = ey; break;
-    case AVCHROMA_LOC_BOTTOM: x = cx; y = ey; break;
+    case AVCHROMA_LOC_CENTER:
+      x = cx;
+      y = cy;
+      break;
+    case AVCHROMA_LOC_TOPLEFT:
+      x = 0.0;
+      y = 0.0;
+      break;
+    case AVCHROMA_LOC_TOP:
+      x = cx;
+      y = 0.0;
+      break;
+    case AVCHROMA_LOC_BOTTOMLEFT:
+      x = 0.0;
+      y = ey;
+      break;
+    case AVCHROMA_LOC_BOTTOM:
+      x = cx;
+      y = ey;
+      break;
     case AVCHROMA_LOC_LEFT:
-    default: x = 0.0; y = cy; break;  // MPEG-2 / H.264 / HEVC default
+    default:
+      x = 0.0;
+      y = cy;
+      break;  // MPEG-2 / H.264 / HEVC default
   }
 }
 
@@ -102,9 +120,9 @@ int display_rotation(const AVStream* st) {
 /// Rotates a picture clockwise by 90/180/270 degrees (planes and chroma siting together).
 void rotate_picture(Picture& p, int cw) {
   if (cw == 0) return;
-  const int code = cw == 90 ? cv::ROTATE_90_CLOCKWISE
-                 : cw == 180 ? cv::ROTATE_180
-                             : cv::ROTATE_90_COUNTERCLOCKWISE;
+  const int code = cw == 90    ? cv::ROTATE_90_CLOCKWISE
+                   : cw == 180 ? cv::ROTATE_180
+                               : cv::ROTATE_90_COUNTERCLOCKWISE;
   if (!p.is_ycbcr()) {
     cv::Mat r;
     cv::rotate(p.rgb, r, code);
@@ -153,7 +171,8 @@ class LibavDecoder final : public FrameDecoder {
     props_.rotation_deg = display_rotation(st);
     props_.time_base = {st->time_base.num, st->time_base.den};
     if (props_.frames < 1)
-      throw InputError(name_ + ": the video stream holds no frames (empty or cut before the first)");
+      throw InputError(name_ +
+                       ": the video stream holds no frames (empty or cut before the first)");
     set_frame_rate(st);
     // Fail now, with a clear message, rather than on the decode thread later.
     Picture first;
@@ -172,7 +191,8 @@ class LibavDecoder final : public FrameDecoder {
   std::int64_t next_index() const override { return next_; }
 
   std::optional<std::int64_t> timestamp(std::int64_t index) const override {
-    if (pts_.empty() || index < 0 || index >= static_cast<std::int64_t>(pts_.size())) return std::nullopt;
+    if (pts_.empty() || index < 0 || index >= static_cast<std::int64_t>(pts_.size()))
+      return std::nullopt;
     return pts_[static_cast<std::size_t>(index)];
   }
 
@@ -270,7 +290,8 @@ class LibavDecoder final : public FrameDecoder {
     codec_->pkt_timebase = fmt_->streams[s]->time_base;
     const int r = avcodec_open2(codec_.get(), dec, nullptr);
     if (r < 0)
-      throw InputError(name_ + ": cannot open the " + dec->name + " decoder (" + av::error_text(r) + ")");
+      throw InputError(name_ + ": cannot open the " + dec->name + " decoder (" + av::error_text(r) +
+                       ")");
     if (!frame_) frame_ = av::make_frame();
     if (!packet_) packet_ = av::make_packet();
     eof_sent_ = false;
@@ -287,8 +308,10 @@ class LibavDecoder final : public FrameDecoder {
       if (r < 0) break;  // end of file, or a cut or damaged tail: the frames so far are the video
       if (packet_->stream_index == stream_ && !(packet_->flags & AV_PKT_FLAG_DISCARD)) {
         ++packet_count_;
-        if (packet_->pts == AV_NOPTS_VALUE) all_timed = false;
-        else pts_.push_back(packet_->pts);
+        if (packet_->pts == AV_NOPTS_VALUE)
+          all_timed = false;
+        else
+          pts_.push_back(packet_->pts);
       }
       av_packet_unref(packet_.get());
     }
@@ -316,17 +339,20 @@ class LibavDecoder final : public FrameDecoder {
       if (span > 0) {
         const std::int64_t n = static_cast<std::int64_t>(pts_.size()) - 1;
         if (!props_.variable_rate && st->r_frame_rate.num > 0 && st->r_frame_rate.den > 0 &&
-            std::abs(av_q2d(st->r_frame_rate) * av_q2d(tb) * static_cast<double>(span) / n - 1.0) < 1e-3) {
+            std::abs(av_q2d(st->r_frame_rate) * av_q2d(tb) * static_cast<double>(span) / n - 1.0) <
+                1e-3) {
           props_.fps = reduce(st->r_frame_rate.num, st->r_frame_rate.den);
           return;
         }
-        props_.fps = fps_to_rational(static_cast<double>(n) / (static_cast<double>(span) * av_q2d(tb)));
+        props_.fps =
+            fps_to_rational(static_cast<double>(n) / (static_cast<double>(span) * av_q2d(tb)));
         return;
       }
     }
     AVRational r = st->avg_frame_rate.num > 0 ? st->avg_frame_rate : st->r_frame_rate;
     if (r.num <= 0 || r.den <= 0)
-      throw InputError(name_ + ": the video declares no frame rate and has too few timestamps to measure one");
+      throw InputError(
+          name_ + ": the video declares no frame rate and has too few timestamps to measure one");
     props_.fps = reduce(r.num, r.den);
   }
 
@@ -340,7 +366,8 @@ class LibavDecoder final : public FrameDecoder {
   std::int64_t index_of(const AVFrame* f) {
     const std::int64_t n = out_count_++;
     if (pts_.empty()) return n;
-    const std::int64_t t = f->best_effort_timestamp != AV_NOPTS_VALUE ? f->best_effort_timestamp : f->pts;
+    const std::int64_t t =
+        f->best_effort_timestamp != AV_NOPTS_VALUE ? f->best_effort_timestamp : f->pts;
     const auto it = std::lower_bound(pts_.begin(), pts_.end(), t);
     if (t == AV_NOPTS_VALUE || it == pts_.end() || *it != t) return -1;
     return it - pts_.begin();
@@ -378,14 +405,16 @@ class LibavDecoder final : public FrameDecoder {
       }
     } else {
       // RGB codecs, grey, palettes, packed or semi-planar Y'CbCr: one conversion to RGB24.
-      sws_.reset(sws_getCachedContext(sws_.release(), f->width, f->height, fmt, f->width, f->height,
-                                  AV_PIX_FMT_RGB24, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT,
-                                  nullptr, nullptr, nullptr));
-      if (!sws_) throw std::runtime_error(std::string("no conversion from ") + (d ? d->name : "?") + " to RGB");
+      sws_.reset(sws_getCachedContext(
+          sws_.release(), f->width, f->height, fmt, f->width, f->height, AV_PIX_FMT_RGB24,
+          SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr, nullptr));
+      if (!sws_)
+        throw std::runtime_error(std::string("no conversion from ") + (d ? d->name : "?") +
+                                 " to RGB");
       const bool full = f->color_range == AVCOL_RANGE_JPEG || is_jpeg_range_format(fmt);
       const int cs = f->colorspace == AVCOL_SPC_UNSPECIFIED ? SWS_CS_DEFAULT : f->colorspace;
-      sws_setColorspaceDetails(sws_.get(), sws_getCoefficients(cs), full, sws_getCoefficients(SWS_CS_DEFAULT), 1,
-                               0, 1 << 16, 1 << 16);
+      sws_setColorspaceDetails(sws_.get(), sws_getCoefficients(cs), full,
+                               sws_getCoefficients(SWS_CS_DEFAULT), 1, 0, 1 << 16, 1 << 16);
       p.rgb.create(f->height, f->width, CV_8UC3);
       std::uint8_t* dst[4] = {p.rgb.data, nullptr, nullptr, nullptr};
       int dst_stride[4] = {static_cast<int>(p.rgb.step), 0, 0, 0};
@@ -434,7 +463,8 @@ class LibavDecoder final : public FrameDecoder {
       rewind();
       return;
     }
-    const int r = av_seek_frame(fmt_.get(), stream_, pts_[static_cast<std::size_t>(at)], AVSEEK_FLAG_BACKWARD);
+    const int r = av_seek_frame(fmt_.get(), stream_, pts_[static_cast<std::size_t>(at)],
+                                AVSEEK_FLAG_BACKWARD);
     if (r < 0) {
       rewind();
       return;
@@ -470,8 +500,8 @@ class LibavDecoder final : public FrameDecoder {
   std::vector<std::int64_t> pts_;  //!< presentation timestamps, sorted: frame i is pts_[i]
   std::int64_t packet_count_ = 0;
   std::int64_t next_ = 0;
-  std::int64_t out_count_ = 0;     //!< frames output since the (re)open
-  Picture held_;                   //!< a decoded frame not handed out yet
+  std::int64_t out_count_ = 0;  //!< frames output since the (re)open
+  Picture held_;                //!< a decoded frame not handed out yet
   std::int64_t held_index_ = -1;
   std::int64_t seek_target_ = -1;  //!< frame a seek is heading for (retries while undershot)
   std::int64_t seek_back_ = 0;

@@ -13,8 +13,10 @@ class StillDecoder final : public FrameDecoder {
  public:
   StillDecoder(const std::filesystem::path& path, const DecoderOptions& options) {
     const LoadedImage img = load_image(path, options.tone);
-    if (options.format == PixelFormat::RgbF32) image_ = img.rgb;
-    else img.rgb.convertTo(image_, CV_8UC3, 255.0);  // rounds to nearest, saturates
+    if (options.format == PixelFormat::RgbF32)
+      image_ = img.rgb;
+    else
+      img.rgb.convertTo(image_, CV_8UC3, 255.0);  // rounds to nearest, saturates
     props_.path = path;
     props_.fps = options.still_fps;
     props_.frames = 1;
@@ -27,7 +29,8 @@ class StillDecoder final : public FrameDecoder {
   std::int64_t next_index() const override { return next_; }
   void seek(std::int64_t index) override {
     if (index != 0)
-      throw std::out_of_range("frame " + std::to_string(index) + " of a still image (only frame 0)");
+      throw std::out_of_range("frame " + std::to_string(index) +
+                              " of a still image (only frame 0)");
     next_ = 0;
   }
   DecodeStatus read(cv::Mat& out) override {

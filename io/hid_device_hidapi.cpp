@@ -115,8 +115,12 @@ std::unique_ptr<HidDevice> open_path(const std::string& path) {
 
 }  // namespace
 
-bool hid_available() { return true; }
+bool hid_available() {
+  return true;
+}
 
-HidSystem default_hid_system() { return {enumerate_all, open_path}; }
+HidSystem default_hid_system() {
+  return {enumerate_all, open_path};
+}
 
 }  // namespace vdfx::io

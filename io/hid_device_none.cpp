@@ -6,7 +6,9 @@
 
 namespace vdfx::io {
 
-bool hid_available() { return false; }
+bool hid_available() {
+  return false;
+}
 
 HidSystem default_hid_system() {
   return {[] { return std::vector<HidDeviceInfo>{}; },

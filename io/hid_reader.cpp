@@ -61,7 +61,8 @@ bool HidReader::wait_or_stop(int ms) {
 void HidReader::run() {
   std::unique_ptr<HidDevice> device;
   std::vector<std::uint8_t> buffer(options_.report_size);
-  const std::string retry = " (retrying every " + std::to_string(options_.reopen_interval_ms) + " ms)";
+  const std::string retry =
+      " (retrying every " + std::to_string(options_.reopen_interval_ms) + " ms)";
   std::string waiting = name_ + ": not found" + retry;  // keeps why it was lost
   while (!stop_) {
     if (!device) {

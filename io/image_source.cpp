@@ -9,14 +9,13 @@
 #include <fstream>
 #include <limits>
 #include <mutex>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
 
 #include "io/input_error.h"
 #include "io/input_file.h"
-
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 namespace vdfx::io {
 
@@ -29,7 +28,7 @@ bool is_still_image_path(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  static const std::array<const char*, 10> kExt = {".png", ".jpg",  ".jpeg", ".exr", ".hdr",
+  static const std::array<const char*, 10> kExt = {".png", ".jpg", ".jpeg", ".exr", ".hdr",
                                                    ".pic", ".tif", ".tiff", ".bmp", ".webp"};
   return std::find(kExt.begin(), kExt.end(), ext) != kExt.end();
 }

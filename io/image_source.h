@@ -9,9 +9,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <opencv2/core.hpp>
 #include <string>
 
-#include <opencv2/core.hpp>
 #include "io/tone_map.h"
 
 namespace vdfx::io {

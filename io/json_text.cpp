@@ -12,9 +12,12 @@ namespace vdfx::io {
 std::string json_pointer_token(std::string_view key) {
   std::string out;
   for (const char c : key) {
-    if (c == '~') out += "~0";
-    else if (c == '/') out += "~1";
-    else out += c;
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
   }
   return out;
 }
@@ -69,7 +72,8 @@ class TrackingSax {
     Level& top = stack_.back();
     top.key = k;
     if (!top.seen.insert(k).second)
-      errors_.push_back({0, 0, pointer(), "duplicate key \"" + excerpt(k) + "\" (a reader would drop one)"});
+      errors_.push_back(
+          {0, 0, pointer(), "duplicate key \"" + excerpt(k) + "\" (a reader would drop one)"});
     return dom_.key(k);
   }
   bool end_object() {
@@ -139,8 +143,11 @@ JsonText parse_json_text(std::string_view text) {
   // one inside the document read as "unexpected end of input". JSON text never holds one.
   if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
     const auto [line, column] = line_and_column(text, nul);
-    out.errors.push_back({line, column, {}, "invalid JSON: a NUL byte (\\x00); JSON text cannot "
-                                            "contain one (a binary or damaged file?)"});
+    out.errors.push_back({line,
+                          column,
+                          {},
+                          "invalid JSON: a NUL byte (\\x00); JSON text cannot "
+                          "contain one (a binary or damaged file?)"});
     out.value = json(json::value_t::discarded);
     return out;
   }

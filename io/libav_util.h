@@ -37,8 +37,12 @@ using CodecPtr = std::unique_ptr<AVCodecContext, CodecCloser>;
 using FramePtr = std::unique_ptr<AVFrame, FrameFree>;
 using PacketPtr = std::unique_ptr<AVPacket, PacketFree>;
 
-inline FramePtr make_frame() { return FramePtr(av_frame_alloc()); }
-inline PacketPtr make_packet() { return PacketPtr(av_packet_alloc()); }
+inline FramePtr make_frame() {
+  return FramePtr(av_frame_alloc());
+}
+inline PacketPtr make_packet() {
+  return PacketPtr(av_packet_alloc());
+}
 
 /// libav's message for an error code ("Invalid data found when processing input").
 inline std::string error_text(int code) {

@@ -8,7 +8,6 @@
 
 #include <array>
 #include <memory>
-
 #include <opencv2/core.hpp>
 
 namespace vdfx::io {

@@ -6,15 +6,14 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "io/excerpt.h"
 #include "io/input_error.h"
@@ -80,7 +79,8 @@ std::array<double, N> numbers(const Where& w, const Json& v, const std::string& 
     w.fail(ptr, "expected an array of " + std::to_string(N) + " numbers");
   }
   std::array<double, N> out{};
-  for (std::size_t i = 0; i < N; ++i) out[i] = number(w, v[i], ptr + "/" + std::to_string(i), lo, hi);
+  for (std::size_t i = 0; i < N; ++i)
+    out[i] = number(w, v[i], ptr + "/" + std::to_string(i), lo, hi);
   return out;
 }
 
@@ -210,7 +210,8 @@ RecordingHeader parse_header(const Where& w, const Json& obj) {
   const Json& version = field(w, obj, "", "version");
   if (!version.is_number_integer()) w.fail("/version", "expected an integer");
   if (version.get<long long>() != 1) {
-    w.fail("/version", "unsupported version " + excerpt(version.dump()) + " (this build reads version 1)");
+    w.fail("/version",
+           "unsupported version " + excerpt(version.dump()) + " (this build reads version 1)");
   }
   reject_unknown(w, obj, "", {"format", "version", "hmd", "video", "note", "desktop"});
   RecordingHeader h;
@@ -314,7 +315,8 @@ Recording parse_recording(std::istream& in, const std::string& name) {
   bool terminated = false;
   while (read_line(in, line, terminated)) {
     if (line.size() > kMaxRecordingLineBytes)
-      Where{name, line_no + 1}.fail("", "line longer than " + byte_size_text(kMaxRecordingLineBytes) +
+      Where{name, line_no + 1}.fail("", "line longer than " +
+                                            byte_size_text(kMaxRecordingLineBytes) +
                                             " (the limit of a recording line)");
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -325,12 +327,13 @@ Recording parse_recording(std::istream& in, const std::string& name) {
     JsonText parsed = parse_json_text(line);
     if (!parsed.errors.empty()) {
       const JsonTextError& e = parsed.errors.front();
-      const std::string what = e.line == 0 ? e.message : "bad JSON at column " + std::to_string(e.column) +
-                                                             ": " + e.message.substr(e.message.find(": ") + 2);
+      const std::string what = e.line == 0 ? e.message
+                                           : "bad JSON at column " + std::to_string(e.column) +
+                                                 ": " + e.message.substr(e.message.find(": ") + 2);
       if (!terminated && have_header && e.code >= 100 && e.code < 200) {
         // A crash while writing leaves a partial last line; the rest is still good.
-        rec.warnings.push_back(name + ":" + std::to_string(line_no) + ": truncated last line ignored (" +
-                               what + ")");
+        rec.warnings.push_back(name + ":" + std::to_string(line_no) +
+                               ": truncated last line ignored (" + what + ")");
         break;
       }
       w.fail(e.pointer, what);
@@ -353,7 +356,8 @@ Recording parse_recording(std::istream& in, const std::string& name) {
       out.value = parse_hid(w, obj, t);
     } else {
       if (last_sample_t && t <= *last_sample_t) {
-        w.fail("/t_ns", "sample time " + std::to_string(t) + " is not after the previous sample's " +
+        w.fail("/t_ns", "sample time " + std::to_string(t) +
+                            " is not after the previous sample's " +
                             std::to_string(*last_sample_t) + " (must strictly increase)");
       }
       out.value = parse_sample(w, obj, t);
@@ -400,7 +404,8 @@ std::string format_sample_line(const RecordedSample& s) {
 std::string format_hid_line(const RecordedHid& h) {
   OrderedJson j;
   j["t_ns"] = h.t_ns;
-  j["hid"] = OrderedJson{{"device", h.device}, {h.is_descriptor ? "descriptor" : "report", to_hex(h.bytes)}};
+  j["hid"] = OrderedJson{{"device", h.device},
+                         {h.is_descriptor ? "descriptor" : "report", to_hex(h.bytes)}};
   return j.dump();
 }
 
@@ -409,7 +414,8 @@ RecordingWriter::RecordingWriter(const std::filesystem::path& path, const Record
   // Through a link to its file; a device or pipe is refused, never replaced or blocked on.
   fd_ = ::open(resolve_output_path(path).c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd_ < 0)
-    throw InputError(path.string() + ": cannot create the recording (" + std::strerror(errno) + ")");
+    throw InputError(path.string() + ": cannot create the recording (" + std::strerror(errno) +
+                     ")");
   write_line(format_header_line(header));
 }
 
@@ -417,13 +423,17 @@ RecordingWriter::~RecordingWriter() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-void RecordingWriter::write(const RecordedSample& sample) { write_line(format_sample_line(sample)); }
-void RecordingWriter::write(const RecordedHid& hid) { write_line(format_hid_line(hid)); }
+void RecordingWriter::write(const RecordedSample& sample) {
+  write_line(format_sample_line(sample));
+}
+void RecordingWriter::write(const RecordedHid& hid) {
+  write_line(format_hid_line(hid));
+}
 
 void RecordingWriter::write_line(const std::string& text) {
   if (fd_ < 0)
-    throw InputError(path_.string() + ": the recording stopped after line " + std::to_string(lines_) +
-                     " (an earlier write failed)");
+    throw InputError(path_.string() + ": the recording stopped after line " +
+                     std::to_string(lines_) + " (an earlier write failed)");
   const std::string line = text + '\n';
   std::size_t done = 0;
   while (done < line.size()) {

@@ -56,7 +56,7 @@ struct RecordedHid {
 /// vdfx extension of the header (docs/input.md): the desktop view a sim session was recorded
 /// in, so a replay lays out the editor's panels and aims the cursor rays as they were.
 struct RecordedDesktopView {
-  int width = 1280;        //!< window pixels, 1..16384
+  int width = 1280;  //!< window pixels, 1..16384
   int height = 720;
   double hfov_deg = 100.0;  //!< horizontal FOV, (0, 180)
   bool operator==(const RecordedDesktopView&) const = default;
@@ -119,7 +119,7 @@ class RecordingWriter {
  private:
   void write_line(const std::string& line);
   std::filesystem::path path_;
-  int fd_ = -1;             //!< -1 once failed
+  int fd_ = -1;              //!< -1 once failed
   std::uint64_t whole_ = 0;  //!< bytes of whole lines written
   int lines_ = 0;
 };

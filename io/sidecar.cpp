@@ -103,9 +103,13 @@ Sidecar read_sidecar(const std::filesystem::path& path) {
   return std::move(*report.sidecar);
 }
 
-nlohmann::json to_json(const Sidecar& sidecar) { return nlohmann::json(ordered_document(sidecar)); }
+nlohmann::json to_json(const Sidecar& sidecar) {
+  return nlohmann::json(ordered_document(sidecar));
+}
 
-std::string format_sidecar(const Sidecar& sidecar) { return ordered_document(sidecar).dump(2) + "\n"; }
+std::string format_sidecar(const Sidecar& sidecar) {
+  return ordered_document(sidecar).dump(2) + "\n";
+}
 
 void write_sidecar(const std::filesystem::path& path, const Sidecar& sidecar) {
   write_file_atomic(path, format_sidecar(sidecar));

@@ -186,7 +186,9 @@ void read_keyframes(Checker& c, const json& v, const std::string& ptr,
 
 }  // namespace
 
-bool is_flare_entry(const nlohmann::json& entry) { return detail::has_type(entry, kFlareTypeName); }
+bool is_flare_entry(const nlohmann::json& entry) {
+  return detail::has_type(entry, kFlareTypeName);
+}
 
 nlohmann::ordered_json flare_to_json(const effects::FlareEffect& f) {
   ordered e;

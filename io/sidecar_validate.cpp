@@ -64,9 +64,11 @@ void read_video(Checker& c, const json& v, const std::string& ptr, VideoInfo& ou
       out.frames = *i;
   const std::string int_range = "[1, " + std::to_string(kIntMax) + "]";
   if (const json* p = c.member(*obj, ptr, "width"))
-    if (auto i = c.integer(*p, ptr + "/width", 1, kIntMax, int_range)) out.width = static_cast<int>(*i);
+    if (auto i = c.integer(*p, ptr + "/width", 1, kIntMax, int_range))
+      out.width = static_cast<int>(*i);
   if (const json* p = c.member(*obj, ptr, "height"))
-    if (auto i = c.integer(*p, ptr + "/height", 1, kIntMax, int_range)) out.height = static_cast<int>(*i);
+    if (auto i = c.integer(*p, ptr + "/height", 1, kIntMax, int_range))
+      out.height = static_cast<int>(*i);
 }
 
 void read_interpolation(Checker& c, const json& v, const std::string& ptr,
@@ -77,28 +79,40 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
   // The ranges are effects/interpolation_check.h's: the RBF kernel and the editor ask it too.
   if (const json* p = c.member(*obj, ptr, "exponent"))
     if (auto d = c.number(*p, ptr + "/exponent", kAnyNumber)) {
-      if (auto why = effects::exponent_problem(*d)) c.error(ptr + "/exponent", *why);
-      else out.exponent = *d;
+      if (auto why = effects::exponent_problem(*d))
+        c.error(ptr + "/exponent", *why);
+      else
+        out.exponent = *d;
     }
   if (const json* p = c.member(*obj, ptr, "time_scale"))
     if (auto d = c.number(*p, ptr + "/time_scale", kAnyNumber)) {
-      if (auto why = effects::time_scale_problem(*d)) c.error(ptr + "/time_scale", *why);
-      else out.time_scale = *d;
+      if (auto why = effects::time_scale_problem(*d))
+        c.error(ptr + "/time_scale", *why);
+      else
+        out.time_scale = *d;
     }
   // Extension of format 1: optional, chordal when absent (docs/sidecar.md).
   if (const json* p = c.member(*obj, ptr, "distance", /*required=*/false)) {
     if (auto s = c.string(*p, ptr + "/distance")) {
-      if (*s == "chordal") out.distance = effects::AngularDistance::Chordal;
-      else if (*s == "geodesic") out.distance = effects::AngularDistance::Geodesic;
-      else c.error(ptr + "/distance", "unknown distance \"" + excerpt(*s) + "\" (expected chordal or geodesic)");
+      if (*s == "chordal")
+        out.distance = effects::AngularDistance::Chordal;
+      else if (*s == "geodesic")
+        out.distance = effects::AngularDistance::Geodesic;
+      else
+        c.error(ptr + "/distance",
+                "unknown distance \"" + excerpt(*s) + "\" (expected chordal or geodesic)");
     }
   }
   // Extension of format 1: optional, hold when absent (docs/sidecar.md).
   if (const json* p = c.member(*obj, ptr, "outside_span", /*required=*/false)) {
     if (auto s = c.string(*p, ptr + "/outside_span")) {
-      if (*s == "hold") out.outside = effects::TimeOutside::Hold;
-      else if (*s == "extrapolate") out.outside = effects::TimeOutside::Extrapolate;
-      else c.error(ptr + "/outside_span", "unknown value \"" + excerpt(*s) + "\" (expected hold or extrapolate)");
+      if (*s == "hold")
+        out.outside = effects::TimeOutside::Hold;
+      else if (*s == "extrapolate")
+        out.outside = effects::TimeOutside::Extrapolate;
+      else
+        c.error(ptr + "/outside_span",
+                "unknown value \"" + excerpt(*s) + "\" (expected hold or extrapolate)");
     }
   }
 }
@@ -117,8 +131,9 @@ void read_params(Checker& c, const json& v, const std::string& ptr, const effect
       names += (names.empty() ? "" : ", ") + std::string(ps.name);
     }
     if (!known)
-      c.error(ptr + "/" + excerpt(json_pointer_token(k)), "unknown parameter \"" + excerpt(k) + "\" for effect " +
-                                                     std::string(spec.name) + " (expected: " + names + ")");
+      c.error(ptr + "/" + excerpt(json_pointer_token(k)),
+              "unknown parameter \"" + excerpt(k) + "\" for effect " + std::string(spec.name) +
+                  " (expected: " + names + ")");
   }
   std::size_t offset = 0;
   for (const auto& ps : spec.params) {
@@ -129,13 +144,15 @@ void read_params(Checker& c, const json& v, const std::string& ptr, const effect
       if (ps.size == 1) {
         if (auto d = c.number(*p, pp, range)) out[offset] = *d;
       } else if (!p->is_array()) {
-        c.error(pp, "expected an array of " + std::to_string(ps.size) + " numbers, found " + type_name(*p));
+        c.error(pp, "expected an array of " + std::to_string(ps.size) + " numbers, found " +
+                        type_name(*p));
       } else if (p->size() != static_cast<std::size_t>(ps.size)) {
         c.error(pp, "expected an array of " + std::to_string(ps.size) + " numbers, found " +
                         std::to_string(p->size()));
       } else {
         for (int i = 0; i < ps.size; ++i)
-          if (auto d = c.number((*p)[static_cast<std::size_t>(i)], pp + "/" + std::to_string(i), range))
+          if (auto d =
+                  c.number((*p)[static_cast<std::size_t>(i)], pp + "/" + std::to_string(i), range))
             out[offset + static_cast<std::size_t>(i)] = *d;
       }
     }
@@ -143,8 +160,9 @@ void read_params(Checker& c, const json& v, const std::string& ptr, const effect
   }
 }
 
-void read_keyframe(Checker& c, const json& v, const std::string& ptr, const effects::EffectSpec* spec,
-                   std::optional<std::int64_t> frames, effects::Keyframe& out) {
+void read_keyframe(Checker& c, const json& v, const std::string& ptr,
+                   const effects::EffectSpec* spec, std::optional<std::int64_t> frames,
+                   effects::Keyframe& out) {
   const json* obj = c.object(v, ptr);
   if (!obj) return;
   c.only_keys(*obj, ptr, {"azimuth_deg", "altitude_deg", "frame", "params"});
@@ -163,8 +181,10 @@ void read_keyframe(Checker& c, const json& v, const std::string& ptr, const effe
     if (auto i = c.integer(*p, ptr + "/frame", 0, hi, text)) out.frame = *i;
   }
   if (const json* p = c.member(*obj, ptr, "params")) {
-    if (spec) read_params(c, *p, ptr + "/params", *spec, out.params);
-    else c.object(*p, ptr + "/params");
+    if (spec)
+      read_params(c, *p, ptr + "/params", *spec, out.params);
+    else
+      c.object(*p, ptr + "/params");
   }
 }
 
@@ -175,7 +195,8 @@ std::string known_types() {
   return s + ", " + kFlareTypeName + ", " + kGrainTypeName;
 }
 
-void read_effect(Checker& c, const json& v, const std::string& ptr, std::optional<std::int64_t> frames,
+void read_effect(Checker& c, const json& v, const std::string& ptr,
+                 std::optional<std::int64_t> frames,
                  std::map<effects::EffectType, std::string>& seen, effects::EffectTrack& out) {
   const json* obj = c.object(v, ptr);
   if (!obj) return;
@@ -187,10 +208,11 @@ void read_effect(Checker& c, const json& v, const std::string& ptr, std::optiona
         spec = &effects::effect_spec(*t);
         out.type = *t;
         if (auto [it, inserted] = seen.emplace(*t, ptr); !inserted)
-          c.error(ptr + "/type", "effect type \"" + excerpt(*s) + "\" appears twice (first at " + it->second +
-                                     "); each effect has one keyframe set");
+          c.error(ptr + "/type", "effect type \"" + excerpt(*s) + "\" appears twice (first at " +
+                                     it->second + "); each effect has one keyframe set");
       } else {
-        c.error(ptr + "/type", "unknown effect type \"" + excerpt(*s) + "\" (known: " + known_types() + ")");
+        c.error(ptr + "/type",
+                "unknown effect type \"" + excerpt(*s) + "\" (known: " + known_types() + ")");
       }
     }
   }
@@ -213,7 +235,8 @@ void read_effect(Checker& c, const json& v, const std::string& ptr, std::optiona
 }
 
 /// True when some problem was reported at `ptr` or below it.
-bool has_problem_at(const std::vector<Problem>& problems, std::size_t first, const std::string& ptr) {
+bool has_problem_at(const std::vector<Problem>& problems, std::size_t first,
+                    const std::string& ptr) {
   for (std::size_t i = first; i < problems.size(); ++i)
     if (problems[i].pointer == ptr || problems[i].pointer.rfind(ptr + "/", 0) == 0) return true;
   return false;
@@ -228,8 +251,8 @@ using Override = std::pair<std::string, effects::InterpolationSettings>;
 /// themselves valid.
 void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Override>& overrides,
                         const std::vector<Problem>& problems, std::size_t first) {
-  if (has_problem_at(problems, first, "/video/fps") || has_problem_at(problems, first, "/video/frames") ||
-      s.video.frames < 2)
+  if (has_problem_at(problems, first, "/video/fps") ||
+      has_problem_at(problems, first, "/video/frames") || s.video.frames < 2)
     return;  // one frame: there is no time axis to scale
   const double gaps = static_cast<double>(s.video.frames - 1);
   const auto check = [&](const effects::InterpolationSettings& in, const std::string& ptr,
@@ -240,12 +263,13 @@ void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Override
     // The remedy names the value at the pointer: fps for the file's interpolation, the
     // effect's own time_scale for an override.
     const std::string blame = own ? ptr + "/time_scale" : "/video/fps";
-    const std::string what = "one frame is 24 / fps * time_scale = " + short_num(step) +
-                             " apart in the RBF distance";
+    const std::string what =
+        "one frame is 24 / fps * time_scale = " + short_num(step) + " apart in the RBF distance";
     if (!(span <= kMaxScaledTimeSpan)) {  // also catches inf and NaN
-      const std::string fix =
-          own ? "time_scale must be at most " + short_num(kMaxScaledTimeSpan * s.video.fps / (24.0 * gaps))
-              : "fps must be at least " + short_num(24.0 * in.time_scale * gaps / kMaxScaledTimeSpan);
+      const std::string fix = own ? "time_scale must be at most " +
+                                        short_num(kMaxScaledTimeSpan * s.video.fps / (24.0 * gaps))
+                                  : "fps must be at least " +
+                                        short_num(24.0 * in.time_scale * gaps / kMaxScaledTimeSpan);
       c.error(blame, what + ", the clip's " + std::to_string(s.video.frames) + " frames " +
                          short_num(span) + ": beyond " + short_num(kMaxScaledTimeSpan) +
                          ", where its distances overflow (" + fix + ")");
@@ -254,7 +278,8 @@ void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Override
           own ? "time_scale must be at least " + short_num(kMinScaledFrameStep * s.video.fps / 24.0)
               : "fps must be at most " + short_num(24.0 * in.time_scale / kMinScaledFrameStep);
       c.error(blame, what + ": below " + short_num(kMinScaledFrameStep) +
-                         ", where keyframes one frame apart are no longer told apart (" + fix + ")");
+                         ", where keyframes one frame apart are no longer told apart (" + fix +
+                         ")");
     }
   };
   check(s.interpolation, "/interpolation", false);
@@ -300,7 +325,8 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
   const json* format = c.member(*root, "", "format");
   if (format) {
     if (auto s = c.string(*format, "/format"); s && *s != kSidecarFormat) {
-      c.error("/format", "expected \"" + std::string(kSidecarFormat) + "\", found \"" + excerpt(*s) + "\"");
+      c.error("/format",
+              "expected \"" + std::string(kSidecarFormat) + "\", found \"" + excerpt(*s) + "\"");
       return out;
     }
   }
@@ -315,7 +341,8 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
   // Keyframe frames are checked against video.frames only when that is itself valid (its own
   // problem is already reported above).
   std::optional<std::int64_t> frames;
-  if (const auto v = root->find("video"); v != root->end() && v->is_object() && v->contains("frames")) {
+  if (const auto v = root->find("video");
+      v != root->end() && v->is_object() && v->contains("frames")) {
     std::vector<Problem> scratch;
     Checker quiet(file_for_messages, scratch);
     frames = quiet.integer(v->at("frames"), "", 1, std::numeric_limits<std::int64_t>::max(), "");
@@ -357,7 +384,8 @@ SidecarReport validate_sidecar_text(std::string_view text, const std::string& fi
   JsonText parsed = parse_json_text(text);
   for (const JsonTextError& e : parsed.errors) {
     std::string msg = e.message;
-    if (e.line > 0) msg = "line " + std::to_string(e.line) + ", column " + std::to_string(e.column) + ": " + msg;
+    if (e.line > 0)
+      msg = "line " + std::to_string(e.line) + ", column " + std::to_string(e.column) + ": " + msg;
     report.problems.push_back({file_for_messages, e.pointer, msg});
   }
   if (parsed.value.is_discarded()) return report;
@@ -368,7 +396,8 @@ SidecarReport validate_sidecar_text(std::string_view text, const std::string& fi
 
 SidecarReport validate_sidecar_file(const std::filesystem::path& path) {
   std::string why;
-  const std::optional<std::string> text = try_read_input_file(path, kMaxSidecarBytes, "a sidecar", why);
+  const std::optional<std::string> text =
+      try_read_input_file(path, kMaxSidecarBytes, "a sidecar", why);
   if (!text) {
     SidecarReport r;
     r.problems.push_back({path.string(), "", why});

@@ -13,11 +13,14 @@ double luminance(const cv::Vec3f& c) {
   return kRec709R * c[0] + kRec709G * c[1] + kRec709B * c[2];
 }
 /// Radiance files can hold negative or non-finite samples; they carry no displayable light.
-float sanitize(float v) { return std::isfinite(v) && v > 0.0f ? v : 0.0f; }
+float sanitize(float v) {
+  return std::isfinite(v) && v > 0.0f ? v : 0.0f;
+}
 }  // namespace
 
 double log_average_luminance(const cv::Mat& linear_rgb, double delta) {
-  if (linear_rgb.type() != CV_32FC3) throw std::invalid_argument("log_average_luminance: need CV_32FC3");
+  if (linear_rgb.type() != CV_32FC3)
+    throw std::invalid_argument("log_average_luminance: need CV_32FC3");
   if (linear_rgb.empty()) return 0.0;
   // Summed per row first: the mean of ~10^7 logs in one double is fine, but the rows keep the
   // partial sums small.
@@ -40,7 +43,8 @@ double srgb_encode(double linear) {
 }
 
 cv::Mat tone_map_reinhard(const cv::Mat& linear_rgb, const ToneMapSettings& settings) {
-  if (linear_rgb.type() != CV_32FC3) throw std::invalid_argument("tone_map_reinhard: need CV_32FC3");
+  if (linear_rgb.type() != CV_32FC3)
+    throw std::invalid_argument("tone_map_reinhard: need CV_32FC3");
   const double l_avg = log_average_luminance(linear_rgb, settings.delta);
   const double scale = l_avg > 0.0 ? settings.key / l_avg : 0.0;
   cv::Mat out(linear_rgb.size(), CV_32FC3);

@@ -25,7 +25,9 @@ extern "C" {
 namespace vdfx::io {
 namespace {
 
-AVRational q(Rational r) { return {static_cast<int>(r.num), static_cast<int>(r.den)}; }
+AVRational q(Rational r) {
+  return {static_cast<int>(r.num), static_cast<int>(r.den)};
+}
 
 AVPixelFormat pixel_format(const YcbcrInfo& y) {
   if (y.bit_depth != 8) throw std::invalid_argument("VideoEncoder: 8-bit pictures only");
@@ -79,7 +81,8 @@ struct OutputCloser {
 /// The audio streams of another file, copied packet by packet in time order.
 class AudioCopier {
  public:
-  AudioCopier(const std::filesystem::path& from, AVFormatContext* out, std::optional<AudioWindow> window)
+  AudioCopier(const std::filesystem::path& from, AVFormatContext* out,
+              std::optional<AudioWindow> window)
       : window_(window) {
     std::string error;
     in_ = av::open_input(from.string(), error);
@@ -139,7 +142,8 @@ class AudioCopier {
       }
       AVStream* o = out->streams[map_[static_cast<std::size_t>(packet_->stream_index)]];
       if (window_) {
-        const std::int64_t shift = av_rescale_q(window_->start, q(window_->time_base), s->time_base);
+        const std::int64_t shift =
+            av_rescale_q(window_->start, q(window_->time_base), s->time_base);
         if (packet_->pts != AV_NOPTS_VALUE) packet_->pts -= shift;
         if (packet_->dts != AV_NOPTS_VALUE) packet_->dts -= shift;
       }
@@ -147,7 +151,8 @@ class AudioCopier {
       packet_->stream_index = o->index;
       packet_->pos = -1;
       const int r = av_interleaved_write_frame(out, packet_.get());
-      if (r < 0) throw std::runtime_error("VideoEncoder: writing audio failed: " + av::error_text(r));
+      if (r < 0)
+        throw std::runtime_error("VideoEncoder: writing audio failed: " + av::error_text(r));
     }
   }
 
@@ -177,10 +182,13 @@ class LibavEncoder final : public VideoEncoder {
     // The format follows format_from's name, but the context is named after the file really
     // written: MP4's faststart pass reopens the context's own name.
     const AVOutputFormat* oformat = av_guess_format(nullptr, format_name.c_str(), nullptr);
-    if (!oformat) throw InputError(format_name + ": no container format for this file name (use .mp4, .mov or .mkv)");
+    if (!oformat)
+      throw InputError(format_name +
+                       ": no container format for this file name (use .mp4, .mov or .mkv)");
     AVFormatContext* raw = nullptr;
     if (avformat_alloc_output_context2(&raw, oformat, nullptr, name.c_str()) < 0 || !raw)
-      throw std::runtime_error("VideoEncoder: cannot set up a " + std::string(oformat->name) + " file");
+      throw std::runtime_error("VideoEncoder: cannot set up a " + std::string(oformat->name) +
+                               " file");
     out_.reset(raw);
     // Spherical Video V2 is an "unofficial" extension of ISO BMFF to libavformat.
     out_->strict_std_compliance = FF_COMPLIANCE_UNOFFICIAL;
@@ -193,7 +201,8 @@ class LibavEncoder final : public VideoEncoder {
     c->height = s.height;
     c->pix_fmt = pixel_format(s.ycbcr);
     c->framerate = q(s.frame_rate);
-    c->time_base = s.time_base.num > 0 ? q(s.time_base) : AVRational{c->framerate.den, c->framerate.num};
+    c->time_base =
+        s.time_base.num > 0 ? q(s.time_base) : AVRational{c->framerate.den, c->framerate.num};
     c->sample_aspect_ratio = {1, 1};
     c->thread_count = s.threads;
     if (s.gop > 0) c->gop_size = s.gop;
@@ -206,13 +215,15 @@ class LibavEncoder final : public VideoEncoder {
     for (const auto& [k, v] : s.codec_options) av_dict_set(&opts, k.c_str(), v.c_str(), 0);
     int r = avcodec_open2(c, codec, &opts);
     std::string unused;
-    for (const AVDictionaryEntry* e = nullptr; (e = av_dict_get(opts, "", e, AV_DICT_IGNORE_SUFFIX));)
+    for (const AVDictionaryEntry* e = nullptr;
+         (e = av_dict_get(opts, "", e, AV_DICT_IGNORE_SUFFIX));)
       unused += std::string(unused.empty() ? "" : ", ") + e->key;
     av_dict_free(&opts);
     if (r < 0)
-      throw InputError("cannot open the " + s.codec + " encoder for " + std::to_string(s.width) + "x" +
-                       std::to_string(s.height) + " (" + av::error_text(r) + ")");
-    if (!unused.empty()) throw std::invalid_argument("VideoEncoder: " + s.codec + " does not know " + unused);
+      throw InputError("cannot open the " + s.codec + " encoder for " + std::to_string(s.width) +
+                       "x" + std::to_string(s.height) + " (" + av::error_text(r) + ")");
+    if (!unused.empty())
+      throw std::invalid_argument("VideoEncoder: " + s.codec + " does not know " + unused);
 
     stream_ = avformat_new_stream(out_.get(), nullptr);
     if (!stream_) throw std::runtime_error("VideoEncoder: cannot add the video stream");
@@ -263,7 +274,8 @@ class LibavEncoder final : public VideoEncoder {
     if (!p.is_ycbcr() || p.width() != settings_.width || p.height() != settings_.height ||
         p.ycbcr.log2_chroma_w != settings_.ycbcr.log2_chroma_w ||
         p.ycbcr.log2_chroma_h != settings_.ycbcr.log2_chroma_h || p.planes[0].depth() != CV_8U)
-      throw std::invalid_argument("VideoEncoder::write: picture does not match the encoder settings");
+      throw std::invalid_argument(
+          "VideoEncoder::write: picture does not match the encoder settings");
     // The encoder may still hold the previous buffer: a fresh one per frame.
     av_frame_unref(frame_.get());
     frame_->format = codec_->pix_fmt;
@@ -273,8 +285,8 @@ class LibavEncoder final : public VideoEncoder {
     for (int i = 0; i < 3; ++i) {
       const cv::Mat& plane = p.planes[static_cast<std::size_t>(i)];
       for (int y = 0; y < plane.rows; ++y)
-        std::memcpy(frame_->data[i] + static_cast<std::ptrdiff_t>(y) * frame_->linesize[i], plane.ptr(y),
-                    static_cast<std::size_t>(plane.cols));
+        std::memcpy(frame_->data[i] + static_cast<std::ptrdiff_t>(y) * frame_->linesize[i],
+                    plane.ptr(y), static_cast<std::size_t>(plane.cols));
     }
     frame_->pts = pts;
     frame_->color_range = codec_->color_range;
@@ -291,10 +303,13 @@ class LibavEncoder final : public VideoEncoder {
     if (audio_) audio_->write_until(out_.get(), 1e300);
     const int r = av_write_trailer(out_.get());
     finished_ = true;
-    if (r < 0) throw std::runtime_error("VideoEncoder: writing the trailer failed: " + av::error_text(r));
+    if (r < 0)
+      throw std::runtime_error("VideoEncoder: writing the trailer failed: " + av::error_text(r));
   }
 
-  Rational stream_time_base() const override { return {stream_->time_base.num, stream_->time_base.den}; }
+  Rational stream_time_base() const override {
+    return {stream_->time_base.num, stream_->time_base.den};
+  }
 
  private:
   void send(const AVFrame* f) {
@@ -308,7 +323,8 @@ class LibavEncoder final : public VideoEncoder {
         audio_->write_until(out_.get(), static_cast<double>(t) * av_q2d(stream_->time_base));
       }
       r = av_interleaved_write_frame(out_.get(), packet_.get());
-      if (r < 0) throw std::runtime_error("VideoEncoder: writing video failed: " + av::error_text(r));
+      if (r < 0)
+        throw std::runtime_error("VideoEncoder: writing video failed: " + av::error_text(r));
     }
     if (r != AVERROR(EAGAIN) && r != AVERROR_EOF)
       throw std::runtime_error("VideoEncoder: encoding failed: " + av::error_text(r));

@@ -31,20 +31,20 @@ struct AudioWindow {
 struct EncoderSettings {
   std::string codec = "libx264";  //!< a libavcodec encoder name ("libx264", "libx265", "ffv1")
   int width = 0, height = 0;
-  Rational frame_rate{30, 1};     //!< nominal rate (rate control, container headers)
-  Rational time_base{0, 1};       //!< unit of the timestamps given to write(); 0: 1 / frame_rate
+  Rational frame_rate{30, 1};  //!< nominal rate (rate control, container headers)
+  Rational time_base{0, 1};    //!< unit of the timestamps given to write(); 0: 1 / frame_rate
   /// Pixel layout and colour tags: 8-bit, subsampling 4:2:0 / 4:2:2 / 4:4:4, matrix, range,
   /// chroma siting (left or top-left for 4:2:0). Pictures given to write() must match it.
   YcbcrInfo ycbcr;
-  int crf = -1;                   //!< x264/x265 constant rate factor (0: lossless x264); -1: encoder default
-  std::string preset;             //!< x264/x265 preset ("medium"); empty: encoder default
-  int gop = 0;                    //!< key frame interval; 0: encoder default
-  int max_b_frames = -1;          //!< -1: encoder default
-  int threads = 0;                //!< 0: the encoder picks (x264/x265: all cores)
+  int crf = -1;        //!< x264/x265 constant rate factor (0: lossless x264); -1: encoder default
+  std::string preset;  //!< x264/x265 preset ("medium"); empty: encoder default
+  int gop = 0;         //!< key frame interval; 0: encoder default
+  int max_b_frames = -1;  //!< -1: encoder default
+  int threads = 0;        //!< 0: the encoder picks (x264/x265: all cores)
   std::map<std::string, std::string> codec_options;  //!< further AVOptions of the encoder
   bool spherical_equirect = false;  //!< Spherical Video V2 equirectangular + mono stereo mode
   int display_rotation_deg = 0;     //!< clockwise display rotation written as the display matrix
-  std::filesystem::path copy_audio_from;  //!< copy every audio stream of this file (empty: none)
+  std::filesystem::path copy_audio_from;    //!< copy every audio stream of this file (empty: none)
   std::optional<AudioWindow> audio_window;  //!< default: every audio packet, times unchanged
   /// Container format chosen from this name's extension (default: the written path's). Lets a
   /// caller write a temporary file whose own name says nothing.

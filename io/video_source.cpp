@@ -52,8 +52,10 @@ void VideoSource::flush_warnings(std::unique_lock<std::mutex>& lock) {
   // Outside the lock: the callback may take its own locks or ask the source for stats.
   lock.unlock();
   for (const std::string& line : lines) {
-    if (options_.on_warning) options_.on_warning(line);
-    else std::cerr << "vdfx: warning: " << line << "\n";
+    if (options_.on_warning)
+      options_.on_warning(line);
+    else
+      std::cerr << "vdfx: warning: " << line << "\n";
   }
   lock.lock();
 }
@@ -126,8 +128,9 @@ void VideoSource::run() {
         warn("frame " + std::to_string(index) + " could not be decoded; skipped");
         if (consecutive_errors_ >= options_.max_consecutive_errors) {
           const std::int64_t end = index + 1 - consecutive_errors_;
-          warn(std::to_string(consecutive_errors_) + " frames in a row failed: the video ends at frame " +
-               std::to_string(end) + " of " + std::to_string(props_.frames) + " (truncated?)");
+          warn(std::to_string(consecutive_errors_) +
+               " frames in a row failed: the video ends at frame " + std::to_string(end) + " of " +
+               std::to_string(props_.frames) + " (truncated?)");
           limit_ = std::max<std::int64_t>(end, 1);
           stats_.ended_early = true;
           stats_.end = limit_;
@@ -176,7 +179,8 @@ std::optional<VideoFrame> VideoSource::frame_at(std::int64_t index,
   }
   bool sought = false;
   while (true) {
-    if (auto f = queue_.take_upto(index, current_ ? std::optional(current_->index) : std::nullopt)) {
+    if (auto f =
+            queue_.take_upto(index, current_ ? std::optional(current_->index) : std::nullopt)) {
       current_ = std::move(f);
       changed_.notify_all();  // room in the queue
     }
@@ -190,7 +194,8 @@ std::optional<VideoFrame> VideoSource::frame_at(std::int64_t index,
     const bool coming = queue_.empty() && !seek_pending_ && upcoming >= 0 && upcoming <= index &&
                         index - upcoming <= options_.max_wait_ahead;
     const bool pending = seek_pending_ && next_ == std::clamp<std::int64_t>(index, 0, limit_ - 1);
-    const bool beyond_end = index >= limit_ && queue_.empty() && !loop_ && (at_end_ || next_ >= limit_);
+    const bool beyond_end =
+        index >= limit_ && queue_.empty() && !loop_ && (at_end_ || next_ >= limit_);
     if (!coming && !pending) {
       if (!sought && !beyond_end && index >= 0) {
         request_seek(index);
@@ -201,7 +206,8 @@ std::optional<VideoFrame> VideoSource::frame_at(std::int64_t index,
     }
     if (changed_.wait_until(lock, deadline) == std::cv_status::timeout) {
       // One last look: the frame may have landed just now.
-      if (auto f = queue_.take_upto(index, current_ ? std::optional(current_->index) : std::nullopt)) {
+      if (auto f =
+              queue_.take_upto(index, current_ ? std::optional(current_->index) : std::nullopt)) {
         current_ = std::move(f);
         changed_.notify_all();
       }

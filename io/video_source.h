@@ -1,7 +1,8 @@
 /// @file
 /// @brief A video (or a still as a one-frame video) decoded on a worker thread into a small
-/// bounded queue of pictures in the decoder's own layout (Y'CbCr planes, not converted). The consumer asks for frame N and gets the newest decoded frame <= N, waiting
-/// at most a timeout for N itself: decoding never blocks the render loop.
+/// bounded queue of pictures in the decoder's own layout (Y'CbCr planes, not converted). The
+/// consumer asks for frame N and gets the newest decoded frame <= N, waiting at most a timeout for
+/// N itself: decoding never blocks the render loop.
 #pragma once
 
 #include <chrono>

@@ -4,10 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <opencv2/core/utility.hpp>
 #include <stdexcept>
 #include <vector>
-
-#include <opencv2/core/utility.hpp>
 
 namespace vdfx::io {
 namespace {
@@ -20,7 +19,8 @@ struct CodeScales {
 
 CodeScales code_scales(const YcbcrInfo& info) {
   const int n = info.bit_depth;
-  if (n < 1 || n > 16) throw std::invalid_argument("Y'CbCr bit depth " + std::to_string(n) + " is not 1..16");
+  if (n < 1 || n > 16)
+    throw std::invalid_argument("Y'CbCr bit depth " + std::to_string(n) + " is not 1..16");
   const double s = std::ldexp(1.0, n - 8);
   const double c_offset = std::ldexp(1.0, n - 1);
   if (info.full_range) {
@@ -89,9 +89,12 @@ void convert_rows(const Picture& p, const AffineMap3& map, const ChromaTaps& col
       const float cr = cr_row[a] + fx * (cr_row[b] - cr_row[a]);
       const float yy = py[x];
       for (int c = 0; c < 3; ++c) {
-        const float v = std::clamp(m[3 * c] * yy + m[3 * c + 1] * cb + m[3 * c + 2] * cr + o[c], 0.0f, 1.0f);
-        if constexpr (std::is_same_v<Out, cv::Vec3b>) dst[x][c] = static_cast<std::uint8_t>(v * 255.0f + 0.5f);
-        else dst[x][c] = v;
+        const float v =
+            std::clamp(m[3 * c] * yy + m[3 * c + 1] * cb + m[3 * c + 2] * cr + o[c], 0.0f, 1.0f);
+        if constexpr (std::is_same_v<Out, cv::Vec3b>)
+          dst[x][c] = static_cast<std::uint8_t>(v * 255.0f + 0.5f);
+        else
+          dst[x][c] = v;
       }
     }
   }
@@ -102,19 +105,23 @@ void convert(const Picture& p, PixelFormat format, cv::Mat& out) {
   const YcbcrInfo& info = p.ycbcr;
   const int w = p.planes[0].cols, h = p.planes[0].rows;
   const ChromaTaps cols = chroma_taps(w, p.planes[1].cols, info.log2_chroma_w, info.chroma_x, true);
-  const ChromaTaps rows = chroma_taps(h, p.planes[1].rows, info.log2_chroma_h, info.chroma_y, false);
+  const ChromaTaps rows =
+      chroma_taps(h, p.planes[1].rows, info.log2_chroma_h, info.chroma_y, false);
   const AffineMap3 map = ycbcr_to_rgb_map(info);
   out.create(h, w, format == PixelFormat::Rgb8 ? CV_8UC3 : CV_32FC3);
   // Rows are independent: OpenCV's pool splits them (serial when called from inside a pool task).
   cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& r) {
-    if (format == PixelFormat::Rgb8) convert_rows<T, cv::Vec3b>(p, map, cols, rows, out, r);
-    else convert_rows<T, cv::Vec3f>(p, map, cols, rows, out, r);
+    if (format == PixelFormat::Rgb8)
+      convert_rows<T, cv::Vec3b>(p, map, cols, rows, out, r);
+    else
+      convert_rows<T, cv::Vec3f>(p, map, cols, rows, out, r);
   });
 }
 
 /// Taps of the tent filter that makes chroma sample j (centred on its siting, half-width one
 /// subsampling step), over `n` source samples (clamped at the edges), normalised.
-std::vector<std::vector<std::pair<int, float>>> tent_taps(int out_n, int n, int log2_sub, double siting) {
+std::vector<std::vector<std::pair<int, float>>> tent_taps(int out_n, int n, int log2_sub,
+                                                          double siting) {
   const double step = std::ldexp(1.0, log2_sub);
   std::vector<std::vector<std::pair<int, float>>> taps(static_cast<std::size_t>(out_n));
   for (int j = 0; j < out_n; ++j) {
@@ -134,8 +141,12 @@ std::vector<std::vector<std::pair<int, float>>> tent_taps(int out_n, int n, int 
   return taps;
 }
 
-inline float clamp01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
-inline cv::Vec3f clamp01(const cv::Vec3f& v) { return {clamp01(v[0]), clamp01(v[1]), clamp01(v[2])}; }
+inline float clamp01(float v) {
+  return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
+}
+inline cv::Vec3f clamp01(const cv::Vec3f& v) {
+  return {clamp01(v[0]), clamp01(v[1]), clamp01(v[2])};
+}
 
 /// R'G'B' (CV_32FC3 or CV_8UC3, clamped to [0, 1] on the way) filtered down to the chroma grid:
 /// along x, then along y; the result is CV_32FC3 of cw x ch.
@@ -154,7 +165,8 @@ cv::Mat chroma_rgb(const cv::Mat& rgb, int cw, int ch, const YcbcrInfo& info) {
     cv::Vec3f* d = horizontal.ptr<cv::Vec3f>(y);
     for (int j = 0; j < cw; ++j) {
       cv::Vec3f acc(0, 0, 0);
-      for (const auto& [x, wgt] : tx[static_cast<std::size_t>(j)]) acc += line[static_cast<std::size_t>(x)] * wgt;
+      for (const auto& [x, wgt] : tx[static_cast<std::size_t>(j)])
+        acc += line[static_cast<std::size_t>(x)] * wgt;
       d[j] = acc;
     }
   }
@@ -223,15 +235,19 @@ void to_rgb(const Picture& p, PixelFormat format, cv::Mat& out) {
   if (p.empty()) throw std::invalid_argument("to_rgb: empty picture");
   if (!p.is_ycbcr()) {
     const bool want8 = format == PixelFormat::Rgb8;
-    if (want8 == (p.rgb.depth() == CV_8U)) p.rgb.copyTo(out);
-    else if (want8) p.rgb.convertTo(out, CV_8UC3, 255.0);  // rounds to nearest, saturates
-    else p.rgb.convertTo(out, CV_32FC3, 1.0 / 255.0);
+    if (want8 == (p.rgb.depth() == CV_8U))
+      p.rgb.copyTo(out);
+    else if (want8)
+      p.rgb.convertTo(out, CV_8UC3, 255.0);  // rounds to nearest, saturates
+    else
+      p.rgb.convertTo(out, CV_32FC3, 1.0 / 255.0);
     return;
   }
   const int depth = p.planes[0].depth();
   for (const cv::Mat& plane : p.planes)
     if (plane.empty() || plane.depth() != depth || plane.channels() != 1)
-      throw std::invalid_argument("to_rgb: Y'CbCr planes must be one-channel 8- or 16-bit, all alike");
+      throw std::invalid_argument(
+          "to_rgb: Y'CbCr planes must be one-channel 8- or 16-bit, all alike");
   if (depth == CV_8U) return convert<std::uint8_t>(p, format, out);
   if (depth == CV_16U) return convert<std::uint16_t>(p, format, out);
   throw std::invalid_argument("to_rgb: unsupported plane depth");
@@ -252,13 +268,15 @@ Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
   p.planes[2].create(ch, cw, CV_8UC1);
   // Codes are never negative here (offsets >= 0, inputs clamped): rounding is + 0.5 and a cut.
   auto code = [](float v) { return static_cast<std::uint8_t>(std::clamp(v + 0.5f, 0.0f, 255.0f)); };
-  const float m0 = static_cast<float>(a.m[0]), m1 = static_cast<float>(a.m[1]), m2 = static_cast<float>(a.m[2]);
+  const float m0 = static_cast<float>(a.m[0]), m1 = static_cast<float>(a.m[1]),
+              m2 = static_cast<float>(a.m[2]);
   const float o0 = static_cast<float>(a.offset[0]);
   for (int y = 0; y < h; ++y) {
     std::uint8_t* d = p.planes[0].ptr<std::uint8_t>(y);
     if (rgb.depth() == CV_8U) {
       const cv::Vec3b* s = rgb.ptr<cv::Vec3b>(y);
-      for (int x = 0; x < w; ++x) d[x] = code((m0 * s[x][0] + m1 * s[x][1] + m2 * s[x][2]) * (1.0f / 255.0f) + o0);
+      for (int x = 0; x < w; ++x)
+        d[x] = code((m0 * s[x][0] + m1 * s[x][1] + m2 * s[x][2]) * (1.0f / 255.0f) + o0);
     } else {
       const cv::Vec3f* s = rgb.ptr<cv::Vec3f>(y);
       for (int x = 0; x < w; ++x)
@@ -272,8 +290,10 @@ Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
     std::uint8_t* cb = p.planes[1].ptr<std::uint8_t>(y);
     std::uint8_t* cr = p.planes[2].ptr<std::uint8_t>(y);
     for (int x = 0; x < cw; ++x) {
-      cb[x] = code(static_cast<float>(a.m[3] * s[x][0] + a.m[4] * s[x][1] + a.m[5] * s[x][2] + a.offset[1]));
-      cr[x] = code(static_cast<float>(a.m[6] * s[x][0] + a.m[7] * s[x][1] + a.m[8] * s[x][2] + a.offset[2]));
+      cb[x] = code(
+          static_cast<float>(a.m[3] * s[x][0] + a.m[4] * s[x][1] + a.m[5] * s[x][2] + a.offset[1]));
+      cr[x] = code(
+          static_cast<float>(a.m[6] * s[x][0] + a.m[7] * s[x][1] + a.m[8] * s[x][2] + a.offset[2]));
     }
   }
   return p;

@@ -14,7 +14,6 @@
 #pragma once
 
 #include <array>
-
 #include <opencv2/core.hpp>
 
 #include "io/picture.h"

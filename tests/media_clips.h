@@ -11,10 +11,9 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "io/libav_util.h"
 #include "io/video_encoder.h"
@@ -29,15 +28,18 @@ inline cv::Mat coded_frame(int index, int width = 128, int height = 64) {
   cv::Mat m(height, width, CV_8UC3, cv::Scalar(0, 0, 0));
   const int stripe = width / 8;
   for (int b = 0; b < 8; ++b)
-    if (index & (1 << b)) m(cv::Rect(b * stripe, 0, stripe, height)).setTo(cv::Scalar(255, 255, 255));
+    if (index & (1 << b))
+      m(cv::Rect(b * stripe, 0, stripe, height)).setTo(cv::Scalar(255, 255, 255));
   return m;
 }
 
 /// Reads the stripes back (RGB 8-bit or float; the middle row).
 inline int frame_code(const cv::Mat& rgb) {
   cv::Mat m8;
-  if (rgb.depth() == CV_32F) rgb.convertTo(m8, CV_8UC3, 255.0);
-  else m8 = rgb;
+  if (rgb.depth() == CV_32F)
+    rgb.convertTo(m8, CV_8UC3, 255.0);
+  else
+    m8 = rgb;
   const int stripe = m8.cols / 8;
   int code = 0;
   for (int b = 0; b < 8; ++b)
@@ -52,9 +54,9 @@ inline cv::Mat smooth_frame(int i, int width, int height) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const double u = (x + 3.0 * i) / width, v = static_cast<double>(y) / height;
-      m.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(30 + 200 * u),
-                                        cv::saturate_cast<uchar>(40 + 180 * v),
-                                        cv::saturate_cast<uchar>(128 + 90 * std::sin(6.0 * u + 3.0 * v)));
+      m.at<cv::Vec3b>(y, x) =
+          cv::Vec3b(cv::saturate_cast<uchar>(30 + 200 * u), cv::saturate_cast<uchar>(40 + 180 * v),
+                    cv::saturate_cast<uchar>(128 + 90 * std::sin(6.0 * u + 3.0 * v)));
     }
   return m;
 }
@@ -64,9 +66,10 @@ inline cv::Mat smooth_frame(int i, int width, int height) {
 /// upsampling they use: what remains is the matrix, the range and their arithmetic.
 inline cv::Mat patch_frame(int i, int width, int height) {
   static const std::uint8_t kColours[][3] = {
-      {230, 30, 40},  {30, 200, 60},  {40, 60, 220},  {240, 230, 50}, {20, 220, 230}, {220, 40, 210},
-      {128, 128, 128}, {250, 250, 250}, {8, 8, 8},     {180, 120, 90}, {90, 140, 200}, {60, 90, 40},
-      {255, 0, 0},    {0, 255, 0},    {0, 0, 255},    {200, 170, 160}};
+      {230, 30, 40},  {30, 200, 60},  {40, 60, 220},   {240, 230, 50},
+      {20, 220, 230}, {220, 40, 210}, {128, 128, 128}, {250, 250, 250},
+      {8, 8, 8},      {180, 120, 90}, {90, 140, 200},  {60, 90, 40},
+      {255, 0, 0},    {0, 255, 0},    {0, 0, 255},     {200, 170, 160}};
   cv::Mat m(height, width, CV_8UC3);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
@@ -95,17 +98,17 @@ inline int max_patch_interior_diff(const cv::Mat& a, const cv::Mat& b, int margi
 struct ClipSpec {
   int width = 128, height = 64, frames = 48;
   io::Rational fps{24, 1};
-  io::Rational time_base{0, 1};        //!< 0: 1 / fps
-  std::vector<std::int64_t> pts;       //!< empty: 0, 1, 2, ... in 1 / fps
+  io::Rational time_base{0, 1};   //!< 0: 1 / fps
+  std::vector<std::int64_t> pts;  //!< empty: 0, 1, 2, ... in 1 / fps
   std::string codec = "libx264";
-  io::YcbcrInfo ycbcr;                 //!< BT.709 limited 4:2:0 by default
+  io::YcbcrInfo ycbcr;  //!< BT.709 limited 4:2:0 by default
   std::map<std::string, std::string> options{{"qp", "12"}};
-  std::string preset = "superfast";    //!< x264: keeps B-frames (ultrafast has none)
+  std::string preset = "superfast";  //!< x264: keeps B-frames (ultrafast has none)
   int gop = 0, max_b_frames = 3;
   int rotation_deg = 0;
   bool spherical = false;
   fs::path audio_from;
-  std::function<cv::Mat(int)> frame;   //!< RGB 8-bit frame i; default coded_frame
+  std::function<cv::Mat(int)> frame;  //!< RGB 8-bit frame i; default coded_frame
 };
 
 inline fs::path write_clip(const fs::path& path, const ClipSpec& c) {
@@ -127,7 +130,8 @@ inline fs::path write_clip(const fs::path& path, const ClipSpec& c) {
   auto enc = io::VideoEncoder::create(path, s);
   for (int i = 0; i < c.frames; ++i) {
     const cv::Mat rgb = c.frame ? c.frame(i) : coded_frame(i, c.width, c.height);
-    enc->write(io::rgb_to_ycbcr(rgb, c.ycbcr), c.pts.empty() ? i : c.pts[static_cast<std::size_t>(i)]);
+    enc->write(io::rgb_to_ycbcr(rgb, c.ycbcr),
+               c.pts.empty() ? i : c.pts[static_cast<std::size_t>(i)]);
   }
   enc->finish();
   return path;
@@ -168,7 +172,8 @@ inline fs::path write_tone(const fs::path& path, double seconds) {
     av_channel_layout_copy(&f->ch_layout, &c->ch_layout);
     av_frame_get_buffer(f.get(), 0);
     auto* s = reinterpret_cast<float*>(f->data[0]);
-    for (int k = 0; k < c->frame_size; ++k) s[k] = 0.3f * static_cast<float>(std::sin(2 * M_PI * 440.0 * (t + k) / 48000.0));
+    for (int k = 0; k < c->frame_size; ++k)
+      s[k] = 0.3f * static_cast<float>(std::sin(2 * M_PI * 440.0 * (t + k) / 48000.0));
     f->pts = t;
     avcodec_send_frame(c.get(), f.get());
     av_frame_unref(f.get());
@@ -185,8 +190,9 @@ inline fs::path write_tone(const fs::path& path, double seconds) {
 /// `ffmpeg -i CLIP -vf select=eq(n\,FRAME) -frames:v 1 -pix_fmt rgb24` as an RGB CV_8UC3 mat of
 /// `width` x `height` (the displayed size); fails the test (never skips) when ffmpeg is missing.
 inline cv::Mat ffmpeg_rgb24(const fs::path& clip, int frame, int width, int height) {
-  const std::string cmd = "ffmpeg -v error -nostdin -i '" + clip.string() + "' -vf 'select=eq(n\\," +
-                          std::to_string(frame) + ")' -frames:v 1 -pix_fmt rgb24 -f rawvideo -";
+  const std::string cmd = "ffmpeg -v error -nostdin -i '" + clip.string() +
+                          "' -vf 'select=eq(n\\," + std::to_string(frame) +
+                          ")' -frames:v 1 -pix_fmt rgb24 -f rawvideo -";
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) {
     ADD_FAILURE() << "cannot run: " << cmd;

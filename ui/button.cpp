@@ -32,7 +32,8 @@ void Button::draw(DrawContext& ctx) const {
     ctx.canvas.text(*ctx.fonts.regular, px, label_, rect().inset(t.padding, 0), Align::Centre, col);
     return;
   }
-  const double text_w = label_.empty() ? 0.0 : ctx.canvas.text_width(*ctx.fonts.regular, px, label_);
+  const double text_w =
+      label_.empty() ? 0.0 : ctx.canvas.text_width(*ctx.fonts.regular, px, label_);
   const double gap = label_.empty() ? 0.0 : 0.4 * px;
   const double total = icon_size + gap + text_w;
   const double x0 = rect().centre().x - 0.5 * total;
@@ -46,8 +47,8 @@ void Toggle::draw(DrawContext& ctx) const {
   const Theme& t = ctx.theme;
   draw_widget_frame(ctx, *this, rect());
   const double track_h = 44.0, track_w = 88.0;
-  const Rect track{rect().right() - t.padding - track_w, rect().centre().y - 0.5 * track_h,
-                   track_w, track_h};
+  const Rect track{rect().right() - t.padding - track_w, rect().centre().y - 0.5 * track_h, track_w,
+                   track_h};
   ctx.canvas.text(*ctx.fonts.regular, t.font_body, label_,
                   {rect().x + t.padding, rect().y, track.x - rect().x - 2 * t.padding, rect().h},
                   Align::Left, enabled() ? t.text : t.text_muted);
@@ -60,7 +61,7 @@ void Toggle::draw(DrawContext& ctx) const {
 void Label::draw(DrawContext& ctx) const {
   const Theme& t = ctx.theme;
   const Font& font = role_ == Role::Title ? *ctx.fonts.bold : *ctx.fonts.regular;
-  const int px = role_ == Role::Title ? t.font_title
+  const int px = role_ == Role::Title  ? t.font_title
                  : role_ == Role::Body ? t.font_body
                                        : t.font_small;
   ctx.canvas.text(font, px, text_, rect(), align_, muted_ ? t.text_muted : t.text);

@@ -2,11 +2,11 @@
 /// @brief Button (click), Toggle (on/off) and Label (static text).
 #pragma once
 
+#include <string>
+
 #include "ui/canvas.h"
 #include "ui/colour.h"
 #include "ui/widget.h"
-
-#include <string>
 
 namespace vdfx::ui {
 

@@ -2,17 +2,16 @@
 /// @brief Software rasteriser of canvas.h: signed-distance coverage, premultiplied "over".
 #include "ui/canvas.h"
 
-#include "ui/font.h"
-#include "ui/utf8.h"
-
-#include <glm/geometric.hpp>
-#include <opencv2/imgproc.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <glm/geometric.hpp>
+#include <opencv2/imgproc.hpp>
 #include <stdexcept>
+
+#include "ui/font.h"
+#include "ui/utf8.h"
 
 namespace vdfx::ui {
 
@@ -157,17 +156,20 @@ cv::Mat unpremultiply(const cv::Mat& premultiplied) {
   return out;
 }
 
-cv::Mat Canvas::to_straight_rgba() const { return unpremultiply(image_); }
+cv::Mat Canvas::to_straight_rgba() const {
+  return unpremultiply(image_);
+}
 
 void Canvas::clear(Rgba c) {
   float pm[4];
   premultiply(c, pm);
-  image_.setTo(cv::Scalar(std::round(pm[0]), std::round(pm[1]), std::round(pm[2]),
-                          std::round(pm[3])));
+  image_.setTo(
+      cv::Scalar(std::round(pm[0]), std::round(pm[1]), std::round(pm[2]), std::round(pm[3])));
 }
 
 void Canvas::set_scale(double scale) {
-  if (!(scale > 0.0) || !std::isfinite(scale)) throw std::invalid_argument("Canvas::set_scale: scale must be > 0");
+  if (!(scale > 0.0) || !std::isfinite(scale))
+    throw std::invalid_argument("Canvas::set_scale: scale must be > 0");
   scale_ = scale;
 }
 
@@ -196,11 +198,13 @@ void Canvas::clear_rect(const Rect& layout_rect, Rgba c) {
   const int y1 = std::min(b.y1, static_cast<int>(std::ceil(r.bottom() - 0.5)));
   if (x1 <= x0 || y1 <= y0) return;
   image_(cv::Rect(x0, y0, x1 - x0, y1 - y0))
-      .setTo(cv::Scalar(std::round(pm[0]), std::round(pm[1]), std::round(pm[2]),
-                        std::round(pm[3])));
+      .setTo(
+          cv::Scalar(std::round(pm[0]), std::round(pm[1]), std::round(pm[2]), std::round(pm[3])));
 }
 
-void Canvas::push_clip(const Rect& r) { clips_.push_back(clips_.back().intersect(px(r))); }
+void Canvas::push_clip(const Rect& r) {
+  clips_.push_back(clips_.back().intersect(px(r)));
+}
 
 void Canvas::pop_clip() {
   if (clips_.size() <= 1) throw std::logic_error("Canvas::pop_clip without push_clip");
@@ -210,7 +214,8 @@ void Canvas::pop_clip() {
 Canvas::PixelBox Canvas::pixel_box(const Rect& r) const {
   const Rect c = clips_.back();
   // The clip is applied on whole pixels: a pixel is drawn if its centre lies inside the clip.
-  const int cx0 = static_cast<int>(std::ceil(c.x - 0.5)), cy0 = static_cast<int>(std::ceil(c.y - 0.5));
+  const int cx0 = static_cast<int>(std::ceil(c.x - 0.5)),
+            cy0 = static_cast<int>(std::ceil(c.y - 0.5));
   const int cx1 = static_cast<int>(std::ceil(c.right() - 0.5));
   const int cy1 = static_cast<int>(std::ceil(c.bottom() - 0.5));
   PixelBox b{static_cast<int>(std::floor(r.x)), static_cast<int>(std::floor(r.y)),
@@ -282,9 +287,8 @@ void Canvas::stroke_circle(glm::dvec2 centre, double radius, double width, Rgba 
   width = px(width);
   const double outer = radius + 0.5 * width;
   const Rect b{centre.x - outer, centre.y - outer, 2 * outer, 2 * outer};
-  fill_distance(b, c, [&](glm::dvec2 p) {
-    return std::abs(glm::length(p - centre) - radius) - 0.5 * width;
-  });
+  fill_distance(
+      b, c, [&](glm::dvec2 p) { return std::abs(glm::length(p - centre) - radius) - 0.5 * width; });
 }
 
 void Canvas::line(glm::dvec2 a, glm::dvec2 b, double width, Rgba c) {
@@ -301,7 +305,8 @@ void Canvas::polyline(std::span<const glm::dvec2> layout_pts, double width, Rgba
   std::vector<glm::dvec2> scaled;
   if (scale_ != 1.0)
     for (const glm::dvec2 p : layout_pts) scaled.push_back(px(p));
-  const std::span<const glm::dvec2> pts = scale_ != 1.0 ? std::span<const glm::dvec2>(scaled) : layout_pts;
+  const std::span<const glm::dvec2> pts =
+      scale_ != 1.0 ? std::span<const glm::dvec2>(scaled) : layout_pts;
   width = px(width);
   // Coverage is the max over segments, gathered in a mask first so joints are blended once.
   const double hw = 0.5 * width;
@@ -338,7 +343,8 @@ void Canvas::fill_convex(std::span<const glm::dvec2> layout_pts, Rgba c) {
   std::vector<glm::dvec2> scaled;
   if (scale_ != 1.0)
     for (const glm::dvec2 p : layout_pts) scaled.push_back(px(p));
-  const std::span<const glm::dvec2> pts = scale_ != 1.0 ? std::span<const glm::dvec2>(scaled) : layout_pts;
+  const std::span<const glm::dvec2> pts =
+      scale_ != 1.0 ? std::span<const glm::dvec2>(scaled) : layout_pts;
   // Signed area tells the winding, so edge normals can point outwards either way.
   double area = 0.0;
   for (size_t i = 0; i < pts.size(); ++i) {
@@ -376,8 +382,10 @@ cv::Mat to_rgba(const cv::Mat& src, ChannelOrder order) {
       cv::cvtColor(src, rgba, order == ChannelOrder::Bgr ? cv::COLOR_BGR2RGBA : cv::COLOR_RGB2RGBA);
       break;
     case CV_8UC4:
-      if (order == ChannelOrder::Bgr) cv::cvtColor(src, rgba, cv::COLOR_BGRA2RGBA);
-      else rgba = src;
+      if (order == ChannelOrder::Bgr)
+        cv::cvtColor(src, rgba, cv::COLOR_BGRA2RGBA);
+      else
+        rgba = src;
       break;
     case CV_32FC3: {
       cv::Mat u8;
@@ -385,8 +393,9 @@ cv::Mat to_rgba(const cv::Mat& src, ChannelOrder order) {
       cv::cvtColor(u8, rgba, order == ChannelOrder::Bgr ? cv::COLOR_BGR2RGBA : cv::COLOR_RGB2RGBA);
       break;
     }
-    default: throw std::invalid_argument("Canvas::image: unsupported cv::Mat type " +
-                                         std::to_string(src.type()));
+    default:
+      throw std::invalid_argument("Canvas::image: unsupported cv::Mat type " +
+                                  std::to_string(src.type()));
   }
   return rgba;
 }
@@ -404,7 +413,8 @@ cv::Mat scale_to(const cv::Mat& rgba, cv::Size size) {
 
 const cv::Mat& ScaledImage::get(const cv::Mat& src, const Rect& layout_dst, ChannelOrder order,
                                 double scale) {
-  const Rect dst{layout_dst.x * scale, layout_dst.y * scale, layout_dst.w * scale, layout_dst.h * scale};
+  const Rect dst{layout_dst.x * scale, layout_dst.y * scale, layout_dst.w * scale,
+                 layout_dst.h * scale};
   if (src.data != src_data_ || src.size() != src_size_ || src.type() != src_type_ ||
       order != order_ || !(dst == dst_) || rgba_.empty()) {
     const cv::Rect place = image_placement(dst);
@@ -444,8 +454,8 @@ void Canvas::image(const cv::Mat& src, const Rect& layout_dst, ChannelOrder orde
   }
 }
 
-void Canvas::text_at(const Font& font, int size, std::u32string_view text, double x, double baseline,
-                     Rgba c) {
+void Canvas::text_at(const Font& font, int size, std::u32string_view text, double x,
+                     double baseline, Rgba c) {
   const int fpx = font_px(size);
   draw_line(font, fpx, font.layout(text, fpx), px(x), px(baseline), c);
 }
@@ -464,15 +474,17 @@ void Canvas::draw_line(const Font& font, int px, const LineLayout& line, double 
     const GlyphBitmap& bm = font.glyph(g.glyph, px, sub);
     if (bm.coverage.empty()) continue;
     const int gx = static_cast<int>(whole) + bm.left, gy = base + bm.top;
-    const PixelBox b = pixel_box(Rect{static_cast<double>(gx), static_cast<double>(gy),
-                                      static_cast<double>(bm.width),
-                                      static_cast<double>(bm.height)});
+    const PixelBox b =
+        pixel_box(Rect{static_cast<double>(gx), static_cast<double>(gy),
+                       static_cast<double>(bm.width), static_cast<double>(bm.height)});
     for (int y = b.y0; y < b.y1; ++y) {
       std::uint8_t* row = image_.ptr<std::uint8_t>(y);
       const std::uint8_t* cov = bm.coverage.data() + static_cast<size_t>(y - gy) * bm.width - gx;
       for (int xx = b.x0; xx < b.x1; ++xx) {
-        if (cov[xx] == 255) paint.fill(row + 4 * xx, 1);
-        else if (cov[xx]) paint.blend(row + 4 * xx, cov[xx] / 255.f);
+        if (cov[xx] == 255)
+          paint.fill(row + 4 * xx, 1);
+        else if (cov[xx])
+          paint.blend(row + 4 * xx, cov[xx] / 255.f);
       }
     }
   }
@@ -505,8 +517,10 @@ std::string fit_text(const Font& font, int px, std::string_view utf8, double max
   size_t lo = 0, hi = s.size();
   while (lo < hi) {
     const size_t mid = (lo + hi + 1) / 2;
-    if (font.layout(s.substr(0, mid) + ellipsis, px).width <= max_width) lo = mid;
-    else hi = mid - 1;
+    if (font.layout(s.substr(0, mid) + ellipsis, px).width <= max_width)
+      lo = mid;
+    else
+      hi = mid - 1;
   }
   while (lo > 0 && s[lo - 1] == U' ') --lo;  // no "word …"
   std::string out;

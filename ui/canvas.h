@@ -14,16 +14,15 @@
 /// is rasterised at its on-screen size (crisp) instead of being scaled down afterwards.
 #pragma once
 
-#include "ui/colour.h"
-#include "ui/rect.h"
-
 #include <glm/vec2.hpp>
 #include <opencv2/core.hpp>
-
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "ui/colour.h"
+#include "ui/rect.h"
 
 namespace vdfx::ui {
 

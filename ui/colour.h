@@ -11,8 +11,7 @@ struct Rgba {
   float r = 0.f, g = 0.f, b = 0.f, a = 1.f;
   /// From 0xRRGGBB and an alpha in [0, 1].
   static Rgba hex(std::uint32_t rgb, float alpha = 1.f) {
-    return {((rgb >> 16) & 0xff) / 255.f, ((rgb >> 8) & 0xff) / 255.f, (rgb & 0xff) / 255.f,
-            alpha};
+    return {((rgb >> 16) & 0xff) / 255.f, ((rgb >> 8) & 0xff) / 255.f, (rgb & 0xff) / 255.f, alpha};
   }
   Rgba with_alpha(float alpha) const { return {r, g, b, alpha}; }
   bool operator==(const Rgba&) const = default;

@@ -2,24 +2,25 @@
 /// @brief ColourWheel and the hue/saturation <-> tint gain conversions.
 #include "ui/colour_wheel.h"
 
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
 #include "effects/effect_types.h"
 #include "ui/canvas.h"
 #include "ui/colour.h"
 #include "ui/font.h"
 #include "ui/theme.h"
 
-#include <glm/geometric.hpp>
-
-#include <algorithm>
-#include <cmath>
-#include <numbers>
-
 namespace vdfx::ui {
 
 namespace {
 constexpr double kHeaderHeight = 64.0;
 constexpr double kDeg = 180.0 / std::numbers::pi;
-double wrap360(double h) { return std::fmod(std::fmod(h, 360.0) + 360.0, 360.0); }
+double wrap360(double h) {
+  return std::fmod(std::fmod(h, 360.0) + 360.0, 360.0);
+}
 }  // namespace
 
 Eigen::Vector3d tint_gain_from_hue_sat(double hue_deg, double sat) {
@@ -34,14 +35,19 @@ glm::dvec2 hue_sat_from_tint_gain(const Eigen::Vector3d& g) {
   const double d = mx - mn;
   if (d <= 0.0) return {0.0, 0.0};
   double h = 0.0;  // the usual hexcone hue of (r, g, b)
-  if (mx == g.x()) h = 60.0 * std::fmod((g.y() - g.z()) / d, 6.0);
-  else if (mx == g.y()) h = 60.0 * ((g.z() - g.x()) / d + 2.0);
-  else h = 60.0 * ((g.x() - g.y()) / d + 4.0);
+  if (mx == g.x())
+    h = 60.0 * std::fmod((g.y() - g.z()) / d, 6.0);
+  else if (mx == g.y())
+    h = 60.0 * ((g.z() - g.x()) / d + 2.0);
+  else
+    h = 60.0 * ((g.x() - g.y()) / d + 4.0);
   return {wrap360(h), sat};
 }
 
 ColourWheel::ColourWheel(std::string id, std::string label, double hue_deg, double sat)
-    : Widget(std::move(id)), label_(std::move(label)), hue_(wrap360(hue_deg)),
+    : Widget(std::move(id)),
+      label_(std::move(label)),
+      hue_(wrap360(hue_deg)),
       sat_(std::clamp(sat, 0.0, 1.0)) {}
 
 void ColourWheel::set_hue_sat(double hue_deg, double sat) {
@@ -67,7 +73,9 @@ void ColourWheel::drag_to(glm::dvec2 p) {
   set_hue_sat(hue, len / disc_radius());
 }
 
-void ColourWheel::step(glm::ivec2 d) { set_hue_sat(hue_ + kHueStepDeg * d.x, sat_ + kSatStep * d.y); }
+void ColourWheel::step(glm::ivec2 d) {
+  set_hue_sat(hue_ + kHueStepDeg * d.x, sat_ + kSatStep * d.y);
+}
 
 void ColourWheel::thumbstick(glm::dvec2 stick, double dt) {
   if (stick == glm::dvec2(0.0)) return;
@@ -92,10 +100,9 @@ void ColourWheel::draw(DrawContext& ctx) const {
         const double dist = std::hypot(dx, dy);
         const Rgba col = hsv(std::atan2(-dy, dx) * kDeg, std::min(1.0, dist / rad), 1.0);
         const double a = std::clamp(rad - dist + 0.5, 0.0, 1.0);
-        wheel.at<cv::Vec4b>(y, x) = cv::Vec4b(cv::saturate_cast<uchar>(col.r * 255.0),
-                                              cv::saturate_cast<uchar>(col.g * 255.0),
-                                              cv::saturate_cast<uchar>(col.b * 255.0),
-                                              cv::saturate_cast<uchar>(a * 255.0));
+        wheel.at<cv::Vec4b>(y, x) = cv::Vec4b(
+            cv::saturate_cast<uchar>(col.r * 255.0), cv::saturate_cast<uchar>(col.g * 255.0),
+            cv::saturate_cast<uchar>(col.b * 255.0), cv::saturate_cast<uchar>(a * 255.0));
       }
     wheel_ = wheel;
     wheel_radius_ = rad;
@@ -116,11 +123,10 @@ void ColourWheel::draw(DrawContext& ctx) const {
   const int px = t.font_small;
   const double lh = px * 1.25;
   double y = info.y + 72.0 + 12.0;
-  const std::string lines[] = {"hue " + format_value("%.0f", hue_) + "\u00b0",
-                               "sat " + format_value("%.2f", sat_),
-                               "r " + format_value("%.2f", g.x()),
-                               "g " + format_value("%.2f", g.y()),
-                               "b " + format_value("%.2f", g.z())};
+  const std::string lines[] = {
+      "hue " + format_value("%.0f", hue_) + "\u00b0", "sat " + format_value("%.2f", sat_),
+      "r " + format_value("%.2f", g.x()), "g " + format_value("%.2f", g.y()),
+      "b " + format_value("%.2f", g.z())};
   for (const auto& s : lines) {
     ctx.canvas.text(*ctx.fonts.regular, px, s, {info.x, y, info.w, lh}, Align::Left,
                     &s == &lines[0] || &s == &lines[1] ? t.text : t.text_muted);

@@ -3,13 +3,11 @@
 /// (hue, saturation) and the contract's normalised tint gain.
 #pragma once
 
-#include "ui/widget.h"
-
-#include <opencv2/core.hpp>
-
 #include <Eigen/Core>
-
+#include <opencv2/core.hpp>
 #include <string>
+
+#include "ui/widget.h"
 
 namespace vdfx::ui {
 

@@ -2,16 +2,15 @@
 /// @brief The demo panels of demo_panels.h.
 #include "ui/demo_panels.h"
 
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
 #include "ui/button.h"
 #include "ui/menu_list.h"
 #include "ui/minimap.h"
 #include "ui/plot.h"
 #include "ui/slider.h"
 #include "ui/timeline_strip.h"
-
-#include <opencv2/imgproc.hpp>
-
-#include <cmath>
 
 namespace vdfx::ui::demo {
 
@@ -25,15 +24,14 @@ cv::Mat synthetic_frame(int index, int width, int height) {
   cv::Mat img(height, width, CV_8UC3);
   for (int y = 0; y < height; ++y) {
     const double t = static_cast<double>(y) / height;
-    const cv::Vec3b c = t < 0.55 ? cv::Vec3b(static_cast<uchar>(230 - 90 * t),
-                                             static_cast<uchar>(170 - 60 * t),
-                                             static_cast<uchar>(90 + 40 * t))
-                                 : cv::Vec3b(50, static_cast<uchar>(110 - 40 * t), 70);
+    const cv::Vec3b c =
+        t < 0.55 ? cv::Vec3b(static_cast<uchar>(230 - 90 * t), static_cast<uchar>(170 - 60 * t),
+                             static_cast<uchar>(90 + 40 * t))
+                 : cv::Vec3b(50, static_cast<uchar>(110 - 40 * t), 70);
     img.row(y).setTo(c);
   }
   const int sx = (width * (1 + index * 2)) / 16 % width;
-  cv::circle(img, {sx, height / 4}, height / 8, cv::Scalar(120, 230, 255), cv::FILLED,
-             cv::LINE_AA);
+  cv::circle(img, {sx, height / 4}, height / 8, cv::Scalar(120, 230, 255), cv::FILLED, cv::LINE_AA);
   return img;
 }
 
@@ -42,10 +40,10 @@ std::unique_ptr<Panel> make_effect_panel() {
   const Theme& t = p->theme();
   Stack col(Rect{0, 0, 1000, 1000}.inset(40.0), t.gap);
   p->add<Label>("title", "Effects", Label::Role::Title).set_rect(col.next(64));
-  p->add<MenuList>("effect_menu",
-                   std::vector<std::string>{"Blur", "Tint", "Exposure", "Saturation", "Contrast",
-                                            "Vignette"},
-                   2, t.row_height)
+  p->add<MenuList>(
+       "effect_menu",
+       std::vector<std::string>{"Blur", "Tint", "Exposure", "Saturation", "Contrast", "Vignette"},
+       2, t.row_height)
       .set_rect(col.next(6 * t.row_height + 16));
   p->add<Slider1D>("exposure", "Exposure", Axis{-8.0, 8.0, 0.1, "%+.1f", " stops", ""}, 1.5, 0.0)
       .set_rect(col.next(140));
@@ -89,8 +87,8 @@ std::unique_ptr<Panel> make_timeline_panel() {
   cv::Mat field(128, 256, CV_32FC1);
   for (int y = 0; y < field.rows; ++y)
     for (int x = 0; x < field.cols; ++x)
-      field.at<float>(y, x) = static_cast<float>(1.5 * std::cos((x - 96) / 40.0) *
-                                                 std::cos((y - 64) / 45.0));
+      field.at<float>(y, x) =
+          static_cast<float>(1.5 * std::cos((x - 96) / 40.0) * std::cos((y - 64) / 45.0));
   map.set_field(field, -2.0, 2.0);
   map.set_keyframes({{-45.0, 10.0}, {0.0, 0.0}, {60.0, -20.0}, {150.0, 30.0}}, 1);
   map.set_view({20.0, 5.0}, 90.0, 80.0);

@@ -5,11 +5,10 @@
 /// rather than in one test folder.
 #pragma once
 
-#include "ui/panel.h"
-
+#include <memory>
 #include <opencv2/core.hpp>
 
-#include <memory>
+#include "ui/panel.h"
 
 namespace vdfx::ui::demo {
 

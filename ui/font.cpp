@@ -2,13 +2,13 @@
 /// @brief stb_truetype wrapper of font.h; the one translation unit that compiles stb_truetype.
 #include "ui/font.h"
 
-#include "ui/utf8.h"
-
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <unordered_map>
+
+#include "ui/utf8.h"
 
 #define STB_TRUETYPE_IMPLEMENTATION
 #define STBTT_STATIC
@@ -122,8 +122,8 @@ const GlyphBitmap& Font::glyph(int glyph, int px, int subpixel) const {
   bm.top = y0;
   if (bm.width > 0 && bm.height > 0) {
     bm.coverage.assign(static_cast<size_t>(bm.width) * bm.height, 0);
-    stbtt_MakeGlyphBitmapSubpixel(&impl_->info, bm.coverage.data(), bm.width, bm.height,
-                                  bm.width, sc.scale, sc.scale, shift, 0.f, glyph);
+    stbtt_MakeGlyphBitmapSubpixel(&impl_->info, bm.coverage.data(), bm.width, bm.height, bm.width,
+                                  sc.scale, sc.scale, shift, 0.f, glyph);
   }
   return sc.bitmaps.emplace(key, std::move(bm)).first->second;
 }

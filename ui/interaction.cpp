@@ -2,9 +2,8 @@
 /// @brief Ray hit testing and the Pointer state machine.
 #include "ui/interaction.h"
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace vdfx::ui {
 
@@ -69,8 +68,10 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
   // 1. Trigger with hysteresis.
   const bool was_down = down_;
   was_down_ = down_;
-  if (!down_ && in.trigger > settings_.press_threshold) down_ = true;
-  else if (down_ && in.trigger < settings_.release_threshold) down_ = false;
+  if (!down_ && in.trigger > settings_.press_threshold)
+    down_ = true;
+  else if (down_ && in.trigger < settings_.release_threshold)
+    down_ = false;
 
   // 2. Hit test and hover.
   hit_ = hit_panels(panels, in.ray);
@@ -121,8 +122,9 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
         drag_anchor_ = h->pixel;
         drag_offset_ = drag_to_ - h->pixel;
       }
-      drag_to_ = fine_ ? drag_anchor_ + drag_offset_ + (h->pixel - drag_anchor_) * settings_.fine_factor
-                       : h->pixel + drag_offset_;
+      drag_to_ =
+          fine_ ? drag_anchor_ + drag_offset_ + (h->pixel - drag_anchor_) * settings_.fine_factor
+                : h->pixel + drag_offset_;
       change(press_, *held, [&] { held->drag_to(drag_to_); });
     }
   }
@@ -158,7 +160,12 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
         stick_held_s_ = 0.0;
         stick_start_value_ = f->value();
         emit(stick_ref_, EventKind::DragBegin, stick_start_value_, stick_start_value_);
-        const glm::ivec2 dir{stick.x > 0.0 ? 1 : stick.x < 0.0 ? -1 : 0, stick.y > 0.0 ? 1 : stick.y < 0.0 ? -1 : 0};
+        const glm::ivec2 dir{stick.x > 0.0   ? 1
+                             : stick.x < 0.0 ? -1
+                                             : 0,
+                             stick.y > 0.0   ? 1
+                             : stick.y < 0.0 ? -1
+                                             : 0};
         change(stick_ref_, *f, [&] { f->step(dir); });
       } else if (active) {
         // Only the time held past the repeat delay moves it, whatever the frame rate.
@@ -168,7 +175,8 @@ std::vector<Event> Pointer::update(std::span<Panel* const> panels, const Pointer
         if (moving > 0.0) change(stick_ref_, *f, [&] { f->thumbstick(stick, moving); });
       }
       if (!active && stick_active_) {
-        change(stick_ref_, *f, [&] { f->thumbstick(glm::dvec2(0.0), dt); });  // widgets reset their remainders
+        change(stick_ref_, *f,
+               [&] { f->thumbstick(glm::dvec2(0.0), dt); });  // widgets reset their remainders
         stick_active_ = false;
         emit(stick_ref_, EventKind::DragEnd, stick_start_value_, f->value());
         stick_ref_ = {};

@@ -5,15 +5,14 @@
 /// Time is passed in (dt); nothing here reads a clock. No GL: tests drive it with plain rays.
 #pragma once
 
-#include "ui/panel.h"
-#include "ui/widget.h"
-
 #include <glm/vec3.hpp>
-
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
+
+#include "ui/panel.h"
+#include "ui/widget.h"
 
 namespace vdfx::ui {
 
@@ -45,8 +44,8 @@ std::optional<PanelHit> hit_panels(std::span<Panel* const> panels, const Ray& ra
 /// One controller as the UI sees it.
 struct PointerInput {
   Ray ray;
-  double trigger = 0.0;          //!< [0, 1]
-  glm::dvec2 thumbstick{0.0};    //!< [-1, 1]^2, +x right, +y up
+  double trigger = 0.0;        //!< [0, 1]
+  glm::dvec2 thumbstick{0.0};  //!< [-1, 1]^2, +x right, +y up
   /// Fine adjustment held (the other hand's grip; Shift in the sim): a drag moves the widget by
   /// PointerSettings::fine_factor of the pointer's motion, without a jump when it starts or ends.
   bool fine = false;
@@ -102,11 +101,11 @@ class Pointer {
   glm::dvec2 drag_start_value_{0.0};
   // Where the held widget is dragged to: the pointer's pixel, scaled about an anchor while fine.
   bool fine_ = false;
-  glm::dvec2 drag_to_{0.0};       //!< the last position given to drag_to
-  glm::dvec2 drag_anchor_{0.0};   //!< the pointer's pixel when the current mode began
-  glm::dvec2 drag_offset_{0.0};   //!< drag_to_ - pointer pixel then (no jump between modes)
-  bool stick_active_ = false;  //!< a thumbstick gesture is under way on stick_ref_
-  Ref stick_ref_;              //!< the widget the gesture acts on (hovered, else focused)
+  glm::dvec2 drag_to_{0.0};      //!< the last position given to drag_to
+  glm::dvec2 drag_anchor_{0.0};  //!< the pointer's pixel when the current mode began
+  glm::dvec2 drag_offset_{0.0};  //!< drag_to_ - pointer pixel then (no jump between modes)
+  bool stick_active_ = false;    //!< a thumbstick gesture is under way on stick_ref_
+  Ref stick_ref_;                //!< the widget the gesture acts on (hovered, else focused)
   double stick_held_s_ = 0.0;
   glm::dvec2 stick_start_value_{0.0};
 };

@@ -2,12 +2,12 @@
 /// @brief MenuList.
 #include "ui/menu_list.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "ui/canvas.h"
 #include "ui/font.h"
 #include "ui/theme.h"
-
-#include <algorithm>
-#include <cmath>
 
 namespace vdfx::ui {
 
@@ -15,22 +15,29 @@ namespace {
 constexpr double kInset = 8.0;  // rows sit this far inside the frame
 }
 
-MenuList::MenuList(std::string id, std::vector<std::string> items, int selected,
-                   double row_height, int columns)
-    : Widget(std::move(id)), items_(std::move(items)), selected_(0), row_h_(row_height),
+MenuList::MenuList(std::string id, std::vector<std::string> items, int selected, double row_height,
+                   int columns)
+    : Widget(std::move(id)),
+      items_(std::move(items)),
+      selected_(0),
+      row_h_(row_height),
       columns_(std::max(1, columns)) {
   select(selected);
 }
 
-int MenuList::rows() const { return (static_cast<int>(items_.size()) + columns_ - 1) / columns_; }
+int MenuList::rows() const {
+  return (static_cast<int>(items_.size()) + columns_ - 1) / columns_;
+}
 
-double MenuList::bar_width() const { return rows() > visible_rows() ? 14.0 : 0.0; }
+double MenuList::bar_width() const {
+  return rows() > visible_rows() ? 14.0 : 0.0;
+}
 
 Rect MenuList::cell(int index) const {
   const Rect r = rect();
   const double w = (r.w - 2 * kInset - bar_width()) / columns_;
-  return {r.x + kInset + (index % columns_) * w, r.y + kInset + (index / columns_ - scroll_) * row_h_, w,
-          row_h_};
+  return {r.x + kInset + (index % columns_) * w,
+          r.y + kInset + (index / columns_ - scroll_) * row_h_, w, row_h_};
 }
 
 void MenuList::set_items(std::vector<std::string> items) {
@@ -114,7 +121,8 @@ void MenuList::draw(DrawContext& ctx) const {
   for (int i = first; i < end; ++i) {
     const Rect c = cell(i);
     const Rect rr{c.x, c.y, c.w - 4.0, c.h - 4.0};
-    if (i == selected_) ctx.canvas.fill_rounded_rect(rr, t.corner_radius - 4, t.selection);
+    if (i == selected_)
+      ctx.canvas.fill_rounded_rect(rr, t.corner_radius - 4, t.selection);
     else if (i == hover_row_ && hovered())
       ctx.canvas.fill_rounded_rect(rr, t.corner_radius - 4, t.surface_hover);
     ctx.canvas.text(*ctx.fonts.regular, t.font_body, items_[static_cast<size_t>(i)],
@@ -125,9 +133,9 @@ void MenuList::draw(DrawContext& ctx) const {
     const Rect track{r.right() - kInset - bar_w, r.y + kInset, bar_w, r.h - 2 * kInset};
     ctx.canvas.fill_rounded_rect(track, 0.5 * bar_w, t.track);
     const double n = static_cast<double>(rows());
-    ctx.canvas.fill_rounded_rect({track.x, track.y + track.h * scroll_ / n, bar_w,
-                                  track.h * visible_rows() / n},
-                                 0.5 * bar_w, t.text_muted);
+    ctx.canvas.fill_rounded_rect(
+        {track.x, track.y + track.h * scroll_ / n, bar_w, track.h * visible_rows() / n},
+        0.5 * bar_w, t.text_muted);
   }
 }
 

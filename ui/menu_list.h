@@ -3,10 +3,10 @@
 /// several (items row by row: the effect menu's two columns, a style switch's cells).
 #pragma once
 
-#include "ui/widget.h"
-
 #include <string>
 #include <vector>
+
+#include "ui/widget.h"
 
 namespace vdfx::ui {
 

@@ -2,16 +2,15 @@
 /// @brief Minimap.
 #include "ui/minimap.h"
 
-#include "ui/canvas.h"
-#include "ui/font.h"
-#include "ui/theme.h"
-
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include <algorithm>
-#include <cmath>
+#include "ui/canvas.h"
+#include "ui/font.h"
+#include "ui/theme.h"
 
 namespace vdfx::ui {
 
@@ -50,8 +49,7 @@ void Minimap::set_keyframes(std::vector<effects::Direction> dirs, int highlighte
 }
 
 void Minimap::set_view(effects::Direction forward, double hfov_deg, double vfov_deg) {
-  if (forward == view_ && hfov_deg == hfov_ && vfov_deg == vfov_)
-    return;
+  if (forward == view_ && hfov_deg == hfov_ && vfov_deg == vfov_) return;
   view_ = forward;
   hfov_ = hfov_deg;
   vfov_ = vfov_deg;
@@ -124,8 +122,10 @@ void Minimap::draw(DrawContext& ctx) const {
   c.text(*ctx.fonts.regular, t.font_body, title_,
          {r.x + t.padding, r.y + 8, r.w - 2 * t.padding, 56}, Align::Left, t.text);
   const Rect a = map_area();
-  if (!image_.empty()) c.image(scaled_.get(image_, a, ChannelOrder::Bgr, c.scale()), a, ChannelOrder::Rgb);
-  else c.fill_rect(a, t.surface_pressed);
+  if (!image_.empty())
+    c.image(scaled_.get(image_, a, ChannelOrder::Bgr, c.scale()), a, ChannelOrder::Rgb);
+  else
+    c.fill_rect(a, t.surface_pressed);
   c.push_clip(a);
   for (const auto& line : footprint()) {
     c.polyline(line, 7.0, Rgba::hex(0x000000, 0.7f));

@@ -8,14 +8,13 @@
 /// new_value.x is the keyframe picked (-1: none under the ray), even the same one twice.
 #pragma once
 
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
 #include "effects/coords.h"
 #include "ui/canvas.h"
 #include "ui/widget.h"
-
-#include <opencv2/core.hpp>
-
-#include <string>
-#include <vector>
 
 namespace vdfx::ui {
 
@@ -37,7 +36,9 @@ class Minimap : public Widget {
   /// change nothing.
   void set_view(effects::Direction forward, double hfov_deg, double vfov_deg);
   bool interactive() const override { return enabled() && !keyframes_.empty(); }
-  glm::dvec2 value() const override { return {static_cast<double>(picked_), static_cast<double>(clicks_)}; }
+  glm::dvec2 value() const override {
+    return {static_cast<double>(picked_), static_cast<double>(clicks_)};
+  }
   void click(glm::dvec2 p) override;
   /// The keyframe whose dot is nearest panel pixel p within kPickRadius (inside the map), or -1.
   int keyframe_at(glm::dvec2 p) const;
@@ -54,12 +55,12 @@ class Minimap : public Widget {
 
  private:
   std::string title_;
-  cv::Mat image_;  //!< BGR
+  cv::Mat image_;               //!< BGR
   mutable ScaledImage scaled_;  //!< image_ scaled to map_area()
   std::vector<effects::Direction> keyframes_;
   int highlighted_ = -1;
   int selected_ = -1;
-  int picked_ = -1;   //!< the last click's keyframe
+  int picked_ = -1;  //!< the last click's keyframe
   int clicks_ = 0;
   effects::Direction view_{};
   double hfov_ = 90.0, vfov_ = 90.0;

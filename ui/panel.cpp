@@ -2,17 +2,21 @@
 /// @brief Panel.
 #include "ui/panel.h"
 
-#include "ui/canvas.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "ui/canvas.h"
 
 namespace vdfx::ui {
 
 Panel::Panel(std::string id, int width_px, int height_px, glm::dvec2 size_m,
              std::shared_ptr<const FontSet> fonts, const Theme& theme)
-    : id_(std::move(id)), width_(width_px), height_(height_px), size_m_(size_m),
-      fonts_(std::move(fonts)), theme_(theme) {}
+    : id_(std::move(id)),
+      width_(width_px),
+      height_(height_px),
+      size_m_(size_m),
+      fonts_(std::move(fonts)),
+      theme_(theme) {}
 
 void Panel::set_render_scale(double scale) {
   if (scale == scale_) return;
@@ -21,8 +25,12 @@ void Panel::set_render_scale(double scale) {
   ++revision_;
 }
 
-int Panel::texture_width() const { return std::max(1, static_cast<int>(std::lround(width_ * scale_))); }
-int Panel::texture_height() const { return std::max(1, static_cast<int>(std::lround(height_ * scale_))); }
+int Panel::texture_width() const {
+  return std::max(1, static_cast<int>(std::lround(width_ * scale_)));
+}
+int Panel::texture_height() const {
+  return std::max(1, static_cast<int>(std::lround(height_ * scale_)));
+}
 
 Widget* Panel::find(std::string_view id) const {
   for (const auto& w : widgets_)
@@ -128,9 +136,13 @@ Panel::Damage Panel::damage() const {
   return d;
 }
 
-std::vector<Rect> Panel::dirty_rects() const { return damage().rects; }
+std::vector<Rect> Panel::dirty_rects() const {
+  return damage().rects;
+}
 
-bool Panel::dirty() const { return !damage().rects.empty(); }
+bool Panel::dirty() const {
+  return !damage().rects.empty();
+}
 
 void Panel::draw_region(Canvas& canvas, const Rect* clip) const {
   const Rect all = whole();

@@ -14,19 +14,18 @@
 /// 320 screen pixels can be rendered at 320 pixels with its fonts rasterised at that size.
 #pragma once
 
+#include <memory>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include "ui/canvas.h"
 #include "ui/font.h"
 #include "ui/pose.h"
 #include "ui/theme.h"
 #include "ui/widget.h"
-
-#include <opencv2/core.hpp>
-
-#include <memory>
-#include <optional>
-#include <string>
-#include <string_view>
-#include <vector>
 
 namespace vdfx::ui {
 
@@ -47,7 +46,7 @@ class Panel {
   /// Texture pixels per layout pixel (default 1). A change re-renders the whole texture.
   void set_render_scale(double scale);
   double render_scale() const { return scale_; }
-  int texture_width() const;   //!< round(width_px * render_scale)
+  int texture_width() const;  //!< round(width_px * render_scale)
   int texture_height() const;
   const Theme& theme() const { return theme_; }
   const FontSet& fonts() const { return *fonts_; }
@@ -64,7 +63,9 @@ class Panel {
   const std::vector<std::unique_ptr<Widget>>& widgets() const { return widgets_; }
   Widget* find(std::string_view id) const;
   template <class W>
-  W* find_as(std::string_view id) const { return dynamic_cast<W*>(find(id)); }
+  W* find_as(std::string_view id) const {
+    return dynamic_cast<W*>(find(id));
+  }
   /// The last-added interactive widget whose hit test contains the pixel (widgets added later
   /// draw on top), or nullptr.
   Widget* widget_at(glm::dvec2 pixel) const;
@@ -139,10 +140,10 @@ class Panel {
   bool attached_ = false;
   bool visible_ = true;
   std::uint64_t revision_ = 1;
-  std::optional<std::uint64_t> rendered_revision_;  //!< revision_ at the last render
+  std::optional<std::uint64_t> rendered_revision_;        //!< revision_ at the last render
   std::vector<std::uint64_t> rendered_widget_revisions_;  //!< per widget, at the last render
-  std::vector<Rect> rendered_bounds_;                //!< per widget paint_bounds(), ditto
-  std::unique_ptr<Canvas> canvas_;                   //!< holds the texture between renders
+  std::vector<Rect> rendered_bounds_;                     //!< per widget paint_bounds(), ditto
+  std::unique_ptr<Canvas> canvas_;                        //!< holds the texture between renders
   bool partial_ = true;
   int render_count_ = 0;
   int full_render_count_ = 0;

@@ -2,11 +2,11 @@
 /// @brief Plot.
 #include "ui/plot.h"
 
+#include <algorithm>
+
 #include "ui/canvas.h"
 #include "ui/font.h"
 #include "ui/theme.h"
-
-#include <algorithm>
 
 namespace vdfx::ui {
 
@@ -15,12 +15,21 @@ constexpr double kTitleH = 84.0, kAxisW = 110.0, kAxisH = 48.0;
 }
 
 Plot::Plot(std::string id, std::string title, double y_min, double y_max, const char* y_format)
-    : Widget(std::move(id)), title_(std::move(title)), y_min_(y_min), y_max_(y_max),
+    : Widget(std::move(id)),
+      title_(std::move(title)),
+      y_min_(y_min),
+      y_max_(y_max),
       y_format_(y_format) {}
 
-void Plot::set_values(std::vector<double> values) { set(values_, values); }
-void Plot::set_range(double lo, double hi) { set(y_min_, lo), set(y_max_, hi); }
-void Plot::set_keyframes(std::vector<int> frames) { set(keyframes_, frames); }
+void Plot::set_values(std::vector<double> values) {
+  set(values_, values);
+}
+void Plot::set_range(double lo, double hi) {
+  set(y_min_, lo), set(y_max_, hi);
+}
+void Plot::set_keyframes(std::vector<int> frames) {
+  set(keyframes_, frames);
+}
 void Plot::set_playhead(int frame) {
   if (frame == playhead_) return;
   const int old = playhead_;
@@ -50,8 +59,8 @@ void Plot::draw(DrawContext& ctx) const {
   Canvas& c = ctx.canvas;
   const Rect r = rect();
   c.fill_rounded_rect(r, t.corner_radius, t.surface);
-  c.text(*ctx.fonts.regular, t.font_body, title_, {r.x + t.padding, r.y + 8, r.w - 2 * t.padding, 56},
-         Align::Left, t.text);
+  c.text(*ctx.fonts.regular, t.font_body, title_,
+         {r.x + t.padding, r.y + 8, r.w - 2 * t.padding, 56}, Align::Left, t.text);
   const Rect a = plot_area();
   const int n = static_cast<int>(values_.size());
   auto xf = [&](double f) { return n > 1 ? a.x + a.w * f / (n - 1) : a.x; };

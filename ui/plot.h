@@ -2,17 +2,18 @@
 /// @brief Plot: values over frames ("effect tracks") with axes, keyframe dots and a playhead.
 #pragma once
 
-#include "ui/colour.h"
-#include "ui/widget.h"
-
 #include <string>
 #include <vector>
+
+#include "ui/colour.h"
+#include "ui/widget.h"
 
 namespace vdfx::ui {
 
 class Plot : public Widget {
  public:
-  Plot(std::string id, std::string title, double y_min, double y_max, const char* y_format = "%.1f");
+  Plot(std::string id, std::string title, double y_min, double y_max,
+       const char* y_format = "%.1f");
   /// One value per frame (frame i at index i).
   void set_values(std::vector<double> values);
   void set_range(double y_min, double y_max);

@@ -2,9 +2,8 @@
 /// @brief Axis-aligned rectangles in panel pixels (origin top-left, +y down) and layout helpers.
 #pragma once
 
-#include <glm/vec2.hpp>
-
 #include <algorithm>
+#include <glm/vec2.hpp>
 
 namespace vdfx::ui {
 

@@ -2,12 +2,12 @@
 /// @brief Slider1D and Pad2D.
 #include "ui/slider.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "ui/canvas.h"
 #include "ui/font.h"
 #include "ui/theme.h"
-
-#include <algorithm>
-#include <cmath>
 
 namespace vdfx::ui {
 
@@ -71,13 +71,22 @@ std::string Axis::step_text() const {
 // ---- Slider1D ---------------------------------------------------------------------------------
 
 Slider1D::Slider1D(std::string id, std::string label, Axis axis, double value, double origin)
-    : Widget(std::move(id)), label_(std::move(label)), axis_(std::move(axis)),
-      value_(axis_.clamp_snap(value)), origin_(std::clamp(origin, axis_.min, axis_.max)) {}
+    : Widget(std::move(id)),
+      label_(std::move(label)),
+      axis_(std::move(axis)),
+      value_(axis_.clamp_snap(value)),
+      origin_(std::clamp(origin, axis_.min, axis_.max)) {}
 
-void Slider1D::set_value(double v) { set(value_, axis_.clamp_snap(v)); }
+void Slider1D::set_value(double v) {
+  set(value_, axis_.clamp_snap(v));
+}
 
-double Slider1D::track_x0() const { return rect().x + 24.0 + kThumbRadius; }
-double Slider1D::track_x1() const { return rect().right() - 24.0 - kThumbRadius; }
+double Slider1D::track_x0() const {
+  return rect().x + 24.0 + kThumbRadius;
+}
+double Slider1D::track_x1() const {
+  return rect().right() - 24.0 - kThumbRadius;
+}
 
 void Slider1D::drag_to(glm::dvec2 p) {
   const double t = std::clamp((p.x - track_x0()) / (track_x1() - track_x0()), 0.0, 1.0);
@@ -85,7 +94,8 @@ void Slider1D::drag_to(glm::dvec2 p) {
 }
 
 std::optional<glm::dvec2> Slider1D::drag_point() const {
-  return glm::dvec2(track_x0() + axis_.fraction(value_) * (track_x1() - track_x0()), rect().centre().y);
+  return glm::dvec2(track_x0() + axis_.fraction(value_) * (track_x1() - track_x0()),
+                    rect().centre().y);
 }
 
 void Slider1D::thumbstick(glm::dvec2 stick, double dt) {
@@ -110,7 +120,8 @@ void Slider1D::draw(DrawContext& ctx) const {
     // The step an arrow key or a stick push moves, beside the value while it is in reach.
     const std::string step = axis_.step_text();
     const Rect left_of_value{header.x, header.y, header.w - vw - t.gap, header.h};
-    vw += t.gap + ctx.canvas.text(*ctx.fonts.regular, t.font_small, step, left_of_value, Align::Right, t.text_muted);
+    vw += t.gap + ctx.canvas.text(*ctx.fonts.regular, t.font_small, step, left_of_value,
+                                  Align::Right, t.text_muted);
   }
   ctx.canvas.text(*ctx.fonts.regular, t.font_body, label_,
                   {header.x, header.y, header.w - vw - t.gap, header.h}, Align::Left, t.text);
@@ -131,10 +142,15 @@ void Slider1D::draw(DrawContext& ctx) const {
 // ---- Pad2D ------------------------------------------------------------------------------------
 
 Pad2D::Pad2D(std::string id, std::string label, Axis x, Axis y, glm::dvec2 value)
-    : Widget(std::move(id)), label_(std::move(label)), x_(std::move(x)), y_(std::move(y)),
+    : Widget(std::move(id)),
+      label_(std::move(label)),
+      x_(std::move(x)),
+      y_(std::move(y)),
       value_(x_.clamp_snap(value.x), y_.clamp_snap(value.y)) {}
 
-void Pad2D::set_value(glm::dvec2 v) { set(value_, glm::dvec2(x_.clamp_snap(v.x), y_.clamp_snap(v.y))); }
+void Pad2D::set_value(glm::dvec2 v) {
+  set(value_, glm::dvec2(x_.clamp_snap(v.x), y_.clamp_snap(v.y)));
+}
 
 Rect Pad2D::area() const {
   const Rect r = rect();
@@ -160,7 +176,9 @@ void Pad2D::thumbstick(glm::dvec2 stick, double dt) {
              stick_move(y_, value_.y, stick.y, dt, pending_.y)});
 }
 
-void Pad2D::step(glm::ivec2 d) { set_value({x_.stepped(value_.x, d.x), y_.stepped(value_.y, d.y)}); }
+void Pad2D::step(glm::ivec2 d) {
+  set_value({x_.stepped(value_.x, d.x), y_.stepped(value_.y, d.y)});
+}
 
 void Pad2D::draw(DrawContext& ctx) const {
   const Theme& t = ctx.theme;
@@ -169,8 +187,8 @@ void Pad2D::draw(DrawContext& ctx) const {
   const Rect header{r.x + t.padding, r.y + 6.0, r.w - 2 * t.padding, kHeaderHeight - 6.0};
   ctx.canvas.text(*ctx.fonts.regular, t.font_body, label_, header, Align::Left, t.text);
   const Rect a = area();
-  const std::string value_text = x_.name + " " + x_.text(value_.x) + "   " + y_.name + " " +
-                                 y_.text(value_.y);
+  const std::string value_text =
+      x_.name + " " + x_.text(value_.x) + "   " + y_.name + " " + y_.text(value_.y);
   ctx.canvas.text(*ctx.fonts.regular, t.font_small, value_text,
                   {header.x, a.bottom() + 6.0, header.w, kFooterHeight}, Align::Centre, t.text);
   ctx.canvas.fill_rounded_rect(a, 8.0, t.surface_pressed);

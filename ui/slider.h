@@ -4,9 +4,9 @@
 /// focused: full deflection sweeps the whole range in kStickSweepSeconds.
 #pragma once
 
-#include "ui/widget.h"
-
 #include <string>
+
+#include "ui/widget.h"
 
 namespace vdfx::ui {
 

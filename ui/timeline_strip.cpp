@@ -2,12 +2,12 @@
 /// @brief TimelineStrip.
 #include "ui/timeline_strip.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "ui/canvas.h"
 #include "ui/font.h"
 #include "ui/theme.h"
-
-#include <algorithm>
-#include <cmath>
 
 namespace vdfx::ui {
 
@@ -53,7 +53,8 @@ Rect TimelineStrip::frame_label_rect(int frame) const {
   const std::string ftxt = "frame " + std::to_string(frame);
   const double fw = label_font_->measure(ftxt, label_size_) + 8;
   const Rect lab{rect().x, track().bottom() + kMarkerBand, rect().w, kLabelBand};
-  const double fx = std::clamp(x_of(frame) - 0.5 * fw, lab.x + kSide + 60, lab.right() - kSide - 110 - fw);
+  const double fx =
+      std::clamp(x_of(frame) - 0.5 * fw, lab.x + kSide + 60, lab.right() - kSide - 110 - fw);
   return {fx, lab.y, fw, lab.h};
 }
 
@@ -66,7 +67,8 @@ Rect TimelineStrip::playhead_area(int frame) const {
   const Rect col{px - kHalf, r.y - kAa, 2 * kHalf, r.h + 2 * kAa};
   const Rect lab = frame_label_rect(frame).inset(-kAa - 2.0);
   const double x0 = std::min(col.x, lab.x), y0 = std::min(col.y, lab.y);
-  return {x0, y0, std::max(col.right(), lab.right()) - x0, std::max(col.bottom(), lab.bottom()) - y0};
+  return {x0, y0, std::max(col.right(), lab.right()) - x0,
+          std::max(col.bottom(), lab.bottom()) - y0};
 }
 
 void TimelineStrip::set_thumbnails(std::vector<cv::Mat> images) {
@@ -75,8 +77,12 @@ void TimelineStrip::set_thumbnails(std::vector<cv::Mat> images) {
   touch();
 }
 
-void TimelineStrip::set_keyframes(std::vector<int> frames) { set(keyframes_, frames); }
-void TimelineStrip::set_highlighted(std::vector<int> frames) { set(highlighted_, frames); }
+void TimelineStrip::set_keyframes(std::vector<int> frames) {
+  set(keyframes_, frames);
+}
+void TimelineStrip::set_highlighted(std::vector<int> frames) {
+  set(highlighted_, frames);
+}
 
 Rect TimelineStrip::track() const {
   const Rect r = rect();
@@ -121,8 +127,9 @@ void TimelineStrip::draw(DrawContext& ctx) const {
     for (size_t i = 0; i < thumbs_.size(); ++i) {
       const Rect cr{tr.x + cell * i, tr.y, cell, tr.h};
       const Rect inner = cr.inset(2.0);
-      c.image(scaled_[i].get(centre_crop(thumbs_[i], inner.w / inner.h), inner, ChannelOrder::Bgr, c.scale()), inner,
-              ChannelOrder::Rgb);
+      c.image(scaled_[i].get(centre_crop(thumbs_[i], inner.w / inner.h), inner, ChannelOrder::Bgr,
+                             c.scale()),
+              inner, ChannelOrder::Rgb);
     }
     c.pop_clip();
   }
@@ -144,8 +151,8 @@ void TimelineStrip::draw(DrawContext& ctx) const {
   }
   // Frame numbers: start, end and the playhead.
   const Rect lab{rect().x, tr.bottom() + kMarkerBand, rect().w, kLabelBand};
-  c.text(*ctx.fonts.regular, t.font_small, "0", {lab.x + kSide - 10, lab.y, 200, lab.h}, Align::Left,
-         t.text_muted);
+  c.text(*ctx.fonts.regular, t.font_small, "0", {lab.x + kSide - 10, lab.y, 200, lab.h},
+         Align::Left, t.text_muted);
   c.text(*ctx.fonts.regular, t.font_small, std::to_string(frame_count_ - 1),
          {lab.right() - kSide - 190, lab.y, 200, lab.h}, Align::Right, t.text_muted);
   // Playhead: a line over the thumbnails with a handle on top.
@@ -153,8 +160,8 @@ void TimelineStrip::draw(DrawContext& ctx) const {
   c.fill_convex(head, t.playhead);
   label_font_ = ctx.fonts.regular.get();
   label_size_ = t.font_small;
-  c.text(*ctx.fonts.regular, t.font_small, "frame " + std::to_string(playhead_), frame_label_rect(playhead_),
-         Align::Centre, t.text);
+  c.text(*ctx.fonts.regular, t.font_small, "frame " + std::to_string(playhead_),
+         frame_label_rect(playhead_), Align::Centre, t.text);
 }
 
 }  // namespace vdfx::ui

@@ -2,13 +2,12 @@
 /// @brief TimelineStrip: frame thumbnails, keyframe markers and a playhead that scrubs by drag.
 #pragma once
 
-#include "ui/canvas.h"
-#include "ui/widget.h"
-
 #include <opencv2/core.hpp>
-
 #include <string>
 #include <vector>
+
+#include "ui/canvas.h"
+#include "ui/widget.h"
 
 namespace vdfx::ui {
 

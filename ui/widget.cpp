@@ -2,10 +2,10 @@
 /// @brief Shared drawing helpers of widget.h.
 #include "ui/widget.h"
 
+#include <cstdio>
+
 #include "ui/canvas.h"
 #include "ui/theme.h"
-
-#include <cstdio>
 
 namespace vdfx::ui {
 

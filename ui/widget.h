@@ -7,15 +7,14 @@
 /// way. Every visible change bumps revision(), which is how a panel knows to re-render.
 #pragma once
 
-#include "ui/rect.h"
-
-#include <glm/vec2.hpp>
-#include <glm/ext/vector_int2.hpp>
-
 #include <algorithm>
-#include <optional>
 #include <cstdint>
+#include <glm/ext/vector_int2.hpp>
+#include <glm/vec2.hpp>
+#include <optional>
 #include <string>
+
+#include "ui/rect.h"
 
 namespace vdfx::ui {
 

@@ -14,20 +14,26 @@ using Getter = std::function<ActionValue(const InputState&)>;
 std::vector<std::pair<std::string, Getter>> build_table() {
   std::vector<std::pair<std::string, Getter>> t;
   t.emplace_back("/user/head/pose", [](const InputState& s) { return ActionValue(s.head); });
-  t.emplace_back("/user/head/tracked", [](const InputState& s) { return ActionValue(s.head_tracked); });
+  t.emplace_back("/user/head/tracked",
+                 [](const InputState& s) { return ActionValue(s.head_tracked); });
   for (Hand hand : {Hand::Left, Hand::Right}) {
-    const std::string base =
-        std::string("/user/hand/") + (hand == Hand::Left ? "left" : "right");
+    const std::string base = std::string("/user/hand/") + (hand == Hand::Left ? "left" : "right");
     const std::string in = base + "/input/";
     auto h = [hand](const InputState& s) -> const HandState& { return s.hand(hand); };
-    t.emplace_back(base + "/tracked", [h](const InputState& s) { return ActionValue(h(s).tracked); });
+    t.emplace_back(base + "/tracked",
+                   [h](const InputState& s) { return ActionValue(h(s).tracked); });
     t.emplace_back(in + "aim/pose", [h](const InputState& s) { return ActionValue(h(s).aim); });
     t.emplace_back(in + "grip/pose", [h](const InputState& s) { return ActionValue(h(s).grip); });
-    t.emplace_back(in + "trigger/value", [h](const InputState& s) { return ActionValue(h(s).trigger); });
-    t.emplace_back(in + "squeeze/value", [h](const InputState& s) { return ActionValue(h(s).squeeze); });
-    t.emplace_back(in + "thumbstick", [h](const InputState& s) { return ActionValue(h(s).thumbstick); });
-    t.emplace_back(in + "thumbstick/x", [h](const InputState& s) { return ActionValue(h(s).thumbstick.x); });
-    t.emplace_back(in + "thumbstick/y", [h](const InputState& s) { return ActionValue(h(s).thumbstick.y); });
+    t.emplace_back(in + "trigger/value",
+                   [h](const InputState& s) { return ActionValue(h(s).trigger); });
+    t.emplace_back(in + "squeeze/value",
+                   [h](const InputState& s) { return ActionValue(h(s).squeeze); });
+    t.emplace_back(in + "thumbstick",
+                   [h](const InputState& s) { return ActionValue(h(s).thumbstick); });
+    t.emplace_back(in + "thumbstick/x",
+                   [h](const InputState& s) { return ActionValue(h(s).thumbstick.x); });
+    t.emplace_back(in + "thumbstick/y",
+                   [h](const InputState& s) { return ActionValue(h(s).thumbstick.y); });
     t.emplace_back(in + "thumbstick/click",
                    [h](const InputState& s) { return ActionValue(h(s).thumbstick_click); });
     const bool left = hand == Hand::Left;
@@ -36,7 +42,8 @@ std::vector<std::pair<std::string, Getter>> build_table() {
     t.emplace_back(in + (left ? "y/click" : "b/click"),
                    [h](const InputState& s) { return ActionValue(h(s).secondary); });
     if (left) {
-      t.emplace_back(in + "menu/click", [h](const InputState& s) { return ActionValue(h(s).menu); });
+      t.emplace_back(in + "menu/click",
+                     [h](const InputState& s) { return ActionValue(h(s).menu); });
     }
   }
   return t;
@@ -62,7 +69,9 @@ ControlSet controls_down(const InputState& s, ControlSet before) {
   for (const Hand h : {Hand::Left, Hand::Right}) {
     const HandState& hs = s.hand(h);
     if (!hs.tracked) continue;
-    const auto analog = [&](Control c, double v) { out.set(h, c, analog_down(v, before.has(h, c))); };
+    const auto analog = [&](Control c, double v) {
+      out.set(h, c, analog_down(v, before.has(h, c)));
+    };
     analog(Control::Trigger, hs.trigger);
     analog(Control::Squeeze, hs.squeeze);
     analog(Control::StickUp, hs.thumbstick.y);

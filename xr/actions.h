@@ -16,28 +16,35 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
 
-#include <glm/gtc/quaternion.hpp>
-#include <glm/vec2.hpp>
-#include <glm/vec3.hpp>
-
 #include "effects/coords.h"
 #include "xr/pose.h"
 
 namespace vdfx::xr {
-
 
 enum class Hand { Left = 0, Right = 1 };
 
 /// The buttons of a hand, and the analog controls read as buttons (trigger and squeeze pulled,
 /// the thumbstick pushed one way). The sim's key bindings and the edges below use this list.
 enum class Control : std::uint8_t {
-  Trigger, Squeeze, Primary, Secondary, Menu, StickClick, StickUp, StickDown, StickLeft, StickRight,
+  Trigger,
+  Squeeze,
+  Primary,
+  Secondary,
+  Menu,
+  StickClick,
+  StickUp,
+  StickDown,
+  StickLeft,
+  StickRight,
 };
 inline constexpr int kControlCount = 10;
 

@@ -4,7 +4,9 @@
 
 namespace vdfx::xr {
 
-std::string_view blur_method_name(BlurMethod m) { return m == BlurMethod::Exact ? "exact" : "pyramid"; }
+std::string_view blur_method_name(BlurMethod m) {
+  return m == BlurMethod::Exact ? "exact" : "pyramid";
+}
 
 std::optional<BlurMethod> blur_method_from_name(std::string_view name) {
   if (name == "exact") return BlurMethod::Exact;

@@ -71,7 +71,8 @@ void set_gaussian_uniforms(const GlProgram& program, double sigma, int radius, i
 }
 
 BlurPyramidGl::BlurPyramidGl(TexFormat format) : format_(format) {
-  blur_1d_ = GlProgram::build("blur_1d", fullscreen_vertex_source(), effects::blur_1d_fragment_source());
+  blur_1d_ =
+      GlProgram::build("blur_1d", fullscreen_vertex_source(), effects::blur_1d_fragment_source());
   downsample_ = GlProgram::build("downsample", fullscreen_vertex_source(),
                                  effects::downsample_fragment_source());
   glGenVertexArrays(1, &vao_);

@@ -27,7 +27,7 @@ inline constexpr double kPyramidMinSigma = 2.0;
 
 /// How a blur of (sigma_x, sigma_y) full-resolution pixels runs on the pyramid.
 struct PyramidPlan {
-  int halvings = 0;                        //!< k: the level is 2^k times smaller
+  int halvings = 0;                           //!< k: the level is 2^k times smaller
   double residual_x = 0.0, residual_y = 0.0;  //!< sigma blurred at that level (level pixels)
 };
 /// k is the largest with min(sigma) / 2^k >= kPyramidMinSigma (0 for small sigmas: then the blur

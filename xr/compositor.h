@@ -32,7 +32,7 @@ struct CompositorConfig {
   LodMode lod = LodMode::Analytic;
   DistortionSettings distortion;
   effects::LensModel lens;
-  bool gpu_timing = false;  //!< timestamp queries per stage (stage_times())
+  bool gpu_timing = false;              //!< timestamp queries per stage (stage_times())
   BlurMethod blur = BlurMethod::Exact;  //!< exact separable, or the pyramid (blur_pyramid_gl.h)
   /// Per-pixel mode: ratio between successive blur level sigmas (blur_method.h).
   double blur_level_ratio = kHalfOctaveLevels;

@@ -67,14 +67,16 @@ void Compositor::Impl::video_and_effects(int slot, const EyeInput& in, int w, in
   const bool t = c.gpu_timing;
   const std::string tag = slot == 0 ? "left " : slot == 1 ? "right " : "desktop ";
   views[slot] = in.view;
-  if (eye_buffer[slot].width() != w || eye_buffer[slot].height() != h) eye_buffer[slot] = GlTarget(w, h, c.eye_format);
+  if (eye_buffer[slot].width() != w || eye_buffer[slot].height() != h)
+    eye_buffer[slot] = GlTarget(w, h, c.eye_format);
   // The video is rendered with a margin of the blur radius so the blur sees real image beyond the
   // view's border. The margin only grows while blur stays on (no reallocation per frame while
   // sigma is animated) and drops back to 0 when blur is off.
   effects::StackParams widest = in.params;  // per-pixel mode: the grid's largest sigma
   if (in.per_pixel) {
     if (!stack.has_param_grid())
-      throw GlError("Compositor::render_eye: per-pixel eye without a parameter grid (set_param_grid)");
+      throw GlError(
+          "Compositor::render_eye: per-pixel eye without a parameter grid (set_param_grid)");
     widest.blur_sigma_deg = stack.grid_max_blur_sigma_deg();
   }
   const int need = blur_margin(widest, in.active_effects, in.view, w, h);
@@ -87,9 +89,11 @@ void Compositor::Impl::video_and_effects(int slot, const EyeInput& in, int w, in
   if (t) timer.stop();
   if (t) timer.start(tag + "effects");
   if (in.per_pixel)
-    stack.apply_per_pixel(video_out[slot].texture(), eye_buffer[slot], in.active_effects, in.view, m);
+    stack.apply_per_pixel(video_out[slot].texture(), eye_buffer[slot], in.active_effects, in.view,
+                          m);
   else
-    stack.apply(video_out[slot].texture(), eye_buffer[slot], in.params, in.active_effects, in.view, m);
+    stack.apply(video_out[slot].texture(), eye_buffer[slot], in.params, in.active_effects, in.view,
+                m);
   if (t) timer.stop();
   // World-space layers (flare, then grain): after the effects, before the UI quads. The desktop
   // view draws them as seen from the head (the cyclopean eye, index 0).
@@ -117,7 +121,8 @@ void Compositor::Impl::quads(const GlTarget& target, const RenderView& view,
     if (!q.texture) continue;
     const Pose p = Session::to_local(q.pose, q.space, head_in_local);
     Eigen::Matrix4d model = Eigen::Matrix4d::Identity();
-    model.topLeftCorner<3, 3>() = rotation_of(p) * Eigen::Vector3d(q.size_m.x(), q.size_m.y(), 1.0).asDiagonal();
+    model.topLeftCorner<3, 3>() =
+        rotation_of(p) * Eigen::Vector3d(q.size_m.x(), q.size_m.y(), 1.0).asDiagonal();
     model.topRightCorner<3, 1>() = position_of(p);
     const Eigen::Matrix4f mvp = (proj * world_to_view * model).cast<float>();
     glUniformMatrix4fv(quad_program.uniform("u_mvp"), 1, GL_FALSE, mvp.data());
@@ -128,8 +133,8 @@ void Compositor::Impl::quads(const GlTarget& target, const RenderView& view,
 }
 
 Compositor::Compositor(CompositorConfig config)
-    : config_(std::move(config)), impl_(std::make_unique<Impl>(config_.eye_format, config_.blur,
-                                                            config_.blur_level_ratio)) {
+    : config_(std::move(config)),
+      impl_(std::make_unique<Impl>(config_.eye_format, config_.blur, config_.blur_level_ratio)) {
   const int w = config_.eye_width, h = config_.eye_height;
   for (int e = 0; e < 2; ++e) {
     impl_->video_out[e] = GlTarget(w, h, config_.eye_format);
@@ -144,9 +149,15 @@ Compositor::~Compositor() {
   if (impl_ && impl_->vao) glDeleteVertexArrays(1, &impl_->vao);
 }
 
-void Compositor::set_video_frame(const cv::Mat& equirect) { impl_->video.set_frame(equirect); }
-void Compositor::set_video_frame(const io::Picture& picture) { impl_->video.set_frame(picture); }
-void Compositor::set_param_grid(const ParamGrid& grid) { impl_->stack.set_param_grid(grid); }
+void Compositor::set_video_frame(const cv::Mat& equirect) {
+  impl_->video.set_frame(equirect);
+}
+void Compositor::set_video_frame(const io::Picture& picture) {
+  impl_->video.set_frame(picture);
+}
+void Compositor::set_param_grid(const ParamGrid& grid) {
+  impl_->stack.set_param_grid(grid);
+}
 
 void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLayer> quads,
                             const Pose& head_in_local) {
@@ -220,13 +231,25 @@ void Compositor::draw_mirror(MirrorMode mode, const GlTarget* target, int width,
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-cv::Mat Compositor::read_desktop() const { return impl_->desktop.read_float(); }
+cv::Mat Compositor::read_desktop() const {
+  return impl_->desktop.read_float();
+}
 
-cv::Mat Compositor::read_eye_buffer(int eye) const { return impl_->eye_buffer.at(eye).read_float(); }
-cv::Mat Compositor::read_display(int eye) const { return impl_->display.at(eye).read_float(); }
-const GlTarget& Compositor::eye_buffer(int eye) const { return impl_->eye_buffer.at(eye); }
-const GlTarget& Compositor::display(int eye) const { return impl_->display.at(eye); }
-std::vector<StageTime> Compositor::stage_times() { return impl_->timer.collect(); }
+cv::Mat Compositor::read_eye_buffer(int eye) const {
+  return impl_->eye_buffer.at(eye).read_float();
+}
+cv::Mat Compositor::read_display(int eye) const {
+  return impl_->display.at(eye).read_float();
+}
+const GlTarget& Compositor::eye_buffer(int eye) const {
+  return impl_->eye_buffer.at(eye);
+}
+const GlTarget& Compositor::display(int eye) const {
+  return impl_->display.at(eye);
+}
+std::vector<StageTime> Compositor::stage_times() {
+  return impl_->timer.collect();
+}
 
 cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int width, int height,
                         const effects::StackParams& params, unsigned active_effects,

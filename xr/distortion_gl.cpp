@@ -1,5 +1,7 @@
 /// @file
 /// @brief DistortionGl: pixel and mesh pre-distortion, through-the-lens pass.
+#include "xr/distortion_gl.h"
+
 #include <epoxy/gl.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 
 #include "effects/distortion_mesh.h"
 #include "effects/glsl_common.h"
-#include "xr/distortion_gl.h"
 #include "xr/gl_context.h"
 #include "xr/gl_program.h"
 
@@ -126,8 +127,9 @@ Eigen::Vector3d lca_scale(const effects::LensModel& lens) {
 
 void set_lens_uniforms(const GlProgram& p, const GlTarget& target, const RenderView& eye,
                        const effects::LensModel& lens, const Eigen::Vector3d& scale) {
-  glUniform4f(p.uniform("u_tan"), static_cast<float>(eye.tan_left), static_cast<float>(eye.tan_right),
-              static_cast<float>(eye.tan_down), static_cast<float>(eye.tan_up));
+  glUniform4f(p.uniform("u_tan"), static_cast<float>(eye.tan_left),
+              static_cast<float>(eye.tan_right), static_cast<float>(eye.tan_down),
+              static_cast<float>(eye.tan_up));
   glUniform2f(p.uniform("u_size"), static_cast<float>(target.width()),
               static_cast<float>(target.height()));
   glUniform2f(p.uniform("u_centre"), 0.0f, 0.0f);  // the lens is centred on the optical axis
@@ -140,7 +142,8 @@ void set_lens_uniforms(const GlProgram& p, const GlTarget& target, const RenderV
   glUniform1f(p.uniform("u_rd_max"), finite_or_big(lens.max_distorted_radius()));
 }
 
-effects::EyeLens eye_lens(const RenderView& v, int width, int height, const effects::LensModel& lens) {
+effects::EyeLens eye_lens(const RenderView& v, int width, int height,
+                          const effects::LensModel& lens) {
   effects::EyeLens e;
   e.width = width;
   e.height = height;
@@ -203,12 +206,14 @@ struct DistortionGl::Impl {
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data(),
                  GL_STATIC_DRAW);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh_ibo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)),
-                 idx.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                 static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)), idx.data(),
+                 GL_STATIC_DRAW);
     for (unsigned a = 0; a < 4; ++a) {
       glEnableVertexAttribArray(a);
-      glVertexAttribPointer(a, 2, GL_FLOAT, GL_FALSE, 8 * sizeof(float),
-                            reinterpret_cast<const void*>(static_cast<uintptr_t>(a * 2 * sizeof(float))));
+      glVertexAttribPointer(
+          a, 2, GL_FLOAT, GL_FALSE, 8 * sizeof(float),
+          reinterpret_cast<const void*>(static_cast<uintptr_t>(a * 2 * sizeof(float))));
     }
     mesh_indices = static_cast<int>(idx.size());
     mesh_key = key;
@@ -218,7 +223,8 @@ struct DistortionGl::Impl {
 
 DistortionGl::DistortionGl() : impl_(std::make_unique<Impl>()) {
   const std::string lens = std::string(effects::glsl::kPinhole) + kLensGlsl;
-  impl_->pixel = GlProgram::build("predistort_pixel", fullscreen_vertex_source(), lens + kPixelFragment);
+  impl_->pixel =
+      GlProgram::build("predistort_pixel", fullscreen_vertex_source(), lens + kPixelFragment);
   impl_->mesh = GlProgram::build("predistort_mesh", kMeshVertex, lens + kMeshFragment);
   impl_->through =
       GlProgram::build("through_lens", fullscreen_vertex_source(), lens + kThroughLensFragment);

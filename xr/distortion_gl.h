@@ -18,8 +18,8 @@
 
 #include <memory>
 
-#include "xr/gl_texture.h"
 #include "effects/lens_model.h"
+#include "xr/gl_texture.h"
 #include "xr/render_view.h"
 
 namespace vdfx::xr {
@@ -28,9 +28,9 @@ enum class DistortionMethod { None, Pixel, Mesh };
 
 struct DistortionSettings {
   DistortionMethod method = DistortionMethod::Mesh;
-  int mesh_n = 65;           //!< vertices per side (Monado uses 65, Cardboard 40)
-  int max_iterations = 8;    //!< Newton cap of the pixel method
-  bool correct_lca = true;   //!< false: one inverse for all channels (shows the fringe)
+  int mesh_n = 65;          //!< vertices per side (Monado uses 65, Cardboard 40)
+  int max_iterations = 8;   //!< Newton cap of the pixel method
+  bool correct_lca = true;  //!< false: one inverse for all channels (shows the fringe)
   /// Tests and error measurement: write the green channel's eye-buffer sample position in
   /// pixels (GL convention, origin bottom-left) to an RG32F target instead of colour.
   bool output_sample_position = false;

@@ -1,6 +1,8 @@
 /// @file
 /// @brief EffectStackGl: shader variants per active set, view and per-pixel parameter modes,
 /// exact or pyramid blur in float textures.
+#include "xr/effect_stack_gl.h"
+
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -8,7 +10,6 @@
 #include <vector>
 
 #include "effects/effect_shaders.h"
-#include "xr/effect_stack_gl.h"
 #include "xr/gl_context.h"
 
 namespace vdfx::xr {
@@ -48,7 +49,8 @@ int blur_margin(const effects::StackParams& p, unsigned mask, const RenderView& 
 
 EffectStackGl::EffectStackGl(TexFormat scratch_format, BlurMethod blur)
     : scratch_format_(scratch_format), blur_method_(blur), pyramid_(scratch_format) {
-  blur_h_ = GlProgram::build("blur_1d", fullscreen_vertex_source(), effects::blur_1d_fragment_source());
+  blur_h_ =
+      GlProgram::build("blur_1d", fullscreen_vertex_source(), effects::blur_1d_fragment_source());
   glGenVertexArrays(1, &vao_);
 }
 
@@ -142,14 +144,16 @@ void EffectStackGl::apply(const GlTexture& src, const GlTarget& dst, const effec
   glUniform1f(p.uniform("u_exposure_gain"), static_cast<float>(std::exp2(sp.exposure_stops)));
   glUniform1f(p.uniform("u_saturation"), static_cast<float>(sp.saturation));
   glUniform1f(p.uniform("u_contrast"), static_cast<float>(sp.contrast));
-  glUniform2f(p.uniform("u_vignette"), static_cast<float>(sp.vignette_radius_deg * effects::kDegToRad),
+  glUniform2f(p.uniform("u_vignette"),
+              static_cast<float>(sp.vignette_radius_deg * effects::kDegToRad),
               static_cast<float>(sp.vignette_falloff_deg * effects::kDegToRad));
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void EffectStackGl::set_level_ratio(double r) {
   if (!(r > 1.0 && r <= 16.0))
-    throw GlError("EffectStackGl::set_level_ratio: ratio must be in (1, 16], got " + std::to_string(r));
+    throw GlError("EffectStackGl::set_level_ratio: ratio must be in (1, 16], got " +
+                  std::to_string(r));
   level_ratio_ = r;
 }
 
@@ -204,7 +208,8 @@ void EffectStackGl::apply_per_pixel(const GlTexture& src, const GlTarget& dst, u
     const double per_deg_px = std::max(per_deg.sigma_x, per_deg.sigma_y);
     tau1_deg = kPerPixelFirstLevelPx / per_deg_px;
     int n = 1;
-    while (n < effects::kMaxBlurLevels && tau1_deg * std::pow(ratio, n - 1) < grid_max_sigma_deg_) ++n;
+    while (n < effects::kMaxBlurLevels && tau1_deg * std::pow(ratio, n - 1) < grid_max_sigma_deg_)
+      ++n;
     if (tau1_deg * std::pow(ratio, n - 1) < grid_max_sigma_deg_)
       ratio = std::pow(grid_max_sigma_deg_ / tau1_deg, 1.0 / (n - 1));
     if (levels_.size() < static_cast<std::size_t>(n)) levels_.resize(static_cast<std::size_t>(n));

@@ -13,7 +13,6 @@
 
 #include "effects/coords.h"
 #include "xr/hmd_profile.h"
-
 #include "xr/pose.h"
 
 namespace vdfx::xr {

@@ -28,13 +28,13 @@ class GlUnavailableError : public GlError {
 };
 
 struct GlContextOptions {
-  int width = 1280;          //!< window size (the hidden window of an offscreen context is tiny)
+  int width = 1280;  //!< window size (the hidden window of an offscreen context is tiny)
   int height = 720;
-  bool visible = false;      //!< false: hidden window, render to textures only
-  bool vsync = true;         //!< swap interval 1 for a visible window
-  bool resizable = true;     //!< the user may resize a visible window
+  bool visible = false;   //!< false: hidden window, render to textures only
+  bool vsync = true;      //!< swap interval 1 for a visible window
+  bool resizable = true;  //!< the user may resize a visible window
   std::string title = "vdfx";
-  bool debug_output = false; //!< GL_KHR_debug messages to stderr
+  bool debug_output = false;  //!< GL_KHR_debug messages to stderr
 };
 
 class GlContext {

@@ -5,13 +5,12 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
 
 #include "xr/gl_context.h"
-
-#include <algorithm>
 
 namespace vdfx::xr {
 namespace {
@@ -51,8 +50,8 @@ std::unique_ptr<GlContext> GlContext::create(const GlContextOptions& o) {
         "Run under a desktop session or a virtual one: `xvfb-run -a <command>`.");
   if (live_contexts() == 0 && glfwInit() != GLFW_TRUE)
     throw GlUnavailableError("cannot create an OpenGL context: glfwInit failed on DISPLAY='" +
-                  std::string(display ? display : "") + "' (" + last_glfw_error() +
-                  "). Is the X server running? Try `xvfb-run -a <command>`.");
+                             std::string(display ? display : "") + "' (" + last_glfw_error() +
+                             "). Is the X server running? Try `xvfb-run -a <command>`.");
   glfwDefaultWindowHints();
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -66,14 +65,15 @@ std::unique_ptr<GlContext> GlContext::create(const GlContextOptions& o) {
   if (!window) {
     if (live_contexts() == 0) glfwTerminate();
     throw GlUnavailableError("cannot create an OpenGL 4.3 core context (" + last_glfw_error() +
-                  "). The driver must offer OpenGL 4.3 core; Mesa llvmpipe offers 4.5.");
+                             "). The driver must offer OpenGL 4.3 core; Mesa llvmpipe offers 4.5.");
   }
   ++live_contexts();
   std::unique_ptr<GlContext> ctx(new GlContext(window));
   ctx->make_current();
   glfwSwapInterval(o.visible && o.vsync ? 1 : 0);
   if (epoxy_gl_version() < 43)
-    throw GlUnavailableError("OpenGL " + ctx->version() + " is older than the 4.3 core the compositor needs");
+    throw GlUnavailableError("OpenGL " + ctx->version() +
+                             " is older than the 4.3 core the compositor needs");
   if (o.debug_output) {
     glEnable(GL_DEBUG_OUTPUT);
     glDebugMessageCallback(on_gl_debug, nullptr);
@@ -86,10 +86,18 @@ GlContext::~GlContext() {
   if (--live_contexts() == 0) glfwTerminate();
 }
 
-void GlContext::make_current() { glfwMakeContextCurrent(window_); }
-void GlContext::swap_buffers() { glfwSwapBuffers(window_); }
-void GlContext::poll_events() { glfwPollEvents(); }
-bool GlContext::should_close() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
+void GlContext::make_current() {
+  glfwMakeContextCurrent(window_);
+}
+void GlContext::swap_buffers() {
+  glfwSwapBuffers(window_);
+}
+void GlContext::poll_events() {
+  glfwPollEvents();
+}
+bool GlContext::should_close() const {
+  return glfwWindowShouldClose(window_) == GLFW_TRUE;
+}
 void GlContext::framebuffer_size(int* width, int* height) const {
   glfwGetFramebufferSize(window_, width, height);
 }

@@ -105,7 +105,9 @@ GlProgram GlProgram::build(std::string_view name, std::string_view vs, std::stri
 GlProgram::~GlProgram() {
   if (id_) glDeleteProgram(id_);
 }
-GlProgram::GlProgram(GlProgram&& o) noexcept : id_(o.id_), name_(std::move(o.name_)) { o.id_ = 0; }
+GlProgram::GlProgram(GlProgram&& o) noexcept : id_(o.id_), name_(std::move(o.name_)) {
+  o.id_ = 0;
+}
 GlProgram& GlProgram::operator=(GlProgram&& o) noexcept {
   if (this != &o) {
     if (id_) glDeleteProgram(id_);
@@ -115,8 +117,12 @@ GlProgram& GlProgram::operator=(GlProgram&& o) noexcept {
   }
   return *this;
 }
-void GlProgram::use() const { glUseProgram(id_); }
-int GlProgram::uniform(const char* uname) const { return glGetUniformLocation(id_, uname); }
+void GlProgram::use() const {
+  glUseProgram(id_);
+}
+int GlProgram::uniform(const char* uname) const {
+  return glGetUniformLocation(id_, uname);
+}
 
 std::string_view fullscreen_vertex_source() {
   return R"(

@@ -64,12 +64,28 @@ void GlTexture::upload(const cv::Mat& m) {
                   std::to_string(height_));
   GLenum fmt = 0, type = 0;
   switch (m.type()) {
-    case CV_32FC2: fmt = GL_RG; type = GL_FLOAT; break;
-    case CV_8UC3: fmt = GL_BGR; type = GL_UNSIGNED_BYTE; break;
-    case CV_8UC4: fmt = GL_BGRA; type = GL_UNSIGNED_BYTE; break;
-    case CV_32FC3: fmt = GL_BGR; type = GL_FLOAT; break;
-    case CV_32FC4: fmt = GL_BGRA; type = GL_FLOAT; break;
-    default: throw GlError("GlTexture::upload: unsupported cv::Mat type " + std::to_string(m.type()));
+    case CV_32FC2:
+      fmt = GL_RG;
+      type = GL_FLOAT;
+      break;
+    case CV_8UC3:
+      fmt = GL_BGR;
+      type = GL_UNSIGNED_BYTE;
+      break;
+    case CV_8UC4:
+      fmt = GL_BGRA;
+      type = GL_UNSIGNED_BYTE;
+      break;
+    case CV_32FC3:
+      fmt = GL_BGR;
+      type = GL_FLOAT;
+      break;
+    case CV_32FC4:
+      fmt = GL_BGRA;
+      type = GL_FLOAT;
+      break;
+    default:
+      throw GlError("GlTexture::upload: unsupported cv::Mat type " + std::to_string(m.type()));
   }
   cv::Mat c;
   cv::flip(m, c, 0);  // GL's first row is the bottom one
@@ -87,8 +103,8 @@ void GlTexture::generate_mipmaps() {
 void GlTexture::set_sampling(bool linear, bool repeat_s) {
   glBindTexture(GL_TEXTURE_2D, id_);
   const GLint mag = linear ? GL_LINEAR : GL_NEAREST;
-  const GLint min = levels_ > 1 ? (linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_NEAREST)
-                                : mag;
+  const GLint min =
+      levels_ > 1 ? (linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_NEAREST) : mag;
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, repeat_s ? GL_REPEAT : GL_CLAMP_TO_EDGE);
@@ -120,7 +136,9 @@ GlTarget::GlTarget(int width, int height, TexFormat format) : tex_(width, height
 GlTarget::~GlTarget() {
   if (fbo_) glDeleteFramebuffers(1, &fbo_);
 }
-GlTarget::GlTarget(GlTarget&& o) noexcept : tex_(std::move(o.tex_)), fbo_(o.fbo_) { o.fbo_ = 0; }
+GlTarget::GlTarget(GlTarget&& o) noexcept : tex_(std::move(o.tex_)), fbo_(o.fbo_) {
+  o.fbo_ = 0;
+}
 GlTarget& GlTarget::operator=(GlTarget&& o) noexcept {
   if (this != &o) {
     if (fbo_) glDeleteFramebuffers(1, &fbo_);

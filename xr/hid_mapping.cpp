@@ -84,8 +84,10 @@ bool HidInputMapper::on_report(std::int64_t t_ns, const std::string& device,
   advance(t_ns);  // the old state held until now
   HidReportParser* p = parser_for(device);
   if (!p || !p->apply(report)) return false;
-  if (p->is_spacemouse()) spacemouse_ = p->spacemouse();
-  else pad_ = p->gamepad();
+  if (p->is_spacemouse())
+    spacemouse_ = p->spacemouse();
+  else
+    pad_ = p->gamepad();
   return true;
 }
 
@@ -93,8 +95,10 @@ void HidInputMapper::on_disconnect(std::int64_t t_ns, const std::string& device)
   advance(t_ns);
   auto it = parsers_.find(device);
   if (it == parsers_.end()) return;
-  if (it->second.is_spacemouse()) spacemouse_ = {};
-  else pad_ = {};
+  if (it->second.is_spacemouse())
+    spacemouse_ = {};
+  else
+    pad_ = {};
   it->second.reset();
 }
 
@@ -107,8 +111,10 @@ void HidInputMapper::advance(std::int64_t t_ns) {
   last_t_ = t_ns;
 
   if (config_.left_stick == LeftStickRole::HeadLook) {
-    const glm::dvec2 look = apply_deadzone({pad_.left_stick[0], pad_.left_stick[1]}, config_.stick_deadzone);
-    const double yaw = -look.x * config_.look_rate_deg_s * dt * kDegToRad;  // stick right: turn right
+    const glm::dvec2 look =
+        apply_deadzone({pad_.left_stick[0], pad_.left_stick[1]}, config_.stick_deadzone);
+    const double yaw =
+        -look.x * config_.look_rate_deg_s * dt * kDegToRad;  // stick right: turn right
     const double pitch = look.y * config_.look_rate_deg_s * dt * kDegToRad;
     // Yaw about the world up axis, pitch about the head's own x axis.
     head_q_ = glm::normalize(glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * head_q_);
@@ -121,14 +127,17 @@ void HidInputMapper::advance(std::int64_t t_ns) {
 
   const glm::dvec3 omega = spacemouse_to_openxr(spacemouse_.rotation, config_.spacemouse_deadzone) *
                            (config_.spacemouse_rate_deg_s * kDegToRad);
-  const glm::dvec3 velocity = spacemouse_to_openxr(spacemouse_.translation, config_.spacemouse_deadzone) *
-                              config_.spacemouse_speed_m_s;
+  const glm::dvec3 velocity =
+      spacemouse_to_openxr(spacemouse_.translation, config_.spacemouse_deadzone) *
+      config_.spacemouse_speed_m_s;
   if (config_.spacemouse == SpaceMouseTarget::Head) {
     // Rates are about the head's own axes: twist the cap right and the view turns right.
     head_q_ = glm::normalize(head_q_ * rotation_from_vector(omega * dt));
   } else {
-    spacemouse_hand_.orientation = glm::normalize(spacemouse_hand_.orientation * rotation_from_vector(omega * dt));
-    spacemouse_hand_.position += head_q_ * velocity * dt;  // pushes move the hand in the view's frame
+    spacemouse_hand_.orientation =
+        glm::normalize(spacemouse_hand_.orientation * rotation_from_vector(omega * dt));
+    spacemouse_hand_.position +=
+        head_q_ * velocity * dt;  // pushes move the hand in the view's frame
   }
 }
 
@@ -160,8 +169,10 @@ InputState HidInputMapper::state(std::int64_t t_ns) {
   if (config_.left_stick == LeftStickRole::LeftThumbstick) {
     l.thumbstick = apply_deadzone({pad_.left_stick[0], pad_.left_stick[1]}, config_.stick_deadzone);
   } else {
-    l.thumbstick = {(pad_.pressed(PadButton::DpadRight) ? 1.0 : 0.0) - (pad_.pressed(PadButton::DpadLeft) ? 1.0 : 0.0),
-                    (pad_.pressed(PadButton::DpadUp) ? 1.0 : 0.0) - (pad_.pressed(PadButton::DpadDown) ? 1.0 : 0.0)};
+    l.thumbstick = {(pad_.pressed(PadButton::DpadRight) ? 1.0 : 0.0) -
+                        (pad_.pressed(PadButton::DpadLeft) ? 1.0 : 0.0),
+                    (pad_.pressed(PadButton::DpadUp) ? 1.0 : 0.0) -
+                        (pad_.pressed(PadButton::DpadDown) ? 1.0 : 0.0)};
   }
   l.primary = pad_.pressed(PadButton::West);
   l.secondary = pad_.pressed(PadButton::North);

@@ -43,7 +43,8 @@ class HidInputMapper {
   void on_descriptor(const std::string& device, std::span<const std::uint8_t> descriptor);
   /// One input report; an empty report means the device was lost (its controls go neutral).
   /// Returns false when the device is unknown or the report not understood.
-  bool on_report(std::int64_t t_ns, const std::string& device, std::span<const std::uint8_t> report);
+  bool on_report(std::int64_t t_ns, const std::string& device,
+                 std::span<const std::uint8_t> report);
   /// The device is gone: its controls go neutral, integrated poses stay where they are.
   void on_disconnect(std::int64_t t_ns, const std::string& device);
 
@@ -60,8 +61,8 @@ class HidInputMapper {
   HidMappingConfig config_;
   std::map<std::string, HidReportParser> parsers_;
   std::map<std::string, std::vector<std::uint8_t>> descriptors_;
-  GamepadState pad_;           //!< the latest gamepad report of any gamepad
-  SpaceMouseState spacemouse_; //!< the latest SpaceMouse state
+  GamepadState pad_;            //!< the latest gamepad report of any gamepad
+  SpaceMouseState spacemouse_;  //!< the latest SpaceMouse state
   std::optional<std::int64_t> last_t_;
   glm::dquat head_q_{1.0, 0.0, 0.0, 0.0};
   Pose spacemouse_hand_;  //!< the steered hand's aim when the SpaceMouse targets a hand

@@ -10,8 +10,12 @@ namespace vdfx::xr {
 namespace {
 
 // Sony sticks: 0..255 with rest at 128 (0x80); mapped so the rest value is exactly 0.
-double sony_axis(std::uint8_t v) { return std::clamp((static_cast<double>(v) - 128.0) / 127.0, -1.0, 1.0); }
-double sony_trigger(std::uint8_t v) { return static_cast<double>(v) / 255.0; }
+double sony_axis(std::uint8_t v) {
+  return std::clamp((static_cast<double>(v) - 128.0) / 127.0, -1.0, 1.0);
+}
+double sony_trigger(std::uint8_t v) {
+  return static_cast<double>(v) / 255.0;
+}
 
 // Hat switch positions 0..7 clockwise from north; anything else is "released".
 void set_hat8(GamepadState& s, int position) {
@@ -57,13 +61,16 @@ double spacemouse_axis(const std::uint8_t* p) {
 
 double normalize_axis(std::int32_t v, const HidField& f) {
   if (f.logical_max <= f.logical_min) return 0.0;
-  const double t = (static_cast<double>(v) - f.logical_min) / (static_cast<double>(f.logical_max) - f.logical_min);
+  const double t = (static_cast<double>(v) - f.logical_min) /
+                   (static_cast<double>(f.logical_max) - f.logical_min);
   return std::clamp(2.0 * t - 1.0, -1.0, 1.0);
 }
 
 double normalize_trigger(std::int32_t v, const HidField& f) {
   if (f.logical_max <= f.logical_min) return 0.0;
-  return std::clamp((static_cast<double>(v) - f.logical_min) / (static_cast<double>(f.logical_max) - f.logical_min), 0.0, 1.0);
+  return std::clamp((static_cast<double>(v) - f.logical_min) /
+                        (static_cast<double>(f.logical_max) - f.logical_min),
+                    0.0, 1.0);
 }
 
 constexpr std::uint16_t kGenericDesktop = 0x01;
@@ -88,8 +95,8 @@ HidDeviceKind known_device_kind(std::uint16_t vid, std::uint16_t pid) {
     if (pid == 0x0ce6 || pid == 0x0df2) return HidDeviceKind::DualSense;
   }
   if (vid == 0x046d) {  // Logitech-era 3Dconnexion devices
-    for (std::uint16_t p : {0xc603, 0xc605, 0xc606, 0xc621, 0xc623, 0xc625, 0xc626, 0xc627, 0xc628,
-                            0xc629, 0xc62b}) {
+    for (std::uint16_t p :
+         {0xc603, 0xc605, 0xc606, 0xc621, 0xc623, 0xc625, 0xc626, 0xc627, 0xc628, 0xc629, 0xc62b}) {
       if (pid == p) return HidDeviceKind::SpaceMouse;
     }
   }
@@ -101,7 +108,8 @@ HidDeviceKind classify_device(std::uint16_t vid, std::uint16_t pid, std::uint16_
                               std::uint16_t usage) {
   const HidDeviceKind known = known_device_kind(vid, pid);
   if (known != HidDeviceKind::Unknown) return known;
-  if (usage_page == kGenericDesktop && (usage == 0x04 || usage == 0x05)) return HidDeviceKind::GenericGamepad;
+  if (usage_page == kGenericDesktop && (usage == 0x04 || usage == 0x05))
+    return HidDeviceKind::GenericGamepad;
   return HidDeviceKind::Unknown;
 }
 
@@ -112,7 +120,8 @@ std::optional<std::pair<std::uint16_t, std::uint16_t>> parse_device_id(std::stri
   std::uint16_t v = 0, p = 0;
   auto r1 = std::from_chars(id.data(), id.data() + 4, v, 16);
   auto r2 = std::from_chars(id.data() + 5, id.data() + 9, p, 16);
-  if (r1.ec != std::errc() || r1.ptr != id.data() + 4 || r2.ec != std::errc() || r2.ptr != id.data() + 9) {
+  if (r1.ec != std::errc() || r1.ptr != id.data() + 4 || r2.ec != std::errc() ||
+      r2.ptr != id.data() + 9) {
     return std::nullopt;
   }
   return std::make_pair(v, p);
@@ -146,7 +155,8 @@ bool apply_spacemouse_report(SpaceMouseState& s, std::span<const std::uint8_t> r
       return true;
     case 3: {
       std::uint32_t b = 0;
-      for (std::size_t i = 1; i < r.size() && i <= 4; ++i) b |= static_cast<std::uint32_t>(r[i]) << (8 * (i - 1));
+      for (std::size_t i = 1; i < r.size() && i <= 4; ++i)
+        b |= static_cast<std::uint32_t>(r[i]) << (8 * (i - 1));
       s.buttons = b;
       return true;
     }
@@ -156,17 +166,18 @@ bool apply_spacemouse_report(SpaceMouseState& s, std::span<const std::uint8_t> r
 
 const std::vector<PadButton>& generic_button_order() {
   static const std::vector<PadButton> order = {
-      PadButton::South, PadButton::East,   PadButton::West,  PadButton::North, PadButton::L1,
-      PadButton::R1,    PadButton::L2,     PadButton::R2,    PadButton::Select, PadButton::Start,
-      PadButton::L3,    PadButton::R3,     PadButton::Home};
+      PadButton::South, PadButton::East, PadButton::West, PadButton::North,  PadButton::L1,
+      PadButton::R1,    PadButton::L2,   PadButton::R2,   PadButton::Select, PadButton::Start,
+      PadButton::L3,    PadButton::R3,   PadButton::Home};
   return order;
 }
 
 GenericGamepadDecoder::GenericGamepadDecoder(HidReportDescriptor d) : descriptor_(std::move(d)) {
   auto has = [&](std::uint16_t usage) {
-    return std::any_of(descriptor_.inputs.begin(), descriptor_.inputs.end(), [&](const HidField& f) {
-      return f.usage_page == kGenericDesktop && !f.is_array && f.usage == usage;
-    });
+    return std::any_of(descriptor_.inputs.begin(), descriptor_.inputs.end(),
+                       [&](const HidField& f) {
+                         return f.usage_page == kGenericDesktop && !f.is_array && f.usage == usage;
+                       });
   };
   // Rx/Ry present: they are the right stick and Z/Rz the analog triggers (Xbox-style HID);
   // otherwise Z/Rz is the right stick, the common layout of DirectInput pads.
@@ -214,8 +225,10 @@ bool GenericGamepadDecoder::apply(GamepadState& s, std::span<const std::uint8_t>
         // difference overflowed).
         const std::int64_t span = std::int64_t{b.field.logical_max} - b.field.logical_min + 1;
         std::int64_t pos = std::int64_t{v} - b.field.logical_min;
-        if (pos < 0 || pos >= span) pos = -1;  // the null state: released
-        else if (span == 4) pos *= 2;          // 4-way hats: N, E, S, W
+        if (pos < 0 || pos >= span)
+          pos = -1;  // the null state: released
+        else if (span == 4)
+          pos *= 2;  // 4-way hats: N, E, S, W
         set_hat8(s, pos > 7 ? -1 : static_cast<int>(pos));
         break;
       }
@@ -239,7 +252,8 @@ bool GenericGamepadDecoder::apply(GamepadState& s, std::span<const std::uint8_t>
   return any;
 }
 
-HidReportParser::HidReportParser(HidDeviceKind kind, std::span<const std::uint8_t> descriptor) : kind_(kind) {
+HidReportParser::HidReportParser(HidDeviceKind kind, std::span<const std::uint8_t> descriptor)
+    : kind_(kind) {
   if (kind == HidDeviceKind::GenericGamepad) {
     generic_.emplace(parse_report_descriptor(descriptor));
   }

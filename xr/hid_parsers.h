@@ -22,19 +22,19 @@ namespace vdfx::xr {
 
 /// Gamepad buttons by position (Sony name / Xbox name).
 enum class PadButton {
-  South,   //!< cross / A
-  East,    //!< circle / B
-  West,    //!< square / X
-  North,   //!< triangle / Y
+  South,  //!< cross / A
+  East,   //!< circle / B
+  West,   //!< square / X
+  North,  //!< triangle / Y
   L1,
   R1,
-  L2,      //!< digital trigger bit
+  L2,  //!< digital trigger bit
   R2,
   Select,  //!< share, create / back
   Start,   //!< options / start
   L3,      //!< left stick click
   R3,
-  Home,    //!< PS / guide
+  Home,  //!< PS / guide
   Touchpad,
   DpadUp,
   DpadDown,
@@ -44,7 +44,7 @@ enum class PadButton {
 };
 
 struct GamepadState {
-  std::array<double, 2> left_stick{0.0, 0.0};   //!< [-1, 1], +x right, +y up (HID Y is down)
+  std::array<double, 2> left_stick{0.0, 0.0};  //!< [-1, 1], +x right, +y up (HID Y is down)
   std::array<double, 2> right_stick{0.0, 0.0};
   double left_trigger = 0.0;   //!< [0, 1]
   double right_trigger = 0.0;  //!< [0, 1]

@@ -93,8 +93,14 @@ HidReportDescriptor parse_report_descriptor(std::span<const std::uint8_t> bytes)
       const std::uint32_t usage = size == 4 ? raw : (raw & 0xFFFF);
       switch (tag) {
         case 0x0: l.usages.push_back(usage); break;
-        case 0x1: l.usage_min = usage; l.have_min = true; break;
-        case 0x2: l.usage_max = usage; l.have_max = true; break;
+        case 0x1:
+          l.usage_min = usage;
+          l.have_min = true;
+          break;
+        case 0x2:
+          l.usage_max = usage;
+          l.have_max = true;
+          break;
         default: break;
       }
       continue;
@@ -113,7 +119,8 @@ HidReportDescriptor parse_report_descriptor(std::span<const std::uint8_t> bytes)
       --depth;
     } else if (tag == 0x8 || tag == 0x9 || tag == 0xB) {  // Input, Output, Feature
       if (tag == 0x8) {
-        if (g.report_size == 0 || g.report_size > 32) fail(at, "Input needs a Report Size of 1..32");
+        if (g.report_size == 0 || g.report_size > 32)
+          fail(at, "Input needs a Report Size of 1..32");
         std::int32_t lmax = g.logical_max;
         // Many devices write Logical Maximum 255 in one byte (0xFF) with a minimum of 0: read it
         // unsigned when the minimum is not negative, as the spec's examples intend.
@@ -130,10 +137,13 @@ HidReportDescriptor parse_report_descriptor(std::span<const std::uint8_t> bytes)
         // constant item could wrap).
         const std::uint64_t bits = std::uint64_t{g.report_size} * g.report_count;
         if (pos + bits > std::uint64_t{kMaxHidReportBytes} * 8)
-          fail(at, "the report would be longer than " + std::to_string(kMaxHidReportBytes) + " bytes");
+          fail(at,
+               "the report would be longer than " + std::to_string(kMaxHidReportBytes) + " bytes");
         if (!constant && out.inputs.size() + g.report_count > kMaxHidInputFields)
           fail(at, "more than " + std::to_string(kMaxHidInputFields) + " input fields");
-        auto page_of = [&](std::uint32_t u) { return static_cast<std::uint16_t>(u >> 16 ? u >> 16 : g.usage_page); };
+        auto page_of = [&](std::uint32_t u) {
+          return static_cast<std::uint16_t>(u >> 16 ? u >> 16 : g.usage_page);
+        };
         if (constant) {
           pos += g.report_size * g.report_count;
         } else if (!variable) {  // array: each slot holds a usage index
@@ -143,7 +153,8 @@ HidReportDescriptor parse_report_descriptor(std::span<const std::uint8_t> bytes)
           f.logical_min = g.logical_min;
           f.logical_max = lmax;
           f.is_array = true;
-          const std::uint32_t first = l.have_min ? l.usage_min : (l.usages.empty() ? 0 : l.usages.front());
+          const std::uint32_t first =
+              l.have_min ? l.usage_min : (l.usages.empty() ? 0 : l.usages.front());
           const std::uint32_t last = l.have_max ? l.usage_max : first;
           f.usage_page = page_of(first);
           f.usage = static_cast<std::uint16_t>(first & 0xFFFF);

@@ -22,7 +22,7 @@ class HidDescriptorError : public std::runtime_error {
 };
 
 struct HidField {
-  std::uint8_t report_id = 0;  //!< 0 when the device does not number its reports
+  std::uint8_t report_id = 0;    //!< 0 when the device does not number its reports
   std::uint32_t bit_offset = 0;  //!< from the first data byte (after the report ID byte)
   std::uint32_t bit_size = 0;
   std::uint16_t usage_page = 0;
@@ -30,7 +30,8 @@ struct HidField {
   std::uint16_t usage_max = 0;  //!< for array fields: the last usage of the range
   std::int32_t logical_min = 0;
   std::int32_t logical_max = 0;
-  bool is_array = false;     //!< value selects a usage (usage + value - logical_min); 0/out of range: none
+  bool is_array =
+      false;  //!< value selects a usage (usage + value - logical_min); 0/out of range: none
   bool is_relative = false;
 };
 

@@ -50,7 +50,8 @@ class Checker {
                    std::initializer_list<const char*> keys) {
     const std::set<std::string> known(keys.begin(), keys.end());
     for (const auto& [k, v] : j.items()) {
-      if (!known.count(k)) fail(pointer + "/" + io::excerpt(io::json_pointer_token(k)), "unknown key");
+      if (!known.count(k))
+        fail(pointer + "/" + io::excerpt(io::json_pointer_token(k)), "unknown key");
     }
   }
 
@@ -228,7 +229,8 @@ HmdProfile parse_hmd_profile(const json& doc, const std::string& source) {
     check.fail("/format", "must be \"vdfx.hmd\", got \"" + io::excerpt(f) + "\"");
   }
   if (const json* v = check.child(doc, "version", "/version"); v && *v != 1) {
-    check.fail("/version", "unsupported version " + io::excerpt(v->dump()) + " (this vdfx reads version 1)");
+    check.fail("/version",
+               "unsupported version " + io::excerpt(v->dump()) + " (this vdfx reads version 1)");
   }
   p.name = check.string(doc, "name", "/name");
   if (doc.contains("name") && doc["name"].is_string() && p.name.empty()) {
@@ -296,8 +298,9 @@ HmdProfile load_hmd_profile(std::string_view name_or_path) {
     if (!std::filesystem::is_regular_file(path)) {
       std::string known;
       for (const auto& n : list_hmd_profiles()) known += (known.empty() ? "" : ", ") + n;
-      throw io::InputError("unknown HMD profile '" + io::excerpt(arg) + "' (in " + hmd_profile_dir().string() +
-                           ": " + (known.empty() ? "none" : known) + ")");
+      throw io::InputError("unknown HMD profile '" + io::excerpt(arg) + "' (in " +
+                           hmd_profile_dir().string() + ": " + (known.empty() ? "none" : known) +
+                           ")");
     }
   }
   // Bounded and non-blocking (a pipe or /dev/zero named as a profile is refused); the JSON is

@@ -6,7 +6,8 @@
 
 namespace vdfx::xr {
 
-std::unique_ptr<InputBackend> create_input_backend(std::string_view spec, const InputBackendOptions& options) {
+std::unique_ptr<InputBackend> create_input_backend(std::string_view spec,
+                                                   const InputBackendOptions& options) {
   if (spec == "sim") return create_sim_backend(options.sim);
   if (spec == "hid") return create_hid_backend({}, options);
   if (spec.starts_with("hid:")) {

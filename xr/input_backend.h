@@ -48,11 +48,11 @@ class InputBackend {
 
 /// Desktop stand-in: mouse and keyboard drive head and hands (docs/input.md lists bindings).
 struct SimConfig {
-  int window_width = 1280;   //!< pixels; updated by ViewGeometryEvent
+  int window_width = 1280;  //!< pixels; updated by ViewGeometryEvent
   int window_height = 720;
-  double hfov_deg = 100.0;   //!< horizontal field of view of the desktop view (its default)
+  double hfov_deg = 100.0;       //!< horizontal field of view of the desktop view (its default)
   double look_deg_per_px = 0.2;  //!< head turn per pixel of right-button drag
-  bool left_handed = false;  //!< mouse and the main keys drive the left hand instead
+  bool left_handed = false;      //!< mouse and the main keys drive the left hand instead
   glm::dvec3 head_position{0.0, kDefaultEyeHeight, 0.0};
 };
 

@@ -6,22 +6,79 @@
 /// window. These are vdfx's own types, not GLFW's.
 #pragma once
 
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string_view>
 #include <variant>
-
-#include <glm/vec3.hpp>
 
 namespace vdfx::xr {
 
 enum class Key {
   Unknown,
-  A, B, C, D, E, F, G, H, I, J, K, L, M, N, O, P, Q, R, S, T, U, V, W, X, Y, Z,
-  Num0, Num1, Num2, Num3, Num4, Num5, Num6, Num7, Num8, Num9,
-  Space, Enter, Escape, Tab, Backspace, Delete,
-  Left, Right, Up, Down,
-  LeftShift, RightShift, LeftControl, RightControl, LeftAlt, RightAlt,
-  F1, F2, F3, F4, F5, F6, F7, F8, F9, F10, F11, F12,
+  A,
+  B,
+  C,
+  D,
+  E,
+  F,
+  G,
+  H,
+  I,
+  J,
+  K,
+  L,
+  M,
+  N,
+  O,
+  P,
+  Q,
+  R,
+  S,
+  T,
+  U,
+  V,
+  W,
+  X,
+  Y,
+  Z,
+  Num0,
+  Num1,
+  Num2,
+  Num3,
+  Num4,
+  Num5,
+  Num6,
+  Num7,
+  Num8,
+  Num9,
+  Space,
+  Enter,
+  Escape,
+  Tab,
+  Backspace,
+  Delete,
+  Left,
+  Right,
+  Up,
+  Down,
+  LeftShift,
+  RightShift,
+  LeftControl,
+  RightControl,
+  LeftAlt,
+  RightAlt,
+  F1,
+  F2,
+  F3,
+  F4,
+  F5,
+  F6,
+  F7,
+  F8,
+  F9,
+  F10,
+  F11,
+  F12,
 };
 
 enum class MouseButton { Left, Right, Middle };

@@ -29,7 +29,9 @@ class HidInputBackend final : public InputBackend {
     std::vector<Selector> chosen;
     if (selectors.empty()) {
       for (const auto& d : devices) {
-        if (classify_device(d.vendor_id, d.product_id, d.usage_page, d.usage) == HidDeviceKind::Unknown) continue;
+        if (classify_device(d.vendor_id, d.product_id, d.usage_page, d.usage) ==
+            HidDeviceKind::Unknown)
+          continue;
         const std::string id = io::format_device_id(d.vendor_id, d.product_id);
         bool dup = false;
         for (const auto& c : chosen) dup = dup || c.device_id == id;
@@ -52,7 +54,8 @@ class HidInputBackend final : public InputBackend {
       } else if (parse_device_id(sel)) {
         chosen.push_back({sel, ""});
       } else {
-        throw io::InputError("hid: '" + sel + "' is neither vendor:product (hex, e.g. 054c:05c4) nor a path");
+        throw io::InputError("hid: '" + sel +
+                             "' is neither vendor:product (hex, e.g. 054c:05c4) nor a path");
       }
     }
     for (const Selector& s : chosen) {
@@ -62,19 +65,24 @@ class HidInputBackend final : public InputBackend {
         // Re-enumerate on every attempt: a replugged device may get a new path.
         for (const auto& d : system.enumerate()) {
           if (d.vendor_id != ids->first || d.product_id != ids->second) continue;
-          if (classify_device(d.vendor_id, d.product_id, d.usage_page, d.usage) == HidDeviceKind::Unknown) continue;
+          if (classify_device(d.vendor_id, d.product_id, d.usage_page, d.usage) ==
+              HidDeviceKind::Unknown)
+            continue;
           if (auto dev = system.open(d.path)) return dev;
         }
         return nullptr;
       };
-      sources_.push_back({s.device_id, std::make_unique<io::HidReader>(s.device_id, opener, options.hid_reader), {}});
+      sources_.push_back({s.device_id,
+                          std::make_unique<io::HidReader>(s.device_id, opener, options.hid_reader),
+                          {}});
     }
   }
 
   InputState poll_state(std::int64_t t_ns) override {
     raw_.clear();
     for (std::size_t i = 0; i < sources_.size(); ++i)
-      for (io::HidReaderEvent& ev : sources_[i].reader->drain()) pending_.push_back({i, std::move(ev)});
+      for (io::HidReaderEvent& ev : sources_[i].reader->drain())
+        pending_.push_back({i, std::move(ev)});
     // No lost taps (as the sim): events apply in order until one would change a control an
     // earlier event of this poll changed; it and the rest wait for the next poll.
     ControlSet down = controls_down(mapper_.state(t_ns), last_down_);
@@ -116,8 +124,10 @@ class HidInputBackend final : public InputBackend {
     switch (ev.kind) {
       case io::HidReaderEvent::Kind::Connected: {
         const auto ids = parse_device_id(src.id);
-        const bool known = ids && known_device_kind(ids->first, ids->second) != HidDeviceKind::Unknown;
-        if (!known && !ev.bytes.empty()) {  // generic gamepads need their descriptor, also in replay
+        const bool known =
+            ids && known_device_kind(ids->first, ids->second) != HidDeviceKind::Unknown;
+        if (!known &&
+            !ev.bytes.empty()) {  // generic gamepads need their descriptor, also in replay
           try {
             mapper_.on_descriptor(src.id, ev.bytes);
             raw_.push_back({t_ns, src.id, ev.bytes, true});

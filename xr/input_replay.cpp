@@ -21,16 +21,19 @@ class ReplayInputBackend final : public InputBackend {
   ReplayInputBackend(io::Recording rec, const InputBackendOptions& options)
       : name_(rec.name), mapping_(options.hid_mapping), mapper_(mapping_) {
     for (auto& line : rec.lines) {
-      if (auto* s = std::get_if<io::RecordedSample>(&line.value)) samples_.push_back(std::move(*s));
-      else hids_.push_back({line.line_number, std::get<io::RecordedHid>(std::move(line.value))});
+      if (auto* s = std::get_if<io::RecordedSample>(&line.value))
+        samples_.push_back(std::move(*s));
+      else
+        hids_.push_back({line.line_number, std::get<io::RecordedHid>(std::move(line.value))});
     }
     check_hid_lines();
   }
 
   InputState poll_state(std::int64_t t_ns) override {
     if (!hids_.empty()) return poll_hid(t_ns);
-    auto it = std::upper_bound(samples_.begin(), samples_.end(), t_ns,
-                               [](std::int64_t t, const io::RecordedSample& s) { return t < s.t_ns; });
+    auto it =
+        std::upper_bound(samples_.begin(), samples_.end(), t_ns,
+                         [](std::int64_t t, const io::RecordedSample& s) { return t < s.t_ns; });
     if (it == samples_.begin()) {
       InputState none = neutral_input_state(t_ns);
       return none;
@@ -72,8 +75,9 @@ class ReplayInputBackend final : public InputBackend {
           throw io::InputError(where + e.what());
         }
       } else if (!probe.knows(h.hid.device)) {
-        throw io::InputError(where + "device \"" + io::excerpt(h.hid.device) +
-                             "\" is not a known vendor:product and has no descriptor line before it");
+        throw io::InputError(
+            where + "device \"" + io::excerpt(h.hid.device) +
+            "\" is not a known vendor:product and has no descriptor line before it");
       }
     }
   }
@@ -86,8 +90,10 @@ class ReplayInputBackend final : public InputBackend {
     last_poll_ = t_ns;
     for (; next_ < hids_.size() && hids_[next_].hid.t_ns <= t_ns; ++next_) {
       const io::RecordedHid& h = hids_[next_].hid;
-      if (h.is_descriptor) mapper_.on_descriptor(h.device, h.bytes);
-      else mapper_.on_report(h.t_ns, h.device, h.bytes);
+      if (h.is_descriptor)
+        mapper_.on_descriptor(h.device, h.bytes);
+      else
+        mapper_.on_report(h.t_ns, h.device, h.bytes);
     }
     return mapper_.state(t_ns);
   }
@@ -103,7 +109,8 @@ class ReplayInputBackend final : public InputBackend {
 
 }  // namespace
 
-std::unique_ptr<InputBackend> create_replay_backend(io::Recording recording, const InputBackendOptions& options) {
+std::unique_ptr<InputBackend> create_replay_backend(io::Recording recording,
+                                                    const InputBackendOptions& options) {
   return std::make_unique<ReplayInputBackend>(std::move(recording), options);
 }
 

@@ -119,8 +119,10 @@ class SimInputBackend final : public InputBackend {
 
  private:
   void apply(const KeyEvent& e) {
-    if (e.pressed) keys_.insert(e.key);
-    else keys_.erase(e.key);
+    if (e.pressed)
+      keys_.insert(e.key);
+    else
+      keys_.erase(e.key);
   }
   void apply(const MouseButtonEvent& e) {
     // A press over no drawn view (a letterbox bar) presses nothing; a release always releases.
@@ -138,8 +140,10 @@ class SimInputBackend final : public InputBackend {
     mouse_x_ = e.x;
     mouse_y_ = e.y;
     over_view_ = e.over_view;
-    if (e.ray) ray_ = *e.ray;
-    else ray_.reset();
+    if (e.ray)
+      ray_ = *e.ray;
+    else
+      ray_.reset();
   }
   void apply(const ViewGeometryEvent& e) {
     if (e.width_px > 0 && e.height_px > 0) {
@@ -152,7 +156,8 @@ class SimInputBackend final : public InputBackend {
 
   bool active(Hand hand, Control c) const {
     for (const KeyBinding& b : kKeyBindings) {
-      if (b.control == c && hand_of(b.role, config_.left_handed) == hand && keys_.count(b.key)) return true;
+      if (b.control == c && hand_of(b.role, config_.left_handed) == hand && keys_.count(b.key))
+        return true;
     }
     return false;
   }
@@ -180,9 +185,12 @@ class SimInputBackend final : public InputBackend {
     hs.secondary = active(hand, Control::Secondary);
     hs.menu = hand == Hand::Left && active(hand, Control::Menu);
     hs.thumbstick_click = active(hand, Control::StickClick);
-    glm::dvec2 stick{(active(hand, Control::StickRight) ? 1.0 : 0.0) - (active(hand, Control::StickLeft) ? 1.0 : 0.0),
-                     (active(hand, Control::StickUp) ? 1.0 : 0.0) - (active(hand, Control::StickDown) ? 1.0 : 0.0)};
-    if (glm::length(stick) > 1.0) stick = glm::normalize(stick);  // diagonals stay on the unit circle
+    glm::dvec2 stick{(active(hand, Control::StickRight) ? 1.0 : 0.0) -
+                         (active(hand, Control::StickLeft) ? 1.0 : 0.0),
+                     (active(hand, Control::StickUp) ? 1.0 : 0.0) -
+                         (active(hand, Control::StickDown) ? 1.0 : 0.0)};
+    if (glm::length(stick) > 1.0)
+      stick = glm::normalize(stick);  // diagonals stay on the unit circle
     hs.thumbstick = stick;
   }
 
@@ -236,10 +244,12 @@ std::string sim_bindings_text(const SimConfig& config) {
   std::ostringstream look;
   look << "turn the head (/user/head/pose), " << config.look_deg_per_px << " deg per pixel";
   rows.emplace_back("right mouse button drag", look.str());
-  rows.emplace_back("mouse position", "/user/hand/" + main_name + "/input/aim/pose (ray through the cursor)");
+  rows.emplace_back("mouse position",
+                    "/user/hand/" + main_name + "/input/aim/pose (ray through the cursor)");
   rows.emplace_back("left mouse button", control_path(main, Control::Trigger));
   for (const KeyBinding& b : kKeyBindings) {
-    rows.emplace_back(std::string(key_name(b.key)), control_path(hand_of(b.role, config.left_handed), b.control));
+    rows.emplace_back(std::string(key_name(b.key)),
+                      control_path(hand_of(b.role, config.left_handed), b.control));
   }
   std::ostringstream out;
   for (const auto& [input, action] : rows) {

@@ -7,12 +7,14 @@ namespace vdfx::xr {
 namespace {
 
 io::RecordedPose to_recorded(const Pose& p) {
-  return {{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}, {p.position.x, p.position.y, p.position.z}};
+  return {{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z},
+          {p.position.x, p.position.y, p.position.z}};
 }
 
 Pose from_recorded(const io::RecordedPose& r) {
   Pose p;
-  p.orientation = glm::dquat(r.q[0], r.q[1], r.q[2], r.q[3]);  // glm's constructor takes (w, x, y, z)
+  p.orientation =
+      glm::dquat(r.q[0], r.q[1], r.q[2], r.q[3]);  // glm's constructor takes (w, x, y, z)
   p.position = {r.p[0], r.p[1], r.p[2]};
   return p;
 }

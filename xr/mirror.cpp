@@ -49,8 +49,8 @@ std::string_view mirror_mode_name(MirrorMode mode) {
 }
 
 std::optional<MirrorMode> mirror_mode_from_name(std::string_view name) {
-  for (const MirrorMode m : {MirrorMode::Desktop, MirrorMode::PreDistorted, MirrorMode::ThroughTheLens,
-                             MirrorMode::SingleEye})
+  for (const MirrorMode m : {MirrorMode::Desktop, MirrorMode::PreDistorted,
+                             MirrorMode::ThroughTheLens, MirrorMode::SingleEye})
     if (mirror_mode_name(m) == name) return m;
   return std::nullopt;
 }
@@ -59,7 +59,8 @@ WindowRect mirror_eye_rect(MirrorMode mode, int eye, int eye_w, int eye_h, int w
   if (mode == MirrorMode::Desktop) return {0, 0, win_w, win_h};
   const int x0 = mode == MirrorMode::SingleEye ? 0 : eye * win_w / 2;
   const int x1 = mode == MirrorMode::SingleEye ? win_w : (eye + 1) * win_w / 2;
-  const double s = std::min(static_cast<double>(x1 - x0) / eye_w, static_cast<double>(win_h) / eye_h);
+  const double s =
+      std::min(static_cast<double>(x1 - x0) / eye_w, static_cast<double>(win_h) / eye_h);
   const int w = static_cast<int>(eye_w * s), h = static_cast<int>(eye_h * s);
   // Centred; the compositor's blit (GL, bottom-up) puts the bottom edge at (win_h - h) / 2.
   const int bottom = (win_h - h) / 2;
@@ -79,8 +80,9 @@ RenderView desktop_view(const Pose& head, double hfov_deg, int width, int height
   return v;
 }
 
-MirrorGeometry MirrorGeometry::from_profile(const HmdProfile& profile, MirrorMode mode, int eye_w, int eye_h,
-                                            int window_w, int window_h, double desktop_hfov_deg) {
+MirrorGeometry MirrorGeometry::from_profile(const HmdProfile& profile, MirrorMode mode, int eye_w,
+                                            int eye_h, int window_w, int window_h,
+                                            double desktop_hfov_deg) {
   MirrorGeometry g;
   g.mode = mode;
   g.window_w = window_w;
@@ -89,7 +91,8 @@ MirrorGeometry MirrorGeometry::from_profile(const HmdProfile& profile, MirrorMod
   g.eye_w = eye_w;
   g.eye_h = eye_h;
   const auto views = locate_eye_views(Pose{}, profile);  // head at the origin: the head frame
-  for (int e = 0; e < 2; ++e) g.eyes[static_cast<std::size_t>(e)] = render_view(views[static_cast<std::size_t>(e)]);
+  for (int e = 0; e < 2; ++e)
+    g.eyes[static_cast<std::size_t>(e)] = render_view(views[static_cast<std::size_t>(e)]);
   g.lens = effects::LensModel(profile.lens);
   return g;
 }
@@ -127,15 +130,18 @@ std::optional<ViewRay> mirror_ray(const MirrorGeometry& g, double x, double y) {
   return std::nullopt;
 }
 
-std::optional<glm::dvec2> mirror_pixel_of(const MirrorGeometry& g, const glm::dvec3& head_point, int eye) {
+std::optional<glm::dvec2> mirror_pixel_of(const MirrorGeometry& g, const glm::dvec3& head_point,
+                                          int eye) {
   const auto pixel_in = [&](const RenderView& v, int w, int h) -> std::optional<Eigen::Vector2d> {
-    const Eigen::Vector3d p = v.orientation.transpose() *
-                              (Eigen::Vector3d(head_point.x, head_point.y, head_point.z) - v.position);
+    const Eigen::Vector3d p =
+        v.orientation.transpose() *
+        (Eigen::Vector3d(head_point.x, head_point.y, head_point.z) - v.position);
     if (p.z() >= 0.0) return std::nullopt;  // behind
     return v.pixel_at({p.x() / -p.z(), p.y() / -p.z()}, w, h);
   };
   if (g.mode == MirrorMode::Desktop) {
-    const auto px = pixel_in(desktop_view(Pose{}, g.desktop_hfov_deg, g.window_w, g.window_h), g.window_w, g.window_h);
+    const auto px = pixel_in(desktop_view(Pose{}, g.desktop_hfov_deg, g.window_w, g.window_h),
+                             g.window_w, g.window_h);
     if (!px) return std::nullopt;
     return glm::dvec2(px->x(), px->y());
   }

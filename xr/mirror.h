@@ -10,10 +10,9 @@
 #pragma once
 
 #include <array>
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string_view>
-
-#include <glm/vec3.hpp>
 
 #include "effects/lens_model.h"
 #include "xr/hmd_profile.h"
@@ -37,7 +36,9 @@ std::optional<MirrorMode> mirror_mode_from_name(std::string_view name);
 /// A rectangle of window pixels, origin top-left, y down.
 struct WindowRect {
   int x = 0, y = 0, w = 0, h = 0;
-  bool contains(double px, double py) const { return px >= x && py >= y && px < x + w && py < y + h; }
+  bool contains(double px, double py) const {
+    return px >= x && py >= y && px < x + w && py < y + h;
+  }
 };
 
 /// Where eye `eye`'s image (eye_w x eye_h) is drawn in a win_w x win_h mirror: the eye modes fit
@@ -62,8 +63,9 @@ struct MirrorGeometry {
   bool lca_correction = true;
 
   /// From a headset profile and the compositor's eye buffer size.
-  static MirrorGeometry from_profile(const HmdProfile& profile, MirrorMode mode, int eye_w, int eye_h,
-                                     int window_w, int window_h, double desktop_hfov_deg);
+  static MirrorGeometry from_profile(const HmdProfile& profile, MirrorMode mode, int eye_w,
+                                     int eye_h, int window_w, int window_h,
+                                     double desktop_hfov_deg);
 };
 
 /// The ray through the centre-relative window pixel position (x, y) (continuous, origin top-left,

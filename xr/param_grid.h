@@ -16,7 +16,9 @@ namespace vdfx::xr {
 struct ParamGrid {
   int width = 0, height = 0;
   std::vector<effects::StackParams> cells;  //!< row-major, row 0 at the top (altitude +90)
-  const effects::StackParams& at(int i, int j) const { return cells[static_cast<std::size_t>(j) * width + i]; }
+  const effects::StackParams& at(int i, int j) const {
+    return cells[static_cast<std::size_t>(j) * width + i];
+  }
   /// The largest blur sigma of any cell (degrees): the eye's blur margin and the level stack's
   /// range in per-pixel mode.
   double max_blur_sigma_deg() const;

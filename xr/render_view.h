@@ -22,7 +22,7 @@ namespace vdfx::xr {
 
 struct RenderView {
   Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();  //!< eye frame -> LOCAL (world)
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();  //!< eye position in LOCAL (metres)
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();         //!< eye position in LOCAL (metres)
   double tan_left = -1.0, tan_right = 1.0, tan_down = -1.0, tan_up = 1.0;
   /// Lens / optical centre in tangent units of this eye (0, 0 = straight ahead of the eye).
   /// The vignette is centred here and the lens distortion is radial about it.

@@ -2,8 +2,8 @@
 /// @brief Session: state machine, frame timing, views.
 #include "xr/session.h"
 
-#include <cmath>
 #include <climits>
+#include <cmath>
 
 namespace vdfx::xr {
 
@@ -84,7 +84,8 @@ FrameState Session::wait_frame(std::int64_t now_ns) {
   if (frame_waited_) fail("wait_frame", "called twice without begin_frame");
   // First vsync strictly after now: floor division that is also right for now < epoch.
   const std::int64_t since = now_ns - epoch_ns_;
-  std::int64_t k = since >= 0 ? since / period_ns_ + 1 : -((-since) / period_ns_) + ((-since) % period_ns_ ? 0 : 1);
+  std::int64_t k = since >= 0 ? since / period_ns_ + 1
+                              : -((-since) / period_ns_) + ((-since) % period_ns_ ? 0 : 1);
   std::int64_t t = epoch_ns_ + k * period_ns_;
   if (t <= last_predicted_ns_) t = last_predicted_ns_ + period_ns_;
   FrameState f;
@@ -132,13 +133,15 @@ Eigen::Matrix3d rotation_of(const Pose& p) {
   return Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized().toRotationMatrix();
 }
 
-Eigen::Vector3d position_of(const Pose& p) { return {p.position.x, p.position.y, p.position.z}; }
+Eigen::Vector3d position_of(const Pose& p) {
+  return {p.position.x, p.position.y, p.position.z};
+}
 
 RenderView render_view(const EyeView& v) {
   const double d = effects::kDegToRad;
-  RenderView r = RenderView::from_angles(rotation_of(v.pose), v.fov.angle_left * d,
-                                         v.fov.angle_right * d, v.fov.angle_down * d,
-                                         v.fov.angle_up * d);
+  RenderView r =
+      RenderView::from_angles(rotation_of(v.pose), v.fov.angle_left * d, v.fov.angle_right * d,
+                              v.fov.angle_down * d, v.fov.angle_up * d);
   r.position = position_of(v.pose);
   return r;
 }

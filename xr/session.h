@@ -45,8 +45,8 @@ struct FrameState {
 /// A UI panel: a textured quad in 3D, composited after the effects (they never touch it).
 struct QuadLayer {
   ReferenceSpace space = ReferenceSpace::Local;
-  Pose pose;                                     //!< centre of the quad, +z towards the viewer
-  Eigen::Vector2d size_m = {1.0, 0.5};           //!< width, height in metres
+  Pose pose;                            //!< centre of the quad, +z towards the viewer
+  Eigen::Vector2d size_m = {1.0, 0.5};  //!< width, height in metres
   /// GL texture name (0: none yet): premultiplied RGBA, its first row (as uploaded to GL) at
   /// the quad's top, as OpenXR's quad layers.
   unsigned texture = 0;

@@ -29,7 +29,6 @@
 #pragma once
 
 #include <memory>
-
 #include <opencv2/core.hpp>
 
 #include "io/picture.h"

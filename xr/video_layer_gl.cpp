@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-
 #include <opencv2/imgproc.hpp>
 #include <string>
 
@@ -116,8 +115,8 @@ struct PlaneTexture {
     glBindTexture(GL_TEXTURE_2D, id);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, static_cast<GLint>(m.step[0] / m.elemSize()));
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, m.cols, m.rows, GL_RED, deep ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE,
-                    m.data);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, m.cols, m.rows, GL_RED,
+                    deep ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE, m.data);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
     glGenerateMipmap(GL_TEXTURE_2D);
     check_gl("VideoLayerGl plane upload");
@@ -180,9 +179,12 @@ void VideoLayerGl::set_frame(const io::Picture& pic) {
   m.info = pic.ycbcr;
   // Luma (u, v) -> chroma (u, v): pixel x = u W - 1/2 reads chroma sample (x - siting) / step,
   // at texture coordinate (that + 1/2) / chroma width (io/ycbcr.h's coordinate).
-  const double size[2] = {static_cast<double>(pic.planes[0].cols), static_cast<double>(pic.planes[0].rows)};
-  const double chroma[2] = {static_cast<double>(pic.planes[1].cols), static_cast<double>(pic.planes[1].rows)};
-  const double step[2] = {std::ldexp(1.0, pic.ycbcr.log2_chroma_w), std::ldexp(1.0, pic.ycbcr.log2_chroma_h)};
+  const double size[2] = {static_cast<double>(pic.planes[0].cols),
+                          static_cast<double>(pic.planes[0].rows)};
+  const double chroma[2] = {static_cast<double>(pic.planes[1].cols),
+                            static_cast<double>(pic.planes[1].rows)};
+  const double step[2] = {std::ldexp(1.0, pic.ycbcr.log2_chroma_w),
+                          std::ldexp(1.0, pic.ycbcr.log2_chroma_h)};
   const double siting[2] = {pic.ycbcr.chroma_x, pic.ycbcr.chroma_y};
   for (int a = 0; a < 2; ++a) {
     m.chroma_scale[a] = static_cast<float>(size[a] / (step[a] * chroma[a]));
@@ -237,7 +239,11 @@ void VideoLayerGl::render(const GlTarget& target, const RenderView& v, LodMode l
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-const GlTexture& VideoLayerGl::texture() const { return impl_->texture; }
-bool VideoLayerGl::has_frame() const { return impl_->ycbcr || static_cast<bool>(impl_->texture); }
+const GlTexture& VideoLayerGl::texture() const {
+  return impl_->texture;
+}
+bool VideoLayerGl::has_frame() const {
+  return impl_->ycbcr || static_cast<bool>(impl_->texture);
+}
 
 }  // namespace vdfx::xr

@@ -217,7 +217,8 @@ TEST(BadInput, ACutOrDamagedVideoIsAnInputErrorNotAHang) {
   const fs::path mkv = test_media::write_clip(dir / "full.mkv", spec);
   const auto cut = [&](const fs::path& full, const std::string& name, double keep) {
     fs::copy_file(full, dir / name);
-    fs::resize_file(dir / name, static_cast<std::uintmax_t>(static_cast<double>(fs::file_size(full)) * keep));
+    fs::resize_file(dir / name,
+                    static_cast<std::uintmax_t>(static_cast<double>(fs::file_size(full)) * keep));
     return dir / name;
   };
   const fs::path mp4_cut = cut(mp4, "cut.mp4", 0.5);
@@ -229,12 +230,14 @@ TEST(BadInput, ACutOrDamagedVideoIsAnInputErrorNotAHang) {
     std::fstream f(noisy, std::ios::in | std::ios::out | std::ios::binary);
     const auto size = static_cast<std::streamoff>(fs::file_size(noisy));
     f.seekp(size / 4);
-    for (std::streamoff i = size / 4; i < 3 * size / 4; ++i) f.put(static_cast<char>((i * 7919) >> 5));
+    for (std::streamoff i = size / 4; i < 3 * size / 4; ++i)
+      f.put(static_cast<char>((i * 7919) >> 5));
   }
   const std::string s = (dir / "s.vdfx.json").string();
   const auto render = [&](const fs::path& video, int frame) {
-    return run("render " + video.string() + " --sidecar " + s + " --view 0,0 --fov 90 --size 16x8 --frame " +
-               std::to_string(frame) + " --out " + (dir / "o.png").string());
+    return run("render " + video.string() + " --sidecar " + s +
+               " --view 0,0 --fov 90 --size 16x8 --frame " + std::to_string(frame) + " --out " +
+               (dir / "o.png").string());
   };
   // Each: the contract's exit 1 (run() has a 60 s limit: a hang fails as 124), one line that
   // starts with the command and the file.

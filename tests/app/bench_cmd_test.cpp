@@ -214,7 +214,8 @@ TEST(BenchCommand, UsageAndInputErrorsUseTheContractsExitCodes) {
   const auto plot = run_vdfx("bench --quick --filter '^rbf\\.solve/N=10$' --plot " +
                              (dir / "afile" / "plots").string());
   EXPECT_EQ(plot.exit_code, 1) << plot.output;
-  EXPECT_NE(plot.output.find("--plot " + (dir / "afile" / "plots").string() + ": cannot create the folder"),
+  EXPECT_NE(plot.output.find("--plot " + (dir / "afile" / "plots").string() +
+                             ": cannot create the folder"),
             std::string::npos)
       << plot.output;
   EXPECT_EQ(plot.output.find("rbf.solve"), std::string::npos) << plot.output;  // nothing ran

@@ -51,7 +51,8 @@ TEST(CliUtil, SizesStayWithinTheirDocumentedLimits) {
     SizeLimit limit;
     const char* says;
   } rows[] = {
-      {"16384x16384", "--size", kOutputSizeLimit, "268435456 pixels, more than the 67108864 allowed (8192x8192)"},
+      {"16384x16384", "--size", kOutputSizeLimit,
+       "268435456 pixels, more than the 67108864 allowed (8192x8192)"},
       {"16385x1", "--size", kOutputSizeLimit, "each side must be at most 16384"},
       {"100000x1", "--window", kOutputSizeLimit, "each side must be at most 16384"},
       {"16384x16384", "--bake", kBakeSizeLimit, "each side must be at most 4096"},
@@ -84,7 +85,8 @@ TEST(CliUtil, NumericOptionsRefuseNanOverflowAndSayTheRangeShortly) {
       {finite_range(1, 179), "0.5", "'0.5' is out of range [1, 179]"},
       {finite_range(1, 179), "90x", "'90x' is not a finite number"},
       {whole_range(0, INT64_MAX), "9223372036854775807", ""},
-      {whole_range(0, INT64_MAX), "9223372036854775808", "is out of range [0, 9223372036854775807]"},
+      {whole_range(0, INT64_MAX), "9223372036854775808",
+       "is out of range [0, 9223372036854775807]"},
       {whole_range(0, INT64_MAX), "-1", "'-1' is out of range [0, 9223372036854775807]"},
       {whole_range(0, INT64_MAX), "1.5", "'1.5' is not a whole number"},
       {whole_range(0, INT64_MAX), "", "'' is not a whole number"},

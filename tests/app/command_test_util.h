@@ -59,9 +59,9 @@ inline std::filesystem::path write_test_panorama(const std::filesystem::path& di
   for (int y = 0; y < img.rows; ++y)
     for (int x = 0; x < img.cols; ++x) {
       const bool line = (x % grid == 0) || (y % grid == 0);
-      img.at<cv::Vec3b>(y, x) = line ? cv::Vec3b(20, 20, 20)
-                                     : cv::Vec3b(static_cast<uchar>(60 + y), 128,
-                                                 static_cast<uchar>(40 + x * 0.7));
+      img.at<cv::Vec3b>(y, x) =
+          line ? cv::Vec3b(20, 20, 20)
+               : cv::Vec3b(static_cast<uchar>(60 + y), 128, static_cast<uchar>(40 + x * 0.7));
     }
   const auto path = dir / "pano.png";
   cv::imwrite(path.string(), img);
@@ -100,9 +100,9 @@ inline double mean_abs_diff(const cv::Mat& a, const cv::Mat& b) {
 /// returns the written image (BGR).
 inline cv::Mat render(const std::filesystem::path& dir, const std::string& args,
                       const std::string& out) {
-  const CommandResult r = run_vdfx("render " + (dir / "pano.png").string() + " --sidecar " +
-                                   (dir / "s.vdfx.json").string() + " " + args + " --out " +
-                                   (dir / out).string());
+  const CommandResult r =
+      run_vdfx("render " + (dir / "pano.png").string() + " --sidecar " +
+               (dir / "s.vdfx.json").string() + " " + args + " --out " + (dir / out).string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return cv::imread((dir / out).string(), cv::IMREAD_COLOR);
 }

@@ -30,7 +30,7 @@ TEST(Commands, ValidateListsEveryProblemWithPointers) {
   EXPECT_NE(ok.output.find("valid (1 effects, 2 keyframes)"), std::string::npos) << ok.output;
 
   std::string broken = exposure_sidecar();
-  broken.replace(broken.find("\"frame\": 0"), 10, "\"frame\": 7");   // beyond 1 frame
+  broken.replace(broken.find("\"frame\": 0"), 10, "\"frame\": 7");      // beyond 1 frame
   broken.replace(broken.find("\"stops\": -1.0"), 13, "\"stops\": 99");  // out of range
   write_text(dir / "broken.vdfx.json", broken);
   const CommandResult bad = run_vdfx("validate " + (dir / "broken.vdfx.json").string());
@@ -111,15 +111,13 @@ TEST(Commands, RenderHmdEyeWithCpuPredistortion) {
   cv::absdiff(exact, mesh, diff);
   EXPECT_LT(cv::mean(diff)[1], 2.0);  // a 33x33 mesh is close to the exact mapping
 
-  const CommandResult no_hmd = run_vdfx("render " + (dir / "pano.png").string() + " --sidecar " +
-                                        (dir / "s.vdfx.json").string() +
-                                        " --view 0,0 --fov 90 --size 8x8 --distort pixel --out " +
-                                        (dir / "x.png").string());
+  const CommandResult no_hmd = run_vdfx(
+      "render " + (dir / "pano.png").string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+      " --view 0,0 --fov 90 --size 8x8 --distort pixel --out " + (dir / "x.png").string());
   EXPECT_EQ(no_hmd.exit_code, 2);
-  const CommandResult bad_hmd = run_vdfx("render " + (dir / "pano.png").string() + " --sidecar " +
-                                         (dir / "s.vdfx.json").string() +
-                                         " --view 0,0 --hmd no-such-headset --out " +
-                                         (dir / "x.png").string());
+  const CommandResult bad_hmd = run_vdfx(
+      "render " + (dir / "pano.png").string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+      " --view 0,0 --hmd no-such-headset --out " + (dir / "x.png").string());
   EXPECT_EQ(bad_hmd.exit_code, 1) << bad_hmd.output;
 }
 
@@ -127,9 +125,9 @@ TEST(Commands, RenderBlurAndBakeOptionsAreChecked) {
   const auto dir = test_dir();
   write_test_panorama(dir);
   write_text(dir / "s.vdfx.json", exposure_sidecar());
-  const std::string base = "render " + (dir / "pano.png").string() + " --sidecar " +
-                           (dir / "s.vdfx.json").string() + " --view 0,0 --fov 90 --size 8x8 --out " +
-                           (dir / "x.png").string() + " ";
+  const std::string base =
+      "render " + (dir / "pano.png").string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+      " --view 0,0 --fov 90 --size 8x8 --out " + (dir / "x.png").string() + " ";
   const struct {
     const char* args;
     const char* message;  //!< must appear in the output
@@ -149,23 +147,20 @@ TEST(Commands, RenderBadInputSaysWhere) {
   const auto dir = test_dir();
   write_test_panorama(dir);
   write_text(dir / "s.vdfx.json", exposure_sidecar());
-  const CommandResult missing = run_vdfx("render " + (dir / "nope.mp4").string() + " --sidecar " +
-                                         (dir / "s.vdfx.json").string() +
-                                         " --view 0,0 --fov 90 --size 8x8 --out " +
-                                         (dir / "x.png").string());
+  const CommandResult missing = run_vdfx(
+      "render " + (dir / "nope.mp4").string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+      " --view 0,0 --fov 90 --size 8x8 --out " + (dir / "x.png").string());
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.output.find("nope.mp4"), std::string::npos) << missing.output;
-  const CommandResult frame = run_vdfx("render " + (dir / "pano.png").string() + " --sidecar " +
-                                       (dir / "s.vdfx.json").string() +
-                                       " --view 0,0 --frame 3 --fov 90 --size 8x8 --out " +
-                                       (dir / "x.png").string());
+  const CommandResult frame = run_vdfx(
+      "render " + (dir / "pano.png").string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+      " --view 0,0 --frame 3 --fov 90 --size 8x8 --out " + (dir / "x.png").string());
   EXPECT_EQ(frame.exit_code, 1);
   EXPECT_NE(frame.output.find("frame 3"), std::string::npos) << frame.output;
   write_text(dir / "corrupt.png", "not a png at all");
-  const CommandResult corrupt = run_vdfx("render " + (dir / "corrupt.png").string() +
-                                         " --sidecar " + (dir / "s.vdfx.json").string() +
-                                         " --view 0,0 --fov 90 --size 8x8 --out " +
-                                         (dir / "x.png").string());
+  const CommandResult corrupt = run_vdfx(
+      "render " + (dir / "corrupt.png").string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+      " --view 0,0 --fov 90 --size 8x8 --out " + (dir / "x.png").string());
   EXPECT_EQ(corrupt.exit_code, 1);
   EXPECT_NE(corrupt.output.find("corrupt.png"), std::string::npos) << corrupt.output;
 }

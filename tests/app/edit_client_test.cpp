@@ -21,12 +21,15 @@ struct FakeTextures : PanelTextures {
     bool whole;
     std::vector<cv::Rect> regions;
   };
-  std::vector<Call> calls;        //!< panel uploads (pointer marks are uploaded once, apart)
+  std::vector<Call> calls;         //!< panel uploads (pointer marks are uploaded once, apart)
   std::vector<std::size_t> marks;  //!< slots of the pointer marks' textures
   std::map<std::size_t, cv::Mat> images;
-  unsigned upload(std::size_t slot, const cv::Mat& image, const std::vector<cv::Rect>& regions) override {
-    if (slot >= 1000) marks.push_back(slot);
-    else calls.push_back({slot, regions.empty(), regions});
+  unsigned upload(std::size_t slot, const cv::Mat& image,
+                  const std::vector<cv::Rect>& regions) override {
+    if (slot >= 1000)
+      marks.push_back(slot);
+    else
+      calls.push_back({slot, regions.empty(), regions});
     if (regions.empty()) {
       images[slot] = image.clone();
     } else {
@@ -52,7 +55,9 @@ struct Fixture {
 };
 
 // What the GL texture must show: the panel's own pixels (premultiplied, first row at the top).
-cv::Mat expected_texture(ui::Panel& p) { return p.texture(); }
+cv::Mat expected_texture(ui::Panel& p) {
+  return p.texture();
+}
 
 TEST(EditClient, QuadsAtPanelPosesUploadOnlyWhenPanelsRerender) {
   Fixture f;
@@ -146,14 +151,16 @@ TEST(EditClient, ParamsCarryThePreviewAndRevisionFollowsEdits) {
   ASSERT_TRUE(f.editor.previewing());
   EXPECT_EQ(f.client.active_effects(), effects::shader_bit(EffectType::Exposure));
   EXPECT_NE(f.client.params_revision(), r0);
-  EXPECT_DOUBLE_EQ(f.client.params(f.editor.view_direction(), f.editor.frame()).exposure_stops, 2.0);
+  EXPECT_DOUBLE_EQ(f.client.params(f.editor.view_direction(), f.editor.frame()).exposure_stops,
+                   2.0);
   // Turning the head while previewing moves the preview: a new revision.
   const std::uint64_t r1 = f.client.params_revision();
   in = test::looking(40.0, 0.0, 2);
   in.right.trigger = 1.0;
   f.step(in);
   EXPECT_NE(f.client.params_revision(), r1);
-  EXPECT_DOUBLE_EQ(f.client.params(f.editor.view_direction(), f.editor.frame()).exposure_stops, 2.0);
+  EXPECT_DOUBLE_EQ(f.client.params(f.editor.view_direction(), f.editor.frame()).exposure_stops,
+                   2.0);
   // Release: placed; the effect stays compiled in because it now has a keyframe.
   in.right.trigger = 0.0;
   in.t_ns = 3;

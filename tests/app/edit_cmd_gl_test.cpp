@@ -30,23 +30,27 @@ TEST(EditCmdGl, ReplayedSessionWritesTheReplaysKeyframesAndShowsPanels) {
   const fs::path png = dir / "editor.png", plain = dir / "plain.png";
 
   // The headless replay's answer.
-  const auto ref = run_vdfx("replay " + kRecording + " --video " + kSunrise + " --sidecar-out " + reference.string());
+  const auto ref = run_vdfx("replay " + kRecording + " --video " + kSunrise + " --sidecar-out " +
+                            reference.string());
   ASSERT_EQ(ref.exit_code, 0) << ref.output;
 
   // The window: a sidecar that does not exist yet is created for the video.
-  const auto out = run_vdfx("edit " + kSunrise + " --sidecar " + sidecar.string() + " --input replay:" + kRecording +
-                            kMirror + " --screenshot " + png.string());
+  const auto out =
+      run_vdfx("edit " + kSunrise + " --sidecar " + sidecar.string() +
+               " --input replay:" + kRecording + kMirror + " --screenshot " + png.string());
   ASSERT_EQ(out.exit_code, 0) << out.output;
   EXPECT_NE(out.output.find("new sidecar"), std::string::npos) << out.output;
   ASSERT_TRUE(fs::exists(sidecar)) << out.output;
-  EXPECT_FALSE(fs::exists(fs::path(sidecar.string() + ".autosave"))) << "a clean exit removes the recovery copy";
+  EXPECT_FALSE(fs::exists(fs::path(sidecar.string() + ".autosave")))
+      << "a clean exit removes the recovery copy";
   const io::Sidecar got = io::read_sidecar(sidecar), want = io::read_sidecar(reference);
   ASSERT_EQ(got.effects.size(), 1u);
   EXPECT_EQ(got.effects, want.effects);
 
   // The same view without the panels: the played sidecar in `vdfx play`, same input and mirror.
-  const auto p = run_vdfx("play " + kSunrise + " --sidecar " + sidecar.string() + " --input replay:" + kRecording +
-                          kMirror + " --screenshot " + plain.string());
+  const auto p =
+      run_vdfx("play " + kSunrise + " --sidecar " + sidecar.string() +
+               " --input replay:" + kRecording + kMirror + " --screenshot " + plain.string());
   ASSERT_EQ(p.exit_code, 0) << p.output;
   const cv::Mat a = cv::imread(png.string()), b = cv::imread(plain.string());
   ASSERT_FALSE(a.empty());
@@ -66,7 +70,8 @@ TEST(EditCmdGl, ReplayedSessionWritesTheReplaysKeyframesAndShowsPanels) {
 
   cv::Mat half;
   cv::resize(a, half, {a.cols / 2, a.rows / 2}, 0, 0, cv::INTER_AREA);
-  const std::string g = test_images::compare_with_golden(half, "app", "edit_desktop_view", 48.0, 1.5);
+  const std::string g =
+      test_images::compare_with_golden(half, "app", "edit_desktop_view", 48.0, 1.5);
   EXPECT_TRUE(g.empty()) << g;
 }
 
@@ -75,8 +80,9 @@ TEST(EditCmdGl, DemoRecordingOnTheBundledDemoCopy) {
   const fs::path copy = dir / "demo.vdfx.json";
   fs::copy_file(kSrc + "/app/demo/interior.vdfx.json", copy);
   const std::size_t before = io::read_sidecar(copy).effects.size();
-  const auto out = run_vdfx("edit --sidecar " + copy.string() + " --input replay:" + kSrc +
-                            "/recordings/demo.vdrec.jsonl --frames 60 --hidden --scale 0.1 --window 160x90");
+  const auto out =
+      run_vdfx("edit --sidecar " + copy.string() + " --input replay:" + kSrc +
+               "/recordings/demo.vdrec.jsonl --frames 60 --hidden --scale 0.1 --window 160x90");
   ASSERT_EQ(out.exit_code, 0) << out.output;
   const io::Sidecar s = io::read_sidecar(copy);
   EXPECT_GE(s.effects.size(), before);
@@ -100,10 +106,12 @@ TEST(EditCmdGl, RecoveryCopyIsOfferedAndDeclinedByDefault) {
   io::Sidecar changed = io::read_sidecar(sidecar);
   changed.effects.front().keyframes.push_back({{10.0, 20.0}, 0, {1.1, 1.0, 0.9}});
   io::write_sidecar(fs::path(sidecar.string() + ".autosave"), changed);
-  const auto yes = run_vdfx("edit --sidecar " + sidecar.string() + " --recover yes --input replay:" + kRecording +
+  const auto yes = run_vdfx("edit --sidecar " + sidecar.string() +
+                            " --recover yes --input replay:" + kRecording +
                             " --frames 1 --hidden --scale 0.05 --window 64x64");
   ASSERT_EQ(yes.exit_code, 0) << yes.output;
-  EXPECT_EQ(io::read_sidecar(sidecar).effects.front().keyframes.size(), changed.effects.front().keyframes.size())
+  EXPECT_EQ(io::read_sidecar(sidecar).effects.front().keyframes.size(),
+            changed.effects.front().keyframes.size())
       << yes.output;
 }
 

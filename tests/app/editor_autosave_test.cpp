@@ -2,7 +2,6 @@
 /// @brief Autosave on every change, recovery copy removed on a clean exit, kept and offered after
 /// a crash (a child process killed without a clean exit).
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -36,7 +35,8 @@ TEST(EditorAutosave, EveryChangeWritesSidecarAndRecoveryCopyCleanExitRemovesIt) 
   EXPECT_TRUE(io::read_sidecar(path).effects.empty());
   EXPECT_NE(ed.autosave_status().find("saved clip.vdfx.json (2 changes)"), std::string::npos);
   EXPECT_TRUE(ed.finish());
-  EXPECT_NE(ed.autosave_status().find("(2 changes)"), std::string::npos) << "finishing is no change";
+  EXPECT_NE(ed.autosave_status().find("(2 changes)"), std::string::npos)
+      << "finishing is no change";
   EXPECT_FALSE(std::filesystem::exists(recovery_path(path)));
   EXPECT_FALSE(find_recovery(path).has_value());
 }
@@ -65,7 +65,8 @@ TEST(EditorAutosave, ADragIsSavedOnceWhenItEnds) {
   ASSERT_EQ(ed.autosave_saves(), 1);
   // A slider drag: one group, a change every frame.
   ed.document().begin_group("drag");
-  for (double v : {1.5, 2.0, 2.5, 3.0}) ed.document().set_keyframe_params(EffectType::Exposure, 0, {v});
+  for (double v : {1.5, 2.0, 2.5, 3.0})
+    ed.document().set_keyframe_params(EffectType::Exposure, 0, {v});
   EXPECT_EQ(ed.autosave_saves(), 1) << "nothing written while the drag goes on";
   EXPECT_DOUBLE_EQ(io::read_sidecar(path).effects.at(0).keyframes.at(0).params.at(0), 1.0);
   ed.document().end_group();
@@ -108,7 +109,8 @@ TEST(EditorAutosave, CrashLeavesARecoveryCopyThatIsOffered) {
 }
 
 TEST(EditorAutosave, FailureIsReportedNotThrown) {
-  Autosave a(std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "editor" / "no_such_dir" / "x" / "s.vdfx.json");
+  Autosave a(std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "editor" / "no_such_dir" / "x" /
+             "s.vdfx.json");
   EXPECT_FALSE(a.save(test::empty_sidecar()));
   EXPECT_NE(a.status().find("FAILED"), std::string::npos);
 }

@@ -25,15 +25,16 @@ TEST(DesktopLayout, PanelsCoverTheirRectanglesWithTexturesAtScreenResolution) {
   Editor ed(test::empty_sidecar(90), DocumentOptions{{.async = false}}, desktop());
   xr::SimConfig sim;
   ed.update(xr::create_sim_backend(sim)->poll(0), 0);
-  const auto g = xr::MirrorGeometry::from_profile(xr::load_hmd_profile("generic90"), xr::MirrorMode::Desktop, 1, 1,
-                                                  1280, 720, 100.0);
+  const auto g = xr::MirrorGeometry::from_profile(xr::load_hmd_profile("generic90"),
+                                                  xr::MirrorMode::Desktop, 1, 1, 1280, 720, 100.0);
   const xr::Pose head = ed.input().head;
   for (ui::Panel* p : ed.panels()) {
     const ScreenRect r = ed.ui().screen_rect(p->id());
     // Its corners project onto the rectangle's corners (to a hundredth of a pixel) ...
     const auto tl = xr::mirror_pixel_of(g, head.inverse().transform(p->world_of_pixel({0.0, 0.0})));
     const auto br = xr::mirror_pixel_of(
-        g, head.inverse().transform(p->world_of_pixel({static_cast<double>(p->width_px()), static_cast<double>(p->height_px())})));
+        g, head.inverse().transform(p->world_of_pixel(
+               {static_cast<double>(p->width_px()), static_cast<double>(p->height_px())})));
     ASSERT_TRUE(tl && br) << p->id();
     EXPECT_NEAR(tl->x, r.x, 0.01) << p->id();
     EXPECT_NEAR(tl->y, r.y, 0.01) << p->id();
@@ -70,7 +71,8 @@ TEST(DesktopLayout, HeadsUpLineAndExpiringMessages) {
   ed.seek(45);
   ed.update(test::looking(30.0, -5.0, 1), 1);
   const std::string hud = ed.hud_text();
-  for (const char* s : {"frame 45 / 90", "0:01.50", "az 30\u00b0 alt -5\u00b0", "Exposure (0 keyframes)", "12 fps"})
+  for (const char* s :
+       {"frame 45 / 90", "0:01.50", "az 30\u00b0 alt -5\u00b0", "Exposure (0 keyframes)", "12 fps"})
     EXPECT_NE(hud.find(s), std::string::npos) << s << " in " << hud;
   EXPECT_EQ(ed.ui().hud_line->text(), hud);
   ed.place_keyframe();

@@ -5,8 +5,8 @@
 #include <functional>
 
 #include "app/document.h"
-#include "io/input_error.h"
 #include "editor_test_util.h"
+#include "io/input_error.h"
 
 namespace vdfx::app {
 namespace {
@@ -16,8 +16,10 @@ using effects::Keyframe;
 
 Document make_doc() {
   io::Sidecar s = test::empty_sidecar();
-  s.effects.push_back({EffectType::Exposure, std::nullopt,
-                       {{{30.0, 0.0}, 10, {1.0}}, {{-60.0, 10.0}, 20, {-2.0}}, {{120.0, -5.0}, 40, {0.5}}}});
+  s.effects.push_back(
+      {EffectType::Exposure,
+       std::nullopt,
+       {{{30.0, 0.0}, 10, {1.0}}, {{-60.0, 10.0}, 20, {-2.0}}, {{120.0, -5.0}, 40, {0.5}}}});
   s.effects.push_back({EffectType::Tint, std::nullopt, {{{0.0, 0.0}, 0, {1.2, 0.9, 1.0}}}});
   return Document(s, DocumentOptions{{.async = false}});
 }
@@ -52,15 +54,33 @@ TEST_P(DocumentUndo, UndoRestoresBytesAndRedoReapplies) {
 INSTANTIATE_TEST_SUITE_P(
     Commands, DocumentUndo,
     ::testing::Values(
-        CommandCase{"add", [](Document& d) { d.add_keyframe(EffectType::Exposure, {{90.0, 20.0}, 5, {3.0}}); }},
-        CommandCase{"add_new_effect", [](Document& d) { d.add_keyframe(EffectType::Blur, {{0.0, 0.0}, 0, {2.0}}); }},
-        CommandCase{"replace", [](Document& d) { d.add_keyframe(EffectType::Exposure, {{30.3, 0.1}, 10, {4.0}}); }},
-        CommandCase{"move", [](Document& d) { d.move_keyframe(EffectType::Exposure, 1, {-50.0, 0.0}, 25); }},
+        CommandCase{"add",
+                    [](Document& d) {
+                      d.add_keyframe(EffectType::Exposure, {{90.0, 20.0}, 5, {3.0}});
+                    }},
+        CommandCase{"add_new_effect",
+                    [](Document& d) {
+                      d.add_keyframe(EffectType::Blur, {{0.0, 0.0}, 0, {2.0}});
+                    }},
+        CommandCase{"replace",
+                    [](Document& d) {
+                      d.add_keyframe(EffectType::Exposure, {{30.3, 0.1}, 10, {4.0}});
+                    }},
+        CommandCase{"move",
+                    [](Document& d) {
+                      d.move_keyframe(EffectType::Exposure, 1, {-50.0, 0.0}, 25);
+                    }},
         CommandCase{"delete", [](Document& d) { d.remove_keyframe(EffectType::Exposure, 0); }},
-        CommandCase{"delete_last_of_effect", [](Document& d) { d.remove_keyframe(EffectType::Tint, 0); }},
-        CommandCase{"keyframe_params", [](Document& d) { d.set_keyframe_params(EffectType::Exposure, 2, {-1.0}); }},
-        CommandCase{"chosen_params", [](Document& d) { d.set_params(EffectType::Exposure, {2.5}); }},
-        CommandCase{"interpolation", [](Document& d) { d.set_interpolation(EffectType::Exposure, {1.5, 2.0}); }}),
+        CommandCase{"delete_last_of_effect",
+                    [](Document& d) { d.remove_keyframe(EffectType::Tint, 0); }},
+        CommandCase{"keyframe_params",
+                    [](Document& d) { d.set_keyframe_params(EffectType::Exposure, 2, {-1.0}); }},
+        CommandCase{"chosen_params",
+                    [](Document& d) { d.set_params(EffectType::Exposure, {2.5}); }},
+        CommandCase{"interpolation",
+                    [](Document& d) {
+                      d.set_interpolation(EffectType::Exposure, {1.5, 2.0});
+                    }}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Document, ReplaceWithinHalfDegreeOnSameFrameOnly) {
@@ -94,7 +114,8 @@ TEST(Document, UnlimitedUndoBackToTheStart) {
   const std::string start = io::format_sidecar(doc.sidecar());
   std::vector<std::string> states{start};
   for (int i = 0; i < 40; ++i) {
-    doc.add_keyframe(EffectType::Saturation, {{-170.0 + 8.0 * i, (i % 7) * 5.0 - 15.0}, i, {0.1 * (i % 30)}});
+    doc.add_keyframe(EffectType::Saturation,
+                     {{-170.0 + 8.0 * i, (i % 7) * 5.0 - 15.0}, i, {0.1 * (i % 30)}});
     states.push_back(io::format_sidecar(doc.sidecar()));
   }
   for (int i = 40; i > 0; --i) {

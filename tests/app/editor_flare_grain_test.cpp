@@ -73,7 +73,8 @@ TEST(DocumentFlare, EditsTheFirstFlareAndKeepsTheSecondUnchanged) {
   ASSERT_EQ(s.flares.size(), 2u);
   EXPECT_EQ(s.flares[0].style, FlareStyle::Directional);
   // The plane was at the headset default: it moves to the directional default.
-  EXPECT_DOUBLE_EQ(s.flares[0].settings.plane_m, effects::default_flare_settings(FlareStyle::Directional).plane_m);
+  EXPECT_DOUBLE_EQ(s.flares[0].settings.plane_m,
+                   effects::default_flare_settings(FlareStyle::Directional).plane_m);
   EXPECT_TRUE(std::holds_alternative<AutoLight>(s.flares[0].light));
   EXPECT_EQ(s.flares[0].keyframes.size(), 2u);
   EXPECT_EQ(s.flares[1], before.flares[1]);

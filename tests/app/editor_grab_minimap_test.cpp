@@ -29,12 +29,15 @@ io::Sidecar forty_keyframes() {
 }
 
 /// The minimap a fresh solve of `keyframes` gives at frame 30.
-cv::Mat expected_field(const std::vector<Keyframe>& keyframes, const effects::InterpolationSettings& s) {
+cv::Mat expected_field(const std::vector<Keyframe>& keyframes,
+                       const effects::InterpolationSettings& s) {
   const effects::RbfInterpolator rbf(keyframes, 1, s, 30.0, {0.0});
   return effect_minimap(&rbf, EffectType::Exposure, 30, 128, 64);
 }
 
-double max_abs(const cv::Mat& a, const cv::Mat& b) { return cv::norm(a, b, cv::NORM_INF); }
+double max_abs(const cv::Mat& a, const cv::Mat& b) {
+  return cv::norm(a, b, cv::NORM_INF);
+}
 
 struct Case {
   const char* name;
@@ -70,24 +73,31 @@ TEST_P(GrabMinimap, FieldFollowsTheHeldKeyframe) {
     frame(25.0 * step, 0.0, 1.0);
     auto moved = doc_keys;
     moved[held].direction = ed.selected_preview()->direction;
-    EXPECT_LT(max_abs(ed.minimap_field(), expected_field(moved, settings)), 1e-5) << "step " << step;
-    EXPECT_GT(max_abs(ed.minimap_field(), before), 0.1) << "the field changed with the held keyframe";
-    EXPECT_EQ(ed.document().keyframes(EffectType::Exposure), doc_keys) << "the document is untouched";
+    EXPECT_LT(max_abs(ed.minimap_field(), expected_field(moved, settings)), 1e-5)
+        << "step " << step;
+    EXPECT_GT(max_abs(ed.minimap_field(), before), 0.1)
+        << "the field changed with the held keyframe";
+    EXPECT_EQ(ed.document().keyframes(EffectType::Exposure), doc_keys)
+        << "the document is untouched";
   }
   // Release commits the move; the field is the document's (now moved) solution.
   frame(75.0, 0.0, 0.0);
   ASSERT_FALSE(ed.grabbing());
-  EXPECT_LT(max_abs(ed.minimap_field(), expected_field(ed.document().keyframes(EffectType::Exposure), settings)), 1e-5);
+  EXPECT_LT(max_abs(ed.minimap_field(),
+                    expected_field(ed.document().keyframes(EffectType::Exposure), settings)),
+            1e-5);
   // A grab cancelled by undo goes back to the document's field.
   frame(75.0, 0.0, 1.0);
   frame(100.0, 0.0, 1.0);
   ASSERT_TRUE(ed.grabbing());
   ed.undo();
   frame(100.0, 0.0, 1.0);
-  EXPECT_LT(max_abs(ed.minimap_field(), before), 1e-5) << "undo restored the keyframe and the field";
+  EXPECT_LT(max_abs(ed.minimap_field(), before), 1e-5)
+      << "undo restored the keyframe and the field";
 }
 
-INSTANTIATE_TEST_SUITE_P(Editor, GrabMinimap, ::testing::Values(Case{"sync", false}, Case{"async", true}),
+INSTANTIATE_TEST_SUITE_P(Editor, GrabMinimap,
+                         ::testing::Values(Case{"sync", false}, Case{"async", true}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

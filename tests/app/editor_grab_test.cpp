@@ -37,7 +37,9 @@ class Grab : public ::testing::Test {
     t_ += kFrame;
     ed_.update(sync_.sync(with(looking(az, alt, t_), squeeze, stick_click)), t_);
   }
-  const effects::Keyframe& key(std::size_t i) { return ed_.document().keyframes(EffectType::Exposure).at(i); }
+  const effects::Keyframe& key(std::size_t i) {
+    return ed_.document().keyframes(EffectType::Exposure).at(i);
+  }
   std::size_t steps() { return ed_.document().undo_stack().undo_size() - steps_before_; }
 
   Editor ed_;
@@ -62,8 +64,10 @@ TEST_F(Grab, SqueezeSelectsTheNearestKeyframeAndHighlightsIt) {
   ASSERT_TRUE(ed_.selected_keyframe());
   EXPECT_EQ(steps(), 0u);
   EXPECT_EQ(key(1).direction.azimuth_deg, 40.0);
-  EXPECT_NE(ed_.status_text().find("SELECTED keyframe 2/2"), std::string::npos) << ed_.status_text();
-  EXPECT_NE(ed_.ui().title->text().find("keyframe 2 of 2"), std::string::npos) << ed_.ui().title->text();
+  EXPECT_NE(ed_.status_text().find("SELECTED keyframe 2/2"), std::string::npos)
+      << ed_.status_text();
+  EXPECT_NE(ed_.ui().title->text().find("keyframe 2 of 2"), std::string::npos)
+      << ed_.ui().title->text();
   EXPECT_TRUE(ed_.ui().deselect->enabled());
 }
 
@@ -96,7 +100,8 @@ TEST_F(Grab, HeldKeyframeFollowsTheViewLiveAndReleaseIsOneUndoableMove) {
     EXPECT_NEAR(ed_.params_for_view(d, 10).exposure_stops, ref.evaluate(d, 10)[0], 1e-9);
   // The minimap dot moves with it.
   EXPECT_NEAR(ed_.ui().minimap->keyframes().at(1).azimuth_deg, 60.0, 1e-9);
-  EXPECT_NE(ed_.status_text().find("az 60 alt 10 frame 10"), std::string::npos) << ed_.status_text();
+  EXPECT_NE(ed_.status_text().find("az 60 alt 10 frame 10"), std::string::npos)
+      << ed_.status_text();
 
   frame(60.0, 10.0, 0.0);  // release
   EXPECT_EQ(steps(), 1u);
@@ -159,11 +164,13 @@ TEST_F(Grab, SelectedKeyframeParamsAreEditedInsteadOfTheChosenValues) {
   frame(40.0, 0.0, 0.0);
   // The slider keeps a position in [0, 1] and maps it back to the range: equal to a few ulps
   // (fused multiply-adds with -march=x86-64-v3 round differently).
-  auto* slider = dynamic_cast<ui::Slider1D*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Exposure)]);
+  auto* slider =
+      dynamic_cast<ui::Slider1D*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Exposure)]);
   EXPECT_NEAR(slider->get(), -1.0, 1e-12);  // the widget shows the keyframe's value
   ed_.set_selected_params({2.5});
   EXPECT_EQ(key(1).params, std::vector<double>{2.5});
-  EXPECT_EQ(ed_.document().params(EffectType::Exposure), std::vector<double>{0.0});  // chosen untouched
+  EXPECT_EQ(ed_.document().params(EffectType::Exposure),
+            std::vector<double>{0.0});  // chosen untouched
   EXPECT_EQ(steps(), 1u);
   EXPECT_EQ(ed_.document().undo_stack().next_undo_label(), "keyframe parameters");
   frame(40.0, 0.0, 0.0);
@@ -186,7 +193,7 @@ TEST_F(Grab, SelectedKeyframeParamsAreEditedInsteadOfTheChosenValues) {
 TEST_F(Grab, DeleteRemovesTheSelectedKeyframeNotTheNearest) {
   frame(-30.0, 0.0, 1.0);  // select A
   frame(-30.0, 0.0, 0.0);
-  frame(40.0, 0.0, 0.0);   // look at B
+  frame(40.0, 0.0, 0.0);  // look at B
   ASSERT_TRUE(ed_.delete_nearest());
   ASSERT_EQ(ed_.document().keyframes(EffectType::Exposure).size(), 1u);
   EXPECT_EQ(key(0).direction.azimuth_deg, 40.0);
@@ -256,10 +263,12 @@ TEST(GrabPanels, SliderDragOnTheSelectedKeyframeIsOneUndoStep) {
   key(xr::Key::G);
   ASSERT_TRUE(ed.selected_keyframe());
   const auto steps0 = ed.document().undo_stack().undo_size();
-  auto* s = dynamic_cast<ui::Slider1D*>(ed.ui().effect_widgets[static_cast<int>(EffectType::Exposure)]);
+  auto* s =
+      dynamic_cast<ui::Slider1D*>(ed.ui().effect_widgets[static_cast<int>(EffectType::Exposure)]);
   const double y = s->rect().y + s->rect().h / 2;
   auto px = [&](double v) {
-    return test::cursor_for(kEffectPanelId, {s->track_x0() + (v + 8.0) / 16.0 * (s->track_x1() - s->track_x0()), y},
+    return test::cursor_for(kEffectPanelId,
+                            {s->track_x0() + (v + 8.0) / 16.0 * (s->track_x1() - s->track_x0()), y},
                             test::kClipFrames);
   };
   mouse(px(1.0), true);

@@ -22,8 +22,7 @@ class PanelWiring : public ::testing::Test {
  protected:
   PanelWiring()
       : sim_(xr::create_sim_backend({})),
-        ed_(test::empty_sidecar(test::kClipFrames), DocumentOptions{{.async = false}},
-            desktop()) {
+        ed_(test::empty_sidecar(test::kClipFrames), DocumentOptions{{.async = false}}, desktop()) {
     step();
   }
   void step(int n = 1) {
@@ -42,7 +41,9 @@ class PanelWiring : public ::testing::Test {
     button(true);
     button(false);
   }
-  glm::dvec2 at(const char* panel, const char* widget) { return test::widget_cursor(panel, widget, test::kClipFrames); }
+  glm::dvec2 at(const char* panel, const char* widget) {
+    return test::widget_cursor(panel, widget, test::kClipFrames);
+  }
 
   std::unique_ptr<xr::InputBackend> sim_;
   Editor ed_;
@@ -71,9 +72,13 @@ TEST_F(PanelWiring, MenuRowsSelectEveryEffect) {
 }
 
 TEST_F(PanelWiring, SliderDragIsOneUndoStepAndUndoButtonRevertsIt) {
-  auto* s = dynamic_cast<ui::Slider1D*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Exposure)]);
+  auto* s =
+      dynamic_cast<ui::Slider1D*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Exposure)]);
   const double y = s->rect().y + s->rect().h / 2;
-  auto px = [&](double v) { return test::cursor_for(kEffectPanelId, {s->track_x0() + (v + 8.0) / 16.0 * (s->track_x1() - s->track_x0()), y}); };
+  auto px = [&](double v) {
+    return test::cursor_for(
+        kEffectPanelId, {s->track_x0() + (v + 8.0) / 16.0 * (s->track_x1() - s->track_x0()), y});
+  };
   move(px(0.0));
   button(true);
   for (double v : {0.5, 1.0, 2.0, 3.0}) move(px(v));
@@ -91,7 +96,8 @@ TEST_F(PanelWiring, SliderDragIsOneUndoStepAndUndoButtonRevertsIt) {
 
 TEST_F(PanelWiring, TimelineScrubPlayAndToggles) {
   auto* strip = ed_.ui().strip;
-  click(test::cursor_for(kTimelinePanelId, {strip->x_of(45), strip->rect().y + strip->rect().h / 2}, test::kClipFrames));
+  click(test::cursor_for(kTimelinePanelId, {strip->x_of(45), strip->rect().y + strip->rect().h / 2},
+                         test::kClipFrames));
   EXPECT_EQ(ed_.frame(), 45);
   click(at(kTimelinePanelId, "play"));
   EXPECT_TRUE(ed_.playing());
@@ -109,7 +115,8 @@ TEST_F(PanelWiring, TimelineScrubPlayAndToggles) {
 TEST_F(PanelWiring, VignettePadAndTintWheelSetTheChosenValues) {
   ed_.select_effect(EffectType::Vignette);
   step();
-  auto* pad = dynamic_cast<ui::Pad2D*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Vignette)]);
+  auto* pad =
+      dynamic_cast<ui::Pad2D*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Vignette)]);
   const ui::Rect a = pad->area();
   click(test::cursor_for(kEffectPanelId, {a.x + a.w / 3.0, a.y + a.h / 2.0}));
   const auto& v = ed_.document().params(EffectType::Vignette);
@@ -117,8 +124,10 @@ TEST_F(PanelWiring, VignettePadAndTintWheelSetTheChosenValues) {
   EXPECT_NEAR(v[1], 90.0, 1.0);
   ed_.select_effect(EffectType::Tint);
   step();
-  auto* wheel = dynamic_cast<ui::ColourWheel*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Tint)]);
-  click(test::cursor_for(kEffectPanelId, wheel->disc_centre() + glm::dvec2(0.5 * wheel->disc_radius(), 0.0)));
+  auto* wheel =
+      dynamic_cast<ui::ColourWheel*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Tint)]);
+  click(test::cursor_for(kEffectPanelId,
+                         wheel->disc_centre() + glm::dvec2(0.5 * wheel->disc_radius(), 0.0)));
   const auto& g = ed_.document().params(EffectType::Tint);
   EXPECT_GT(g[0], g[1]);  // hue 0 is red
   EXPECT_NEAR(0.25 * g[0] + 0.5 * g[1] + 0.25 * g[2], 1.0, 1e-9);

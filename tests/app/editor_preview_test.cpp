@@ -26,15 +26,19 @@ std::vector<Keyframe> random_keyframes(int n, unsigned seed) {
   std::uniform_int_distribution<std::int64_t> frame(0, kFrames - 1);
   std::vector<Keyframe> ks;
   for (int i = 0; i < n; ++i)
-    ks.push_back({{170.0 * u(rng), std::asin(0.95 * u(rng)) * effects::kRadToDeg}, frame(rng), {stops(rng)}});
+    ks.push_back({{170.0 * u(rng), std::asin(0.95 * u(rng)) * effects::kRadToDeg},
+                  frame(rng),
+                  {stops(rng)}});
   return ks;
 }
 
 /// Largest difference between `rbf` and a fresh solve of the pending edit's keyframes over a
 /// spread of directions and frames.
-double max_difference(const effects::RbfInterpolator& rbf, const PendingEdit& p, const Document& doc) {
-  const effects::RbfInterpolator fresh(p.keyframe_list(), p.target().dimension(), doc.interpolation(p.target()),
-                                       doc.video().fps, p.target().neutral());
+double max_difference(const effects::RbfInterpolator& rbf, const PendingEdit& p,
+                      const Document& doc) {
+  const effects::RbfInterpolator fresh(p.keyframe_list(), p.target().dimension(),
+                                       doc.interpolation(p.target()), doc.video().fps,
+                                       p.target().neutral());
   double worst = 0.0;
   for (int i = 0; i < 24; ++i) {
     const Direction d{-172.0 + 15.0 * i, -80.0 + 7.0 * i};
@@ -57,7 +61,8 @@ TEST_P(PendingPath, EveryStepEqualsAFreshSolveWithOneSeedAndNoSolve) {
   const bool grab = GetParam();
   Keyframe key{{10.0, 5.0}, 40, {2.5}};
   if (grab) key.params = doc.keyframes(EffectType::Exposure)[17].params;
-  PendingEdit& p = doc.begin_pending(EffectType::Exposure, grab ? std::optional<std::size_t>(17) : std::nullopt, key);
+  PendingEdit& p = doc.begin_pending(EffectType::Exposure,
+                                     grab ? std::optional<std::size_t>(17) : std::nullopt, key);
   for (int step = 0; step < 12; ++step) {
     key.direction = {effects::wrap_azimuth_deg(10.0 + 3.7 * step), 5.0 + 1.3 * step};
     if (grab) key.frame = 40 + step % 3;  // the playhead moves too
@@ -67,7 +72,8 @@ TEST_P(PendingPath, EveryStepEqualsAFreshSolveWithOneSeedAndNoSolve) {
     EXPECT_LT(max_difference(*rbf, p, doc), 1e-9) << "step " << step;
   }
   EXPECT_EQ(doc.pending_stats().seeds, 1u);
-  EXPECT_EQ(doc.pending_stats().full_seeds, 0u) << "the document's solved set is cloned, not re-solved";
+  EXPECT_EQ(doc.pending_stats().full_seeds, 0u)
+      << "the document's solved set is cloned, not re-solved";
   EXPECT_EQ(doc.pending_stats().moves, 11u);
   // The values change (the widget while placing): no new seed.
   key.params = {-1.5};
@@ -81,8 +87,9 @@ TEST_P(PendingPath, EveryStepEqualsAFreshSolveWithOneSeedAndNoSolve) {
   EXPECT_EQ(doc.keyframes(EffectType::Exposure).size(), before + (grab ? 0u : 1u));
 }
 
-INSTANTIATE_TEST_SUITE_P(Editor, PendingPath, ::testing::Values(false, true),
-                         [](const auto& info) { return std::string(info.param ? "grab" : "placement"); });
+INSTANTIATE_TEST_SUITE_P(Editor, PendingPath, ::testing::Values(false, true), [](const auto& info) {
+  return std::string(info.param ? "grab" : "placement");
+});
 
 TEST(PendingEdit, LandingOnAKeyframeLeavesItOutAndMovingOffBringsItBack) {
   std::vector<Keyframe> ks = random_keyframes(40, 3u);
@@ -137,7 +144,9 @@ TEST(PendingEdit, ASetWithoutAnExactStateIsSolvedOnceAndVersionsOnlyGrow) {
   EXPECT_EQ(p.version(), v1);
   doc.cancel_pending();
   // A later pending edit of the same document never reuses a version (caches key on them).
-  EXPECT_GT(doc.begin_pending(EffectType::Exposure, std::nullopt, {{14.0, 3.0}, 15, {1.0}}).version(), v1);
+  EXPECT_GT(
+      doc.begin_pending(EffectType::Exposure, std::nullopt, {{14.0, 3.0}, 15, {1.0}}).version(),
+      v1);
 }
 
 TEST(PendingEdit, AHeldKeyframeAtItsPlaceChangesNothing) {
@@ -165,11 +174,13 @@ TEST(EditorPreview, HeadTurnsWhilePlacingAndGrabbingMatchAFreshSolve) {
     ASSERT_TRUE(p);
     EXPECT_EQ(p->key(), key);
     const effects::RbfInterpolator fresh(p->keyframe_list(), 1, settings, 30.0);
-    for (const Direction d : {Direction{-120.0, 10.0}, Direction{75.0, -40.0}, Direction{170.0, 60.0}})
-      EXPECT_NEAR(ed.params_for_view(d, 30).exposure_stops, std::clamp(fresh.evaluate(d, 30)[0], -8.0, 8.0), 1e-9);
+    for (const Direction d :
+         {Direction{-120.0, 10.0}, Direction{75.0, -40.0}, Direction{170.0, 60.0}})
+      EXPECT_NEAR(ed.params_for_view(d, 30).exposure_stops,
+                  std::clamp(fresh.evaluate(d, 30)[0], -8.0, 8.0), 1e-9);
   };
   std::int64_t t = 0;
-  xr::ActionSync sync;  // the edges InputBackend::poll would add
+  xr::ActionSync sync;                    // the edges InputBackend::poll would add
   for (int step = 0; step < 6; ++step) {  // trigger held: preview a new keyframe
     t += 33'333'333;
     auto in = test::looking(20.0 + 4.0 * step, 2.0 * step, t);

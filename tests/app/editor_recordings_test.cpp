@@ -26,7 +26,8 @@ TEST(EditorRecordings, CommittedFilesMatchTheGenerator) {
     const fs::path out = (regenerate ? dir : tmp) / s.file_name;
     s.write(out);
     if (!regenerate) {
-      EXPECT_EQ(slurp(out), slurp(dir / s.file_name)) << s.file_name << " differs from its generator";
+      EXPECT_EQ(slurp(out), slurp(dir / s.file_name))
+          << s.file_name << " differs from its generator";
     }
   }
 }

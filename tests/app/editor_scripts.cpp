@@ -4,8 +4,8 @@
 
 #include <cmath>
 #include <map>
-#include <stdexcept>
 #include <memory>
+#include <stdexcept>
 
 #include "app/editor_panels.h"
 #include "effects/effect_types.h"
@@ -44,13 +44,15 @@ EditorPanels& panels_for(int frames) {
 // The window position where the desktop view draws a world point (the head at rest).
 glm::dvec2 project(const glm::dvec3& world) {
   const xr::InputState in = xr::create_sim_backend(script_sim())->poll(0);
-  const auto g = xr::MirrorGeometry::from_profile(xr::load_hmd_profile("generic90"), xr::MirrorMode::Desktop, 1, 1,
-                                                  kScriptViewport.width, kScriptViewport.height,
-                                                  kScriptViewport.hfov_deg);
+  const auto g = xr::MirrorGeometry::from_profile(
+      xr::load_hmd_profile("generic90"), xr::MirrorMode::Desktop, 1, 1, kScriptViewport.width,
+      kScriptViewport.height, kScriptViewport.hfov_deg);
   return *xr::mirror_pixel_of(g, in.head.inverse().transform(world));
 }
 
-ui::Panel& panel_of(EditorPanels& p, const std::string& id) { return *p.panel(id); }
+ui::Panel& panel_of(EditorPanels& p, const std::string& id) {
+  return *p.panel(id);
+}
 
 // Pixel of a value on the effect panel's widgets.
 glm::dvec2 slider_cursor(const std::string& id, double v) {
@@ -60,7 +62,8 @@ glm::dvec2 slider_cursor(const std::string& id, double v) {
     p.show_effect(*effects::effect_type_from_name(id));
   }
   const double t = (v - s->axis().min) / (s->axis().max - s->axis().min);
-  const glm::dvec2 px{s->track_x0() + t * (s->track_x1() - s->track_x0()), s->rect().y + s->rect().h * 0.5};
+  const glm::dvec2 px{s->track_x0() + t * (s->track_x1() - s->track_x0()),
+                      s->rect().y + s->rect().h * 0.5};
   return cursor_for(kEffectPanelId, px);
 }
 
@@ -69,7 +72,8 @@ glm::dvec2 pad_cursor(double x, double y) {
   p.show_effect(effects::EffectType::Vignette);
   auto* pad = p.effect->find_as<ui::Pad2D>("vignette");
   const ui::Rect a = pad->area();
-  return cursor_for(kEffectPanelId, {a.x + a.w * (x / 180.0), a.y + a.h - a.h * ((y - 0.01) / (180.0 - 0.01))});
+  return cursor_for(kEffectPanelId,
+                    {a.x + a.w * (x / 180.0), a.y + a.h - a.h * ((y - 0.01) / (180.0 - 0.01))});
 }
 
 glm::dvec2 wheel_cursor(double hue_deg, double sat) {
@@ -77,7 +81,8 @@ glm::dvec2 wheel_cursor(double hue_deg, double sat) {
   p.show_effect(effects::EffectType::Tint);
   auto* w = p.effect->find_as<ui::ColourWheel>("tint");
   const double a = hue_deg * 3.14159265358979323846 / 180.0;
-  const glm::dvec2 px = w->disc_centre() + sat * w->disc_radius() * glm::dvec2(std::cos(a), -std::sin(a));
+  const glm::dvec2 px =
+      w->disc_centre() + sat * w->disc_radius() * glm::dvec2(std::cos(a), -std::sin(a));
   return cursor_for(kEffectPanelId, px);
 }
 
@@ -95,11 +100,13 @@ glm::dvec2 strip_cursor(int frame, int frames) {
 // A sim session being recorded, one poll per 30 Hz frame.
 class Session {
  public:
-  Session(const std::filesystem::path& file, const std::string& note, std::optional<std::string> video)
+  Session(const std::filesystem::path& file, const std::string& note,
+          std::optional<std::string> video)
       : rec_(xr::create_recording_backend(
             xr::create_sim_backend(script_sim()), file,
             {"sim", std::move(video), note,
-             io::RecordedDesktopView{kScriptViewport.width, kScriptViewport.height, kScriptViewport.hfov_deg}})) {}
+             io::RecordedDesktopView{kScriptViewport.width, kScriptViewport.height,
+                                     kScriptViewport.hfov_deg}})) {}
   void frames(int n) {
     for (int i = 0; i < n; ++i) rec_->poll(f_++ * kFrameNs);
   }
@@ -175,9 +182,10 @@ class Session {
 };
 
 void editor_place_exposure(const std::filesystem::path& file) {
-  Session s(file,
-            "editor: exposure +2 at az -40, -1.5 at az 40 alt 10 (B held once), undo (button), redo (Y)",
-            "/usr/share/blender/datafiles/studiolights/world/sunrise.exr");
+  Session s(
+      file,
+      "editor: exposure +2 at az -40, -1.5 at az 40 alt 10 (B held once), undo (button), redo (Y)",
+      "/usr/share/blender/datafiles/studiolights/world/sunrise.exr");
   s.frames(5);
   s.click(slider_cursor("exposure", 2.0));
   s.look(-40.0, 0.0);
@@ -192,7 +200,8 @@ void editor_place_exposure(const std::filesystem::path& file) {
 }
 
 void editor_all_widgets(const std::filesystem::path& file) {
-  Session s(file, "editor: every effect and widget on a 90-frame 30 fps clip (see recordings/README.md)",
+  Session s(file,
+            "editor: every effect and widget on a 90-frame 30 fps clip (see recordings/README.md)",
             std::nullopt);
   const int n = kClipFrames;
   s.frames(5);
@@ -241,10 +250,12 @@ void editor_all_widgets(const std::filesystem::path& file) {
 }
 
 void editor_move_keyframe(const std::filesystem::path& file) {
-  Session s(file,
-            "editor: two exposure keyframes; grab (G) the one at az 40, carry it 15 right, 10 up and 30 frames "
-            "later, set its value to +2.5; deselect (L); chosen value 0.5 (see recordings/README.md)",
-            std::nullopt);
+  Session s(
+      file,
+      "editor: two exposure keyframes; grab (G) the one at az 40, carry it 15 right, 10 up and 30 "
+      "frames "
+      "later, set its value to +2.5; deselect (L); chosen value 0.5 (see recordings/README.md)",
+      std::nullopt);
   const int n = kClipFrames;
   s.frames(5);
   s.click(slider_cursor("exposure", 1.0));  // A: +1 at (-20, 0) frame 0
@@ -254,7 +265,7 @@ void editor_move_keyframe(const std::filesystem::path& file) {
   s.look(60.0, 0.0);
   s.place();
   s.hold(xr::Key::G);  // right squeeze: grab B (nearest the view), hold it
-  s.look(15.0, 10.0);      // it follows the view ...
+  s.look(15.0, 10.0);  // it follows the view ...
   s.drag(strip_cursor(0, n), strip_cursor(30, n));  // ... and the playhead
   s.release(xr::Key::G);  // release: one move to (55, 10) frame 30; B stays selected
   s.click(slider_cursor("exposure", 2.5));  // edits B's value, not the chosen one
@@ -264,7 +275,9 @@ void editor_move_keyframe(const std::filesystem::path& file) {
 }
 
 void demo(const std::filesystem::path& file) {
-  Session s(file, "demo on sunrise.exr: calm the sun, lift the shadows, warm the sunrise, focus with a vignette",
+  Session s(file,
+            "demo on sunrise.exr: calm the sun, lift the shadows, warm the sunrise, focus with a "
+            "vignette",
             "/usr/share/blender/datafiles/studiolights/world/sunrise.exr");
   s.frames(15);
   s.look(36.0, 8.0, 30);  // the sun

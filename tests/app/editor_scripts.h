@@ -9,10 +9,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <glm/vec2.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec2.hpp>
 
 #include "app/editor_panels.h"
 

@@ -18,8 +18,10 @@ using effects::Keyframe;
 /// Three exposure keyframes; the head looks at the middle one (the nearest).
 io::Sidecar three_keyframes() {
   io::Sidecar sc = test::empty_sidecar(test::kClipFrames);
-  sc.effects.push_back({EffectType::Exposure, std::nullopt,
-                        {{{-120.0, 0.0}, 10, {-1.0}}, {{0.0, 0.0}, 20, {1.0}}, {{120.0, 30.0}, 40, {2.0}}}});
+  sc.effects.push_back(
+      {EffectType::Exposure,
+       std::nullopt,
+       {{{-120.0, 0.0}, 10, {-1.0}}, {{0.0, 0.0}, 20, {1.0}}, {{120.0, 30.0}, 40, {2.0}}}});
   return sc;
 }
 
@@ -49,7 +51,9 @@ class SelectByPointing : public ::testing::Test {
     sim_->push_event(xr::MouseButtonEvent{xr::MouseButton::Left, false});
     step(2);
   }
-  glm::dvec2 dot(std::size_t i) { return ed_.ui().minimap->to_pixel(ed_.document().keyframes(EffectType::Exposure)[i].direction); }
+  glm::dvec2 dot(std::size_t i) {
+    return ed_.ui().minimap->to_pixel(ed_.document().keyframes(EffectType::Exposure)[i].direction);
+  }
 
   std::unique_ptr<xr::InputBackend> sim_;
   Editor ed_;
@@ -63,11 +67,17 @@ TEST_F(SelectByPointing, PressingAMinimapDotSelectsThatKeyframe) {
   EXPECT_FALSE(ed_.previewing()) << "a press on the panel never previews";
   EXPECT_EQ(ed_.document().keyframes(EffectType::Exposure).size(), 3u) << "nothing placed";
   EXPECT_EQ(ed_.ui().minimap->selected(), 2) << "ringed";
-  EXPECT_NE(ed_.ui().title->text().find("keyframe 3 of 3"), std::string::npos) << ed_.ui().title->text();
-  EXPECT_NE(ed_.status_text().find("SELECTED keyframe 3/3 (az 120 alt 30 frame 40)"), std::string::npos)
+  EXPECT_NE(ed_.ui().title->text().find("keyframe 3 of 3"), std::string::npos)
+      << ed_.ui().title->text();
+  EXPECT_NE(ed_.status_text().find("SELECTED keyframe 3/3 (az 120 alt 30 frame 40)"),
+            std::string::npos)
       << ed_.status_text();
   // The widget shows its values.
-  EXPECT_DOUBLE_EQ(dynamic_cast<ui::Slider1D*>(ed_.ui().effect_widgets[static_cast<std::size_t>(EffectType::Exposure)])->value().x, 2.0);
+  EXPECT_DOUBLE_EQ(dynamic_cast<ui::Slider1D*>(
+                       ed_.ui().effect_widgets[static_cast<std::size_t>(EffectType::Exposure)])
+                       ->value()
+                       .x,
+                   2.0);
 
   // A press on the map away from every dot keeps the selection; another dot moves it.
   const ui::Rect map = ed_.ui().minimap->map_area();
@@ -106,7 +116,8 @@ TEST(MinimapPick, DotsArePickedWithinTheRadiusNearestFirst) {
   };
   for (const auto& c : cases) {
     const glm::dvec2 p = m.to_pixel(m.keyframes()[static_cast<std::size_t>(c.from)]) + c.offset;
-    EXPECT_EQ(m.keyframe_at(p), c.expect) << "from " << c.from << " offset " << c.offset.x << "," << c.offset.y;
+    EXPECT_EQ(m.keyframe_at(p), c.expect)
+        << "from " << c.from << " offset " << c.offset.x << "," << c.offset.y;
   }
   const glm::dvec2 before = m.value();
   m.click(m.to_pixel(m.keyframes()[2]));

@@ -21,7 +21,9 @@ EditorOptions desktop() {
 
 class Taps : public ::testing::Test {
  protected:
-  Taps() : sim_(xr::create_sim_backend({})), ed_(test::empty_sidecar(90), DocumentOptions{{.async = false}}, desktop()) {
+  Taps()
+      : sim_(xr::create_sim_backend({})),
+        ed_(test::empty_sidecar(90), DocumentOptions{{.async = false}}, desktop()) {
     step();
   }
   void step(int n = 1) {
@@ -63,7 +65,8 @@ TEST_F(Taps, ClickOnTheVideoPlacesOneKeyframe) {
 }
 
 TEST_F(Taps, KeyTapsDeleteUndoAndRedoOnce) {
-  for (double az : {-20.0, 0.0, 20.0}) ed_.document().add_keyframe(EffectType::Exposure, {{az, 0.0}, 0, {1.0}});
+  for (double az : {-20.0, 0.0, 20.0})
+    ed_.document().add_keyframe(EffectType::Exposure, {{az, 0.0}, 0, {1.0}});
   tap(xr::Key::J);  // right a: deletes the nearest, once
   EXPECT_EQ(count(), 2u);
   tap(xr::Key::X);  // left x: undo

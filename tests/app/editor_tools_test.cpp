@@ -56,10 +56,12 @@ TEST(EditorTools, PreviewAwayFromTheViewInterpolatesWithThePreviewKeyframe) {
   ed.set_chosen_params({3.0});
   ed.update(with_trigger(looking(60.0, 0.0), 1.0), 0);
   ASSERT_TRUE(ed.previewing());
-  const effects::RbfInterpolator ref(std::vector<effects::Keyframe>{{{-90.0, 0.0}, 0, {-2.0}}, {{60.0, 0.0}, 0, {3.0}}}, 1,
-                                     ed.document().interpolation(EffectType::Exposure), 30.0);
+  const effects::RbfInterpolator ref(
+      std::vector<effects::Keyframe>{{{-90.0, 0.0}, 0, {-2.0}}, {{60.0, 0.0}, 0, {3.0}}}, 1,
+      ed.document().interpolation(EffectType::Exposure), 30.0);
   for (const effects::Direction d : {effects::Direction{0.0, 0.0}, effects::Direction{150.0, 30.0}})
-    EXPECT_NEAR(ed.params_for_view(d, 0).exposure_stops, std::clamp(ref.evaluate(d, 0)[0], -8.0, 8.0), 1e-9);
+    EXPECT_NEAR(ed.params_for_view(d, 0).exposure_stops,
+                std::clamp(ref.evaluate(d, 0)[0], -8.0, 8.0), 1e-9);
 }
 
 TEST(EditorTools, ReleaseNearAnExistingKeyframeOnTheSameFrameReplacesIt) {
@@ -83,7 +85,8 @@ TEST(EditorTools, ReleaseNearAnExistingKeyframeOnTheSameFrameReplacesIt) {
 
 TEST(EditorTools, ButtonADeletesTheKeyframeNearestTheView) {
   Editor ed = make_editor();
-  for (double az : {-60.0, 0.0, 70.0}) ed.document().add_keyframe(EffectType::Exposure, {{az, 0.0}, 0, {az / 30.0}});
+  for (double az : {-60.0, 0.0, 70.0})
+    ed.document().add_keyframe(EffectType::Exposure, {{az, 0.0}, 0, {az / 30.0}});
   auto in = looking(55.0, 0.0);
   in.right.primary = true;
   xr::ActionSync sync;
@@ -132,7 +135,9 @@ TEST(EditorTools, PlaybackAdvancesFramesFromTheDisplayTimeAndWraps) {
   ed.update(looking(0.0, 0.0), 0);
   ed.seek(10);
   ed.set_playing(true);
-  const auto at = [](std::int64_t f) { return io::frame_start_ns(f, {30, 1}); };  // exact frame starts
+  const auto at = [](std::int64_t f) {
+    return io::frame_start_ns(f, {30, 1});
+  };  // exact frame starts
   ed.update(looking(0.0, 0.0), at(10));
   EXPECT_EQ(ed.frame(), 20);
   ed.update(looking(0.0, 0.0), at(25));
@@ -151,7 +156,8 @@ TEST(EditorTools, JumpToKeyframeSeeksAndSaysWhereToLook) {
   ASSERT_TRUE(d.has_value());
   EXPECT_EQ(ed.frame(), 30);
   EXPECT_EQ(d->azimuth_deg, 100.0);
-  EXPECT_NE(ed.status_text().find("look 100 deg right, 10 deg up"), std::string::npos) << ed.status_text();
+  EXPECT_NE(ed.status_text().find("look 100 deg right, 10 deg up"), std::string::npos)
+      << ed.status_text();
   EXPECT_TRUE(ed.jump_to_keyframe(+1));
   EXPECT_EQ(ed.frame(), 60);
   EXPECT_FALSE(ed.jump_to_keyframe(+1));

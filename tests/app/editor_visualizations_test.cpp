@@ -24,7 +24,8 @@ TEST(EditorVisualizations, MinimapEqualsDirectInterpolationAtGridPoints) {
   const auto rbf = doc.keyframe_set(EffectType::Exposure).solution();
   for (const auto& [x, y] : {std::pair{0, 0}, {17, 31}, {64, 32}, {127, 63}, {90, 10}}) {
     const auto d = minimap_cell_direction(x, y, 128, 64);
-    EXPECT_NEAR(m.at<float>(y, x), std::clamp(rbf->evaluate(d, 0)[0], -8.0, 8.0), 1e-5) << x << "," << y;
+    EXPECT_NEAR(m.at<float>(y, x), std::clamp(rbf->evaluate(d, 0)[0], -8.0, 8.0), 1e-5)
+        << x << "," << y;
   }
   EXPECT_NEAR(minimap_cell_direction(64, 32, 128, 64).azimuth_deg, 180.0 / 128.0, 1e-9);
   // Recomputed on keyframe/frame/effect changes only, not every frame.
@@ -59,16 +60,19 @@ struct NearCase {
 class MarkersNearView : public ::testing::TestWithParam<NearCase> {};
 
 TEST_P(MarkersNearView, SelectsKeyframesWithinTheCone) {
-  const std::vector<effects::Keyframe> ks = {
-      {{0.0, 0.0}, 0, {1.0}}, {{25.0, 0.0}, 10, {1.0}}, {{35.0, 0.0}, 20, {1.0}},
-      {{0.0, 80.0}, 30, {1.0}}, {{180.0, 0.0}, 40, {1.0}}};
+  const std::vector<effects::Keyframe> ks = {{{0.0, 0.0}, 0, {1.0}},
+                                             {{25.0, 0.0}, 10, {1.0}},
+                                             {{35.0, 0.0}, 20, {1.0}},
+                                             {{0.0, 80.0}, 30, {1.0}},
+                                             {{180.0, 0.0}, 40, {1.0}}};
   const auto& c = GetParam();
   EXPECT_EQ(keyframes_near_view(ks, {c.view_az, c.view_alt}, 30.0), c.expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, MarkersNearView,
-                         ::testing::Values(NearCase{0.0, 0.0, {0, 1}}, NearCase{30.0, 0.0, {0, 1, 2}},
-                                           NearCase{0.0, 60.0, {3}}, NearCase{-170.0, 10.0, {4}},
+                         ::testing::Values(NearCase{0.0, 0.0, {0, 1}},
+                                           NearCase{30.0, 0.0, {0, 1, 2}}, NearCase{0.0, 60.0, {3}},
+                                           NearCase{-170.0, 10.0, {4}},
                                            NearCase{-90.0, -45.0, {}}));
 
 TEST(EditorVisualizations, EditorHighlightsMarkersNearTheView) {

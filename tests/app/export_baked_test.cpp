@@ -1,12 +1,13 @@
 /// @file
 /// @brief The baked export's frame render: per-pixel colour formulas against the CPU reference,
 /// parameters at each pixel's own direction, the grid step's error, the vignette left out.
+#include "app/export_baked.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "app/export_baked.h"
 #include "effects/coords.h"
 #include "effects/effect_stack.h"
 #include "effects/stack_interpolator.h"
@@ -16,7 +17,8 @@ namespace {
 
 using effects::EffectType;
 
-effects::EffectTrack track(EffectType t, std::vector<std::pair<effects::Direction, std::vector<double>>> kfs) {
+effects::EffectTrack track(EffectType t,
+                           std::vector<std::pair<effects::Direction, std::vector<double>>> kfs) {
   effects::EffectTrack tr;
   tr.type = t;
   for (auto& [d, v] : kfs) tr.keyframes.push_back({d, 0, v});
@@ -39,14 +41,17 @@ TEST(ExportBaked, ColourPixelIsTheReferencesFormulas) {
     p.saturation = 2 * unit(rng);
     p.contrast = 2 * unit(rng);
     const double e = std::exp2(p.exposure_stops);
-    const float f[5] = {static_cast<float>(p.tint_gain.x() * e), static_cast<float>(p.tint_gain.y() * e),
+    const float f[5] = {static_cast<float>(p.tint_gain.x() * e),
+                        static_cast<float>(p.tint_gain.y() * e),
                         static_cast<float>(p.tint_gain.z() * e), static_cast<float>(p.saturation),
                         static_cast<float>(p.contrast)};
     const Eigen::Vector3d c(unit(rng), unit(rng), unit(rng));
     const Eigen::Vector3d want = effects::apply_colour_stack(c, p, 0.0);
-    float got[3] = {static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z())};
+    float got[3] = {static_cast<float>(c.x()), static_cast<float>(c.y()),
+                    static_cast<float>(c.z())};
     apply_colour_pixel(got, f, all);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], want[k], 2e-5 * std::max(1.0, std::abs(want[k]))) << i;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(got[k], want[k], 2e-5 * std::max(1.0, std::abs(want[k]))) << i;
   }
   // Effects the stack does not have leave the pixel exactly as it was.
   float c[3] = {0.3f, 0.6f, 0.9f};
@@ -57,7 +62,8 @@ TEST(ExportBaked, ColourPixelIsTheReferencesFormulas) {
 }
 
 TEST(ExportBaked, EveryPixelGetsTheParametersOfItsOwnDirection) {
-  const auto stack = stack_of({track(EffectType::Exposure, {{{0, 0}, {1.0}}, {{180, 0}, {-1.0}}, {{90, 60}, {0.5}}})});
+  const auto stack = stack_of(
+      {track(EffectType::Exposure, {{{0, 0}, {1.0}}, {{180, 0}, {-1.0}}, {{90, 60}, {0.5}}})});
   const int w = 64, h = 32;
   const cv::Mat grey(h, w, CV_32FC3, cv::Scalar::all(0.25));
   BakedOptions exact;
@@ -67,7 +73,8 @@ TEST(ExportBaked, EveryPixelGetsTheParametersOfItsOwnDirection) {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const double az = ((x + 0.5) / w - 0.5) * 360.0, alt = (0.5 - (y + 0.5) / h) * 180.0;
-      const double want = 0.25 * std::exp2(stack.evaluate(effects::Direction{az, alt}, 0).exposure_stops);
+      const double want =
+          0.25 * std::exp2(stack.evaluate(effects::Direction{az, alt}, 0).exposure_stops);
       worst = std::max(worst, std::abs(out.at<cv::Vec3f>(y, x)[1] - want));
     }
   EXPECT_LT(worst, 1e-6);
@@ -109,7 +116,8 @@ namespace {
 effects::StackInterpolator timed_stack() {
   effects::EffectTrack tr;
   tr.type = effects::EffectType::Exposure;
-  tr.keyframes = {{{0, 0}, 10, {1.0}}, {{180, 0}, 10, {-1.0}}, {{0, 0}, 20, {-1.0}}, {{180, 0}, 20, {1.0}}};
+  tr.keyframes = {
+      {{0, 0}, 10, {1.0}}, {{180, 0}, 10, {-1.0}}, {{0, 0}, 20, {-1.0}}, {{180, 0}, 20, {1.0}}};
   return effects::StackInterpolator({tr}, effects::InterpolationSettings{}, 30.0);
 }
 

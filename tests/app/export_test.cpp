@@ -5,7 +5,6 @@
 /// settings: within 2/255); the viewer's path against `vdfx render`; a killed or interrupted
 /// export leaves the previous file byte-identical.
 #include <gtest/gtest.h>
-
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -27,9 +26,9 @@ extern "C" {
 #include "app/export_baked.h"
 #include "app/export_path.h"
 #include "command_test_util.h"
-#include "export_test_util.h"
 #include "effects/stack_interpolator.h"
 #include "effects/view_renderer.h"
+#include "export_test_util.h"
 #include "io/frame_decoder.h"
 #include "io/libav_util.h"
 #include "io/recording.h"
@@ -77,9 +76,11 @@ Probe probe(const fs::path& p) {
       r.width = s->codecpar->width;
       r.height = s->codecpar->height;
       size_t size = 0;
-      const auto* sph = reinterpret_cast<const AVSphericalMapping*>(av_stream_get_side_data(s, AV_PKT_DATA_SPHERICAL, &size));
+      const auto* sph = reinterpret_cast<const AVSphericalMapping*>(
+          av_stream_get_side_data(s, AV_PKT_DATA_SPHERICAL, &size));
       r.equirect = sph && sph->projection == AV_SPHERICAL_EQUIRECTANGULAR;
-      const auto* st3d = reinterpret_cast<const AVStereo3D*>(av_stream_get_side_data(s, AV_PKT_DATA_STEREO3D, &size));
+      const auto* st3d = reinterpret_cast<const AVStereo3D*>(
+          av_stream_get_side_data(s, AV_PKT_DATA_STEREO3D, &size));
       r.mono = st3d && st3d->type == AV_STEREO3D_2D;
     } else if (s->codecpar->codec_type == AVMEDIA_TYPE_AUDIO) {
       r.audio_codecs.push_back(avcodec_get_name(s->codecpar->codec_id));
@@ -92,7 +93,8 @@ Probe probe(const fs::path& p) {
       ++r.video_frames;
       r.video_times.push_back(static_cast<double>(pkt->pts) * av_q2d(s->time_base));
     } else if (s->codecpar->codec_type == AVMEDIA_TYPE_AUDIO) {
-      r.audio_packets.emplace_back(reinterpret_cast<const char*>(pkt->data), static_cast<std::size_t>(pkt->size));
+      r.audio_packets.emplace_back(reinterpret_cast<const char*>(pkt->data),
+                                   static_cast<std::size_t>(pkt->size));
     }
     av_packet_unref(pkt.get());
   }
@@ -107,7 +109,9 @@ cv::Mat decoded_rgb8(io::FrameDecoder& d, std::int64_t k) {
   return m;
 }
 
-int max_diff(const cv::Mat& a, const cv::Mat& b) { return test_media::max_abs_diff(a, b); }
+int max_diff(const cv::Mat& a, const cv::Mat& b) {
+  return test_media::max_abs_diff(a, b);
+}
 
 /// Standard output of a shell command (the ffprobe command line, Debian package ffmpeg).
 std::string command_output(const std::string& cmd) {
@@ -123,11 +127,12 @@ std::string command_output(const std::string& cmd) {
 TEST(Export, BakedVideoHasSphericalMetadataAudioFramesAndPerPixelEffects) {
   const Fixture f = make_fixture();
   const fs::path out = f.dir / "baked.mp4";
-  const auto e = run_vdfx("export " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --baked " +
-                          out.string() + " --crf 0 --chroma 444 --param-step 1");
+  const auto e = run_vdfx("export " + f.clip.string() + " --sidecar " + f.sidecar.string() +
+                          " --baked " + out.string() + " --crf 0 --chroma 444 --param-step 1");
   ASSERT_EQ(e.exit_code, 0) << e.output;
   EXPECT_NE(e.output.find("flare and grain"), std::string::npos) << e.output;
-  EXPECT_NE(e.output.find("export: 12/12 frames (100%)"), std::string::npos) << e.output;  // not a terminal: lines
+  EXPECT_NE(e.output.find("export: 12/12 frames (100%)"), std::string::npos)
+      << e.output;  // not a terminal: lines
 
   const Probe src = probe(f.clip), got = probe(out);
   EXPECT_EQ(got.width, kW);
@@ -167,8 +172,10 @@ TEST(Export, BakedVideoHasSphericalMetadataAudioFramesAndPerPixelEffects) {
     // that share one frame hold over the clip).
     cv::Mat src8;
     rgb.convertTo(src8, CV_8UC3, 255.0);
-    const double front = got_px.at<cv::Vec3b>(kH / 2, kW / 2)[1] / static_cast<double>(src8.at<cv::Vec3b>(kH / 2, kW / 2)[1]);
-    const double back = got_px.at<cv::Vec3b>(kH / 2, 0)[1] / static_cast<double>(src8.at<cv::Vec3b>(kH / 2, 0)[1]);
+    const double front = got_px.at<cv::Vec3b>(kH / 2, kW / 2)[1] /
+                         static_cast<double>(src8.at<cv::Vec3b>(kH / 2, kW / 2)[1]);
+    const double back =
+        got_px.at<cv::Vec3b>(kH / 2, 0)[1] / static_cast<double>(src8.at<cv::Vec3b>(kH / 2, 0)[1]);
     EXPECT_GT(front, 1.5) << k;
     EXPECT_LT(back, 0.75) << k;
   }
@@ -177,8 +184,9 @@ TEST(Export, BakedVideoHasSphericalMetadataAudioFramesAndPerPixelEffects) {
 TEST(Export, PartialRangeWithH265StartsAtZeroAndCutsTheAudio) {
   const Fixture f = make_fixture();
   const fs::path out = f.dir / "part.mkv";
-  const auto e = run_vdfx("export " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --baked " +
-                          out.string() + " --codec h265 --frames 3-7 --preset ultrafast");
+  const auto e =
+      run_vdfx("export " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --baked " +
+               out.string() + " --codec h265 --frames 3-7 --preset ultrafast");
   ASSERT_EQ(e.exit_code, 0) << e.output;
   const Probe got = probe(out);
   EXPECT_EQ(got.video_frames, 5);
@@ -243,9 +251,16 @@ TEST(Export, ViewerPathDrawsTheFlareAndGrainAsVdfxRenderDoes) {
   const fs::path sidecar = f.dir / "layers.vdfx.json";
   write_text(sidecar, text);
   const fs::path out = f.dir / "layers.mp4", plain = f.dir / "plain.mp4";
-  const std::string common = " --path " + rec.string() + " --fov 80 --size 96x64 --crf 0 --chroma 444 --frames 0-2";
-  ASSERT_EQ(run_vdfx("export " + f.clip.string() + " --sidecar " + sidecar.string() + " --out " + out.string() + common).exit_code, 0);
-  ASSERT_EQ(run_vdfx("export " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --out " + plain.string() + common).exit_code, 0);
+  const std::string common =
+      " --path " + rec.string() + " --fov 80 --size 96x64 --crf 0 --chroma 444 --frames 0-2";
+  ASSERT_EQ(run_vdfx("export " + f.clip.string() + " --sidecar " + sidecar.string() + " --out " +
+                     out.string() + common)
+                .exit_code,
+            0);
+  ASSERT_EQ(run_vdfx("export " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --out " +
+                     plain.string() + common)
+                .exit_code,
+            0);
   const fs::path png = f.dir / "layers0.png";
   const auto r = run_vdfx("render " + f.clip.string() + " --sidecar " + sidecar.string() +
                           " --view 30,10,0 --frame 0 --fov 80 --size 96x64 --out " + png.string());
@@ -262,14 +277,16 @@ TEST(Export, ViewerPathFirstAndLastFramesEqualVdfxRender) {
   const Fixture f = make_fixture(kW, kH, 30);
   const fs::path rec = write_path_recording(f.dir);
   const fs::path out = f.dir / "path.mp4";
-  const auto e = run_vdfx("export " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --path " +
-                          rec.string() + " --out " + out.string() + " --fov 80 --size 96x64 --crf 0 --chroma 444");
+  const auto e = run_vdfx("export " + f.clip.string() + " --sidecar " + f.sidecar.string() +
+                          " --path " + rec.string() + " --out " + out.string() +
+                          " --fov 80 --size 96x64 --crf 0 --chroma 444");
   ASSERT_EQ(e.exit_code, 0) << e.output;
   const Probe got = probe(out);
   EXPECT_EQ(got.width, 96);
   EXPECT_EQ(got.height, 64);
-  EXPECT_EQ(got.video_frames, 24);  // the recording lasts 1 s: frames 0..24, of which the video has 0..29
-  EXPECT_FALSE(got.equirect);       // a flat view, no 360 metadata
+  EXPECT_EQ(got.video_frames,
+            24);  // the recording lasts 1 s: frames 0..24, of which the video has 0..29
+  EXPECT_FALSE(got.equirect);  // a flat view, no 360 metadata
   EXPECT_EQ(got.audio_codecs, std::vector<std::string>{"aac"});
   auto exported = io::open_frame_decoder(out);
   const struct {
@@ -278,9 +295,9 @@ TEST(Export, ViewerPathFirstAndLastFramesEqualVdfxRender) {
   } ends[] = {{0, "30,10,0"}, {23, "-60,-5,0"}};
   for (const auto& end : ends) {
     const fs::path png = f.dir / ("render" + std::to_string(end.frame) + ".png");
-    const auto r = run_vdfx("render " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --view " +
-                            end.view + " --frame " + std::to_string(end.frame) + " --fov 80 --size 96x64 --out " +
-                            png.string());
+    const auto r = run_vdfx("render " + f.clip.string() + " --sidecar " + f.sidecar.string() +
+                            " --view " + end.view + " --frame " + std::to_string(end.frame) +
+                            " --fov 80 --size 96x64 --out " + png.string());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     cv::Mat want = cv::imread(png.string()), want_rgb;
     cv::cvtColor(want, want_rgb, cv::COLOR_BGR2RGB);
@@ -331,7 +348,9 @@ pid_t spawn_vdfx(const std::vector<std::string>& args, const fs::path& log) {
 bool wait_for_temp(const fs::path& dir, pid_t child) {
   for (int i = 0; i < 6000; ++i) {
     for (const auto& e : fs::directory_iterator(dir))
-      if (e.path().filename().string().find(".tmp-") != std::string::npos && fs::file_size(e.path()) > 0) return true;
+      if (e.path().filename().string().find(".tmp-") != std::string::npos &&
+          fs::file_size(e.path()) > 0)
+        return true;
     int status = 0;
     if (waitpid(child, &status, WNOHANG) == child) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -345,14 +364,16 @@ TEST(Export, KilledOrInterruptedExportLeavesThePreviousFileByteIdentical) {
   const std::string previous = "the previous export, byte for byte";
   for (const int sig : {SIGKILL, SIGINT}) {
     write_text(out, previous);
-    const pid_t child = spawn_vdfx({"export", f.clip.string(), "--sidecar", f.sidecar.string(), "--baked",
-                                    out.string(), "--threads", "1", "--preset", "veryslow", "--param-step", "1"},
-                                   f.dir / "child.log");
+    const pid_t child =
+        spawn_vdfx({"export", f.clip.string(), "--sidecar", f.sidecar.string(), "--baked",
+                    out.string(), "--threads", "1", "--preset", "veryslow", "--param-step", "1"},
+                   f.dir / "child.log");
     ASSERT_TRUE(wait_for_temp(f.dir, child)) << test_files::slurp(f.dir / "child.log");
     kill(child, sig);
     int status = 0;
     ASSERT_EQ(waitpid(child, &status, 0), child);
-    EXPECT_TRUE(WIFSIGNALED(status)) << "signal " << sig << ": " << test_files::slurp(f.dir / "child.log");
+    EXPECT_TRUE(WIFSIGNALED(status))
+        << "signal " << sig << ": " << test_files::slurp(f.dir / "child.log");
     if (WIFSIGNALED(status)) {
       EXPECT_EQ(WTERMSIG(status), sig);
     }
@@ -381,18 +402,24 @@ TEST(Export, BadUsageAndBadInputGiveTheContractsExitCodes) {
       {base + " --path r.vdrec.jsonl", 2, "--out"},
       {base + " --baked out.avi", 2, ".mp4, .mov or .mkv"},
       {base + " --baked " + f.clip.string(), 1, "it is the VIDEO input"},
-      {base + " --baked " + (f.dir / "link.mp4").string(), 1, "the same file as the --sidecar input"},
+      {base + " --baked " + (f.dir / "link.mp4").string(), 1,
+       "the same file as the --sidecar input"},
       {base + " --baked o.mp4 --frames 3", 2, "A-B"},
       {base + " --baked o.mp4 --frames 5-2", 2, "A-B"},
       {base + " --baked o.mp4 --fov 70", 2, "--path"},
       {base + " --baked o.mp4 --codec vp9", 2, "--codec"},
-      {base + " --baked " + (f.dir / "o.mp4").string() + " --frames 2-9", 1, "past the video's last frame"},
-      {"export " + (f.dir / "missing.mp4").string() + " --sidecar " + f.sidecar.string() + " --baked o.mp4", 1,
-       "no such file"},
-      {"export " + f.clip.string() + " --sidecar " + (f.dir / "missing.vdfx.json").string() + " --baked o.mp4", 1,
-       "missing.vdfx.json"},
-      {base + " --path " + (f.dir / "missing.vdrec.jsonl").string() + " --out o.mp4", 1, "missing.vdrec.jsonl"},
-      {base + " --path " + (f.dir / "r.vdrec.jsonl").string() + " --out o.mp4 --size 95x64", 1, "odd"},
+      {base + " --baked " + (f.dir / "o.mp4").string() + " --frames 2-9", 1,
+       "past the video's last frame"},
+      {"export " + (f.dir / "missing.mp4").string() + " --sidecar " + f.sidecar.string() +
+           " --baked o.mp4",
+       1, "no such file"},
+      {"export " + f.clip.string() + " --sidecar " + (f.dir / "missing.vdfx.json").string() +
+           " --baked o.mp4",
+       1, "missing.vdfx.json"},
+      {base + " --path " + (f.dir / "missing.vdrec.jsonl").string() + " --out o.mp4", 1,
+       "missing.vdrec.jsonl"},
+      {base + " --path " + (f.dir / "r.vdrec.jsonl").string() + " --out o.mp4 --size 95x64", 1,
+       "odd"},
       {base + " --baked " + (f.dir / "nofolder" / "o.mp4").string(), 1, "does not exist"},
   };
   write_path_recording(f.dir);

@@ -165,7 +165,7 @@ TEST(FlarePlayer, FlaresAreLaidOutForTheHeadPoseAndNeedAFrameForAnAutoLight) {
       io::validate_sidecar_text(flare_sidecar("directional", R"("auto")", 1.0), "s");
   Player auto_player(*a.sidecar, video);
   EXPECT_TRUE(auto_player.flares({}, 0, nullptr).empty());  // no frame yet: no light
-  io::Picture frame;  // an RGB picture, as a still decodes
+  io::Picture frame;                                        // an RGB picture, as a still decodes
   frame.rgb = cv::Mat(128, 256, CV_8UC3, cv::Scalar::all(40));
   cv::circle(frame.rgb, cv::Point(128, 64), 2, cv::Scalar::all(255), cv::FILLED);
   EXPECT_EQ(auto_player.flares({}, 0, &frame).size(), 1u);

@@ -4,18 +4,17 @@
 /// screenshot.
 #include <gtest/gtest.h>
 
-#include "io/input_error.h"
-#include "xr/video_layer.h"
-
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
 #include "app/frame_loop.h"
 #include "app/player.h"
+#include "io/input_error.h"
 #include "io/video_source.h"
 #include "player_test_support.h"
 #include "xr/compositor.h"
 #include "xr/input_backend.h"
+#include "xr/video_layer.h"
 
 namespace vdfx::app {
 namespace {
@@ -45,7 +44,9 @@ std::unique_ptr<xr::InputBackend> replay(const std::vector<std::int64_t>& times,
   return xr::create_replay_backend(test::still_head_recording(times, az), {});
 }
 
-std::vector<xr::DesktopEvent> key(xr::Key k, bool pressed) { return {xr::KeyEvent{k, pressed}}; }
+std::vector<xr::DesktopEvent> key(xr::Key k, bool pressed) {
+  return {xr::KeyEvent{k, pressed}};
+}
 
 // Mean of a column band of eye 0's buffer (BGRA float), middle rows, green channel.
 double band_mean(const cv::Mat& eye, double x0, double x1) {
@@ -57,7 +58,8 @@ double band_mean(const cv::Mat& eye, double x0, double x1) {
 TEST(FrameLoopGl, FrameIndicesComeExactlyFromRecordedTimes) {
   // 90 Hz with a little jitter, starting far from 0: frame k shows frame_at_time(t_k - t_0).
   std::vector<std::int64_t> times;
-  for (std::int64_t k = 0; k < 200; ++k) times.push_back(5'000'000'000 + k * 11'111'111 + (k % 3) * 777);
+  for (std::int64_t k = 0; k < 200; ++k)
+    times.push_back(5'000'000'000 + k * 11'111'111 + (k % 3) * 777);
   auto video = grey_video(1000, 0.5);
   auto input = replay(times);
   const auto sc = test::one_effect_sidecar(EffectType::Exposure, {{0, 0, {1.0}}});
@@ -154,8 +156,9 @@ TEST(FrameLoopGl, AVideoThatNeverDeliversIsAnInputErrorAfterTheStartTimeout) {
     loop.run();
     FAIL() << "expected an input error";
   } catch (const io::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("generated: cannot show the video: no frame was decoded within"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(e.what()).find("generated: cannot show the video: no frame was decoded within"),
+        std::string::npos)
         << e.what();
   }
 }
@@ -195,7 +198,8 @@ TEST(FrameLoopGl, ABSwitchBakesAPerPixelGradient) {
   auto video = grey_video(10, 0.25);
   auto input = replay(times);  // looking at azimuth 0
   // -1 stop on the left, +1 on the right: view-dependent mode at azimuth 0 gets 0 everywhere.
-  const auto sc = test::one_effect_sidecar(EffectType::Exposure, {{-60, 0, {-1.0}}, {60, 0, {1.0}}});
+  const auto sc =
+      test::one_effect_sidecar(EffectType::Exposure, {{-60, 0, {-1.0}}, {60, 0, {1.0}}});
   Player player(sc, video->properties());
   FrameLoopOptions o = small_options();
   o.decode_timeout = std::chrono::seconds(5);
@@ -205,8 +209,8 @@ TEST(FrameLoopGl, ABSwitchBakesAPerPixelGradient) {
   std::vector<std::array<double, 3>> bands;
   o.on_frame = [&](xr::Compositor& c, std::int64_t) {
     const cv::Mat eye = c.read_eye_buffer(0);
-    bands.push_back({band_mean(eye, 0.05, 0.2), band_mean(eye, 0.45, 0.55),
-                     band_mean(eye, 0.8, 0.95)});
+    bands.push_back(
+        {band_mean(eye, 0.05, 0.2), band_mean(eye, 0.45, 0.55), band_mean(eye, 0.8, 0.95)});
   };
   FrameLoop loop(o, *input, *video, player);
   loop.run();
@@ -225,7 +229,8 @@ TEST(FrameLoopGl, ABSwitchBakesAPerPixelGradient) {
 }
 
 TEST(FrameLoopGl, ScreenshotOfTheMirrorIsWritten) {
-  const std::filesystem::path out = std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "frame_loop_mirror.png";
+  const std::filesystem::path out =
+      std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "frame_loop_mirror.png";
   std::filesystem::create_directories(out.parent_path());
   std::filesystem::remove(out);
   auto video = grey_video(10, 0.5);

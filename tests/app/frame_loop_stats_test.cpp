@@ -1,8 +1,8 @@
 /// @file
 /// @brief --stats accumulation: eyes summed per stage, medians per window and in total.
-#include <gtest/gtest.h>
-
 #include "app/frame_loop_stats.h"
+
+#include <gtest/gtest.h>
 
 namespace vdfx::app {
 namespace {
@@ -18,7 +18,9 @@ TEST(FrameLoopStats, EyesSummedAndMedians) {
   FrameLoopStats s;
   const double video[] = {3.0, 1.0, 100.0};
   for (double v : video) {
-    s.add_gpu({{"left video", v}, {"right video", v}, {"left distortion", 0.5},
+    s.add_gpu({{"left video", v},
+               {"right video", v},
+               {"left distortion", 0.5},
                {"right distortion", 0.25}});
     s.add_cpu("frame", v * 10);
   }

@@ -3,6 +3,8 @@
 /// coalesce (latest wins); an older finished field is dropped for a newer one; shutdown while
 /// busy cancels and joins; the editor with visuals.async shows the same fields as the
 /// synchronous one once the worker caught up, and never blocks update() on it.
+#include "app/minimap_worker.h"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -11,7 +13,6 @@
 #include <vector>
 
 #include "app/editor.h"
-#include "app/minimap_worker.h"
 #include "app/visualizations.h"
 #include "editor_test_util.h"
 
@@ -25,7 +26,8 @@ bool same_field(const cv::Mat& a, const cv::Mat& b) {
   return a.size() == b.size() && a.type() == b.type() && cv::countNonZero(a != b) == 0;
 }
 
-MinimapJob job_at(std::int64_t frame, std::shared_ptr<const effects::RbfInterpolator> rbf = nullptr) {
+MinimapJob job_at(std::int64_t frame,
+                  std::shared_ptr<const effects::RbfInterpolator> rbf = nullptr) {
   MinimapJob j;
   j.key.frame = frame;
   j.key.effect = static_cast<int>(EffectType::Exposure);
@@ -114,24 +116,28 @@ TEST(MinimapWorker, ShutdownWhileBusyCancelsTheFieldAndDropsTheQueue) {
     gate.wait_started(1);
     w.request(job_at(2));
     EXPECT_FALSE(w.wait_idle(5ms));  // busy, and would stay so while held
-  }  // the destructor must return although the computation is held
+  }                                  // the destructor must return although the computation is held
   EXPECT_TRUE(gate.saw_cancel);
   EXPECT_EQ(gate.started, (std::vector<std::int64_t>{1}));
 }
 
 TEST(MinimapWorker, DefaultComputeStopsOnCancel) {
   const auto rbf = std::make_shared<const effects::RbfInterpolator>(
-      std::vector<effects::Keyframe>{{{0.0, 0.0}, 0, {1.0}}}, 1, effects::InterpolationSettings{}, 30.0);
+      std::vector<effects::Keyframe>{{{0.0, 0.0}, 0, {1.0}}}, 1, effects::InterpolationSettings{},
+      30.0);
   std::atomic<bool> cancel{true};
   EXPECT_TRUE(effect_minimap(rbf.get(), EffectType::Exposure, 0, 16, 8, &cancel).empty());
   cancel = false;
-  EXPECT_EQ(effect_minimap(rbf.get(), EffectType::Exposure, 0, 16, 8, &cancel).size(), cv::Size(16, 8));
+  EXPECT_EQ(effect_minimap(rbf.get(), EffectType::Exposure, 0, 16, 8, &cancel).size(),
+            cv::Size(16, 8));
 }
 
 TEST(EditorAsyncMinimap, CatchesUpWithTheSynchronousFieldsWhilePlaying) {
   io::Sidecar sc = test::empty_sidecar(30);
-  sc.effects.push_back({EffectType::Exposure, std::nullopt,
-                        {{{30.0, 0.0}, 0, {2.0}}, {{-100.0, 40.0}, 10, {-3.0}}, {{170.0, -20.0}, 20, {1.0}}}});
+  sc.effects.push_back(
+      {EffectType::Exposure,
+       std::nullopt,
+       {{{30.0, 0.0}, 0, {2.0}}, {{-100.0, 40.0}, 10, {-3.0}}, {{170.0, -20.0}, 20, {1.0}}}});
   EditorOptions async_opts;
   async_opts.visuals.async = true;
   Editor sync(sc, DocumentOptions{{.async = false}}, EditorOptions{});

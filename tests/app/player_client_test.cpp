@@ -18,7 +18,9 @@ io::VideoProperties props(std::int64_t frames) {
   return v;
 }
 
-xr::DesktopEvent key(xr::Key k, bool pressed) { return xr::KeyEvent{k, pressed}; }
+xr::DesktopEvent key(xr::Key k, bool pressed) {
+  return xr::KeyEvent{k, pressed};
+}
 
 struct Step {
   std::vector<xr::DesktopEvent> events;

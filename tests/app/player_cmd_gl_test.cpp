@@ -3,8 +3,6 @@
 /// screenshot, --record and --stats.
 #include <gtest/gtest.h>
 
-#include "command_test_util.h"
-
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -12,12 +10,16 @@
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
+#include "command_test_util.h"
+
 namespace vdfx::app {
 namespace {
 
 using CmdResult = testing::CommandResult;
 
-CmdResult run(const std::string& args) { return testing::run_vdfx(args); }
+CmdResult run(const std::string& args) {
+  return testing::run_vdfx(args);
+}
 
 TEST(PlayerCmdGl, ReplayedDemoWritesScreenshotRecordingAndStats) {
   const std::filesystem::path dir = std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "player_cmd";
@@ -26,11 +28,12 @@ TEST(PlayerCmdGl, ReplayedDemoWritesScreenshotRecordingAndStats) {
   std::filesystem::remove(png);
   std::filesystem::remove(rec);
   const std::string src = VDFX_SOURCE_DIR;
-  const CmdResult out = run("play /usr/share/blender/datafiles/studiolights/world/interior.exr --sidecar " +
-                      src + "/app/demo/interior.vdfx.json --input replay:" + src +
-                      "/recordings/sim_look_and_place.vdrec.jsonl --frames 4 --scale 0.05 "
-                      "--window 200x100 --mirror pre --hidden --stats --screenshot " + png.string() +
-                      " --record " + rec.string());
+  const CmdResult out =
+      run("play /usr/share/blender/datafiles/studiolights/world/interior.exr --sidecar " + src +
+          "/app/demo/interior.vdfx.json --input replay:" + src +
+          "/recordings/sim_look_and_place.vdrec.jsonl --frames 4 --scale 0.05 "
+          "--window 200x100 --mirror pre --hidden --stats --screenshot " +
+          png.string() + " --record " + rec.string());
   ASSERT_EQ(out.exit_code, 0) << out.output;
   const cv::Mat m = cv::imread(png.string());
   ASSERT_FALSE(m.empty());

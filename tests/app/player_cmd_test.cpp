@@ -3,12 +3,12 @@
 /// with a message saying what, --help documents the keys.
 #include <gtest/gtest.h>
 
-#include "command_test_util.h"
-
 #include <array>
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include "command_test_util.h"
 
 namespace vdfx::app {
 namespace {
@@ -44,9 +44,10 @@ TEST(PlayerCmd, BadInputIsExitOneWithAClearMessage) {
 }
 
 TEST(PlayerCmd, UsageErrorsAreExitTwo) {
-  for (const std::string& args : std::vector<std::string>{"play", "play " + kStill, "play " + kStill + " --sidecar " + kDemo + " --scale 0",
-                                 "play " + kStill + " --sidecar " + kDemo + " --window 12",
-                                 "play " + kStill + " --sidecar " + kDemo + " --mirror sideways"}) {
+  for (const std::string& args : std::vector<std::string>{
+           "play", "play " + kStill, "play " + kStill + " --sidecar " + kDemo + " --scale 0",
+           "play " + kStill + " --sidecar " + kDemo + " --window 12",
+           "play " + kStill + " --sidecar " + kDemo + " --mirror sideways"}) {
     const CmdResult out = run(args);
     EXPECT_EQ(out.exit_code, 2) << args << "\n" << out.output;
   }
@@ -55,10 +56,11 @@ TEST(PlayerCmd, UsageErrorsAreExitTwo) {
 TEST(PlayerCmd, HelpListsEveryKeyAndTheSimBindings) {
   const CmdResult out = run("play --help");
   EXPECT_EQ(out.exit_code, 0);
-  for (const char* s : {"pause / play", "per-pixel", "unaltered", "desktop view", "pre-distorted panels",
-                        "through the lens", "left eye, undistorted", "Escape", "--fov", "--mirror",
-                        "/user/hand/right/input/trigger/value", "turn the head", "--stats",
-                        "--screenshot", "--frames", "--record", "--scale"})
+  for (const char* s :
+       {"pause / play", "per-pixel", "unaltered", "desktop view", "pre-distorted panels",
+        "through the lens", "left eye, undistorted", "Escape", "--fov", "--mirror",
+        "/user/hand/right/input/trigger/value", "turn the head", "--stats", "--screenshot",
+        "--frames", "--record", "--scale"})
     EXPECT_NE(out.output.find(s), std::string::npos) << s;
 }
 

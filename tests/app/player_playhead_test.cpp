@@ -1,8 +1,8 @@
 /// @file
 /// @brief Playhead: exact display time -> frame, pause, seek, loop.
-#include <gtest/gtest.h>
-
 #include "app/player_playhead.h"
+
+#include <gtest/gtest.h>
 
 namespace vdfx::app {
 namespace {

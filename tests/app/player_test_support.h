@@ -7,9 +7,8 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
-#include <vector>
-
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "app/frame_loop.h"
 #include "effects/keyframe.h"

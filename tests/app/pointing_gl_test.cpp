@@ -10,7 +10,6 @@
 
 #include <fstream>
 #include <map>
-
 #include <opencv2/imgproc.hpp>
 
 #include "app/editor.h"
@@ -43,7 +42,9 @@ std::vector<Target> paint_ids(const std::vector<ui::Panel*>& panels, std::vector
       const int i = static_cast<int>(out.size());
       const cv::Vec3b c(static_cast<uchar>(40 + 6 * i), 200, static_cast<uchar>(235 - 6 * i));
       const ui::Rect r = w->rect();
-      cv::rectangle(img, cv::Rect(static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.w), static_cast<int>(r.h)),
+      cv::rectangle(img,
+                    cv::Rect(static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.w),
+                             static_cast<int>(r.h)),
                     cv::Scalar(c[0], c[1], c[2], 255), cv::FILLED);
       out.push_back({p->id(), w->id(), c});
     }
@@ -53,13 +54,15 @@ std::vector<Target> paint_ids(const std::vector<ui::Panel*>& panels, std::vector
 }
 
 /// Centroid of the pixels of `colour` (within 2 per channel) inside a window rectangle.
-std::optional<glm::dvec2> drawn_centre(const cv::Mat& bgr, const cv::Vec3b& colour, const xr::WindowRect& r) {
+std::optional<glm::dvec2> drawn_centre(const cv::Mat& bgr, const cv::Vec3b& colour,
+                                       const xr::WindowRect& r) {
   double sx = 0, sy = 0;
   int n = 0;
   for (int y = r.y; y < r.y + r.h; ++y)
     for (int x = r.x; x < r.x + r.w; ++x) {
       const cv::Vec3b p = bgr.at<cv::Vec3b>(y, x);
-      if (std::abs(p[0] - colour[0]) <= 2 && std::abs(p[1] - colour[1]) <= 2 && std::abs(p[2] - colour[2]) <= 2) {
+      if (std::abs(p[0] - colour[0]) <= 2 && std::abs(p[1] - colour[1]) <= 2 &&
+          std::abs(p[2] - colour[2]) <= 2) {
         sx += x + 0.5;
         sy += y + 0.5;
         ++n;
@@ -120,24 +123,29 @@ TEST(PointingGl, APressAtTheDrawnCentreOfEveryWidgetHitsItInEveryMirrorMode) {
 
   std::ostringstream table;
   table << "| widget |";
-  for (const xr::MirrorMode m : {xr::MirrorMode::Desktop, xr::MirrorMode::PreDistorted, xr::MirrorMode::ThroughTheLens,
-                                 xr::MirrorMode::SingleEye})
+  for (const xr::MirrorMode m : {xr::MirrorMode::Desktop, xr::MirrorMode::PreDistorted,
+                                 xr::MirrorMode::ThroughTheLens, xr::MirrorMode::SingleEye})
     table << " " << xr::mirror_mode_name(m) << " |";
   table << "\n|---|---|---|---|---|\n";
   std::map<std::string, std::string> rows;
   for (const xr::MirrorMode mode : {xr::MirrorMode::Desktop, xr::MirrorMode::PreDistorted,
                                     xr::MirrorMode::ThroughTheLens, xr::MirrorMode::SingleEye}) {
     if (mode == xr::MirrorMode::Desktop) {
-      comp.render_desktop({xr::desktop_view(head, 100.0, kW, kH), {}, 0u, false}, kW, kH, 0.5, quads, head);
+      comp.render_desktop({xr::desktop_view(head, 100.0, kW, kH), {}, 0u, false}, kW, kH, 0.5,
+                          quads, head);
     } else {
       const auto views = xr::locate_eye_views(head, profile);
-      for (int e = 0; e < 2; ++e) comp.render_eye(e, {xr::render_view(views[static_cast<std::size_t>(e)]), {}, 0u, false}, quads, head);
+      for (int e = 0; e < 2; ++e)
+        comp.render_eye(e, {xr::render_view(views[static_cast<std::size_t>(e)]), {}, 0u, false},
+                        quads, head);
     }
     xr::GlTarget mirror(kW, kH, xr::TexFormat::RGBA8);
     comp.draw_mirror(mode, &mirror, kW, kH);
     const cv::Mat bgr = xr::to_bgr8(mirror.read_float());
-    const auto g = xr::MirrorGeometry::from_profile(profile, mode, cc.eye_width, cc.eye_height, kW, kH, 100.0);
-    const int eyes = mode == xr::MirrorMode::PreDistorted || mode == xr::MirrorMode::ThroughTheLens ? 2 : 1;
+    const auto g =
+        xr::MirrorGeometry::from_profile(profile, mode, cc.eye_width, cc.eye_height, kW, kH, 100.0);
+    const int eyes =
+        mode == xr::MirrorMode::PreDistorted || mode == xr::MirrorMode::ThroughTheLens ? 2 : 1;
     int visible = 0, hit = 0, pinhole_hits = 0;
     for (const Target& tg : targets) {
       std::string cell;
@@ -156,8 +164,9 @@ TEST(PointingGl, APressAtTheDrawnCentreOfEveryWidgetHitsItInEveryMirrorMode) {
         const std::string& got = ed.pointer(xr::Hand::Right).hovered_widget();
         const bool ok = got == tg.widget;
         hit += ok;
-        EXPECT_TRUE(ok) << xr::mirror_mode_name(mode) << " eye " << e << ": " << tg.panel << "/" << tg.widget
-                        << " drawn at (" << c->x << ", " << c->y << ") but the ray hits \"" << got << "\"";
+        EXPECT_TRUE(ok) << xr::mirror_mode_name(mode) << " eye " << e << ": " << tg.panel << "/"
+                        << tg.widget << " drawn at (" << c->x << ", " << c->y
+                        << ") but the ray hits \"" << got << "\"";
         // Control: the window taken as a plain pinhole (what the sim did before, whatever the
         // mirror showed) misses in the headset mirrors, so this test can fail.
         sim->push_event(xr::MouseMoveEvent{c->x, c->y});
@@ -165,17 +174,24 @@ TEST(PointingGl, APressAtTheDrawnCentreOfEveryWidgetHitsItInEveryMirrorMode) {
         ed.update(sim->poll(t), t);
         pinhole_hits += ed.pointer(xr::Hand::Right).hovered_widget() == tg.widget;
         char buf[64];
-        std::snprintf(buf, sizeof buf, "%s(%.0f, %.0f) %s", cell.empty() ? "" : "; ", c->x, c->y, ok ? "hit" : "MISS");
+        std::snprintf(buf, sizeof buf, "%s(%.0f, %.0f) %s", cell.empty() ? "" : "; ", c->x, c->y,
+                      ok ? "hit" : "MISS");
         cell += buf;
       }
-      rows[tg.panel + "/" + tg.widget] += " " + (cell.empty() ? std::string("not in view") : cell) + " |";
+      rows[tg.panel + "/" + tg.widget] +=
+          " " + (cell.empty() ? std::string("not in view") : cell) + " |";
     }
     EXPECT_EQ(hit, visible) << xr::mirror_mode_name(mode);
-    if (mode == xr::MirrorMode::Desktop) EXPECT_EQ(pinhole_hits, visible) << "the desktop view is that pinhole";
-    else EXPECT_LT(pinhole_hits, visible / 2) << xr::mirror_mode_name(mode) << ": the control should miss";
+    if (mode == xr::MirrorMode::Desktop)
+      EXPECT_EQ(pinhole_hits, visible) << "the desktop view is that pinhole";
+    else
+      EXPECT_LT(pinhole_hits, visible / 2)
+          << xr::mirror_mode_name(mode) << ": the control should miss";
     // The desktop view shows every widget; the headset mirrors most (the eyes see less).
-    if (mode == xr::MirrorMode::Desktop) EXPECT_EQ(visible, static_cast<int>(targets.size()));
-    else EXPECT_GE(visible, static_cast<int>(targets.size()) / 2) << xr::mirror_mode_name(mode);
+    if (mode == xr::MirrorMode::Desktop)
+      EXPECT_EQ(visible, static_cast<int>(targets.size()));
+    else
+      EXPECT_GE(visible, static_cast<int>(targets.size()) / 2) << xr::mirror_mode_name(mode);
   }
   for (const auto& [name, row] : rows) table << "| " << name << " |" << row << "\n";
   std::ofstream(std::string(VDFX_TEST_OUTPUT_DIR) + "/pointing_table.md") << table.str();

@@ -12,8 +12,7 @@ TEST(RenderGpu, MatchesCpuReferenceForTheWholeStack) {
   const auto dir = test_dir();
   write_test_panorama(dir);
   // Every colour effect plus a vignette: exposure from the base sidecar, the rest constant.
-  write_text(dir / "s.vdfx.json",
-             exposure_sidecar(R"(,
+  write_text(dir / "s.vdfx.json", exposure_sidecar(R"(,
     {"type": "tint", "keyframes": [{"azimuth_deg": 0.0, "altitude_deg": 0.0, "frame": 0,
       "params": {"gain": [1.2, 1.0, 0.8]}}]},
     {"type": "saturation", "keyframes": [{"azimuth_deg": 0.0, "altitude_deg": 0.0, "frame": 0,
@@ -91,8 +90,8 @@ TEST(RenderGpu, PyramidBlurIsCloseToExact) {
   write_text(dir / "s.vdfx.json", graded_blur_sidecar());
   for (const char* mode : {"view", "pixel"}) {
     // --bake only where it does something (elsewhere it is a usage error).
-    const std::string common = std::string("--view 25,0 --fov 60 --size 240x180 --gpu --mode ") + mode +
-                               (std::string(mode) == "pixel" ? " --bake 256x128" : "");
+    const std::string common = std::string("--view 25,0 --fov 60 --size 240x180 --gpu --mode ") +
+                               mode + (std::string(mode) == "pixel" ? " --bake 256x128" : "");
     const cv::Mat exact = render(dir, common, "exact.png");
     const cv::Mat pyramid = render(dir, common + " --blur pyramid", "pyramid.png");
     ASSERT_EQ(exact.size(), pyramid.size());

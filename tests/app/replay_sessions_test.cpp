@@ -5,10 +5,9 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
-
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
+#include <sstream>
 
 #include "app/editor_replay.h"
 #include "editor_scripts.h"
@@ -30,8 +29,10 @@ using test_files::slurp;
 
 fs::path clip(const fs::path& dir) {
   const fs::path p = dir / "clip.avi";
-  cv::VideoWriter w(p.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 30.0, cv::Size(128, 64));
-  for (int i = 0; i < test::kClipFrames; ++i) w.write(cv::Mat(64, 128, CV_8UC3, cv::Scalar(40 + i, 90, 160)));
+  cv::VideoWriter w(p.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 30.0,
+                    cv::Size(128, 64));
+  for (int i = 0; i < test::kClipFrames; ++i)
+    w.write(cv::Mat(64, 128, CV_8UC3, cv::Scalar(40 + i, 90, 160)));
   return p;
 }
 
@@ -46,7 +47,9 @@ ReplayOptions clip_replay(const fs::path& dir, const std::string& name) {
 
 int run(const std::string& args, std::string* err = nullptr) {
   const fs::path log = fs::path(VDFX_TEST_OUTPUT_DIR) / "editor" / "replay_stderr.txt";
-  const int rc = std::system((std::string(VDFX_BINARY) + " replay " + args + " 2>" + log.string() + " >/dev/null").c_str());
+  const int rc = std::system(
+      (std::string(VDFX_BINARY) + " replay " + args + " 2>" + log.string() + " >/dev/null")
+          .c_str());
   if (err) *err = slurp(log);
   return WEXITSTATUS(rc);
 }
@@ -57,7 +60,8 @@ const effects::EffectTrack& track(const io::Sidecar& s, EffectType t) {
   throw std::runtime_error("no track " + std::string(effects::effect_name(t)));
 }
 
-void expect_key(const effects::Keyframe& k, double az, double alt, std::int64_t frame, std::vector<double> params) {
+void expect_key(const effects::Keyframe& k, double az, double alt, std::int64_t frame,
+                std::vector<double> params) {
   EXPECT_NEAR(k.direction.azimuth_deg, az, 0.05);
   EXPECT_NEAR(k.direction.altitude_deg, alt, 0.05);
   EXPECT_EQ(k.frame, frame);
@@ -67,9 +71,12 @@ void expect_key(const effects::Keyframe& k, double az, double alt, std::int64_t 
 
 TEST(ReplaySessions, PlaceExposureUndoRedoIsByteIdenticalTwice) {
   const auto dir = test::temp_dir("replay_place");
-  const std::string common = (kRecordings / "editor_place_exposure.vdrec.jsonl").string() + " --video " + kSunrise.string();
+  const std::string common = (kRecordings / "editor_place_exposure.vdrec.jsonl").string() +
+                             " --video " + kSunrise.string();
   ASSERT_EQ(run(common + " --sidecar-out " + (dir / "a.vdfx.json").string()), 0);
-  ASSERT_EQ(run(common + " --sidecar-out " + (dir / "b.vdfx.json").string() + " --frames " + (dir / "frames").string()), 0);
+  ASSERT_EQ(run(common + " --sidecar-out " + (dir / "b.vdfx.json").string() + " --frames " +
+                (dir / "frames").string()),
+            0);
   EXPECT_EQ(slurp(dir / "a.vdfx.json"), slurp(dir / "b.vdfx.json"));
   const io::Sidecar s = io::read_sidecar(dir / "a.vdfx.json");
   ASSERT_EQ(s.effects.size(), 1u);
@@ -79,7 +86,8 @@ TEST(ReplaySessions, PlaceExposureUndoRedoIsByteIdenticalTwice) {
   expect_key(ks[1], 40.0, 10.0, 0, {-1.5});
   EXPECT_EQ(s.video.frames, 1);
   for (int i = 0; i < 5; ++i) {
-    const cv::Mat png = cv::imread((dir / "frames" / ("replay_00" + std::to_string(i) + ".png")).string());
+    const cv::Mat png =
+        cv::imread((dir / "frames" / ("replay_00" + std::to_string(i) + ".png")).string());
     ASSERT_FALSE(png.empty()) << i;
     EXPECT_EQ(png.size(), cv::Size(1280, 720));
   }
@@ -87,7 +95,8 @@ TEST(ReplaySessions, PlaceExposureUndoRedoIsByteIdenticalTwice) {
 
 /// The last frame image of editor_place_exposure over the sunrise (BGR), starting from `start`
 /// (an empty sidecar when null); the written sidecar goes to `out`.
-cv::Mat last_replay_frame(const fs::path& dir, const io::Sidecar* start, io::Sidecar* out = nullptr) {
+cv::Mat last_replay_frame(const fs::path& dir, const io::Sidecar* start,
+                          io::Sidecar* out = nullptr) {
   ReplayOptions o;
   o.recording = kRecordings / "editor_place_exposure.vdrec.jsonl";
   o.video = kSunrise;
@@ -180,8 +189,8 @@ TEST(ReplaySessions, MoveKeyframeSessionMovesRetimesAndReEditsIt) {
   const auto& exposure = track(s, EffectType::Exposure);
   EXPECT_FALSE(exposure.interpolation.has_value());
   ASSERT_EQ(exposure.keyframes.size(), 2u);
-  expect_key(exposure.keyframes[0], -20.0, 0.0, 0, {1.0});    // A untouched
-  expect_key(exposure.keyframes[1], 55.0, 10.0, 30, {2.5});   // B moved, retimed, re-valued
+  expect_key(exposure.keyframes[0], -20.0, 0.0, 0, {1.0});   // A untouched
+  expect_key(exposure.keyframes[1], 55.0, 10.0, 30, {2.5});  // B moved, retimed, re-valued
   // The 0.5 set after deselecting went to the tool's chosen value: both keyframes kept theirs
   // (above). Deterministic:
   const std::string first = slurp(o.sidecar_out);
@@ -194,8 +203,9 @@ TEST(ReplaySessions, SidecarInIsTheStartingPoint) {
   io::Sidecar start = test::empty_sidecar(1);
   start.effects.push_back({EffectType::Contrast, std::nullopt, {{{100.0, 0.0}, 0, {3.0}}}});
   io::write_sidecar(dir / "in.vdfx.json", start);
-  ASSERT_EQ(run((kRecordings / "editor_place_exposure.vdrec.jsonl").string() + " --video " + kSunrise.string() +
-                " --sidecar-in " + (dir / "in.vdfx.json").string() + " --sidecar-out " + (dir / "out.vdfx.json").string()),
+  ASSERT_EQ(run((kRecordings / "editor_place_exposure.vdrec.jsonl").string() + " --video " +
+                kSunrise.string() + " --sidecar-in " + (dir / "in.vdfx.json").string() +
+                " --sidecar-out " + (dir / "out.vdfx.json").string()),
             0);
   const io::Sidecar s = io::read_sidecar(dir / "out.vdfx.json");
   EXPECT_EQ(track(s, EffectType::Contrast).keyframes.size(), 1u);
@@ -207,11 +217,12 @@ TEST(ReplaySessions, MalformedRecordingExitsOneWithFileAndLine) {
   std::ifstream in(kRecordings / "editor_place_exposure.vdrec.jsonl");
   std::ofstream out(dir / "bad.vdrec.jsonl");
   std::string line;
-  for (int n = 1; std::getline(in, line) && n <= 5; ++n) out << (n == 4 ? std::string("{\"t_ns\": oops}") : line) << "\n";
+  for (int n = 1; std::getline(in, line) && n <= 5; ++n)
+    out << (n == 4 ? std::string("{\"t_ns\": oops}") : line) << "\n";
   out.close();
   std::string err;
-  EXPECT_EQ(run((dir / "bad.vdrec.jsonl").string() + " --video " + kSunrise.string() + " --sidecar-out " +
-                    (dir / "o.vdfx.json").string(),
+  EXPECT_EQ(run((dir / "bad.vdrec.jsonl").string() + " --video " + kSunrise.string() +
+                    " --sidecar-out " + (dir / "o.vdfx.json").string(),
                 &err),
             1);
   EXPECT_NE(err.find("bad.vdrec.jsonl:4"), std::string::npos) << err;

@@ -21,9 +21,10 @@ fs::path long_gop_clip() {
   const fs::path clip = fs::path(VDFX_TEST_OUTPUT_DIR) / "start" / "long_gop_4k.mp4";
   if (fs::exists(clip)) return clip;
   fs::create_directories(clip.parent_path());
-  const std::string cmd = "ffmpeg -y -loglevel error -f lavfi -i testsrc2=size=3840x1920:rate=30 -frames:v 30 "
-                          "-c:v libx264 -preset ultrafast -g 300 -bf 3 -pix_fmt yuv420p " +
-                          clip.string();
+  const std::string cmd =
+      "ffmpeg -y -loglevel error -f lavfi -i testsrc2=size=3840x1920:rate=30 -frames:v 30 "
+      "-c:v libx264 -preset ultrafast -g 300 -bf 3 -pix_fmt yuv420p " +
+      clip.string();
   EXPECT_EQ(std::system(cmd.c_str()), 0) << "ffmpeg is needed to make the test clip: " << cmd;
   return clip;
 }
@@ -40,10 +41,11 @@ TEST(StartCmdGl, PlayAndEditStartEveryTimeOnALongGopClip) {
       fs::remove(fs::path(sidecar.string() + ".autosave"));
       if (std::string(cmd) == "play") {
         // play needs a sidecar: an empty one for the clip
-        run_vdfx("edit " + clip.string() + " --sidecar " + sidecar.string() + " --frames 1 --hidden");
+        run_vdfx("edit " + clip.string() + " --sidecar " + sidecar.string() +
+                 " --frames 1 --hidden");
       }
-      const auto r = run_vdfx(std::string(cmd) + " " + clip.string() + " --sidecar " + sidecar.string() +
-                              " --frames 4 --hidden --no-vsync");
+      const auto r = run_vdfx(std::string(cmd) + " " + clip.string() + " --sidecar " +
+                              sidecar.string() + " --frames 4 --hidden --no-vsync");
       if (r.exit_code != 0) {
         ++failures;
         ADD_FAILURE() << cmd << " start " << i << " exit " << r.exit_code << ":\n" << r.output;

@@ -20,8 +20,8 @@
 
 #include <random>
 
-#include "app/editor.h"
 #include "app/document.h"
+#include "app/editor.h"
 #include "app/visualizations.h"
 #include "effects/keyframe_set.h"
 #include "effects/rbf_interpolator.h"
@@ -47,10 +47,14 @@ std::vector<Keyframe> make_keyframes(int n) {
   return ks;
 }
 
-vdfx::effects::RbfInterpolator make_rbf(int n) { return vdfx::effects::RbfInterpolator(make_keyframes(n), 1, {}, 30.0); }
+vdfx::effects::RbfInterpolator make_rbf(int n) {
+  return vdfx::effects::RbfInterpolator(make_keyframes(n), 1, {}, 30.0);
+}
 
 /// The preview keyframe at step i: the head turning by 1.5 deg a frame.
-Keyframe preview_key(int i) { return {{-60.0 + 1.5 * (i % 80), 5.0}, 450, {2.0}}; }
+Keyframe preview_key(int i) {
+  return {{-60.0 + 1.5 * (i % 80), 5.0}, 450, {2.0}};
+}
 
 vdfx::io::Sidecar sidecar_of(std::vector<Keyframe> ks) {
   vdfx::io::Sidecar sc;
@@ -61,7 +65,8 @@ vdfx::io::Sidecar sidecar_of(std::vector<Keyframe> ks) {
 
 /// Old path, the peer: a fresh interpolant of the keyframes and the preview keyframe.
 void BM_EditorPreviewFresh(benchmark::State& state) {
-  vdfx::app::Document doc(sidecar_of(make_keyframes(static_cast<int>(state.range(0)))), {{.async = false}});
+  vdfx::app::Document doc(sidecar_of(make_keyframes(static_cast<int>(state.range(0)))),
+                          {{.async = false}});
   auto& p = doc.begin_pending(EffectType::Exposure, std::nullopt, preview_key(0));
   int i = 0;
   for (auto _ : state) {
@@ -75,7 +80,8 @@ BENCHMARK(BM_EditorPreviewFresh)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisec
 
 /// New path: seeded once (untimed), then one incremental move per frame.
 void BM_EditorPreviewIncremental(benchmark::State& state) {
-  vdfx::app::Document doc(sidecar_of(make_keyframes(static_cast<int>(state.range(0)))), {{.async = false}});
+  vdfx::app::Document doc(sidecar_of(make_keyframes(static_cast<int>(state.range(0)))),
+                          {{.async = false}});
   auto& p = doc.begin_pending(EffectType::Exposure, std::nullopt, preview_key(0));
   p.interpolant();
   int i = 1;
@@ -92,21 +98,24 @@ BENCHMARK(BM_EditorPreviewIncremental)->Arg(100)->Arg(1000)->Unit(benchmark::kMi
 /// solves the pending edit's keyframes from scratch; the pending edit (source 1) clones the
 /// document's solved set. The pending edit is ended untimed.
 void BM_EditorPreviewStart(benchmark::State& state) {
-  vdfx::app::Document doc(sidecar_of(make_keyframes(static_cast<int>(state.range(0)))), {{.async = false}});
+  vdfx::app::Document doc(sidecar_of(make_keyframes(static_cast<int>(state.range(0)))),
+                          {{.async = false}});
   const bool grab = state.range(2) != 0;
   Keyframe held = doc.keyframes(EffectType::Exposure)[17];
   held.direction.azimuth_deg += 3.0;  // the first frame of the grab in which it moved
   int i = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    auto& p = doc.begin_pending(EffectType::Exposure, grab ? std::optional<std::size_t>(17) : std::nullopt,
+    auto& p = doc.begin_pending(EffectType::Exposure,
+                                grab ? std::optional<std::size_t>(17) : std::nullopt,
                                 grab ? held : preview_key(i++));
     state.ResumeTiming();
     if (state.range(1) != 0) {
       auto v = p.interpolant()->evaluate(Direction{100.0, 10.0}, 450);
       benchmark::DoNotOptimize(v.data());
     } else {
-      const vdfx::effects::KeyframeSet fresh(1, {}, 30.0, p.keyframe_list(), {.async = false}, {0.0});
+      const vdfx::effects::KeyframeSet fresh(1, {}, 30.0, p.keyframe_list(), {.async = false},
+                                             {0.0});
       auto v = fresh.solution()->evaluate(Direction{100.0, 10.0}, 450);
       benchmark::DoNotOptimize(v.data());
     }
@@ -114,8 +123,9 @@ void BM_EditorPreviewStart(benchmark::State& state) {
     doc.cancel_pending();
     state.ResumeTiming();
   }
-  state.counters["full_seeds_per_start"] = static_cast<double>(doc.pending_stats().full_seeds) /
-                                           static_cast<double>(std::max<std::uint64_t>(doc.pending_stats().seeds, 1));
+  state.counters["full_seeds_per_start"] =
+      static_cast<double>(doc.pending_stats().full_seeds) /
+      static_cast<double>(std::max<std::uint64_t>(doc.pending_stats().seeds, 1));
 }
 BENCHMARK(BM_EditorPreviewStart)
     ->ArgNames({"n", "source", "grab"})
@@ -129,7 +139,8 @@ BENCHMARK(BM_EditorPreviewStart)
 void BM_EditorPlayingFrame(benchmark::State& state) {
   vdfx::io::Sidecar sc;
   sc.video = {"clip.mp4", 30.0, kFrames, 3840, 1920};
-  sc.effects.push_back({EffectType::Exposure, std::nullopt, make_keyframes(static_cast<int>(state.range(0)))});
+  sc.effects.push_back(
+      {EffectType::Exposure, std::nullopt, make_keyframes(static_cast<int>(state.range(0)))});
   vdfx::app::EditorOptions eo;
   eo.visuals.async = state.range(1) != 0;
   vdfx::app::Editor ed(sc, vdfx::app::DocumentOptions{{.async = false}}, eo);

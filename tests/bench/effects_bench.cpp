@@ -39,7 +39,9 @@ const ViewCamera& test_camera() {
   return cam;
 }
 
-const cv::Mat& sunrise() { return app::bench::sunrise_rgb(); }
+const cv::Mat& sunrise() {
+  return app::bench::sunrise_rgb();
+}
 
 /// range(0) is sigma in hundredths of a degree; the counter reports it in pixels.
 template <cv::Mat (*Blur)(const cv::Mat&, double, double)>
@@ -50,11 +52,23 @@ void BM_Blur(benchmark::State& state) {
   state.counters["sigma_px"] = sigma_px;
   state.counters["radius_px"] = gaussian_radius(sigma_px);
 }
-BENCHMARK_TEMPLATE(BM_Blur, blur_exact_2d)->Name("Effects/BlurExact2D")->Arg(25)->Arg(50)
-    ->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_TEMPLATE(BM_Blur, blur_separable)->Name("Effects/BlurSeparable")->Arg(25)->Arg(50)
-    ->Arg(200)->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_Blur, blur_opencv)->Name("Effects/BlurOpenCv")->Arg(25)->Arg(50)->Arg(200)
+BENCHMARK_TEMPLATE(BM_Blur, blur_exact_2d)
+    ->Name("Effects/BlurExact2D")
+    ->Arg(25)
+    ->Arg(50)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK_TEMPLATE(BM_Blur, blur_separable)
+    ->Name("Effects/BlurSeparable")
+    ->Arg(25)
+    ->Arg(50)
+    ->Arg(200)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Blur, blur_opencv)
+    ->Name("Effects/BlurOpenCv")
+    ->Arg(25)
+    ->Arg(50)
+    ->Arg(200)
     ->Unit(benchmark::kMillisecond);
 
 using app::bench::colour_params;
@@ -83,20 +97,24 @@ BENCHMARK(BM_MatCopy)->Name("Effects/MatCopy")->Unit(benchmark::kMillisecond);
 void BM_RenderView(benchmark::State& state) {
   const OneThread one;
   const EquirectSampler sampler(
-      sunrise(), {state.range(0) ? SampleFilter::AreaAware : SampleFilter::Bilinear,
-                  PoleRows::Clamp});
+      sunrise(),
+      {state.range(0) ? SampleFilter::AreaAware : SampleFilter::Bilinear, PoleRows::Clamp});
   StackParams p = colour_params();
   p.blur_sigma_deg = state.range(1) / 100.0;
   for (auto _ : state) benchmark::DoNotOptimize(render_view(sampler, test_camera(), p));
 }
-BENCHMARK(BM_RenderView)->Name("Effects/RenderView")->Args({0, 0})->Args({1, 0})->Args({1, 50})
+BENCHMARK(BM_RenderView)
+    ->Name("Effects/RenderView")
+    ->Args({0, 0})
+    ->Args({1, 0})
+    ->Args({1, 50})
     ->Unit(benchmark::kMillisecond);
 
 void BM_SampleView(benchmark::State& state) {
   const OneThread one;
   const EquirectSampler sampler(
-      sunrise(), {state.range(0) ? SampleFilter::AreaAware : SampleFilter::Bilinear,
-                  PoleRows::Clamp});
+      sunrise(),
+      {state.range(0) ? SampleFilter::AreaAware : SampleFilter::Bilinear, PoleRows::Clamp});
   for (auto _ : state) benchmark::DoNotOptimize(sample_view(sampler, test_camera()));
 }
 BENCHMARK(BM_SampleView)->Name("Effects/SampleView")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);

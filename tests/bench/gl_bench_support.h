@@ -17,7 +17,9 @@ namespace vdfx::bench {
 
 /// Median of `times` (the upper one of an even count): the one `vdfx bench` uses.
 using app::bench::median_of;
-inline double median(std::vector<double> times) { return median_of(std::move(times)); }
+inline double median(std::vector<double> times) {
+  return median_of(std::move(times));
+}
 
 /// Median wall time of `work` over `runs` runs, ms.
 inline double median_wall_ms(int runs, const std::function<void()>& work) {

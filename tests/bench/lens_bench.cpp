@@ -17,9 +17,15 @@ namespace {
 using vdfx::effects::EyeLens;
 using vdfx::effects::InverseMethod;
 
-const EyeLens& eye() { return vdfx::app::bench::generic90_left_lens(); }
-const std::vector<cv::Point2d>& points() { return vdfx::app::bench::lens_grid_points(); }
-double px_per_unit() { return vdfx::app::bench::lens_px_per_unit(); }
+const EyeLens& eye() {
+  return vdfx::app::bench::generic90_left_lens();
+}
+const std::vector<cv::Point2d>& points() {
+  return vdfx::app::bench::lens_grid_points();
+}
+double px_per_unit() {
+  return vdfx::app::bench::lens_px_per_unit();
+}
 
 cv::Point2d invert(const cv::Point2d& p, InverseMethod method) {
   return vdfx::app::bench::undistort_point(p, method);

@@ -4,8 +4,8 @@
 /// `/bin/true` spawned the same way in the same run (counter "ms_over_true": the difference of the
 /// means). The target is 25 ms for `vdfx validate` of a small sidecar.
 #include <benchmark/benchmark.h>
-#include <spawn.h>
 #include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
 
 #include <chrono>
@@ -38,15 +38,23 @@ void measure(benchmark::State& state, const std::vector<std::string>& args, bool
   double total = 0;
   for (auto _ : state) total += run_ms(args);
   const double ms = total / static_cast<double>(state.iterations());
-  if (is_peer) g_true_ms = ms;
-  else if (g_true_ms > 0) state.counters["ms_over_true"] = ms - g_true_ms;
+  if (is_peer)
+    g_true_ms = ms;
+  else if (g_true_ms > 0)
+    state.counters["ms_over_true"] = ms - g_true_ms;
 }
 
-void BM_StartTrue(benchmark::State& state) { measure(state, {"/bin/true"}, true); }
-void BM_StartValidate(benchmark::State& state) {
-  measure(state, {VDFX_BINARY, "validate", std::string(VDFX_SOURCE_DIR) + "/app/demo/interior.vdfx.json"}, false);
+void BM_StartTrue(benchmark::State& state) {
+  measure(state, {"/bin/true"}, true);
 }
-void BM_StartHelp(benchmark::State& state) { measure(state, {VDFX_BINARY, "--help"}, false); }
+void BM_StartValidate(benchmark::State& state) {
+  measure(state,
+          {VDFX_BINARY, "validate", std::string(VDFX_SOURCE_DIR) + "/app/demo/interior.vdfx.json"},
+          false);
+}
+void BM_StartHelp(benchmark::State& state) {
+  measure(state, {VDFX_BINARY, "--help"}, false);
+}
 
 }  // namespace
 

@@ -1,16 +1,15 @@
 /// @file
 /// @brief CPU canvas and panel rendering: full renders of the two demo panels, a hover-change
 /// re-render, a playback step of the demo and of the editor's timeline panel (against a full
-/// redraw of the same panel), one text draw, one rounded-rect fill, and the memory-bound peers (a plain copy and
-/// a memset of the same 1000 x 1000 RGBA image), all measured in the same run.
+/// redraw of the same panel), one text draw, one rounded-rect fill, and the memory-bound peers (a
+/// plain copy and a memset of the same 1000 x 1000 RGBA image), all measured in the same run.
 ///
 /// Report CPU-time medians (--benchmark_repetitions=N --benchmark_report_aggregates_only=true):
 /// the machine is shared, so wall time is noisy.
 #include <benchmark/benchmark.h>
 
-#include <opencv2/core.hpp>
-
 #include <cstring>
+#include <opencv2/core.hpp>
 
 #include "app/editor.h"
 #include "ui/button.h"
@@ -109,7 +108,8 @@ BENCHMARK(BM_TimelinePlayheadStep)->Unit(benchmark::kMillisecond);
 void BM_EditorTimelinePlaying(benchmark::State& state) {
   vdfx::io::Sidecar sc;
   sc.video = {"clip.mp4", 30.0, 900, 3840, 1920};
-  vdfx::app::Editor ed(sc, vdfx::app::DocumentOptions{{.async = false}}, vdfx::app::EditorOptions{});
+  vdfx::app::Editor ed(sc, vdfx::app::DocumentOptions{{.async = false}},
+                       vdfx::app::EditorOptions{});
   ed.select_effect(vdfx::effects::EffectType::Contrast);
   ed.document().add_keyframe(vdfx::effects::EffectType::Exposure, {{30.0, 0.0}, 100, {1.0}});
   vdfx::xr::InputState in = vdfx::xr::neutral_input_state(0);

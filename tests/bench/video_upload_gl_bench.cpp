@@ -65,7 +65,8 @@ void BM_VideoUploadBefore_RgbToBgr(benchmark::State& state) {
     cv::cvtColor(u.rgb, bgr, cv::COLOR_RGB2BGR);
     u.layer->set_frame(bgr);
     glFinish();
-    total += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    total +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
   u.before_ms = total / state.iterations();
 }
@@ -78,7 +79,8 @@ void BM_VideoUploadAfter_Ycbcr420(benchmark::State& state) {
     const auto t0 = std::chrono::steady_clock::now();
     u.layer->set_frame(u.picture);
     glFinish();
-    total += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    total +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
   if (u.before_ms > 0) state.counters["x_before"] = total / state.iterations() / u.before_ms;
 }
@@ -104,15 +106,26 @@ void BM_VideoLayerEye(benchmark::State& state) {
     const auto t0 = std::chrono::steady_clock::now();
     u.layer->render(eye, view);
     glFinish();
-    total += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    total +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
   const double ms = total / state.iterations();
-  if (!ycbcr) g_rgb_render_ms = ms;
-  else if (g_rgb_render_ms > 0) state.counters["x_rgb"] = ms / g_rgb_render_ms;
+  if (!ycbcr)
+    g_rgb_render_ms = ms;
+  else if (g_rgb_render_ms > 0)
+    state.counters["x_rgb"] = ms / g_rgb_render_ms;
 }
 
 }  // namespace
 
-BENCHMARK(BM_VideoUploadBefore_RgbToBgr)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_VideoUploadBefore_RgbToBgr)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
 BENCHMARK(BM_VideoUploadAfter_Ycbcr420)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK(BM_VideoLayerEye)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_VideoLayerEye)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);

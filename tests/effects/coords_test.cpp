@@ -13,9 +13,7 @@ const struct {
 } kAxes[] = {
     {{0, 0}, {0, 0, -1}},  // forward is -z (OpenXR)
     {{90, 0}, {1, 0, 0}},  // positive azimuth turns right
-    {{-90, 0}, {-1, 0, 0}},
-    {{180, 0}, {0, 0, 1}},
-    {{0, 90}, {0, 1, 0}},  // positive altitude is up
+    {{-90, 0}, {-1, 0, 0}}, {{180, 0}, {0, 0, 1}}, {{0, 90}, {0, 1, 0}},  // positive altitude is up
     {{0, -90}, {0, -1, 0}},
 };
 

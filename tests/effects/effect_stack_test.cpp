@@ -29,36 +29,117 @@ const struct {
   V3 want;
 } kFormulas[] = {
     {"tint", with_tint({2, 1, 1}), 0, {0.2, 0.4, 0.6}, {0.32, 0.32, 0.48}},
-    {"exposure +1", [] { StackParams p; p.exposure_stops = 1; return p; }(), 0,
-     {0.1, 0.2, 0.3}, {0.2, 0.4, 0.6}},
-    {"exposure -2", [] { StackParams p; p.exposure_stops = -2; return p; }(), 0,
-     {0.1, 0.2, 0.3}, {0.025, 0.05, 0.075}},
+    {"exposure +1",
+     [] {
+       StackParams p;
+       p.exposure_stops = 1;
+       return p;
+     }(),
+     0,
+     {0.1, 0.2, 0.3},
+     {0.2, 0.4, 0.6}},
+    {"exposure -2",
+     [] {
+       StackParams p;
+       p.exposure_stops = -2;
+       return p;
+     }(),
+     0,
+     {0.1, 0.2, 0.3},
+     {0.025, 0.05, 0.075}},
     // Y = 0.25*0.2 + 0.5*0.4 + 0.25*0.8 = 0.45
-    {"saturation 2", [] { StackParams p; p.saturation = 2; return p; }(), 0,
-     {0.2, 0.4, 0.8}, {-0.05, 0.35, 1.15}},
-    {"saturation 0", [] { StackParams p; p.saturation = 0; return p; }(), 0,
-     {0.2, 0.4, 0.8}, {0.45, 0.45, 0.45}},
-    {"contrast 2", [] { StackParams p; p.contrast = 2; return p; }(), 0,
-     {0.2, 0.5, 0.9}, {-0.1, 0.5, 1.3}},
-    {"contrast 0.5", [] { StackParams p; p.contrast = 0.5; return p; }(), 0,
-     {0.2, 0.5, 0.9}, {0.35, 0.5, 0.7}},
-    {"vignette inside R", [] { StackParams p; p.vignette_radius_deg = 10; p.vignette_falloff_deg = 10; return p; }(),
-     5, {0.4, 0.6, 0.8}, {0.4, 0.6, 0.8}},
-    {"vignette half falloff", [] { StackParams p; p.vignette_radius_deg = 10; p.vignette_falloff_deg = 10; return p; }(),
-     15, {0.4, 0.6, 0.8}, {0.2, 0.3, 0.4}},
-    {"vignette at R+F", [] { StackParams p; p.vignette_radius_deg = 10; p.vignette_falloff_deg = 10; return p; }(),
-     20, {0.4, 0.6, 0.8}, {0, 0, 0}},
-    {"vignette beyond", [] { StackParams p; p.vignette_radius_deg = 10; p.vignette_falloff_deg = 10; return p; }(),
-     25, {0.4, 0.6, 0.8}, {0, 0, 0}},
+    {"saturation 2",
+     [] {
+       StackParams p;
+       p.saturation = 2;
+       return p;
+     }(),
+     0,
+     {0.2, 0.4, 0.8},
+     {-0.05, 0.35, 1.15}},
+    {"saturation 0",
+     [] {
+       StackParams p;
+       p.saturation = 0;
+       return p;
+     }(),
+     0,
+     {0.2, 0.4, 0.8},
+     {0.45, 0.45, 0.45}},
+    {"contrast 2",
+     [] {
+       StackParams p;
+       p.contrast = 2;
+       return p;
+     }(),
+     0,
+     {0.2, 0.5, 0.9},
+     {-0.1, 0.5, 1.3}},
+    {"contrast 0.5",
+     [] {
+       StackParams p;
+       p.contrast = 0.5;
+       return p;
+     }(),
+     0,
+     {0.2, 0.5, 0.9},
+     {0.35, 0.5, 0.7}},
+    {"vignette inside R",
+     [] {
+       StackParams p;
+       p.vignette_radius_deg = 10;
+       p.vignette_falloff_deg = 10;
+       return p;
+     }(),
+     5,
+     {0.4, 0.6, 0.8},
+     {0.4, 0.6, 0.8}},
+    {"vignette half falloff",
+     [] {
+       StackParams p;
+       p.vignette_radius_deg = 10;
+       p.vignette_falloff_deg = 10;
+       return p;
+     }(),
+     15,
+     {0.4, 0.6, 0.8},
+     {0.2, 0.3, 0.4}},
+    {"vignette at R+F",
+     [] {
+       StackParams p;
+       p.vignette_radius_deg = 10;
+       p.vignette_falloff_deg = 10;
+       return p;
+     }(),
+     20,
+     {0.4, 0.6, 0.8},
+     {0, 0, 0}},
+    {"vignette beyond",
+     [] {
+       StackParams p;
+       p.vignette_radius_deg = 10;
+       p.vignette_falloff_deg = 10;
+       return p;
+     }(),
+     25,
+     {0.4, 0.6, 0.8},
+     {0, 0, 0}},
     // All five in order: tint -> (0.32, 0.32, 0.48); exposure +1 -> (0.64, 0.64, 0.96);
     // Y = 0.72, saturation 2 -> (0.56, 0.56, 1.2) (above 1: no clamping between effects);
     // contrast 0.5 -> (0.53, 0.53, 0.85); vignette f = 0.5 -> (0.265, 0.265, 0.425).
-    {"whole stack in order", [] {
+    {"whole stack in order",
+     [] {
        StackParams p = with_tint({2, 1, 1});
-       p.exposure_stops = 1; p.saturation = 2; p.contrast = 0.5;
-       p.vignette_radius_deg = 10; p.vignette_falloff_deg = 10;
-       return p; }(),
-     15, {0.2, 0.4, 0.6}, {0.265, 0.265, 0.425}},
+       p.exposure_stops = 1;
+       p.saturation = 2;
+       p.contrast = 0.5;
+       p.vignette_radius_deg = 10;
+       p.vignette_falloff_deg = 10;
+       return p;
+     }(),
+     15,
+     {0.2, 0.4, 0.6},
+     {0.265, 0.265, 0.425}},
 };
 
 TEST(EffectStack, FormulasMatchHandComputedValues) {
@@ -80,7 +161,8 @@ TEST(EffectStack, VignetteFactorEdges) {
 
 TEST(EffectStack, NeutralEffectsAreExactlyIdentity) {
   const StackParams neutral;
-  for (int t = 0; t < kEffectCount; ++t) EXPECT_TRUE(neutral.is_neutral(static_cast<EffectType>(t)));
+  for (int t = 0; t < kEffectCount; ++t)
+    EXPECT_TRUE(neutral.is_neutral(static_cast<EffectType>(t)));
   // Values outside [0, 1] too: the reference must not clamp or round them.
   const V3 odd[] = {{0.1, 0.2, 0.3}, {-0.25, 1.75, 0.333333333333}, {1e-30, 7.0, 0.0}};
   for (const V3& c : odd)
@@ -111,7 +193,8 @@ TEST(EffectStack, TintNeverChangesLuma) {
 TEST(EffectStack, ImageApplicationMatchesThePerPixelFunction) {
   cv::Mat img(24, 40, CV_32FC3);
   cv::randu(img, cv::Scalar::all(0.0), cv::Scalar::all(1.0));
-  const ViewCamera cam = ViewCamera::from_fov_angles({{-30, 10}, 0}, {-0.9, 0.5, 0.7, -0.6}, 40, 24);
+  const ViewCamera cam =
+      ViewCamera::from_fov_angles({{-30, 10}, 0}, {-0.9, 0.5, 0.7, -0.6}, 40, 24);
   StackParams p = with_tint({1.2, 0.9, 1.4});
   p.exposure_stops = 0.7;
   p.saturation = 1.6;
@@ -123,9 +206,9 @@ TEST(EffectStack, ImageApplicationMatchesThePerPixelFunction) {
   for (int j = 0; j < img.rows; ++j) {
     for (int i = 0; i < img.cols; ++i) {
       const cv::Vec3f c = img.at<cv::Vec3f>(j, i);
-      const V3 want = apply_colour_stack(V3(c[0], c[1], c[2]), p,
-                                         angle_between(cam.pixel_ray(i, j), cam.optical_axis()) *
-                                             kRadToDeg);
+      const V3 want =
+          apply_colour_stack(V3(c[0], c[1], c[2]), p,
+                             angle_between(cam.pixel_ray(i, j), cam.optical_axis()) * kRadToDeg);
       const cv::Vec3f got = out.at<cv::Vec3f>(j, i);
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], want[k], 1e-6) << i << "," << j;
       EXPECT_DOUBLE_EQ(angles.at<double>(j, i),
@@ -152,8 +235,14 @@ TEST(EffectStack, VignetteIsCentredOnTheOpticalCentre) {
       for (int i = 0; i < out.cols; ++i) {
         const double d = angles.at<double>(j, i);
         const float v = out.at<cv::Vec3f>(j, i)[1];
-        if (d <= 20.0) { EXPECT_EQ(v, 1.0f); ++inside; }
-        if (d >= 30.0) { EXPECT_EQ(v, 0.0f); ++outside; }
+        if (d <= 20.0) {
+          EXPECT_EQ(v, 1.0f);
+          ++inside;
+        }
+        if (d >= 30.0) {
+          EXPECT_EQ(v, 0.0f);
+          ++outside;
+        }
         if (d > 20.0 && d < 30.0) {
           EXPECT_NEAR(v, 1.0 - (d - 20.0) / 10.0, 1e-6);
         }

@@ -3,22 +3,24 @@
 /// angular size at any altitude (a blur of the equirect plane would be stretched), energy is kept,
 /// the seam and the poles are crossed, and the per-pixel mix of levels stays close to the
 /// constant blur.
+#include "effects/equirect_blur.h"
+
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <iostream>
 
-#include <Eigen/Geometry>
-
 #include "effects/coords.h"
-#include "effects/equirect_blur.h"
 
 namespace vdfx::effects {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double altitude(int y, int h) { return 0.5 * kPi - (y + 0.5) * kPi / h; }
+double altitude(int y, int h) {
+  return 0.5 * kPi - (y + 0.5) * kPi / h;
+}
 
 Eigen::Vector3d dir(int x, int y, int w, int h) {
   return to_unit({((x + 0.5) / w - 0.5) * 360.0, altitude(y, h) * 180.0 / kPi});
@@ -28,7 +30,8 @@ Eigen::Vector3d dir(int x, int y, int w, int h) {
 double energy(const cv::Mat& img) {
   double e = 0;
   for (int y = 0; y < img.rows; ++y)
-    for (int x = 0; x < img.cols; ++x) e += img.at<cv::Vec3f>(y, x)[1] * std::cos(altitude(y, img.rows));
+    for (int x = 0; x < img.cols; ++x)
+      e += img.at<cv::Vec3f>(y, x)[1] * std::cos(altitude(y, img.rows));
   return e;
 }
 
@@ -70,8 +73,9 @@ TEST(EquirectBlur, ImpulseBecomesARoundSpotOfTheRightSizeAtAnyAltitude) {
     const cv::Mat src = impulse(w, h, 250, y);
     const cv::Mat out = blur_equirect(src, sigma_deg);
     const Spread s = spread(out, dir(250, y, w, h));
-    std::cout << "altitude " << altitude(y, h) * 180 / kPi << ": sigma east " << std::sqrt(s.east) * 180 / kPi
-              << " deg, north " << std::sqrt(s.north) * 180 / kPi << " deg (asked " << sigma_deg << ")\n";
+    std::cout << "altitude " << altitude(y, h) * 180 / kPi << ": sigma east "
+              << std::sqrt(s.east) * 180 / kPi << " deg, north " << std::sqrt(s.north) * 180 / kPi
+              << " deg (asked " << sigma_deg << ")\n";
     // A 2-D Gaussian on the sphere: sigma^2 along each axis (plus the texel's own size).
     EXPECT_NEAR(std::sqrt(s.east), sigma, 0.09 * sigma) << "row " << y;
     EXPECT_NEAR(std::sqrt(s.north), sigma, 0.08 * sigma) << "row " << y;
@@ -124,7 +128,8 @@ TEST(EquirectBlur, VaryingSigmaMixesLevelsCloseToTheConstantBlur) {
   cv::Mat img(h, w, CV_32FC3);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      img.at<cv::Vec3f>(y, x) = ((x / 8 + y / 8) % 2) ? cv::Vec3f(0.9f, 0.8f, 0.1f) : cv::Vec3f(0.1f, 0.2f, 0.7f);
+      img.at<cv::Vec3f>(y, x) =
+          ((x / 8 + y / 8) % 2) ? cv::Vec3f(0.9f, 0.8f, 0.1f) : cv::Vec3f(0.1f, 0.2f, 0.7f);
   // Zero sigma: untouched, exactly.
   const cv::Mat zero(h, w, CV_32FC1, cv::Scalar(0));
   cv::Mat d;

@@ -159,7 +159,8 @@ TEST(EquirectSampler, AreaAwareDoesNotAliasAtThePole) {
 
 TEST(EquirectSampler, RejectsWrongType) {
   EXPECT_THROW(EquirectSampler(cv::Mat(4, 8, CV_8UC3)), std::invalid_argument);
-  // Braces: clang reads EquirectSampler(cv::Mat()) as a declaration (the sanitizer CI builds with it).
+  // Braces: clang reads EquirectSampler(cv::Mat()) as a declaration (the sanitizer CI builds with
+  // it).
   EXPECT_THROW(EquirectSampler{cv::Mat()}, std::invalid_argument);
 }
 

@@ -1,13 +1,14 @@
 /// @file
 /// @brief The one interpolation-settings check: its ranges, its messages, and that the RBF kernel
 /// rejects exactly what it rejects.
+#include "effects/interpolation_check.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "effects/interpolation_check.h"
 #include "effects/rbf_kernel.h"
 
 namespace vdfx::effects {

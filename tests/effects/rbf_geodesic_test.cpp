@@ -1,8 +1,9 @@
 /// @file
 /// @brief Why Chordal is the default: layouts where the paper's geodesic distance makes the
 /// projected kernel indefinite or singular, while the chordal distance stays definite.
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
 
 #include "effects/rbf_interpolator.h"
 #include "tests/effects/rbf_test_util.h"
@@ -69,7 +70,9 @@ TEST(RbfGeodesic, AnExponentBetweenOneAndOneAndAHalfMakesGeodesicSingular) {
   // At alpha = 1 the geodesic kernel of a still is definite; at 1.5 it is not (first layout).
   // An eigenvalue crosses zero in between: there the geodesic system is exactly singular.
   const auto k = layout(6, 4, 0);
-  auto top = [&](double a) { return projected_eigenvalues(k, a, AngularDistance::Geodesic).maxCoeff(); };
+  auto top = [&](double a) {
+    return projected_eigenvalues(k, a, AngularDistance::Geodesic).maxCoeff();
+  };
   double lo = 1.0, hi = 1.5;
   ASSERT_LT(top(lo), 0.0);
   ASSERT_GT(top(hi), 0.0);

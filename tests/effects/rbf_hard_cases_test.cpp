@@ -72,9 +72,9 @@ std::vector<Keyframe> close_pairs(bool smooth) {
 
 std::vector<Keyframe> seam_and_poles() {
   auto k = random_set(12, 13, 0, 10);
-  const Direction dirs[] = {{180.0, 0.0},  {-179.99, 0.0}, {179.99, 5.0}, {-179.5, -5.0},
-                            {0.0, 90.0},   {45.0, 90.0},   {170.0, 90.0}, {-30.0, -90.0},
-                            {100.0, -90.0}, {180.0, 89.9}, {90.0, -89.9}, {0.0, 0.0}};
+  const Direction dirs[] = {{180.0, 0.0},   {-179.99, 0.0}, {179.99, 5.0}, {-179.5, -5.0},
+                            {0.0, 90.0},    {45.0, 90.0},   {170.0, 90.0}, {-30.0, -90.0},
+                            {100.0, -90.0}, {180.0, 89.9},  {90.0, -89.9}, {0.0, 0.0}};
   for (size_t i = 0; i < k.size(); ++i) k[i].direction = dirs[i];
   // The pole keyframes share a frame: each pole is one point whatever the azimuth.
   for (size_t i = 4; i < 9; ++i) k[i].frame = 5;
@@ -85,7 +85,7 @@ struct Row {
   std::string name;
   std::function<std::vector<Keyframe>()> make;
   double alpha = 1.0;
-  int merged = 0;   //!< expected merged count
+  int merged = 0;  //!< expected merged count
   int max_terms = 5;
   AngularDistance distance = AngularDistance::Chordal;
   double fps = 30.0;
@@ -104,25 +104,33 @@ const std::vector<Row>& rows() {
       {"five", [] { return random_set(5, 5); }},
       {"all_one_frame", [] { return with_frame(random_set(20, 6), 42); }, 1.0, 0, 4},
       {"all_on_horizon",
-       [] { return with_direction(random_set(20, 8), [](int i) { return Direction{i * 17.0 - 170, 0}; }); },
+       [] {
+         return with_direction(random_set(20, 8), [](int i) {
+           return Direction{i * 17.0 - 170, 0};
+         });
+       },
        1.0, 0, 4},
       {"horizon_one_frame",
        [] {
-         return with_frame(
-             with_direction(random_set(20, 9), [](int i) { return Direction{i * 17.0 - 170, 0}; }),
-             3);
+         return with_frame(with_direction(random_set(20, 9),
+                                          [](int i) {
+                                            return Direction{i * 17.0 - 170, 0};
+                                          }),
+                           3);
        },
        1.0, 0, 3},
       {"one_direction",
        [] {
-         return distinct_frames(
-             with_direction(random_set(10, 10), [](int) { return Direction{30, 20}; }));
+         return distinct_frames(with_direction(random_set(10, 10), [](int) {
+           return Direction{30, 20};
+         }));
        },
        1.0, 0, 2},
       {"one_direction_at_pole",
        [] {
-         return distinct_frames(
-             with_direction(random_set(10, 10), [](int i) { return Direction{i * 30.0, 90}; }));
+         return distinct_frames(with_direction(random_set(10, 10), [](int i) {
+           return Direction{i * 30.0, 90};
+         }));
        },
        1.0, 0, 2},
       {"duplicates", duplicates, 1.0, 3},
@@ -140,16 +148,19 @@ const std::vector<Row>& rows() {
       {"alpha_3_one_frame", [] { return with_frame(random_set(30, 27), 0); }, 3.0, 0, 4},
       {"alpha_2_horizon_one_frame",
        [] {
-         return with_frame(
-             with_direction(random_set(12, 28), [](int i) { return Direction{i * 29.0 - 170, 0}; }),
-             0);
+         return with_frame(with_direction(random_set(12, 28),
+                                          [](int i) {
+                                            return Direction{i * 29.0 - 170, 0};
+                                          }),
+                           0);
        },
        2.0, 0, 3},
       {"frames_near_1e6", [] { return random_set(40, 30, 999'000, 1'001'000); }, 1.0, 0, 5,
        AngularDistance::Chordal, 120.0},
       {"frames_near_1e6_adjacent", [] { return random_set(40, 31, 999'990, 1'000'010); }},
       {"geodesic_alpha_1", [] { return random_set(30, 32); }, 1.0, 0, 5, AngularDistance::Geodesic},
-      {"geodesic_alpha_1.5", [] { return random_set(30, 33); }, 1.5, 0, 5, AngularDistance::Geodesic},
+      {"geodesic_alpha_1.5", [] { return random_set(30, 33); }, 1.5, 0, 5,
+       AngularDistance::Geodesic},
       {"n_1000", [] { return random_set(1000, 40, 0, 3000); }},
       {"n_5000", [] { return random_set(5000, 41, 0, 9000); }},
   };

@@ -33,7 +33,8 @@ inline Keyframe random_keyframe(std::mt19937_64& rng, int dimension, std::int64_
 /// 1e-11): what the interpolant must reproduce there.
 inline Eigen::VectorXd expected_value(const std::vector<Keyframe>& keyframes, size_t i) {
   const Eigen::Vector3d ui = to_unit(keyframes[i].direction);
-  Eigen::VectorXd sum = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(keyframes[i].params.size()));
+  Eigen::VectorXd sum =
+      Eigen::VectorXd::Zero(static_cast<Eigen::Index>(keyframes[i].params.size()));
   int n = 0;
   for (const Keyframe& k : keyframes) {
     if (k.frame != keyframes[i].frame || (to_unit(k.direction) - ui).norm() > 1e-11) continue;

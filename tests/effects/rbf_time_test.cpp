@@ -80,9 +80,11 @@ TEST(RbfTime, HoldsAtBothEndsOfTheSpanAndInterpolatesInside) {
     const Direction d = test::random_direction(rng);
     // Before the span: the values of its first frame; after it: those of its last.
     for (const std::int64_t f : {0, 10, 29}) EXPECT_EQ(hold.evaluate(d, f), hold.evaluate(d, 30));
-    for (const std::int64_t f : {91, 200, 5000}) EXPECT_EQ(hold.evaluate(d, f), hold.evaluate(d, 90));
+    for (const std::int64_t f : {91, 200, 5000})
+      EXPECT_EQ(hold.evaluate(d, f), hold.evaluate(d, 90));
     // Inside the span both are the same space-time RBF.
-    for (const std::int64_t f : {30, 47, 60, 90}) EXPECT_EQ(hold.evaluate(d, f), paper.evaluate(d, f));
+    for (const std::int64_t f : {30, 47, 60, 90})
+      EXPECT_EQ(hold.evaluate(d, f), paper.evaluate(d, f));
   }
   // Outside the span the paper's form does change with the frame (else the test shows nothing).
   const Direction d = ks[0].direction;

@@ -28,13 +28,17 @@ TEST(StackInterpolator, EffectsWithoutKeyframesStayNeutralAndInactive) {
 TEST(StackInterpolator, ClampsOvershootAndRenormalisesTint) {
   std::vector<EffectTrack> tracks(2);
   tracks[0].type = EffectType::Tint;
-  tracks[0].keyframes = {{{0, 0}, 0, {2.0, 1.0, 0.5}}, {{120, 0}, 0, {0.5, 1.0, 2.0}},
+  tracks[0].keyframes = {{{0, 0}, 0, {2.0, 1.0, 0.5}},
+                         {{120, 0}, 0, {0.5, 1.0, 2.0}},
                          {{-120, 0}, 0, {1.0, 1.0, 1.0}}};
   tracks[1].type = EffectType::Contrast;
   tracks[1].interpolation = InterpolationSettings{3.0, 1.0, AngularDistance::Chordal};
   // Values at the range ends: a cubic kernel overshoots between them.
-  tracks[1].keyframes = {{{0, 0}, 0, {4.0}}, {{10, 0}, 0, {4.0}}, {{20, 0}, 0, {0.0}},
-                         {{30, 0}, 0, {0.0}}, {{40, 0}, 0, {4.0}}};
+  tracks[1].keyframes = {{{0, 0}, 0, {4.0}},
+                         {{10, 0}, 0, {4.0}},
+                         {{20, 0}, 0, {0.0}},
+                         {{30, 0}, 0, {0.0}},
+                         {{40, 0}, 0, {4.0}}};
   const StackInterpolator s(tracks, {}, 30.0);
   for (double az = -180; az < 180; az += 2.5) {
     const StackParams p = s.evaluate(Direction{az, 10}, 0);

@@ -20,7 +20,8 @@ TEST(ViewCamera, CentrePixelLooksAtTheViewDirection) {
     // Odd size: pixel (50, 30) has its centre at (50.5, 30.5), the image centre.
     const ViewCamera cam = ViewCamera::from_horizontal_fov({{p.az, p.alt}, p.roll}, 90.0, 101, 61);
     const Eigen::Vector3d want = to_unit({p.az, p.alt});
-    EXPECT_LT((cam.pixel_ray(50, 30) - want).norm(), 1e-12) << p.az << " " << p.alt << " " << p.roll;
+    EXPECT_LT((cam.pixel_ray(50, 30) - want).norm(), 1e-12)
+        << p.az << " " << p.alt << " " << p.roll;
     EXPECT_LT((cam.optical_axis() - want).norm(), 1e-12);
   }
 }
@@ -100,7 +101,8 @@ TEST(ViewCamera, ProjectionRoundTrip) {
 }
 
 TEST(ViewCamera, MarginKeepsTheRays) {
-  const ViewCamera cam = ViewCamera::from_fov_angles({{30, 5}, 10}, {-0.8, 0.6, 0.75, -0.9}, 64, 48);
+  const ViewCamera cam =
+      ViewCamera::from_fov_angles({{30, 5}, 10}, {-0.8, 0.6, 0.75, -0.9}, 64, 48);
   const ViewCamera wide = cam.with_margin(7);
   EXPECT_EQ(wide.width(), 78);
   EXPECT_EQ(wide.height(), 62);

@@ -29,7 +29,9 @@ cv::Mat load_sunrise() {
   return rgb;
 }
 
-cv::Mat grey(double level) { return cv::Mat(32, 64, CV_32FC3, cv::Scalar::all(level)); }
+cv::Mat grey(double level) {
+  return cv::Mat(32, 64, CV_32FC3, cv::Scalar::all(level));
+}
 
 /// Exposure that grows with azimuth: one stop per 45 degrees.
 StackParams exposure_by_azimuth(const Direction& d) {
@@ -101,8 +103,8 @@ TEST(ViewRenderer, EightBitOutputClampsScalesRounds) {
   const struct {
     float in;
     unsigned char out;
-  } rows[] = {{-0.5f, 0}, {0.0f, 0}, {0.2f, 51}, {0.5f, 128}, {0.999f, 255}, {1.0f, 255},
-              {1.7f, 255}, {std::nanf(""), 0}, {1.0f / 255.0f, 1}, {0.4f / 255.0f, 0}};
+  } rows[] = {{-0.5f, 0},  {0.0f, 0},   {0.2f, 51},         {0.5f, 128},        {0.999f, 255},
+              {1.0f, 255}, {1.7f, 255}, {std::nanf(""), 0}, {1.0f / 255.0f, 1}, {0.4f / 255.0f, 0}};
   for (const auto& r : rows) {
     const cv::Mat px(1, 1, CV_32FC3, cv::Scalar(r.in, 0.0, 1.0));
     const cv::Vec3b got = to_rgb8(px).at<cv::Vec3b>(0, 0);
@@ -149,14 +151,14 @@ TEST(ViewRenderer, RealImageModesAgreeForConstantParameters) {
   p.vignette_falloff_deg = 15;
   for (const auto& cam : cameras) {
     // Neutral parameters give exactly the sampled view.
-    EXPECT_EQ(cv::norm(render_view(sampler, cam, StackParams{}), sample_view(sampler, cam),
-                       cv::NORM_INF),
-              0.0);
+    EXPECT_EQ(
+        cv::norm(render_view(sampler, cam, StackParams{}), sample_view(sampler, cam), cv::NORM_INF),
+        0.0);
     for (double sigma : {0.0, 1.5}) {
       p.blur_sigma_deg = sigma;
       const cv::Mat view = render_view(sampler, cam, p);
-      const cv::Mat pixel =
-          render_view(sampler, cam, [&](const Direction&) { return p; }, RenderMode::Pixel);
+      const cv::Mat pixel = render_view(
+          sampler, cam, [&](const Direction&) { return p; }, RenderMode::Pixel);
       EXPECT_TRUE(cv::checkRange(view));
       EXPECT_LT(cv::norm(view, pixel, cv::NORM_INF), 1e-4) << "sigma " << sigma;
       EXPECT_GT(cv::norm(view, sample_view(sampler, cam), cv::NORM_INF), 0.01);
@@ -169,7 +171,8 @@ TEST(ViewRenderer, PixelModeBlurVariesAcrossTheView) {
   // the right.
   cv::Mat checker(180, 360, CV_32FC3);
   for (int y = 0; y < 180; ++y)
-    for (int x = 0; x < 360; ++x) checker.at<cv::Vec3f>(y, x) = cv::Vec3f::all(((x / 2 + y / 2) % 2));
+    for (int x = 0; x < 360; ++x)
+      checker.at<cv::Vec3f>(y, x) = cv::Vec3f::all(((x / 2 + y / 2) % 2));
   const EquirectSampler sampler(checker, {SampleFilter::Bilinear, PoleRows::Clamp});
   const ViewCamera cam = ViewCamera::from_horizontal_fov({{0, 0}, 0}, 60.0, 60, 20);
   const auto blur_right = [](const Direction& d) {

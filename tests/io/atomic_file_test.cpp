@@ -1,6 +1,7 @@
 /// @file
 /// @brief write_file_atomic: replaces whole files, and a failed write leaves the old file.
-#include "io_test_util.h"
+#include "io/atomic_file.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -8,8 +9,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io_test_util.h"
 
 namespace vdfx::io {
 namespace {

@@ -1,8 +1,8 @@
 /// @file
 /// @brief Exact time -> frame mapping over hours of NTSC-rate playback.
-#include <gtest/gtest.h>
-
 #include "io/frame_time.h"
+
+#include <gtest/gtest.h>
 
 namespace vdfx::io {
 namespace {
@@ -30,9 +30,9 @@ struct HourCase {
 // 3600 * 30000 / 1001 = 107892.107..., 36000 * 30000 / 1001 = 1078921.078...
 // 3600 * 24000 / 1001 = 86313.686...,   36000 * 24000 / 1001 = 863136.863...
 const HourCase kHours[] = {
-    {{30000, 1001}, kHour, 107892},     {{30000, 1001}, 10 * kHour, 1078921},
-    {{24000, 1001}, kHour, 86313},      {{24000, 1001}, 10 * kHour, 863136},
-    {{25, 1}, 10 * kHour, 900000},      {{30000, 1001}, 0, 0},
+    {{30000, 1001}, kHour, 107892}, {{30000, 1001}, 10 * kHour, 1078921},
+    {{24000, 1001}, kHour, 86313},  {{24000, 1001}, 10 * kHour, 863136},
+    {{25, 1}, 10 * kHour, 900000},  {{30000, 1001}, 0, 0},
 };
 
 TEST(FrameTime, ExactAtHours) {
@@ -42,9 +42,9 @@ TEST(FrameTime, ExactAtHours) {
 
 TEST(FrameTime, FrameStartsMapToTheirFrameAndOneNanosecondEarlierToThePrevious) {
   for (const Rational fps : {Rational{30000, 1001}, Rational{24000, 1001}, Rational{60, 1}}) {
-    for (const std::int64_t k : {std::int64_t{1}, std::int64_t{2}, std::int64_t{1000},
-                                 std::int64_t{107892}, std::int64_t{1078920}, std::int64_t{1078921},
-                                 std::int64_t{2000003}}) {
+    for (const std::int64_t k :
+         {std::int64_t{1}, std::int64_t{2}, std::int64_t{1000}, std::int64_t{107892},
+          std::int64_t{1078920}, std::int64_t{1078921}, std::int64_t{2000003}}) {
       const std::int64_t s = frame_start_ns(k, fps);
       EXPECT_EQ(frame_at_time(s, fps), k) << k;
       EXPECT_EQ(frame_at_time(s - 1, fps), k - 1) << k;
@@ -59,7 +59,8 @@ TEST(FrameTime, FrameStartsMapToTheirFrameAndOneNanosecondEarlierToThePrevious) 
 TEST(FrameTime, ExactAtFrameStartsOverTenHours) {
   // Every frame start over 10 h of 29.97 fps (spot-checked every 9973 frames).
   const Rational fps{30000, 1001};
-  for (std::int64_t k = 0; k < 1100000; k += 9973) EXPECT_EQ(frame_at_time(frame_start_ns(k, fps), fps), k);
+  for (std::int64_t k = 0; k < 1100000; k += 9973)
+    EXPECT_EQ(frame_at_time(frame_start_ns(k, fps), fps), k);
 }
 
 TEST(FrameTime, PlaybackFrameLoopsOrClamps) {

@@ -49,7 +49,8 @@ TEST(HidReader, ReportsThenLossThenReopen) {
   int opens = 0;
   auto opener = [&opens]() -> std::unique_ptr<HidDevice> {
     ++opens;
-    if (opens == 1) return std::make_unique<MockDevice>(std::deque<std::vector<std::uint8_t>>{{1, 2}, {3}, {}});
+    if (opens == 1)
+      return std::make_unique<MockDevice>(std::deque<std::vector<std::uint8_t>>{{1, 2}, {3}, {}});
     if (opens == 2) return nullptr;  // still unplugged at the first retry
     return std::make_unique<MockDevice>(std::deque<std::vector<std::uint8_t>>{{4, 5, 6}});
   };
@@ -79,7 +80,8 @@ TEST(HidReader, ReportsThenLossThenReopen) {
 TEST(HidReader, NeverOpeningDeviceReportsStatusAndStopsCleanly) {
   HidReaderOptions opt;
   opt.reopen_interval_ms = 5;
-  HidReader reader("0000:0001", [] { return std::unique_ptr<HidDevice>(); }, opt);
+  HidReader reader(
+      "0000:0001", [] { return std::unique_ptr<HidDevice>(); }, opt);
   ASSERT_TRUE(wait_for([&] { return reader.status().find("not found") != std::string::npos; }));
   EXPECT_FALSE(reader.connected());
   EXPECT_TRUE(reader.drain().empty());

@@ -1,6 +1,7 @@
 /// @file
 /// @brief Still images: depth scaling, channel order, tone mapping of radiance, clear errors.
-#include "io_test_util.h"
+#include "io/image_source.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,9 +10,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "io/image_source.h"
 #include "io/input_error.h"
 #include "io/tone_map.h"
+#include "io_test_util.h"
 
 namespace vdfx::io {
 namespace {
@@ -89,7 +90,8 @@ TEST(ToneMap, MatchesReinhardGlobalOperator) {
   const cv::Mat out = tone_map_reinhard(lin);
   for (int x = 0; x < 2; ++x) {
     const cv::Vec3f e = reinhard_expected(lin.at<cv::Vec3f>(0, x), l_avg);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(out.at<cv::Vec3f>(0, x)[k], e[k], 1e-6) << x << "," << k;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(out.at<cv::Vec3f>(0, x)[k], e[k], 1e-6) << x << "," << k;
   }
 }
 
@@ -203,7 +205,8 @@ TEST(ImageSource, FramesBeyondTheSizeLimitAreRefusedNamingTheFile) {
     load_image(wide);
     FAIL() << "accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(wide.string() + ": the image is 16385x1"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find(wide.string() + ": the image is 16385x1"),
+              std::string::npos)
         << e.what();
   }
   EXPECT_NO_THROW(check_frame_size("f", kMaxFrameSide, kMaxFrameSide / 2));

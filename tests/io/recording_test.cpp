@@ -6,7 +6,6 @@
 #include <sys/resource.h>
 
 #include <csignal>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,7 +15,8 @@
 namespace vdfx::io {
 namespace {
 
-const std::string kHeader = R"({"format":"vdfx.recording","version":1,"hmd":"sim","video":null,"note":"t"})";
+const std::string kHeader =
+    R"({"format":"vdfx.recording","version":1,"hmd":"sim","video":null,"note":"t"})";
 const std::string kSample1 =
     R"({"t_ns":10,"head":{"q":[1,0,0,0],"p":[0,1.6,0]},"right":{"aim":{"q":[1,0,0,0],"p":[0.2,1.3,-0.3]},"trigger":1.0,"squeeze":0.0,"stick":[0.0,0.0],"buttons":{"a":false,"b":true,"stick":false}}})";
 const std::string kSample2 = R"({"t_ns":20,"head":{"q":[0,0,1,0],"p":[0,1.6,0]}})";
@@ -103,7 +103,9 @@ TEST(Recording, SampleLineHasTheContractsFieldOrderAndButtonNames) {
   ASSERT_NE(left, std::string::npos);
   ASSERT_NE(right, std::string::npos);
   EXPECT_LT(left, right);
-  EXPECT_NE(line.find(R"("buttons":{"x":true,"y":false,"menu":true,"stick":false})"), std::string::npos) << line;
+  EXPECT_NE(line.find(R"("buttons":{"x":true,"y":false,"menu":true,"stick":false})"),
+            std::string::npos)
+      << line;
   EXPECT_NE(line.find(R"("buttons":{"a":false,"b":true,"stick":true})"), std::string::npos) << line;
   EXPECT_EQ(format_header_line({"sim", std::nullopt, "n"}),
             R"({"format":"vdfx.recording","version":1,"hmd":"sim","video":null,"note":"n"})");
@@ -121,8 +123,10 @@ TEST(Recording, WriterFlushesEveryLine) {
 }
 
 TEST(Recording, ContractExampleParses) {
-  const std::string text = kHeader + "\n" +
-      R"({"t_ns": 11111111, "head": {"q": [1,0,0,0], "p": [0,1.6,0]}, "left":  {"aim": {"q": [1,0,0,0], "p": [-0.2,1.3,-0.3]}, "trigger": 0.0, "squeeze": 0.0, "stick": [0.0, 0.0], "buttons": {"x": false, "y": false, "menu": false, "stick": false}}, "right": {"aim": {"q": [1,0,0,0], "p": [0.2,1.3,-0.3]}, "trigger": 1.0, "squeeze": 0.0, "stick": [0.0, 0.0], "buttons": {"a": false, "b": false, "stick": false}}})" "\n";
+  const std::string text =
+      kHeader + "\n" +
+      R"({"t_ns": 11111111, "head": {"q": [1,0,0,0], "p": [0,1.6,0]}, "left":  {"aim": {"q": [1,0,0,0], "p": [-0.2,1.3,-0.3]}, "trigger": 0.0, "squeeze": 0.0, "stick": [0.0, 0.0], "buttons": {"x": false, "y": false, "menu": false, "stick": false}}, "right": {"aim": {"q": [1,0,0,0], "p": [0.2,1.3,-0.3]}, "trigger": 1.0, "squeeze": 0.0, "stick": [0.0, 0.0], "buttons": {"a": false, "b": false, "stick": false}}})"
+      "\n";
   std::istringstream in(text);
   const Recording rec = parse_recording(in, "example.vdrec.jsonl");
   ASSERT_EQ(rec.lines.size(), 1u);
@@ -137,31 +141,100 @@ struct BadCase {
 };
 
 const BadCase kBad[] = {
-    {"bad_json", kHeader + "\n" + kSample1 + "\n{\"t_ns\": 30, \"head\": }\n" + kSample2 + "\n", 3, "bad JSON"},
+    {"bad_json", kHeader + "\n" + kSample1 + "\n{\"t_ns\": 30, \"head\": }\n" + kSample2 + "\n", 3,
+     "bad JSON"},
     {"empty_file", "", 1, "missing the recording header"},
     {"missing_header", kSample1 + "\n", 1, "missing field \"format\""},
-    {"wrong_format", R"({"format":"vdfx.sidecar","version":1,"hmd":"x","video":null,"note":""})" "\n", 1, "/format"},
-    {"wrong_version", R"({"format":"vdfx.recording","version":2,"hmd":"x","video":null,"note":""})" "\n", 1, "unsupported version 2"},
-    {"header_missing_hmd", R"({"format":"vdfx.recording","version":1,"video":null,"note":""})" "\n", 1, "\"hmd\""},
-    {"non_increasing_time", kHeader + "\n" + kSample2 + "\n" + kSample1 + "\n", 3, "before the previous"},
-    {"repeated_sample_time", kHeader + "\n" + kSample1 + "\n" + kSample1 + "\n", 3, "must strictly increase"},
-    {"infinite_number", kHeader + "\n" + R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,1e999,0]}})" "\n", 2, "number overflow"},
-    {"nan_token", kHeader + "\n" + R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,NaN,0]}})" "\n", 2, "bad JSON"},
-    {"non_unit_quaternion", kHeader + "\n" + R"({"t_ns":1,"head":{"q":[1,0,0.1,0],"p":[0,1.6,0]}})" "\n", 2, "/head/q: quaternion norm"},
-    {"wrong_type_time", kHeader + "\n" + R"({"t_ns":"1","head":{"q":[1,0,0,0],"p":[0,1.6,0]}})" "\n", 2, "/t_ns: expected an integer"},
-    {"wrong_type_button", kHeader + "\n" + R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,0,0]},"right":{"aim":{"q":[1,0,0,0],"p":[0,0,0]},"trigger":0,"squeeze":0,"stick":[0,0],"buttons":{"a":1,"b":false,"stick":false}}})" "\n", 2, "/right/buttons/a: expected true or false"},
-    {"trigger_out_of_range", kHeader + "\n" + R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,0,0]},"right":{"aim":{"q":[1,0,0,0],"p":[0,0,0]},"trigger":1.5,"squeeze":0,"stick":[0,0],"buttons":{"a":false,"b":false,"stick":false}}})" "\n", 2, "/right/trigger: value 1.5 outside"},
-    {"missing_head", kHeader + "\n" + R"({"t_ns":1})" "\n", 2, "missing field \"head\""},
-    {"wrong_stick_length", kHeader + "\n" + R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,0,0]},"left":{"aim":{"q":[1,0,0,0],"p":[0,0,0]},"trigger":0,"squeeze":0,"stick":[0],"buttons":{"x":false,"y":false,"menu":false,"stick":false}}})" "\n", 2, "/left/stick: expected an array of 2"},
-    {"unknown_field", kHeader + "\n" + R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,0,0]},"heed":1})" "\n", 2, "unknown field \"heed\""},
-    {"menu_on_right_hand", kHeader + "\n" + R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,0,0]},"right":{"aim":{"q":[1,0,0,0],"p":[0,0,0]},"trigger":0,"squeeze":0,"stick":[0,0],"buttons":{"a":false,"b":false,"menu":false,"stick":false}}})" "\n", 2, "unknown field \"menu\""},
-    {"bad_hex", kHeader + "\n" + R"({"t_ns":1,"hid":{"device":"054c:05c4","report":"0g"}})" "\n", 2, "/hid/report: not a hex digit"},
-    {"hid_both_keys", kHeader + "\n" + R"({"t_ns":1,"hid":{"device":"054c:05c4","report":"00","descriptor":"00"}})" "\n", 2, "exactly one of"},
-    {"truncated_middle_line", kHeader + "\n" + kSample1.substr(0, 40) + "\n" + kSample2 + "\n", 2, "bad JSON"},
+    {"wrong_format",
+     R"({"format":"vdfx.sidecar","version":1,"hmd":"x","video":null,"note":""})"
+     "\n",
+     1, "/format"},
+    {"wrong_version",
+     R"({"format":"vdfx.recording","version":2,"hmd":"x","video":null,"note":""})"
+     "\n",
+     1, "unsupported version 2"},
+    {"header_missing_hmd",
+     R"({"format":"vdfx.recording","version":1,"video":null,"note":""})"
+     "\n",
+     1, "\"hmd\""},
+    {"non_increasing_time", kHeader + "\n" + kSample2 + "\n" + kSample1 + "\n", 3,
+     "before the previous"},
+    {"repeated_sample_time", kHeader + "\n" + kSample1 + "\n" + kSample1 + "\n", 3,
+     "must strictly increase"},
+    {"infinite_number",
+     kHeader + "\n" +
+         R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,1e999,0]}})"
+         "\n",
+     2, "number overflow"},
+    {"nan_token",
+     kHeader + "\n" +
+         R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,NaN,0]}})"
+         "\n",
+     2, "bad JSON"},
+    {"non_unit_quaternion",
+     kHeader + "\n" +
+         R"({"t_ns":1,"head":{"q":[1,0,0.1,0],"p":[0,1.6,0]}})"
+         "\n",
+     2, "/head/q: quaternion norm"},
+    {"wrong_type_time",
+     kHeader + "\n" +
+         R"({"t_ns":"1","head":{"q":[1,0,0,0],"p":[0,1.6,0]}})"
+         "\n",
+     2, "/t_ns: expected an integer"},
+    {"wrong_type_button",
+     kHeader + "\n" +
+         R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,0,0]},"right":{"aim":{"q":[1,0,0,0],"p":[0,0,0]},"trigger":0,"squeeze":0,"stick":[0,0],"buttons":{"a":1,"b":false,"stick":false}}})"
+         "\n",
+     2, "/right/buttons/a: expected true or false"},
+    {"trigger_out_of_range",
+     kHeader + "\n" +
+         R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,0,0]},"right":{"aim":{"q":[1,0,0,0],"p":[0,0,0]},"trigger":1.5,"squeeze":0,"stick":[0,0],"buttons":{"a":false,"b":false,"stick":false}}})"
+         "\n",
+     2, "/right/trigger: value 1.5 outside"},
+    {"missing_head",
+     kHeader + "\n" +
+         R"({"t_ns":1})"
+         "\n",
+     2, "missing field \"head\""},
+    {"wrong_stick_length",
+     kHeader + "\n" +
+         R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,0,0]},"left":{"aim":{"q":[1,0,0,0],"p":[0,0,0]},"trigger":0,"squeeze":0,"stick":[0],"buttons":{"x":false,"y":false,"menu":false,"stick":false}}})"
+         "\n",
+     2, "/left/stick: expected an array of 2"},
+    {"unknown_field",
+     kHeader + "\n" +
+         R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,0,0]},"heed":1})"
+         "\n",
+     2, "unknown field \"heed\""},
+    {"menu_on_right_hand",
+     kHeader + "\n" +
+         R"({"t_ns":1,"head":{"q":[1,0,0,0],"p":[0,0,0]},"right":{"aim":{"q":[1,0,0,0],"p":[0,0,0]},"trigger":0,"squeeze":0,"stick":[0,0],"buttons":{"a":false,"b":false,"menu":false,"stick":false}}})"
+         "\n",
+     2, "unknown field \"menu\""},
+    {"bad_hex",
+     kHeader + "\n" +
+         R"({"t_ns":1,"hid":{"device":"054c:05c4","report":"0g"}})"
+         "\n",
+     2, "/hid/report: not a hex digit"},
+    {"hid_both_keys",
+     kHeader + "\n" +
+         R"({"t_ns":1,"hid":{"device":"054c:05c4","report":"00","descriptor":"00"}})"
+         "\n",
+     2, "exactly one of"},
+    {"truncated_middle_line", kHeader + "\n" + kSample1.substr(0, 40) + "\n" + kSample2 + "\n", 2,
+     "bad JSON"},
     {"blank_line", kHeader + "\n\n" + kSample2 + "\n", 2, "empty line"},
     // Issue 11, class 7: 2^63 ns wrapped to a negative time, accepted on the first sample.
-    {"time_beyond_int64", kHeader + "\n" + R"({"t_ns":9223372036854775808,"head":{"q":[1,0,0,0],"p":[0,0,0]}})" "\n", 2, "/t_ns: time 9223372036854775808 is beyond the largest time"},
-    {"hid_time_beyond_int64", kHeader + "\n" + R"({"t_ns":18446744073709551615,"hid":{"device":"054c:05c4","report":"00"}})" "\n", 2, "is beyond the largest time"},
+    {"time_beyond_int64",
+     kHeader + "\n" +
+         R"({"t_ns":9223372036854775808,"head":{"q":[1,0,0,0],"p":[0,0,0]}})"
+         "\n",
+     2, "/t_ns: time 9223372036854775808 is beyond the largest time"},
+    {"hid_time_beyond_int64",
+     kHeader + "\n" +
+         R"({"t_ns":18446744073709551615,"hid":{"device":"054c:05c4","report":"00"}})"
+         "\n",
+     2, "is beyond the largest time"},
 };
 
 class RecordingErrors : public ::testing::TestWithParam<BadCase> {};
@@ -174,7 +247,8 @@ TEST_P(RecordingErrors, NameFileAndLine) {
     FAIL() << "accepted " << c.name;
   } catch (const InputError& e) {
     const std::string msg = e.what();
-    EXPECT_NE(msg.find("bad.vdrec.jsonl:" + std::to_string(c.line) + ":"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("bad.vdrec.jsonl:" + std::to_string(c.line) + ":"), std::string::npos)
+        << msg;
     EXPECT_NE(msg.find(c.what), std::string::npos) << msg;
   }
 }
@@ -187,7 +261,8 @@ TEST(Recording, TruncatedLastLineIsDroppedWithAWarning) {
   const Recording rec = parse_recording(in, "crash.vdrec.jsonl");
   ASSERT_EQ(rec.lines.size(), 1u);
   ASSERT_EQ(rec.warnings.size(), 1u);
-  EXPECT_NE(rec.warnings[0].find("crash.vdrec.jsonl:3: truncated last line"), std::string::npos) << rec.warnings[0];
+  EXPECT_NE(rec.warnings[0].find("crash.vdrec.jsonl:3: truncated last line"), std::string::npos)
+      << rec.warnings[0];
 }
 
 TEST(Recording, CompleteLastLineWithoutNewlineIsKept) {
@@ -237,7 +312,8 @@ TEST(Recording, AFullDiskIsAnInputErrorNamingTheFileAndKeepsEarlierLines) {
     ::setrlimit(RLIMIT_FSIZE, &old);
   }
   std::signal(SIGXFSZ, old_handler);
-  EXPECT_NE(message.find(path.string() + ": cannot write the recording"), std::string::npos) << message;
+  EXPECT_NE(message.find(path.string() + ": cannot write the recording"), std::string::npos)
+      << message;
   EXPECT_GT(written, 0);
   EXPECT_LT(written, 100);
   // Exactly the lines written before the failure read back: the part of the failed line that got

@@ -126,9 +126,15 @@ TEST(SidecarDerived, FlareAndGrainEntriesKeepTheSameLimits) {
   doc["effects"] = {
       {{"type", "flare"}, {"style", "headset"}, {"light", "auto"}, {"keyframes", many}},
       {{"type", "grain"}, {"style", "headset"}, {"seed", 1}, {"keyframes", many_grain}},
-      {{"type", "flare"}, {"style", "headset"}, {"light", "auto"}, {"interpolation", tiny},
+      {{"type", "flare"},
+       {"style", "headset"},
+       {"light", "auto"},
+       {"interpolation", tiny},
        {"keyframes", nlohmann::json::array()}},
-      {{"type", "grain"}, {"style", "headset"}, {"seed", 1}, {"interpolation", tiny},
+      {{"type", "grain"},
+       {"style", "headset"},
+       {"seed", 1},
+       {"interpolation", tiny},
        {"keyframes", nlohmann::json::array()}},
       exposure};
   std::vector<Problem> problems;
@@ -139,7 +145,8 @@ TEST(SidecarDerived, FlareAndGrainEntriesKeepTheSameLimits) {
   ASSERT_EQ(problems.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(problems[i].pointer, expected[i]) << problems[i].message;
-    EXPECT_NE(problems[i].message.find(i < 2 ? "4097 keyframes, more than the 4096" : "time_scale must be at least"),
+    EXPECT_NE(problems[i].message.find(i < 2 ? "4097 keyframes, more than the 4096"
+                                             : "time_scale must be at least"),
               std::string::npos)
         << problems[i].message;
   }

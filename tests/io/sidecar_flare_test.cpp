@@ -172,7 +172,9 @@ const BrokenCase kBroken[] = {
 
 class SidecarFlareBroken : public ::testing::TestWithParam<BrokenCase> {};
 
-TEST_P(SidecarFlareBroken, ReportsPointerAndReason) { EXPECT_TRUE(test::reports_as_expected(kValid, GetParam())); }
+TEST_P(SidecarFlareBroken, ReportsPointerAndReason) {
+  EXPECT_TRUE(test::reports_as_expected(kValid, GetParam()));
+}
 
 INSTANTIATE_TEST_SUITE_P(Cases, SidecarFlareBroken, ::testing::ValuesIn(kBroken),
                          [](const auto& info) { return std::string(info.param.name); });

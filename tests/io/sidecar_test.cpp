@@ -1,5 +1,7 @@
 /// @file
 /// @brief Sidecar format 1: every error class reported with its pointer, and exact round trips.
+#include "io/sidecar.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,7 +11,6 @@
 #include <sstream>
 
 #include "io/input_error.h"
-#include "io/sidecar.h"
 #include "io/sidecar_validate.h"
 #include "tests/test_files.h"
 
@@ -77,7 +78,8 @@ struct BrokenCase {
 
 const BrokenCase kBroken[] = {
     {"missing_format", [](json& j) { j.erase("format"); }, "", "missing field \"format\""},
-    {"wrong_format", [](json& j) { j["format"] = "other"; }, "/format", "expected \"vdfx.sidecar\""},
+    {"wrong_format", [](json& j) { j["format"] = "other"; }, "/format",
+     "expected \"vdfx.sidecar\""},
     {"format_not_string", [](json& j) { j["format"] = 1; }, "/format", "expected a string"},
     {"version_2", [](json& j) { j["version"] = 2; }, "/version", "only version 1"},
     {"version_string", [](json& j) { j["version"] = "1"; }, "/version", "expected an integer"},
@@ -118,7 +120,8 @@ const BrokenCase kBroken[] = {
      "/interpolation/distance", "unknown distance"},
     {"outside_span_unknown", [](json& j) { j["interpolation"]["outside_span"] = "clamp"; },
      "/interpolation/outside_span", "expected hold or extrapolate"},
-    {"outside_span_not_string", [](json& j) { j["effects"][1]["interpolation"]["outside_span"] = 1; },
+    {"outside_span_not_string",
+     [](json& j) { j["effects"][1]["interpolation"]["outside_span"] = 1; },
      "/effects/1/interpolation/outside_span", "expected a string"},
     {"effect_interp_bad", [](json& j) { j["effects"][1]["interpolation"]["exponent"] = -1; },
      "/effects/1/interpolation/exponent", "out of range"},
@@ -126,8 +129,13 @@ const BrokenCase kBroken[] = {
      "expected an array"},
     {"effect_not_object", [](json& j) { j["effects"][0] = 3; }, "/effects/0", "expected an object"},
     {"unknown_type", [](json& j) { j["effects"][0]["type"] = "sparkle"; }, "/effects/0/type",
-     "unknown effect type \"sparkle\" (known: blur, tint, exposure, saturation, contrast, vignette, flare, grain)"},
-    {"type_twice", [](json& j) { j["effects"][2]["type"] = "exposure"; j["effects"][2]["keyframes"] = json::array(); },
+     "unknown effect type \"sparkle\" (known: blur, tint, exposure, saturation, contrast, "
+     "vignette, flare, grain)"},
+    {"type_twice",
+     [](json& j) {
+       j["effects"][2]["type"] = "exposure";
+       j["effects"][2]["keyframes"] = json::array();
+     },
      "/effects/2/type", "appears twice (first at /effects/0)"},
     {"missing_type", [](json& j) { j["effects"][0].erase("type"); }, "/effects/0",
      "missing field \"type\""},
@@ -157,27 +165,41 @@ const BrokenCase kBroken[] = {
      "/effects/0/keyframes/0/roll", "unknown field"},
     {"params_missing", [](json& j) { j["effects"][0]["keyframes"][0].erase("params"); },
      "/effects/0/keyframes/0", "missing field \"params\""},
-    {"param_missing", [](json& j) { j["effects"][2]["keyframes"][0]["params"].erase("falloff_deg"); },
+    {"param_missing",
+     [](json& j) { j["effects"][2]["keyframes"][0]["params"].erase("falloff_deg"); },
      "/effects/2/keyframes/0/params", "missing field \"falloff_deg\""},
     {"param_unknown", [](json& j) { j["effects"][0]["keyframes"][0]["params"]["ev"] = 1; },
-     "/effects/0/keyframes/0/params/ev", "unknown parameter \"ev\" for effect exposure (expected: stops)"},
-    {"param_out_of_range", [](json& j) { j["effects"][0]["keyframes"][0]["params"]["stops"] = 8.5; },
+     "/effects/0/keyframes/0/params/ev",
+     "unknown parameter \"ev\" for effect exposure (expected: stops)"},
+    {"param_out_of_range",
+     [](json& j) { j["effects"][0]["keyframes"][0]["params"]["stops"] = 8.5; },
      "/effects/0/keyframes/0/params/stops", "out of range [-8, 8]"},
-    {"vignette_falloff_zero", [](json& j) { j["effects"][2]["keyframes"][0]["params"]["falloff_deg"] = 0; },
+    {"vignette_falloff_zero",
+     [](json& j) { j["effects"][2]["keyframes"][0]["params"]["falloff_deg"] = 0; },
      "/effects/2/keyframes/0/params/falloff_deg", "out of range [0.01, 180]"},
-    {"tint_short", [](json& j) { j["effects"][1]["keyframes"][0]["params"]["gain"] = {1.0, 1.0}; },
+    {"tint_short",
+     [](json& j) {
+       j["effects"][1]["keyframes"][0]["params"]["gain"] = {1.0, 1.0};
+     },
      "/effects/1/keyframes/0/params/gain", "expected an array of 3 numbers, found 2"},
-    {"tint_long", [](json& j) { j["effects"][1]["keyframes"][0]["params"]["gain"] = {1, 1, 1, 1}; },
+    {"tint_long",
+     [](json& j) {
+       j["effects"][1]["keyframes"][0]["params"]["gain"] = {1, 1, 1, 1};
+     },
      "/effects/1/keyframes/0/params/gain", "found 4"},
     {"tint_scalar", [](json& j) { j["effects"][1]["keyframes"][0]["params"]["gain"] = 1.0; },
      "/effects/1/keyframes/0/params/gain", "expected an array of 3 numbers, found number"},
-    {"tint_component_range", [](json& j) { j["effects"][1]["keyframes"][1]["params"]["gain"][1] = 4.5; },
+    {"tint_component_range",
+     [](json& j) { j["effects"][1]["keyframes"][1]["params"]["gain"][1] = 4.5; },
      "/effects/1/keyframes/1/params/gain/1", "out of range [0, 4]"},
-    {"tint_component_type", [](json& j) { j["effects"][1]["keyframes"][1]["params"]["gain"][2] = "x"; },
+    {"tint_component_type",
+     [](json& j) { j["effects"][1]["keyframes"][1]["params"]["gain"][2] = "x"; },
      "/effects/1/keyframes/1/params/gain/2", "expected a number"},
 };
 
-void PrintTo(const BrokenCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const BrokenCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class SidecarBroken : public ::testing::TestWithParam<BrokenCase> {};
 
@@ -226,14 +248,17 @@ const TextCase kBrokenText[] = {
     {"nan_literal", "{\"format\": NaN}", "", "line 1, column 12"},
     {"infinity_literal", "{\n\"version\": Infinity}", "", "line 2, column"},
     {"overflow", "{\"format\": \"vdfx.sidecar\",\n \"version\": 1e400}", "", "number overflow"},
-    {"overflow_line", "{\"format\": \"vdfx.sidecar\",\n \"version\": 1e400}", "", "line 2, column 13"},
+    {"overflow_line", "{\"format\": \"vdfx.sidecar\",\n \"version\": 1e400}", "",
+     "line 2, column 13"},
     {"empty", "", "", "line 1, column 1"},
     {"truncated", "{\"format\": \"vdfx.sidecar\", \"video\": {\"fps\": 3", "", "invalid JSON"},
     {"duplicate_key", "{\"format\": \"vdfx.sidecar\", \"format\": \"vdfx.sidecar\"}", "/format",
      "duplicate key"},
 };
 
-void PrintTo(const TextCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const TextCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class SidecarBrokenText : public ::testing::TestWithParam<TextCase> {};
 
@@ -278,7 +303,8 @@ TEST(Sidecar, ReadSidecarThrowsListingEveryProblemWithTheFileName) {
     const std::string what = e.what();
     EXPECT_NE(what.find(path.string() + ": /video/width: "), std::string::npos) << what;
     EXPECT_NE(what.find(path.string() + ": /effects/0/type: unknown effect type \"glow\""),
-              std::string::npos) << what;
+              std::string::npos)
+        << what;
   }
   EXPECT_THROW(read_sidecar(dir / "missing.vdfx.json"), InputError);
   const SidecarReport missing = validate_sidecar_file(dir / "missing.vdfx.json");
@@ -294,10 +320,10 @@ Sidecar awkward_sidecar() {
   effects::EffectTrack blur{effects::EffectType::Blur, std::nullopt, {}};
   blur.keyframes.push_back({{179.99999999999997, -89.999999999999986}, 107891, {1e-300}});
   blur.keyframes.push_back({{180.0, 90.0}, 0, {10.0}});
-  effects::EffectTrack tint{effects::EffectType::Tint,
-                            effects::InterpolationSettings{1.9999999999999998, 1000.0,
-                                                           effects::AngularDistance::Chordal},
-                            {}};
+  effects::EffectTrack tint{
+      effects::EffectType::Tint,
+      effects::InterpolationSettings{1.9999999999999998, 1000.0, effects::AngularDistance::Chordal},
+      {}};
   tint.keyframes.push_back({{-179.99999999999997, 5e-324}, 3, {0.1, 2.0 / 3.0, 4.0}});
   effects::EffectTrack vignette{effects::EffectType::Vignette, std::nullopt, {}};
   vignette.keyframes.push_back({{0.0, 0.0}, 42, {123.456789012345678, 0.01}});

@@ -55,7 +55,8 @@ std::vector<SeekCase> seek_cases() {
   ClipSpec vfr = c;
   vfr.options = {{"qp", "12"}};
   vfr.time_base = {1, 1000};
-  for (int i = 0; i < vfr.frames; ++i) vfr.pts.push_back(i * 40 + (i % 3 == 0 ? 0 : 13) + (i / 7) * 25);
+  for (int i = 0; i < vfr.frames; ++i)
+    vfr.pts.push_back(i * 40 + (i % 3 == 0 ? 0 : 13) + (i / 7) * 25);
   v.push_back({"h264_vfr.mkv", vfr});
   return v;
 }
@@ -93,7 +94,9 @@ TEST(LibavDecoder, FrameCountAndExactRate) {
   const struct {
     const char* name;
     Rational fps;
-  } cases[] = {{"ntsc.mp4", {30000, 1001}}, {"pal.mkv", {25, 1}}, {"film.mov", {24000, 1001}},
+  } cases[] = {{"ntsc.mp4", {30000, 1001}},
+               {"pal.mkv", {25, 1}},
+               {"film.mov", {24000, 1001}},
                {"sixty.mp4", {60, 1}}};
   for (const auto& c : cases) {
     ClipSpec s;
@@ -112,7 +115,8 @@ TEST(LibavDecoder, FrameCountAndExactRate) {
     // Timestamps: one frame duration apart, in the container's time base.
     ASSERT_TRUE(d->timestamp(0) && d->timestamp(36));
     const double span = static_cast<double>(*d->timestamp(36) - *d->timestamp(0)) *
-                        static_cast<double>(pr.time_base.num) / static_cast<double>(pr.time_base.den);
+                        static_cast<double>(pr.time_base.num) /
+                        static_cast<double>(pr.time_base.den);
     EXPECT_NEAR(span, 36.0 / c.fps.value(), 1e-3) << c.name;
   }
 }
@@ -122,7 +126,8 @@ TEST(LibavDecoder, VariableFrameRateKeepsEveryFrameAndItsTime) {
   ClipSpec s;
   s.frames = 30;
   s.time_base = {1, 1000};
-  for (int i = 0; i < s.frames; ++i) s.pts.push_back(i < 10 ? i * 33 : 330 + (i - 10) * 100);  // 30 fps, then 10
+  for (int i = 0; i < s.frames; ++i)
+    s.pts.push_back(i < 10 ? i * 33 : 330 + (i - 10) * 100);  // 30 fps, then 10
   const fs::path p = test_media::write_clip(dir / "vfr.mkv", s);
   auto d = open_frame_decoder(p);
   const VideoProperties& pr = d->properties();

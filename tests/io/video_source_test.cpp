@@ -3,26 +3,26 @@
 /// missing files. Videos are generated at runtime with FFmpeg's libraries (tests/media_clips.h;
 /// H.264 with B-frames unless said otherwise); each frame carries its index as 8 black/white
 /// stripes, so a test can read back which frame it got.
-#include "io_test_util.h"
+#include "io/video_source.h"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
-
-#include "io/ycbcr.h"
-#include "tests/media_clips.h"
-#include <mutex>
 #include <set>
 #include <thread>
 
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
-#include "io/video_source.h"
+#include "io/ycbcr.h"
+#include "io_test_util.h"
+#include "tests/media_clips.h"
 
 namespace vdfx::io {
 namespace {
@@ -32,15 +32,17 @@ using namespace std::chrono_literals;
 
 constexpr int kW = 128, kH = 64;
 
-using testing::temp_dir;
 using test_media::coded_frame;
+using testing::temp_dir;
 
 /// The stripes of a decoded picture (converted on the CPU, the reference path).
-int frame_code(const Picture& p) { return test_media::frame_code(to_rgb(p, PixelFormat::Rgb8)); }
+int frame_code(const Picture& p) {
+  return test_media::frame_code(to_rgb(p, PixelFormat::Rgb8));
+}
 
 /// An H.264 MP4 (B-frames, key frame every `gop`, 0: x264's default of 250).
-fs::path write_video(const fs::path& dir, const std::string& name, int frames, io::Rational fps = {24, 1},
-                     int gop = 12) {
+fs::path write_video(const fs::path& dir, const std::string& name, int frames,
+                     io::Rational fps = {24, 1}, int gop = 12) {
   test_media::ClipSpec c;
   c.frames = frames;
   c.fps = fps;
@@ -51,7 +53,8 @@ fs::path write_video(const fs::path& dir, const std::string& name, int frames, i
 /// An MJPEG AVI written by OpenCV's videoio: a file another tool made.
 fs::path write_opencv_mjpeg(const fs::path& dir, const std::string& name, int frames) {
   const fs::path p = dir / name;
-  cv::VideoWriter w(p.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 24.0, cv::Size(kW, kH));
+  cv::VideoWriter w(p.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 24.0,
+                    cv::Size(kW, kH));
   if (!w.isOpened()) ADD_FAILURE() << "cannot write " << p << " with this OpenCV";
   cv::Mat bgr;
   for (int i = 0; i < frames; ++i) {
@@ -282,9 +285,8 @@ TEST(VideoSource, MissingAndGarbageFilesAreInputErrors) {
   const struct {
     fs::path path;
     const char* reason;
-  } cases[] = {{dir / "missing.mp4", "no such file"},
-               {dir / "junk.mp4", "cannot"},
-               {dir, "is a folder"}};
+  } cases[] = {
+      {dir / "missing.mp4", "no such file"}, {dir / "junk.mp4", "cannot"}, {dir, "is a folder"}};
   for (const auto& c : cases) {
     try {
       VideoSource::open(c.path, quiet());
@@ -349,7 +351,8 @@ TEST(VideoSource, TruncatedFileFailsClearlyOrEndsGracefully) {
       EXPECT_LT(last, 59) << cut;  // the cut is never papered over with frames that are not there
       // Fewer frames than the container promised is said, not silent.
       const VideoProperties& pr = src->properties();
-      EXPECT_TRUE(pr.frames < 60 || src->stats().ended_early || src->stats().decode_errors > 0) << cut;
+      EXPECT_TRUE(pr.frames < 60 || src->stats().ended_early || src->stats().decode_errors > 0)
+          << cut;
       if (pr.declared_frames > pr.frames) {
         std::lock_guard lock(warnings_mutex);
         ASSERT_FALSE(warnings.empty()) << cut;

@@ -1,13 +1,14 @@
 /// @file
 /// @brief Canvas coverage, premultiplication, clipping, images; theme contrast; colour maths.
 #include "ui/canvas.h"
-#include "ui/colour.h"
-#include "ui/colour_wheel.h"
-#include "ui/theme.h"
 
 #include <gtest/gtest.h>
 
 #include <numbers>
+
+#include "ui/colour.h"
+#include "ui/colour_wheel.h"
+#include "ui/theme.h"
 
 namespace vdfx::ui {
 namespace {

@@ -1,8 +1,13 @@
 /// @file
 /// @brief Damage tracking: which rectangles a change dirties, and that a partial re-render gives
 /// exactly the pixels of a full render of the same state.
-#include "sample_panels.h"
+#include <gtest/gtest.h>
 
+#include <cmath>
+#include <functional>
+#include <ostream>
+
+#include "sample_panels.h"
 #include "ui/button.h"
 #include "ui/canvas.h"
 #include "ui/menu_list.h"
@@ -12,18 +17,13 @@
 #include "ui/theme.h"
 #include "ui/timeline_strip.h"
 
-#include <gtest/gtest.h>
-
-#include <ostream>
-
-#include <cmath>
-#include <functional>
-
 namespace vdfx::ui::test {
 namespace {
 
 /// Largest per-channel difference between two premultiplied textures.
-double max_diff(const cv::Mat& a, const cv::Mat& b) { return cv::norm(a, b, cv::NORM_INF); }
+double max_diff(const cv::Mat& a, const cv::Mat& b) {
+  return cv::norm(a, b, cv::NORM_INF);
+}
 
 Rect whole_pixels(const Rect& r, int w, int h) {
   const double x0 = std::floor(r.x), y0 = std::floor(r.y);
@@ -38,9 +38,13 @@ struct DamageCase {
   std::vector<std::function<void(Panel&)>> steps;
 };
 // gtest prints the case by its name, not as a dump of its bytes.
-void PrintTo(const DamageCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const DamageCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
-void hover(Panel& p, const char* id, bool on) { p.find(id)->set_hovered(on); }
+void hover(Panel& p, const char* id, bool on) {
+  p.find(id)->set_hovered(on);
+}
 
 /// What the editor does every video frame while playing: the strip and the plot follow.
 void playhead(Panel& p, int frame) {
@@ -54,13 +58,11 @@ const DamageCase kDamageCases[] = {
      make_effect_panel,
      {[](Panel& p) { hover(p, "undo", true); },
       [](Panel& p) { hover(p, "undo", false), hover(p, "redo", true); }}},
-    {"MenuRowHover",
-     make_effect_panel,
-     {[](Panel& p) {
-        auto& m = *p.find("effect_menu");
-        m.set_hovered(true);
-        m.hover_at({m.rect().x + 50, m.rect().y + 40});
-      }}},
+    {"MenuRowHover", make_effect_panel, {[](Panel& p) {
+       auto& m = *p.find("effect_menu");
+       m.set_hovered(true);
+       m.hover_at({m.rect().x + 50, m.rect().y + 40});
+     }}},
     {"MenuHoverMovesDownTwoRows",  // the second step redraws just the two rows' bands
      make_effect_panel,
      {[](Panel& p) {
@@ -72,22 +74,24 @@ const DamageCase kDamageCases[] = {
         auto& m = *p.find("effect_menu");
         m.hover_at({m.rect().x + 50, m.rect().y + 40 + 2 * Theme::dark().row_height});
       }}},
-    {"SliderDragAndFocus",
-     make_effect_panel,
-     {[](Panel& p) {
-        auto& s = *p.find_as<Slider1D>("exposure");
-        s.set_pressed(true), s.set_focused(true), s.set_value(-7.3);
-      }}},
-    {"ToggleClick", make_effect_panel, {[](Panel& p) { p.find_as<Toggle>("world_lock")->set_on(true); }}},
+    {"SliderDragAndFocus", make_effect_panel, {[](Panel& p) {
+       auto& s = *p.find_as<Slider1D>("exposure");
+       s.set_pressed(true), s.set_focused(true), s.set_value(-7.3);
+     }}},
+    {"ToggleClick", make_effect_panel, {[](Panel& p) {
+       p.find_as<Toggle>("world_lock")->set_on(true);
+     }}},
     {"LabelMoves",  // the old place must be wiped, the new one drawn
      make_effect_panel,
-     {[](Panel& p) { p.find("title")->set_rect({300, 40, 500, 64}); }}},
+     {[](Panel& p) {
+       p.find("title")->set_rect({300, 40, 500, 64});
+     }}},
     {"StripPlayheadAndFocusRing",  // the ring reaches 6.5 px above the strip's rect
      make_timeline_panel,
      {[](Panel& p) {
-        auto& s = *p.find_as<TimelineStrip>("strip");
-        s.set_playhead(31), s.set_focused(true);
-      }}},
+       auto& s = *p.find_as<TimelineStrip>("strip");
+       s.set_playhead(31), s.set_focused(true);
+     }}},
     {"NewMinimapFieldAndThumbnails",  // cached scaled images must follow new content
      make_timeline_panel,
      {[](Panel& p) {
@@ -100,10 +104,12 @@ const DamageCase kDamageCases[] = {
       }}},
     {"PlaybackStepsOverKeyframesAndTheEnds",  // diamonds and dots at the playhead grow and shrink
      make_timeline_panel,
-     {[](Panel& p) { playhead(p, 121); }, [](Panel& p) { playhead(p, 199); }, [](Panel& p) { playhead(p, 200); },
-      [](Panel& p) { playhead(p, 201); }, [](Panel& p) { playhead(p, 0); }, [](Panel& p) { playhead(p, 1); },
-      [](Panel& p) { playhead(p, 239); }, [](Panel& p) { playhead(p, 9); }, [](Panel& p) { playhead(p, 10); },
-      [](Panel& p) { playhead(p, 99); }, [](Panel& p) { playhead(p, 100); }, [](Panel& p) { playhead(p, 48); }}},
+     {[](Panel& p) { playhead(p, 121); }, [](Panel& p) { playhead(p, 199); },
+      [](Panel& p) { playhead(p, 200); }, [](Panel& p) { playhead(p, 201); },
+      [](Panel& p) { playhead(p, 0); }, [](Panel& p) { playhead(p, 1); },
+      [](Panel& p) { playhead(p, 239); }, [](Panel& p) { playhead(p, 9); },
+      [](Panel& p) { playhead(p, 10); }, [](Panel& p) { playhead(p, 99); },
+      [](Panel& p) { playhead(p, 100); }, [](Panel& p) { playhead(p, 48); }}},
     {"PlaybackWhileStripFocusedAndPressed",
      make_timeline_panel,
      {[](Panel& p) { p.find("strip")->set_focused(true), p.find("strip")->set_pressed(true); },
@@ -142,8 +148,12 @@ void check_partial_equals_full(const DamageCase& c, double scale) {
 
 class PartialRender : public ::testing::TestWithParam<DamageCase> {};
 
-TEST_P(PartialRender, EqualsFullRenderOfTheSameState) { check_partial_equals_full(GetParam(), 1.0); }
-TEST_P(PartialRender, EqualsFullRenderAtADesktopRenderScale) { check_partial_equals_full(GetParam(), 0.4); }
+TEST_P(PartialRender, EqualsFullRenderOfTheSameState) {
+  check_partial_equals_full(GetParam(), 1.0);
+}
+TEST_P(PartialRender, EqualsFullRenderAtADesktopRenderScale) {
+  check_partial_equals_full(GetParam(), 0.4);
+}
 
 INSTANTIATE_TEST_SUITE_P(Panels, PartialRender, ::testing::ValuesIn(kDamageCases),
                          [](const auto& info) { return std::string(info.param.name); });
@@ -194,12 +204,14 @@ TEST(Damage, PlaybackStepDirtiesOnlyThePlayheadColumns) {
     double area = 0.0;
     for (const Rect& r : rects) {
       area += r.w * r.h;
-      EXPECT_LT(r.w, 200.0) << f << ": " << r.x << "," << r.y << " " << r.w << "x" << r.h;  // a column (label included), not the widget's width
+      EXPECT_LT(r.w, 200.0) << f << ": " << r.x << "," << r.y << " " << r.w << "x"
+                            << r.h;  // a column (label included), not the widget's width
     }
     // They sit over the new playhead on each widget.
     const Rect a = plot.plot_area();
     const double plot_x = a.x + a.w * f / 239.0;
-    const glm::dvec2 on_strip{strip.x_of(f), strip.rect().centre().y}, on_plot{plot_x, a.centre().y};
+    const glm::dvec2 on_strip{strip.x_of(f), strip.rect().centre().y},
+        on_plot{plot_x, a.centre().y};
     EXPECT_TRUE(rects[0].contains(on_strip) || rects[1].contains(on_strip)) << f;
     EXPECT_TRUE(rects[0].contains(on_plot) || rects[1].contains(on_plot)) << f;
     EXPECT_LT(area, 0.05 * 2000 * 1200) << f;  // a full redraw is all of it
@@ -259,7 +271,8 @@ TEST(CanvasClearRect, SetsOnlyPixelCentresInsideRectAndClip) {
   Canvas c(8, 6);
   c.clear({1, 1, 1, 1});
   c.push_clip({0, 0, 5, 6});
-  c.clear_rect({2.4, 1.6, 4.0, 2.0}, {0, 0, 0, 0});  // centres x 2.5..4.5 (the clip ends at 5), y 2.5..3.5
+  c.clear_rect({2.4, 1.6, 4.0, 2.0},
+               {0, 0, 0, 0});  // centres x 2.5..4.5 (the clip ends at 5), y 2.5..3.5
   c.pop_clip();
   for (int y = 0; y < 6; ++y)
     for (int x = 0; x < 8; ++x) {

@@ -2,14 +2,13 @@
 /// @brief Golden-image comparison of golden.h.
 #include "golden.h"
 
-#include "ui/canvas.h"
-
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-
 #include <cstdlib>
 #include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
+
+#include "ui/canvas.h"
 
 namespace vdfx::ui::test {
 
@@ -30,7 +29,9 @@ void write_rgba_png(const std::string& path, const cv::Mat& straight_rgba) {
 }
 }  // namespace
 
-std::string golden_dir() { return VDFX_SOURCE_DIR "/tests/ui/golden"; }
+std::string golden_dir() {
+  return VDFX_SOURCE_DIR "/tests/ui/golden";
+}
 std::string output_dir() {
   const std::string d = VDFX_TEST_OUTPUT_DIR "/ui";
   std::filesystem::create_directories(d);
@@ -88,9 +89,9 @@ std::string compare_with_golden(const cv::Mat& actual, const std::string& name,
   const std::string diff_path = output_dir() + "/" + name + ".diff.png";
   cv::imwrite(diff_path, diff_rgb);
   std::ostringstream s;
-  s << golden << ": max difference " << max_diff << " (tolerance " << max_tolerance
-    << "), mean " << mean_diff << " (tolerance " << mean_tolerance << "); actual " << actual_path
-    << ", diff x8 " << diff_path << "; VDFX_BLESS=1 rewrites the golden if the change is meant";
+  s << golden << ": max difference " << max_diff << " (tolerance " << max_tolerance << "), mean "
+    << mean_diff << " (tolerance " << mean_tolerance << "); actual " << actual_path << ", diff x8 "
+    << diff_path << "; VDFX_BLESS=1 rewrites the golden if the change is meant";
   return s.str();
 }
 

@@ -2,8 +2,14 @@
 /// @brief Golden images of every widget kind and of the two mock editor panels.
 /// Bless new goldens with: VDFX_BLESS=1 ./build/tests/vdfx_test_ui --gtest_filter='Golden*'
 #include "golden.h"
-#include "sample_panels.h"
 
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <functional>
+#include <ostream>
+
+#include "sample_panels.h"
 #include "ui/button.h"
 #include "ui/colour_wheel.h"
 #include "ui/menu_list.h"
@@ -11,13 +17,6 @@
 #include "ui/plot.h"
 #include "ui/slider.h"
 #include "ui/timeline_strip.h"
-
-#include <gtest/gtest.h>
-
-#include <ostream>
-
-#include <cstdlib>
-#include <functional>
 
 namespace vdfx::ui::test {
 namespace {
@@ -73,8 +72,8 @@ std::unique_ptr<Panel> labels() {
 std::unique_ptr<Panel> sliders() {
   auto p = panel(1000, 340);
   Stack col(Rect{0, 0, 1000, 340}.inset(32.0), 16.0);
-  auto& a = p->add<Slider1D>("exposure", "Exposure", Axis{-8, 8, 0.1, "%+.1f", " stops", ""}, -2.5,
-                             0.0);
+  auto& a =
+      p->add<Slider1D>("exposure", "Exposure", Axis{-8, 8, 0.1, "%+.1f", " stops", ""}, -2.5, 0.0);
   a.set_rect(col.next(130));
   auto& b = p->add<Slider1D>("blur", "Blur σ", Axis{0, 10, 0.1, "%.1f", "°", ""}, 6.0, 0.0);
   b.set_rect(col.next(130));
@@ -153,13 +152,22 @@ struct GoldenCase {
   std::function<std::unique_ptr<Panel>()> make;
 };
 // gtest prints the case by its name, not as a dump of its bytes.
-void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const GoldenCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 const GoldenCase kCases[] = {
-    {"buttons", buttons},       {"labels", labels},     {"sliders", sliders},
-    {"pad2d", pad},             {"colour_wheel", wheel}, {"menu_list", menu},
-    {"timeline_strip", timeline}, {"plot", plot},       {"minimap", minimap},
-    {"effect_panel", make_effect_panel},                  {"timeline_panel", make_timeline_panel},
+    {"buttons", buttons},
+    {"labels", labels},
+    {"sliders", sliders},
+    {"pad2d", pad},
+    {"colour_wheel", wheel},
+    {"menu_list", menu},
+    {"timeline_strip", timeline},
+    {"plot", plot},
+    {"minimap", minimap},
+    {"effect_panel", make_effect_panel},
+    {"timeline_panel", make_timeline_panel},
 };
 
 class Golden : public ::testing::TestWithParam<GoldenCase> {};
@@ -179,8 +187,8 @@ TEST(GoldenCompare, DetectsAChangedWidget) {
   if (std::getenv("VDFX_BLESS")) return;  // comparing would overwrite the golden
   auto p = make_effect_panel();
   p->find_as<Slider1D>("exposure")->set_value(-6.0);
-  const std::string msg = compare_with_golden(p->texture(), "effect_panel", kMaxTolerance,
-                                              kMeanTolerance);
+  const std::string msg =
+      compare_with_golden(p->texture(), "effect_panel", kMaxTolerance, kMeanTolerance);
   EXPECT_NE(msg.find("max difference"), std::string::npos) << msg;
 }
 

@@ -1,19 +1,18 @@
 /// @file
 /// @brief Ray hit testing, pointer states, drags, hysteresis, thumbstick, events; panel dirty
 /// tracking and placement. No GL context anywhere.
-#include "sample_panels.h"
-
-#include "ui/button.h"
 #include "ui/interaction.h"
-#include "ui/menu_list.h"
-#include "ui/slider.h"
 
-#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <glm/gtc/quaternion.hpp>
 #include <ostream>
 
-#include <cmath>
+#include "sample_panels.h"
+#include "ui/button.h"
+#include "ui/menu_list.h"
+#include "ui/slider.h"
 
 namespace vdfx::ui::test {
 namespace {
@@ -48,10 +47,12 @@ struct AngleCase {
   bool hits;
 };
 // gtest prints the case by its name, not as a dump of its bytes.
-void PrintTo(const AngleCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const AngleCase& c, std::ostream* os) {
+  *os << c.name;
+}
 const AngleCase kAngles[] = {
-    {"centre", 0, 0, true},       {"left_inside", -7.0, 0, true}, {"right_outside", 7.3, 0, false},
-    {"above", 0, 7.3, false},     {"below_inside", 0, -7.0, true}, {"behind_viewer", 180, 0, false},
+    {"centre", 0, 0, true},   {"left_inside", -7.0, 0, true},  {"right_outside", 7.3, 0, false},
+    {"above", 0, 7.3, false}, {"below_inside", 0, -7.0, true}, {"behind_viewer", 180, 0, false},
 };
 
 class RayAngle : public ::testing::TestWithParam<AngleCase> {};
@@ -161,7 +162,7 @@ TEST(Pointer, TriggerHysteresis) {
   const struct {
     double trigger;
     bool down;
-  } steps[] = {{0.0, false}, {0.5, false}, {0.56, true}, {0.5, true},  {0.46, true},
+  } steps[] = {{0.0, false},  {0.5, false}, {0.56, true},  {0.5, true}, {0.46, true},
                {0.44, false}, {0.5, false}, {0.54, false}, {0.9, true}, {0.2, false}};
   Scene s;
   for (const auto& st : steps) {

@@ -3,23 +3,23 @@
 /// size, text is rasterised at the scaled font size (so it is as tall on the texture as the
 /// font size times the scale, not a blurred shrink of the full-size text), and hit testing stays
 /// in layout pixels.
-#include "sample_panels.h"
+#include <gtest/gtest.h>
 
+#include <opencv2/imgproc.hpp>
+
+#include "sample_panels.h"
 #include "ui/button.h"
 #include "ui/canvas.h"
 #include "ui/font.h"
 #include "ui/theme.h"
-
-#include <gtest/gtest.h>
-
-#include <opencv2/imgproc.hpp>
 
 namespace vdfx::ui::test {
 namespace {
 
 /// Rows of a texture region holding bright (text) pixels: the ink height of a line of text.
 int ink_rows(const cv::Mat& premultiplied, const Rect& r) {
-  const cv::Rect box(static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.w), static_cast<int>(r.h));
+  const cv::Rect box(static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.w),
+                     static_cast<int>(r.h));
   cv::Mat grey;
   cv::cvtColor(premultiplied(box), grey, cv::COLOR_RGBA2GRAY);
   int first = -1, last = -1;

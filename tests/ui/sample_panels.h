@@ -10,6 +10,8 @@ using demo::make_effect_panel;
 using demo::make_timeline_panel;
 using demo::synthetic_frame;
 /// Shared fonts (loaded once per process).
-inline std::shared_ptr<const FontSet> test_fonts() { return demo::demo_fonts(); }
+inline std::shared_ptr<const FontSet> test_fonts() {
+  return demo::demo_fonts();
+}
 
 }  // namespace vdfx::ui::test

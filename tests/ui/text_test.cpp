@@ -1,17 +1,15 @@
 /// @file
 /// @brief UTF-8 decoding, font loading errors, measurement, kerning, ellipsis, glyph cache.
-#include "sample_panels.h"
+#include <gtest/gtest.h>
 
+#include <cmath>
+#include <ostream>
+
+#include "sample_panels.h"
 #include "ui/canvas.h"
 #include "ui/font.h"
 #include "ui/theme.h"
 #include "ui/utf8.h"
-
-#include <gtest/gtest.h>
-
-#include <ostream>
-
-#include <cmath>
 
 namespace vdfx::ui::test {
 namespace {
@@ -22,7 +20,9 @@ struct Utf8Case {
   std::u32string expected;
 };
 // gtest prints the case by its name, not as a dump of its bytes.
-void PrintTo(const Utf8Case& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const Utf8Case& c, std::ostream* os) {
+  *os << c.name;
+}
 
 const Utf8Case kUtf8Cases[] = {
     {"ascii", "az 09", U"az 09"},
@@ -30,14 +30,19 @@ const Utf8Case kUtf8Cases[] = {
     {"degree", "45\xc2\xb0", U"45\u00b0"},
     {"arrows", "\xe2\x86\x90\xe2\x86\x92", U"\u2190\u2192"},
     {"four_bytes", "\xf0\x9f\x98\x80", U"\U0001F600"},
-    {"lone_continuation", "a\x80" "b", U"a\uFFFDb"},
+    {"lone_continuation",
+     "a\x80"
+     "b",
+     U"a\uFFFDb"},
     {"truncated", "a\xe2\x86", U"a\uFFFD\uFFFD"},
     {"overlong", "\xc0\xaf", U"\uFFFD\uFFFD"},
     {"surrogate", "\xed\xa0\x80", U"\uFFFD\uFFFD\uFFFD"},
 };
 
 class Utf8 : public ::testing::TestWithParam<Utf8Case> {};
-TEST_P(Utf8, Decodes) { EXPECT_EQ(decode_utf8(GetParam().bytes), GetParam().expected); }
+TEST_P(Utf8, Decodes) {
+  EXPECT_EQ(decode_utf8(GetParam().bytes), GetParam().expected);
+}
 INSTANTIATE_TEST_SUITE_P(Table, Utf8, ::testing::ValuesIn(kUtf8Cases),
                          [](const auto& i) { return std::string(i.param.name); });
 
@@ -58,8 +63,8 @@ TEST(Font, MissingFileNamesThePath) {
 
 TEST(Font, HasTheSymbolsLabelsUse) {
   const Font& f = *test_fonts()->regular;
-  for (char32_t cp : {U'\u00b0', U'\u2190', U'\u2192', U'\u00e9', U'\u00d7', U'\u03c3', U'\u2026',
-                      U'\u2014'})
+  for (char32_t cp :
+       {U'\u00b0', U'\u2190', U'\u2192', U'\u00e9', U'\u00d7', U'\u03c3', U'\u2026', U'\u2014'})
     EXPECT_TRUE(f.has_glyph(cp)) << static_cast<unsigned>(cp);
 }
 
@@ -108,8 +113,10 @@ TEST(Text, ClippedToItsBox) {
   for (int y = 0; y < c.height(); ++y)
     for (int x = 0; x < c.width(); ++x) {
       const int a = c.image().at<cv::Vec4b>(y, x)[3];
-      if (!box.contains({x + 0.5, y + 0.5})) ASSERT_EQ(a, 0) << x << "," << y;
-      else inside += a > 0;
+      if (!box.contains({x + 0.5, y + 0.5}))
+        ASSERT_EQ(a, 0) << x << "," << y;
+      else
+        inside += a > 0;
     }
   EXPECT_GT(inside, 200);
 }

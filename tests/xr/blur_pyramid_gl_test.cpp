@@ -42,8 +42,8 @@ class BlurPyramidGlTest : public GlTest {};
 TEST_F(BlurPyramidGlTest, TheTapTableKeepsItsTextureWhileTheRadiusChanges) {
   // The per-pixel blur sets one radius per level, per eye, per frame: the table must not be
   // reallocated for each (only grown, by doubling, when a radius needs more than it holds).
-  const GlProgram p = GlProgram::build("blur_1d", fullscreen_vertex_source(),
-                                       effects::blur_1d_fragment_source());
+  const GlProgram p =
+      GlProgram::build("blur_1d", fullscreen_vertex_source(), effects::blur_1d_fragment_source());
   p.use();
   GlTexture taps;
   set_gaussian_uniforms(p, 2.0, effects::gaussian_radius(2.0), 1, taps);

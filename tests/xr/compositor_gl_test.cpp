@@ -62,7 +62,11 @@ TEST_F(CompositorGlTest, QuadLayersComeAfterTheEffectsAndFollowTheirSpace) {
   comp.render_eye(0, {eye, p, effects::non_neutral_mask(p)}, std::span(&quad, 1), head);
   cv::Mat img = test::bgr_clamped(comp.read_eye_buffer(0));
   // The quad centre projects to tangent (0.3, 0): pixel x = (0.3 + 0.8) / 1.6 * W.
-  ASSERT_EQ(cv::countNonZero(img(cv::Rect(static_cast<int>(1.0 / 1.6 * kW), kH / 2 - 8, 20, 16)).clone().reshape(1) > 0.01f), 20 * 16 * 3);
+  ASSERT_EQ(
+      cv::countNonZero(
+          img(cv::Rect(static_cast<int>(1.0 / 1.6 * kW), kH / 2 - 8, 20, 16)).clone().reshape(1) >
+          0.01f),
+      20 * 16 * 3);
   const cv::Vec3f q = img.at<cv::Vec3f>(kH / 2, static_cast<int>(1.1 / 1.6 * kW));
   EXPECT_NEAR(q[0], 0.9, 1.0 / 255);
   EXPECT_NEAR(q[1], 0.6, 1.0 / 255);
@@ -101,7 +105,8 @@ TEST_F(CompositorGlTest, MirrorModesShowPanelsTheWearersViewAndOneEye) {
   const test::ErrorStats e = test::compare(test::bgr_clamped(seen)(centre),
                                            test::bgr_clamped(comp.read_eye_buffer(0))(centre));
   EXPECT_LT(e.mean, 1.5 / 255);
-  EXPECT_GT(test::compare(comp.read_display(0)(centre), comp.read_eye_buffer(0)(centre)).mean, 2.0 / 255);
+  EXPECT_GT(test::compare(comp.read_display(0)(centre), comp.read_eye_buffer(0)(centre)).mean,
+            2.0 / 255);
   GlTarget single(kW, kH, TexFormat::RGBA16F);
   comp.draw_mirror(MirrorMode::SingleEye, &single, kW, kH);
   EXPECT_LE(test::compare(single.read_float(), comp.read_eye_buffer(0)).max, 1e-3);
@@ -137,7 +142,8 @@ TEST_F(CompositorGlTest, WholeEyeMatchesTheCpuViewRendererIncludingTheBlurredBor
   const cv::Mat eq = test::sunrise_float();
   cv::Mat eq_rgb;
   cv::cvtColor(eq, eq_rgb, cv::COLOR_BGR2RGB);
-  const effects::EquirectSampler sampler(eq_rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
+  const effects::EquirectSampler sampler(
+      eq_rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
   const int w = 200, h = 150;  // 4 px/degree: magnified everywhere, so both read level 0
   const effects::ViewPose pose{{35, 5}, 10};
   const effects::ViewCamera cam = effects::ViewCamera::from_horizontal_fov(pose, 50, w, h);
@@ -161,8 +167,10 @@ TEST_F(CompositorGlTest, WholeEyeMatchesTheCpuViewRendererIncludingTheBlurredBor
   const cv::Rect border_band(0, 0, 8, h);
   const test::ErrorStats edge =
       test::compare(test::bgr_clamped(comp.read_eye_buffer(0))(border_band), ref(border_band));
-  std::printf("[ eye      ] GPU eye vs effects::render_view: max %.3f/255 mean %.4f/255 "
-              "(left 8 columns: max %.3f/255)\n", e.max * 255, e.mean * 255, edge.max * 255);
+  std::printf(
+      "[ eye      ] GPU eye vs effects::render_view: max %.3f/255 mean %.4f/255 "
+      "(left 8 columns: max %.3f/255)\n",
+      e.max * 255, e.mean * 255, edge.max * 255);
   EXPECT_LE(e.max, 2.0 / 255);
   EXPECT_LE(edge.max, 2.0 / 255);
 }

@@ -1,13 +1,14 @@
 /// @file
 /// @brief Lens pre-distortion: round trip through the simulated lens, mesh error against the
 /// per-pixel inverse, LCA fringe cancellation, black beyond the valid radius.
+#include "xr/distortion_gl.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
-#include "gl_test_support.h"
 #include "effects/distortion_mesh.h"
-#include "xr/distortion_gl.h"
+#include "gl_test_support.h"
 #include "xr/video_layer.h"
 
 namespace vdfx::xr {
@@ -50,7 +51,8 @@ cv::Mat seen_mask(const RenderView& v, const effects::LensModel& lens, double ma
           continue;
         }
         const Eigen::Vector2d p = v.pixel_at(*t, kSize, kSize);
-        ok = ok && p.x() > margin && p.y() > margin && p.x() < kSize - margin && p.y() < kSize - margin;
+        ok = ok && p.x() > margin && p.y() > margin && p.x() < kSize - margin &&
+             p.y() < kSize - margin;
       }
       m.at<uchar>(y, x) = ok ? 255 : 0;
     }
@@ -93,7 +95,8 @@ TEST_F(DistortionGlTest, ThroughTheLensOfThePreDistortedImageReproducesTheImage)
   // Without pre-distortion the lens visibly warps the image: the error the passes must remove.
   dist.through_lens(eye_buffer_.texture(), seen, eye_view(), lens);
   const test::ErrorStats raw = test::compare(test::bgr_clamped(seen.read_float()), original, mask);
-  std::printf("[ lens     ] no pre-distortion: max %.2f/255 mean %.3f/255\n", raw.max * 255, raw.mean * 255);
+  std::printf("[ lens     ] no pre-distortion: max %.2f/255 mean %.3f/255\n", raw.max * 255,
+              raw.mean * 255);
   const struct {
     const char* name;
     DistortionSettings s;
@@ -125,7 +128,8 @@ TEST_F(DistortionGlTest, MeshSamplePositionErrorFallsAsTheGridGrows) {
   const cv::Mat ref = uv.read_float();
   double last_rms = 1e9;
   for (int n : {5, 9, 17, 33, 65}) {
-    dist.predistort(eye_buffer_.texture(), uv, eye_view(), lens, {DistortionMethod::Mesh, n, 0, true, true});
+    dist.predistort(eye_buffer_.texture(), uv, eye_view(), lens,
+                    {DistortionMethod::Mesh, n, 0, true, true});
     const cv::Mat got = uv.read_float();
     double sum2 = 0, mx = 0, count = 0;
     for (int y = 0; y < kSize; ++y)
@@ -137,7 +141,8 @@ TEST_F(DistortionGlTest, MeshSamplePositionErrorFallsAsTheGridGrows) {
         count += 1;
       }
     const double rms = std::sqrt(sum2 / count);
-    std::printf("[ lens     ] mesh %2dx%-2d sample position error: RMS %.4f px, max %.4f px\n", n, n, rms, mx);
+    std::printf("[ lens     ] mesh %2dx%-2d sample position error: RMS %.4f px, max %.4f px\n", n,
+                n, rms, mx);
     EXPECT_LT(rms, last_rms) << "N = " << n;
     last_rms = rms;
   }
@@ -168,8 +173,9 @@ TEST_F(DistortionGlTest, InverseLcaMakesTheColourFringesCancel) {
   for (DistortionMethod m : {DistortionMethod::Pixel, DistortionMethod::Mesh}) {
     const double off = fringe({m, 65, 8, false, false});
     const double on = fringe({m, 65, 8, true, false});
-    std::printf("[ lens     ] %s: mean |R - B| fringe without LCA correction %.3f/255, with %.3f/255\n",
-                m == DistortionMethod::Pixel ? "pixel" : "mesh", off * 255, on * 255);
+    std::printf(
+        "[ lens     ] %s: mean |R - B| fringe without LCA correction %.3f/255, with %.3f/255\n",
+        m == DistortionMethod::Pixel ? "pixel" : "mesh", off * 255, on * 255);
     EXPECT_GT(off, 2.0 / 255);
     EXPECT_LT(on, off / 8);
   }

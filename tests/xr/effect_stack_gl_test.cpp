@@ -1,5 +1,7 @@
 /// @file
 /// @brief The GPU effect stack against the CPU reference (effects/effect_stack.h, double).
+#include "xr/effect_stack_gl.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -10,7 +12,6 @@
 #include "effects/effect_stack.h"
 #include "effects/view_camera.h"
 #include "gl_test_support.h"
-#include "xr/effect_stack_gl.h"
 #include "xr/gl_texture.h"
 
 namespace vdfx::xr {
@@ -64,14 +65,21 @@ const struct {
 } kCases[] = {
     {"blur 1.5 deg", [](StackParams& p) { p.blur_sigma_deg = 1.5; }},
     {"blur 6 deg", [](StackParams& p) { p.blur_sigma_deg = 6.0; }},
-    {"tint", [](StackParams& p) { p.set(EffectType::Tint, std::vector<double>{1.6, 0.8, 0.5}); }},
+    {"tint",
+     [](StackParams& p) {
+       p.set(EffectType::Tint, std::vector<double>{1.6, 0.8, 0.5});
+     }},
     {"exposure +1.3", [](StackParams& p) { p.exposure_stops = 1.3; }},
     {"exposure -2", [](StackParams& p) { p.exposure_stops = -2.0; }},
     {"saturation 0.2", [](StackParams& p) { p.saturation = 0.2; }},
     {"saturation 2.5", [](StackParams& p) { p.saturation = 2.5; }},
     {"contrast 1.8", [](StackParams& p) { p.contrast = 1.8; }},
     {"contrast 0.4", [](StackParams& p) { p.contrast = 0.4; }},
-    {"vignette 20/15", [](StackParams& p) { p.vignette_radius_deg = 20; p.vignette_falloff_deg = 15; }},
+    {"vignette 20/15",
+     [](StackParams& p) {
+       p.vignette_radius_deg = 20;
+       p.vignette_falloff_deg = 15;
+     }},
     {"full stack",
      [](StackParams& p) {
        p.blur_sigma_deg = 2.0;
@@ -103,10 +111,12 @@ TEST_F(EffectStackGlTest, EachEffectAndTheFullStackMatchTheContractInDouble) {
     const cv::Mat gpu = test::bgr_clamped(dst.read_float());
     const cv::Mat ref = reference_stack(src, p, eye);
     const test::ErrorStats e = test::compare(gpu, ref);
-    std::printf("[ stack    ] %-16s max %.3f/255  mean %.4f/255\n", row.name, e.max * 255, e.mean * 255);
+    std::printf("[ stack    ] %-16s max %.3f/255  mean %.4f/255\n", row.name, e.max * 255,
+                e.mean * 255);
     EXPECT_LE(e.max, 2.0 / 255.0) << row.name;
     // The effect must have done something measurable, or the comparison proves nothing.
-    EXPECT_GT(test::compare(ref, reference_stack(src, StackParams{}, eye)).mean, 1.0 / 255) << row.name;
+    EXPECT_GT(test::compare(ref, reference_stack(src, StackParams{}, eye)).mean, 1.0 / 255)
+        << row.name;
   }
 }
 
@@ -128,7 +138,8 @@ TEST_F(EffectStackGlTest, OnlyTheActiveSetIsCompiledAndVariantsAreCached) {
   stack.apply(src, dst, p, effects::shader_bit(EffectType::Contrast), test_eye());
   const cv::Vec4f c = dst.read_float().at<cv::Vec4f>(5, 5);
   EXPECT_NEAR(c[2], 0.5 + 1.5 * (0.6 - 0.5), 1e-3);
-  const std::string src_text = effects::stack_fragment_source(effects::shader_bit(EffectType::Contrast));
+  const std::string src_text =
+      effects::stack_fragment_source(effects::shader_bit(EffectType::Contrast));
   EXPECT_NE(src_text.find("#define HAS_EXPOSURE 0"), std::string::npos);
 }
 
@@ -139,7 +150,7 @@ TEST_F(EffectStackGlTest, VignetteIsCentredOnTheProjectedOpticalCentreOfAnOffCen
   GlTarget dst(w, h, TexFormat::RGBA16F);
   EffectStackGl stack;
   StackParams p;
-  p.vignette_radius_deg = 0;  // a cone of angle d around the axis: f = 1 - d / F peaks at d = 0
+  p.vignette_radius_deg = 0;    // a cone of angle d around the axis: f = 1 - d / F peaks at d = 0
   p.vignette_falloff_deg = 60;  // reaches every corner of the view, unequally
   const struct {
     const char* name;
@@ -160,9 +171,10 @@ TEST_F(EffectStackGlTest, VignetteIsCentredOnTheProjectedOpticalCentreOfAnOffCen
     cv::minMaxLoc(green, nullptr, nullptr, nullptr, &peak);
     const Eigen::Vector2d found(peak.x + 0.5, peak.y + 0.5);
     const Eigen::Vector2d expected = eye.pixel_at(r.centre_tan, w, h);
-    std::printf("[ vignette ] %s: peak pixel centre (%.1f, %.1f), projected optical centre "
-                "(%.2f, %.2f), screen centre (%.0f, %.0f)\n",
-                r.name, found.x(), found.y(), expected.x(), expected.y(), w / 2.0, h / 2.0);
+    std::printf(
+        "[ vignette ] %s: peak pixel centre (%.1f, %.1f), projected optical centre "
+        "(%.2f, %.2f), screen centre (%.0f, %.0f)\n",
+        r.name, found.x(), found.y(), expected.x(), expected.y(), w / 2.0, h / 2.0);
     EXPECT_LE((found - expected).cwiseAbs().maxCoeff(), 0.5 + 1e-9) << r.name;
     EXPECT_GT((found - Eigen::Vector2d(w / 2.0, h / 2.0)).norm(), 20.0) << r.name;
     // Opposite corners at different distances from the centre get different darkening.

@@ -13,7 +13,8 @@ namespace {
 class GlProgramTest : public test::GlTest {};
 
 TEST_F(GlProgramTest, CompileErrorNamesTheShaderAndQuotesTheLine) {
-  const std::string bad = "out vec4 frag;\nvoid main() {\n  frag = vec4(undeclared_thing, 1.0);\n}\n";
+  const std::string bad =
+      "out vec4 frag;\nvoid main() {\n  frag = vec4(undeclared_thing, 1.0);\n}\n";
   try {
     GlProgram::build("broken_pass", fullscreen_vertex_source(), bad);
     FAIL() << "a broken shader compiled";

@@ -58,7 +58,9 @@ struct ButtonRow {
   const char* path;
 };
 // gtest prints the case by its name, not as a dump of its bytes.
-void PrintTo(const ButtonRow& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const ButtonRow& c, std::ostream* os) {
+  *os << c.name;
+}
 
 // DS4 bits (see hid_parsers_test) -> the action they drive (docs/input.md).
 const ButtonRow kButtons[] = {
@@ -92,7 +94,8 @@ TEST_P(Buttons, ReachTheirAction) {
   m.on_report(2, kDs4, test_data::ds4_report({{r.byte, r.bits}}));
   EXPECT_EQ(as_number(*get_action(m.state(3), r.path)), 1.0);
 }
-INSTANTIATE_TEST_SUITE_P(Rows, Buttons, ::testing::ValuesIn(kButtons), [](const auto& i) { return std::string(i.param.name); });
+INSTANTIATE_TEST_SUITE_P(Rows, Buttons, ::testing::ValuesIn(kButtons),
+                         [](const auto& i) { return std::string(i.param.name); });
 
 TEST(HidMapping, LostDeviceGoesNeutralAndKeepsTheHead) {
   HidInputMapper m;

@@ -34,10 +34,16 @@ struct DescriptorCase {
   std::vector<FieldRow> fields;
 };
 // gtest prints the case by its name, not as a dump of its bytes.
-void PrintTo(const DescriptorCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const DescriptorCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 const DescriptorCase kDescriptors[] = {
-    {"generic_4axes_hat_12buttons", test_data::kGenericGamepadDescriptor, false, 0x04, 4 + 1 + 12 + 8,
+    {"generic_4axes_hat_12buttons",
+     test_data::kGenericGamepadDescriptor,
+     false,
+     0x04,
+     4 + 1 + 12 + 8,
      {{0x01, 0x30, 0, 0, 8, 0, 255},
       {0x01, 0x31, 0, 8, 8, 0, 255},
       {0x01, 0x32, 0, 16, 8, 0, 255},
@@ -46,19 +52,31 @@ const DescriptorCase kDescriptors[] = {
       {0x09, 0x01, 0, 36, 1, 0, 1},
       {0x09, 0x0C, 0, 47, 1, 0, 1},
       {0xFF00, 0x01, 0, 48, 1, 0, 1}}},
-    {"report_ids_signed_16bit", test_data::kReportIdGamepadDescriptor, true, 0x05, 2 + 16 + 1,
+    {"report_ids_signed_16bit",
+     test_data::kReportIdGamepadDescriptor,
+     true,
+     0x05,
+     2 + 16 + 1,
      {{0x01, 0x30, 1, 0, 16, -32768, 32767},
       {0x01, 0x31, 1, 16, 16, -32768, 32767},
       {0x09, 0x01, 2, 0, 1, 0, 1},
       {0x09, 0x10, 2, 15, 1, 0, 1},
       {0x01, 0x39, 2, 16, 8, 1, 8}}},
-    {"xbox_style_triggers_button_array", test_data::kXboxStyleDescriptor, false, 0x05, 4 + 2 + 2,
+    {"xbox_style_triggers_button_array",
+     test_data::kXboxStyleDescriptor,
+     false,
+     0x05,
+     4 + 2 + 2,
      {{0x01, 0x30, 0, 0, 16, 0, 65535},
       {0x01, 0x34, 0, 48, 16, 0, 65535},
       {0x01, 0x32, 0, 64, 10, 0, 1023},
       {0x01, 0x35, 0, 80, 10, 0, 1023}}},
     // The DualShock 4's own descriptor (USB): its fields must land on the documented bytes 1-9.
-    {"ds4_usb_descriptor", test_data::kDs4DescriptorStart, true, 0x05, 4 + 1 + 14 + 1 + 2,
+    {"ds4_usb_descriptor",
+     test_data::kDs4DescriptorStart,
+     true,
+     0x05,
+     4 + 1 + 14 + 1 + 2,
      {{0x01, 0x30, 1, 0, 8, 0, 255},     // byte 1 LX
       {0x01, 0x35, 1, 24, 8, 0, 255},    // byte 4 RY
       {0x01, 0x39, 1, 32, 4, 0, 7},      // byte 5 low nibble hat
@@ -117,7 +135,7 @@ TEST(HidDescriptor, ReadFieldSignExtendsAndChecksTheReportId) {
   ASSERT_TRUE(read_field(*y, true, r1, v));
   EXPECT_EQ(v, 32767);
   const std::vector<std::uint8_t> r2{0x02, 0x00, 0x00, 0x00};
-  EXPECT_FALSE(read_field(*x, true, r2, v));                                   // other report
+  EXPECT_FALSE(read_field(*x, true, r2, v));                                     // other report
   EXPECT_FALSE(read_field(*x, true, std::vector<std::uint8_t>{0x01, 0x00}, v));  // too short
 }
 
@@ -127,7 +145,9 @@ struct BadDescriptor {
   const char* what;
 };
 // gtest prints the case by its name, not as a dump of its bytes.
-void PrintTo(const BadDescriptor& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const BadDescriptor& c, std::ostream* os) {
+  *os << c.name;
+}
 
 const BadDescriptor kBadDescriptors[] = {
     {"truncated_item", {0x05, 0x01, 0x26, 0xFF}, "byte 2: item data runs past the end"},
@@ -137,14 +157,17 @@ const BadDescriptor kBadDescriptors[] = {
     {"report_id_zero", {0x85, 0x00}, "report ID must be 1..255"},
     {"pop_without_push", {0xB4}, "Pop without Push"},
     // Issue 11, found by fuzzing: a four-byte Report Count allocated a field per count.
-    {"report_count_2_to_the_32", {0x75, 0x08, 0x97, 0xFF, 0xFF, 0xFF, 0xFF, 0x81, 0x02},
+    {"report_count_2_to_the_32",
+     {0x75, 0x08, 0x97, 0xFF, 0xFF, 0xFF, 0xFF, 0x81, 0x02},
      "byte 7: the report would be longer than 16384 bytes"},
     // A constant (padding) item's bit counter could wrap around.
-    {"padding_2_to_the_32_bits", {0x75, 0x20, 0x97, 0x00, 0x00, 0x00, 0x08, 0x81, 0x01},
+    {"padding_2_to_the_32_bits",
+     {0x75, 0x20, 0x97, 0x00, 0x00, 0x00, 0x08, 0x81, 0x01},
      "byte 7: the report would be longer than 16384 bytes"},
     // Many fields within the report length: 8 x 1024 one-bit fields.
-    {"too_many_fields", {0x75, 0x01, 0x96, 0x00, 0x04, 0x81, 0x02, 0x81, 0x02, 0x81, 0x02, 0x81, 0x02,
-                         0x81, 0x02}, "byte 13: more than 4096 input fields"},
+    {"too_many_fields",
+     {0x75, 0x01, 0x96, 0x00, 0x04, 0x81, 0x02, 0x81, 0x02, 0x81, 0x02, 0x81, 0x02, 0x81, 0x02},
+     "byte 13: more than 4096 input fields"},
 };
 
 class BadDescriptors : public ::testing::TestWithParam<BadDescriptor> {};

@@ -218,7 +218,8 @@ TEST(HmdProfile, TakesOnlyARegularFileWithinItsLimit) {
 
 TEST(HmdProfile, DuplicateKeysAreRefusedAsInASidecar) {
   // Issue 11, class 8: nlohmann kept the last of two keys silently; the sidecar reader refused.
-  const std::filesystem::path f = std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "hmd_duplicate.json";
+  const std::filesystem::path f =
+      std::filesystem::path(VDFX_TEST_OUTPUT_DIR) / "hmd_duplicate.json";
   std::ifstream in(hmd_profile_dir() / "generic90.json");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text.replace(text.find("\"name\""), 6, "\"ipd_m\": 0.05, \"name\"");

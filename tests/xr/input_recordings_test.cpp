@@ -124,8 +124,8 @@ TEST(Recordings, HidDualSense) {
 TEST(Recordings, HidGenericGamepad) {
   auto r = replay("hid_generic_gamepad.vdrec.jsonl");
   EXPECT_NEAR(r->poll(500 * kMs).right.thumbstick.x, 1.0, 1e-4);
-  EXPECT_EQ(r->poll(1500 * kMs).left.thumbstick.y, 1.0);  // hat up -> d-pad -> left stick
-  EXPECT_TRUE(r->poll(2500 * kMs).right.primary);          // button 1 -> a
+  EXPECT_EQ(r->poll(1500 * kMs).left.thumbstick.y, 1.0);            // hat up -> d-pad -> left stick
+  EXPECT_TRUE(r->poll(2500 * kMs).right.primary);                   // button 1 -> a
   EXPECT_NEAR(azimuth_deg(r->poll(3000 * kMs).head), -90.0, 0.01);  // left stick left 1 s
 }
 
@@ -140,8 +140,8 @@ TEST(Recordings, HidSpaceMouse) {
 }
 
 TEST(Recordings, HidReplayReproducesItsSampleLines) {
-  for (const char* name : {"hid_ds4.vdrec.jsonl", "hid_dualsense.vdrec.jsonl", "hid_generic_gamepad.vdrec.jsonl",
-                           "hid_spacemouse.vdrec.jsonl"}) {
+  for (const char* name : {"hid_ds4.vdrec.jsonl", "hid_dualsense.vdrec.jsonl",
+                           "hid_generic_gamepad.vdrec.jsonl", "hid_spacemouse.vdrec.jsonl"}) {
     SCOPED_TRACE(name);
     const io::Recording rec = io::read_recording(kDir / name);
     auto r = create_replay_backend(rec, {});

@@ -30,12 +30,14 @@ TEST(Replay, SimSessionRoundTripsExactly) {
   {
     SimConfig cfg;
     cfg.hfov_deg = 100;
-    auto rec = create_recording_backend(create_sim_backend(cfg), file, {"sim", "demo.mp4", "round trip"});
+    auto rec =
+        create_recording_backend(create_sim_backend(cfg), file, {"sim", "demo.mp4", "round trip"});
     for (int f = 0; f < 120; ++f) {
       if (f == 5) rec->push_event(MouseButtonEvent{MouseButton::Right, true});
       if (f > 5 && f < 40) rec->push_event(MouseMoveEvent{640.0 + 7.3 * f, 360.0 - 1.7 * f});
       if (f == 40) rec->push_event(MouseButtonEvent{MouseButton::Right, false});
-      if (f > 40 && f < 80) rec->push_event(MouseMoveEvent{300.0 + 9.1 * (f - 40), 100.0 + 5.5 * (f - 40)});
+      if (f > 40 && f < 80)
+        rec->push_event(MouseMoveEvent{300.0 + 9.1 * (f - 40), 100.0 + 5.5 * (f - 40)});
       if (f == 50) rec->push_event(KeyEvent{Key::Space, true});
       if (f == 60) rec->push_event(KeyEvent{Key::Space, false});
       if (f == 70) rec->push_event(KeyEvent{Key::A, true});
@@ -103,7 +105,8 @@ TEST(Replay, HidReportOfAnUnknownDeviceIsRejectedWithItsLine) {
     create_input_backend("replay:" + file.string());
     FAIL();
   } catch (const io::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("unknown_device.vdrec.jsonl:2:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("unknown_device.vdrec.jsonl:2:"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -152,7 +155,8 @@ io::HidSystem mock_system(MockBus& bus) {
   sys.enumerate = [&bus] {
     std::lock_guard<std::mutex> lock(bus.mutex);
     std::vector<io::HidDeviceInfo> out;
-    if (bus.plugged) out.push_back({"/dev/mock0", 0x054c, 0x05c4, "Sony", "Wireless Controller", "", 1, 5, 3});
+    if (bus.plugged)
+      out.push_back({"/dev/mock0", 0x054c, 0x05c4, "Sony", "Wireless Controller", "", 1, 5, 3});
     return out;
   };
   sys.open = [&bus](const std::string&) -> std::unique_ptr<io::HidDevice> {
@@ -187,7 +191,9 @@ TEST(HidBackend, TapBetweenPollsIsDownInExactlyOnePoll) {
   opt.hid_reader.read_timeout_ms = 2;
   auto hid = create_input_backend("hid", opt);
   std::int64_t t = 0;
-  poll_until(*hid, t, [&](const InputState&) { return hid->status().find("connected") != std::string::npos; });
+  poll_until(*hid, t, [&](const InputState&) {
+    return hid->status().find("connected") != std::string::npos;
+  });
   {
     std::lock_guard<std::mutex> lock(bus.mutex);
     bus.reports.push_back(test_data::ds4_report({{5, 0x28}}));  // cross down
@@ -222,7 +228,8 @@ TEST(HidBackend, UnplugGoesNeutralThenRecoversAndReplaysTheSame) {
   const auto file = out_file("hid_unplug.vdrec.jsonl");
   std::vector<InputState> live;
   {
-    auto hid = create_recording_backend(create_input_backend("hid", opt), file, {"none", std::nullopt, "mock DS4"});
+    auto hid = create_recording_backend(create_input_backend("hid", opt), file,
+                                        {"none", std::nullopt, "mock DS4"});
     std::int64_t t = 0;
     {
       std::lock_guard<std::mutex> lock(bus.mutex);
@@ -246,7 +253,8 @@ TEST(HidBackend, UnplugGoesNeutralThenRecoversAndReplaysTheSame) {
       bus.plugged = true;
       bus.reports.push_back(test_data::ds4_report({{3, 0x00}}));
     }
-    live.push_back(poll_until(*hid, t, [](const InputState& s) { return s.right.thumbstick.x < -0.99; }));
+    live.push_back(
+        poll_until(*hid, t, [](const InputState& s) { return s.right.thumbstick.x < -0.99; }));
     EXPECT_NE(hid->status().find("connected"), std::string::npos) << hid->status();
     EXPECT_GE(bus.opens, 2);
   }
@@ -254,7 +262,8 @@ TEST(HidBackend, UnplugGoesNeutralThenRecoversAndReplaysTheSame) {
   const io::Recording rec = io::read_recording(file);
   int reports = 0, losses = 0;
   for (const auto& line : rec.lines) {
-    if (const auto* h = std::get_if<io::RecordedHid>(&line.value)) (h->bytes.empty() ? losses : reports)++;
+    if (const auto* h = std::get_if<io::RecordedHid>(&line.value))
+      (h->bytes.empty() ? losses : reports)++;
   }
   EXPECT_EQ(reports, 2);
   EXPECT_EQ(losses, 1);

@@ -79,7 +79,9 @@ TEST_P(SimKeys, PressAndRelease) {
   // Nothing else moved: every other path with a value stays neutral.
   for (const std::string& p : action_paths()) {
     const auto v = get_action(pressed, p);
-    if (p == r.path || std::holds_alternative<Pose>(*v) || p.ends_with("tracked") || p.ends_with("thumbstick")) continue;
+    if (p == r.path || std::holds_alternative<Pose>(*v) || p.ends_with("tracked") ||
+        p.ends_with("thumbstick"))
+      continue;
     EXPECT_EQ(value_at(pressed, p), 0.0) << p << " moved with " << key_name(r.key);
   }
   sim->push_event(KeyEvent{r.key, false});
@@ -139,7 +141,9 @@ struct CursorRow {
   double expected_angle_deg;  // between the aim ray and the view's forward direction
 };
 // gtest prints the case by its name, not as a dump of its bytes.
-void PrintTo(const CursorRow& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const CursorRow& c, std::ostream* os) {
+  *os << c.name;
+}
 
 // 1280 x 720 window: tan(vfov/2) = tan(hfov/2) * 720 / 1280.
 const CursorRow kCursor[] = {
@@ -147,7 +151,8 @@ const CursorRow kCursor[] = {
     {"right_edge", 1280, 360, 90, 45.0},
     {"left_edge_fov60", 0, 360, 60, 30.0},
     {"top_edge", 640, 0, 90, std::atan(720.0 / 1280.0) * test_util::kRadToDeg},
-    {"corner", 1280, 720, 90, std::acos(1.0 / std::sqrt(1.0 + 1.0 + 0.5625 * 0.5625)) * test_util::kRadToDeg},
+    {"corner", 1280, 720, 90,
+     std::acos(1.0 / std::sqrt(1.0 + 1.0 + 0.5625 * 0.5625)) * test_util::kRadToDeg},
 };
 
 class SimCursor : public ::testing::TestWithParam<CursorRow> {};
@@ -161,7 +166,8 @@ TEST_P(SimCursor, AimRayGoesThroughTheCursor) {
   sim->push_event(MouseMoveEvent{r.x, r.y});
   const InputState s = sim->poll(1);
   EXPECT_NEAR(angle_deg(s.right.aim, s.head), r.expected_angle_deg, 1e-9);
-  EXPECT_NEAR(glm::length(s.right.aim.position - s.head.position), 0.0, 1e-12);  // ray starts at the eye
+  EXPECT_NEAR(glm::length(s.right.aim.position - s.head.position), 0.0,
+              1e-12);  // ray starts at the eye
   // Right of centre aims right of the view, above aims up.
   const glm::dvec3 d = glm::inverse(s.head.orientation) * forward(s.right.aim);
   if (r.x > 640) {
@@ -174,7 +180,8 @@ TEST_P(SimCursor, AimRayGoesThroughTheCursor) {
     EXPECT_GT(d.y, 0.0);
   }
 }
-INSTANTIATE_TEST_SUITE_P(Rows, SimCursor, ::testing::ValuesIn(kCursor), [](const auto& i) { return std::string(i.param.name); });
+INSTANTIATE_TEST_SUITE_P(Rows, SimCursor, ::testing::ValuesIn(kCursor),
+                         [](const auto& i) { return std::string(i.param.name); });
 
 TEST(Sim, LeftHandedMouseAimsTheLeftHand) {
   SimConfig cfg;
@@ -200,7 +207,8 @@ TEST(Sim, EventsApplyAtTheNextPollAndTimeIsStamped) {
 
 TEST(Sim, BindingsTextListsEveryBinding) {
   const std::string text = sim_bindings_text({});
-  for (const char* needle : {"right mouse button drag", "0.2 deg per pixel", "Space", "/user/hand/right/input/trigger/value",
+  for (const char* needle : {"right mouse button drag", "0.2 deg per pixel", "Space",
+                             "/user/hand/right/input/trigger/value",
                              "/user/hand/right/input/a/click", "/user/hand/left/input/menu/click",
                              "/user/hand/left/input/thumbstick/y = +1", "Left arrow"}) {
     EXPECT_NE(text.find(needle), std::string::npos) << needle << "\n" << text;
@@ -221,7 +229,8 @@ TEST(Actions, EveryPathResolvesAndUnknownOnesDoNot) {
   EXPECT_EQ(action_paths().size(), 2u + 2u * 11u + 1u);
   for (const std::string& p : action_paths()) EXPECT_TRUE(get_action(s, p).has_value()) << p;
   EXPECT_EQ(std::get<double>(*get_action(s, "/user/hand/right/input/trigger/value")), 0.75);
-  EXPECT_EQ(std::get<glm::dvec2>(*get_action(s, "/user/hand/left/input/thumbstick")), glm::dvec2(0.5, -0.25));
+  EXPECT_EQ(std::get<glm::dvec2>(*get_action(s, "/user/hand/left/input/thumbstick")),
+            glm::dvec2(0.5, -0.25));
   EXPECT_EQ(std::get<double>(*get_action(s, "/user/hand/left/input/thumbstick/y")), -0.25);
   EXPECT_TRUE(std::get<bool>(*get_action(s, "/user/hand/left/input/menu/click")));
   EXPECT_EQ(std::get<Pose>(*get_action(s, "/user/head/pose")).position, glm::dvec3(1, 2, 3));
@@ -231,9 +240,9 @@ TEST(Actions, EveryPathResolvesAndUnknownOnesDoNot) {
 }
 
 TEST(Actions, LookRotationFollowsTheContractDirections) {
-  EXPECT_NEAR(forward(Pose{{}, look_rotation(90, 0)}).x, 1.0, 1e-12);   // azimuth +90 is +x
-  EXPECT_NEAR(forward(Pose{{}, look_rotation(0, 90)}).y, 1.0, 1e-12);   // altitude +90 is up
-  EXPECT_NEAR(forward(Pose{{}, look_rotation(0, 0)}).z, -1.0, 1e-12);   // forward is -z
+  EXPECT_NEAR(forward(Pose{{}, look_rotation(90, 0)}).x, 1.0, 1e-12);  // azimuth +90 is +x
+  EXPECT_NEAR(forward(Pose{{}, look_rotation(0, 90)}).y, 1.0, 1e-12);  // altitude +90 is up
+  EXPECT_NEAR(forward(Pose{{}, look_rotation(0, 0)}).z, -1.0, 1e-12);  // forward is -z
 }
 
 }  // namespace

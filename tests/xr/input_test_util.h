@@ -17,7 +17,9 @@ inline double azimuth_deg(const Pose& p) {
   const glm::dvec3 f = forward(p);
   return std::atan2(f.x, -f.z) * kRadToDeg;
 }
-inline double altitude_deg(const Pose& p) { return std::asin(forward(p).y) * kRadToDeg; }
+inline double altitude_deg(const Pose& p) {
+  return std::asin(forward(p).y) * kRadToDeg;
+}
 
 inline double angle_deg(const Pose& a, const Pose& b) {
   return std::acos(std::clamp(glm::dot(forward(a), forward(b)), -1.0, 1.0)) * kRadToDeg;

@@ -1,8 +1,8 @@
 /// @file
 /// @brief Per-pixel mode's parameter grid: cell centres and the largest sigma.
-#include <gtest/gtest.h>
-
 #include "xr/param_grid.h"
+
+#include <gtest/gtest.h>
 
 namespace vdfx::xr {
 namespace {
@@ -24,8 +24,9 @@ TEST(ParamGrid, CellsSampleTheirCentres) {
   EXPECT_NEAR(g.at(0, 0).contrast, 1.675, 1e-12);
   EXPECT_NEAR(g.at(0, 3).contrast, 0.325, 1e-12);
   EXPECT_NEAR(g.max_blur_sigma_deg(), 6.75, 1e-12);  // the top row, altitude 67.5
-  EXPECT_THROW(bake_param_grid([](const effects::Direction&) { return effects::StackParams{}; }, 0, 4),
-               std::invalid_argument);
+  EXPECT_THROW(
+      bake_param_grid([](const effects::Direction&) { return effects::StackParams{}; }, 0, 4),
+      std::invalid_argument);
 }
 
 }  // namespace

@@ -14,13 +14,16 @@ namespace vdfx::xr::scripts {
 
 namespace {
 
-io::RecordingHeader header(const std::string& note) { return {"sim", std::nullopt, note}; }
+io::RecordingHeader header(const std::string& note) {
+  return {"sim", std::nullopt, note};
+}
 
 void sim_look_and_place(const std::filesystem::path& file) {
   SimConfig cfg;
   cfg.hfov_deg = 90.0;  // the view this session was first recorded in (recordings/README.md)
   auto rec = create_recording_backend(create_sim_backend(cfg), file,
-                                      header("sim: look right 90 deg, up 10 deg, move the cursor, pull the trigger twice, push the left stick"));
+                                      header("sim: look right 90 deg, up 10 deg, move the cursor, "
+                                             "pull the trigger twice, push the left stick"));
   double mx = 640, my = 360;
   for (int f = 0; f < 180; ++f) {
     if (f == 10) rec->push_event(MouseButtonEvent{MouseButton::Right, true});
@@ -60,8 +63,9 @@ void sim_buttons_tour(const std::filesystem::path& file) {
 
 // A HID stream: reports every 20 ms from `report(t)`, plus a sample line every 100 ms holding
 // what the mapper makes of them (what a replay must reproduce).
-void hid_stream(const std::filesystem::path& file, const std::string& note, const std::string& device,
-                const std::vector<std::uint8_t>& descriptor, double seconds,
+void hid_stream(const std::filesystem::path& file, const std::string& note,
+                const std::string& device, const std::vector<std::uint8_t>& descriptor,
+                double seconds,
                 const std::function<std::vector<std::vector<std::uint8_t>>(double)>& reports) {
   io::RecordingWriter w(file, header(note));
   HidInputMapper mapper;
@@ -79,48 +83,64 @@ void hid_stream(const std::filesystem::path& file, const std::string& note, cons
   }
 }
 
-std::uint8_t level(double x) { return static_cast<std::uint8_t>(std::lround(std::clamp(x, 0.0, 1.0) * 255.0)); }
+std::uint8_t level(double x) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(x, 0.0, 1.0) * 255.0));
+}
 
 void hid_ds4(const std::filesystem::path& file) {
-  hid_stream(file, "DualShock 4 (USB): left stick right 1 s, R2 ramp and cross, then options", "054c:05c4", {}, 3.0,
-             [](double t) -> std::vector<std::vector<std::uint8_t>> {
+  hid_stream(file, "DualShock 4 (USB): left stick right 1 s, R2 ramp and cross, then options",
+             "054c:05c4", {}, 3.0, [](double t) -> std::vector<std::vector<std::uint8_t>> {
                std::uint8_t lx = 0x80, r2 = 0, b5 = 0x08, b6 = 0;
                if (t < 1.0 - 1e-9) lx = 0xFF;
                if (t >= 1.0 - 1e-9 && t < 2.0 - 1e-9) r2 = level(t - 1.0);
-               if (t >= 1.5 - 1e-9 && t < 2.0 - 1e-9) b5 = 0x28;   // cross
-               if (t >= 2.5 - 1e-9) b6 = 0x20;                     // options
-               if (r2 > 0) b6 |= 0x08;                              // R2's digital bit goes with the analog value
+               if (t >= 1.5 - 1e-9 && t < 2.0 - 1e-9) b5 = 0x28;  // cross
+               if (t >= 2.5 - 1e-9) b6 = 0x20;                    // options
+               if (r2 > 0) b6 |= 0x08;  // R2's digital bit goes with the analog value
                return {test_data::ds4_report({{1, lx}, {9, r2}, {5, b5}, {6, b6}})};
              });
 }
 
 void hid_dualsense(const std::filesystem::path& file) {
-  hid_stream(file, "DualSense (USB): look up 0.5 s, L2 and triangle, R1 and right stick left", "054c:0ce6", {}, 3.0,
-             [](double t) -> std::vector<std::vector<std::uint8_t>> {
+  hid_stream(file, "DualSense (USB): look up 0.5 s, L2 and triangle, R1 and right stick left",
+             "054c:0ce6", {}, 3.0, [](double t) -> std::vector<std::vector<std::uint8_t>> {
                std::uint8_t ly = 0x80, l2 = 0, rx = 0x80, b8 = 0x08, b9 = 0;
                if (t < 0.5 - 1e-9) ly = 0x00;
-               if (t >= 0.5 - 1e-9 && t < 1.5 - 1e-9) { l2 = 0xFF; b8 = 0x88; b9 = 0x04; }
-               if (t >= 1.5 - 1e-9 && t < 2.5 - 1e-9) { rx = 0x00; b9 = 0x02; }
+               if (t >= 0.5 - 1e-9 && t < 1.5 - 1e-9) {
+                 l2 = 0xFF;
+                 b8 = 0x88;
+                 b9 = 0x04;
+               }
+               if (t >= 1.5 - 1e-9 && t < 2.5 - 1e-9) {
+                 rx = 0x00;
+                 b9 = 0x02;
+               }
                const auto seq = static_cast<std::uint8_t>(std::lround(t * 50.0));
-               return {test_data::dualsense_report({{2, ly}, {3, rx}, {5, l2}, {7, seq}, {8, b8}, {9, b9}})};
+               return {test_data::dualsense_report(
+                   {{2, ly}, {3, rx}, {5, l2}, {7, seq}, {8, b8}, {9, b9}})};
              });
 }
 
 void hid_generic(const std::filesystem::path& file) {
-  hid_stream(file, "generic USB gamepad (descriptor-driven): right stick right, hat up, button 1 and left stick left",
+  hid_stream(file,
+             "generic USB gamepad (descriptor-driven): right stick right, hat up, button 1 and "
+             "left stick left",
              "0079:0006", test_data::kGenericGamepadDescriptor, 3.0,
              [](double t) -> std::vector<std::vector<std::uint8_t>> {
                std::uint8_t x = 0x80, z = 0x80, hat = 0x0F;
                std::uint16_t buttons = 0;
                if (t < 1.0 - 1e-9) z = 0xFF;
                if (t >= 1.0 - 1e-9 && t < 2.0 - 1e-9) hat = 0;
-               if (t >= 2.0 - 1e-9 && t < 3.0 - 1e-9) { buttons = 0x001; x = 0x00; }
+               if (t >= 2.0 - 1e-9 && t < 3.0 - 1e-9) {
+                 buttons = 0x001;
+                 x = 0x00;
+               }
                return {test_data::generic_report(x, 0x80, z, 0x80, hat, buttons)};
              });
 }
 
 void hid_spacemouse(const std::filesystem::path& file) {
-  hid_stream(file, "SpaceMouse (046d:c626): twist right 1 s, button 1, tilt up 0.5 s", "046d:c626", {}, 3.0,
+  hid_stream(file, "SpaceMouse (046d:c626): twist right 1 s, button 1, tilt up 0.5 s", "046d:c626",
+             {}, 3.0,
              [last_buttons = -1](double t) mutable -> std::vector<std::vector<std::uint8_t>> {
                int rx = 0, rz = 0;
                std::uint8_t buttons = 0;

@@ -2,12 +2,13 @@
 /// @brief xr::RenderView and effects::ViewCamera describe the same pixel <-> ray mapping: the GPU
 /// view, its camera(), the CPU reference's own constructors and the documented tangent formula
 /// must agree for symmetric and asymmetric views.
+#include "xr/render_view.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "effects/view_camera.h"
-#include "xr/render_view.h"
 
 namespace vdfx::xr {
 namespace {
@@ -56,8 +57,10 @@ TEST(RenderView, AgreesWithTheCpuCamera) {
         EXPECT_NEAR(t.x(), tx, 1e-12) << c.name;
         EXPECT_NEAR(t.y(), ty, 1e-12) << c.name;
         const Eigen::Vector3d ray = c.view.world_ray(px, py, c.width, c.height);
-        EXPECT_LE((ray - c.reference.ray(px, py)).norm(), 1e-12) << c.name << " " << px << "," << py;
-        EXPECT_LE((ray - (c.view.orientation * Eigen::Vector3d(tx, ty, -1)).normalized()).norm(), 1e-12);
+        EXPECT_LE((ray - c.reference.ray(px, py)).norm(), 1e-12)
+            << c.name << " " << px << "," << py;
+        EXPECT_LE((ray - (c.view.orientation * Eigen::Vector3d(tx, ty, -1)).normalized()).norm(),
+                  1e-12);
         // Round trips: tangent -> pixel, and the CPU projection of the ray.
         EXPECT_LE((c.view.pixel_at(t, c.width, c.height) - Eigen::Vector2d(px, py)).norm(), 1e-9);
         const auto back = c.reference.project(ray);

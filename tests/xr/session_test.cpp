@@ -64,8 +64,16 @@ const struct {
 } kMisuse[] = {
     {"wait twice", [](Session& s, std::int64_t) { s.wait_frame(10); }},
     {"end without begin", [](Session& s, std::int64_t d) { s.end_frame(d, {}); }},
-    {"begin twice", [](Session& s, std::int64_t) { s.begin_frame(); s.begin_frame(); }},
-    {"wrong display time", [](Session& s, std::int64_t d) { s.begin_frame(); s.end_frame(d + 1, {}); }},
+    {"begin twice",
+     [](Session& s, std::int64_t) {
+       s.begin_frame();
+       s.begin_frame();
+     }},
+    {"wrong display time",
+     [](Session& s, std::int64_t d) {
+       s.begin_frame();
+       s.end_frame(d + 1, {});
+     }},
 };
 
 TEST(Session, FrameCallsOutOfOrderAreRejectedWithTheState) {
@@ -88,10 +96,10 @@ const struct {
   std::int64_t now;       //!< ns since begin
   std::int64_t expected;  //!< predicted display time since begin
 } kTiming[] = {
-    {90, 0, 11111111},               // at a vsync: the next one
-    {90, 5000000, 11111111},         // between vsyncs: the next one
-    {90, 11111111, 22222222},        // exactly on a vsync: strictly after
-    {72, 30000000, 41666667},        // 72 Hz, period 13.888889 ms rounded to ns
+    {90, 0, 11111111},         // at a vsync: the next one
+    {90, 5000000, 11111111},   // between vsyncs: the next one
+    {90, 11111111, 22222222},  // exactly on a vsync: strictly after
+    {72, 30000000, 41666667},  // 72 Hz, period 13.888889 ms rounded to ns
     {120, 100000000, 100000000 + 8333333 - 100000000 % 8333333},
 };
 
@@ -147,7 +155,9 @@ TEST(Session, ViewsCombineHeadPoseAndEyeOffsets) {
   Pose quad;
   quad.position = {0, 0, -1};
   EXPECT_LT((position_of(Session::to_local(quad, ReferenceSpace::View, head)) -
-             Eigen::Vector3d(-1, 1.6, 0)).norm(), 1e-12);
+             Eigen::Vector3d(-1, 1.6, 0))
+                .norm(),
+            1e-12);
   EXPECT_EQ(position_of(Session::to_local(quad, ReferenceSpace::Local, head)), position_of(quad));
 }
 

@@ -27,16 +27,18 @@ cv::Vec3f sample_ray(const effects::EquirectSampler& sampler, const Eigen::Vecto
 cv::Mat cpu_render(const cv::Mat& equirect_bgr, const RenderView& v, int w, int h, int ss) {
   cv::Mat rgb;
   cv::cvtColor(equirect_bgr, rgb, cv::COLOR_BGR2RGB);
-  const effects::EquirectSampler equirect(rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
+  const effects::EquirectSampler equirect(
+      rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
   cv::Mat out(h, w, CV_32FC3);
   out.forEach<cv::Vec3f>([&](cv::Vec3f& px, const int* pos) {
     cv::Vec3d acc(0, 0, 0);
     for (int sy = 0; sy < ss; ++sy)
       for (int sx = 0; sx < ss; ++sx)
-        acc += cv::Vec3d(sample_ray(equirect, v.world_ray(pos[1] + (sx + 0.5) / ss,
-                                                          pos[0] + (sy + 0.5) / ss, w, h)));
+        acc += cv::Vec3d(sample_ray(
+            equirect, v.world_ray(pos[1] + (sx + 0.5) / ss, pos[0] + (sy + 0.5) / ss, w, h)));
     acc /= static_cast<double>(ss * ss);
-    px = cv::Vec3f(static_cast<float>(acc[0]), static_cast<float>(acc[1]), static_cast<float>(acc[2]));
+    px = cv::Vec3f(static_cast<float>(acc[0]), static_cast<float>(acc[1]),
+                   static_cast<float>(acc[2]));
   });
   return out;
 }
@@ -44,7 +46,8 @@ cv::Mat cpu_render(const cv::Mat& equirect_bgr, const RenderView& v, int w, int 
 double rms(const cv::Mat& a, const cv::Mat& b) {
   cv::Mat d;
   cv::absdiff(a, b, d);
-  return std::sqrt(cv::mean(d.mul(d))[0] / 3 + cv::mean(d.mul(d))[1] / 3 + cv::mean(d.mul(d))[2] / 3);
+  return std::sqrt(cv::mean(d.mul(d))[0] / 3 + cv::mean(d.mul(d))[1] / 3 +
+                   cv::mean(d.mul(d))[2] / 3);
 }
 
 class VideoLayerGlTest : public GlTest {};
@@ -100,8 +103,10 @@ TEST_F(VideoLayerGlTest, PolesDoNotAliasAgainstASupersampledReference) {
     layer.render(dst, v, mode);
     err[static_cast<int>(mode)] = rms(test::bgr_clamped(dst.read_float()), ref);
   }
-  std::printf("[ video    ] pole view RMS vs 12x12 supersampled: analytic %.4f, derivatives %.4f, "
-              "base level %.4f\n", err[0], err[1], err[2]);
+  std::printf(
+      "[ video    ] pole view RMS vs 12x12 supersampled: analytic %.4f, derivatives %.4f, "
+      "base level %.4f\n",
+      err[0], err[1], err[2]);
   // The aliasing of the base level is the 0.4 amplitude of the checks; mipmapping must remove most.
   EXPECT_GT(err[2], 0.15);
   EXPECT_LT(err[0], err[2] / 3);

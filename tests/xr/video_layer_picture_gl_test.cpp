@@ -38,7 +38,8 @@ cv::Mat test_rgb(int w, int h) {
 /// (level 0, rows clamped like GL's CLAMP_TO_EDGE); RGB.
 cv::Mat cpu_view(const io::Picture& pic, const RenderView& v, int w, int h) {
   const cv::Mat rgb = io::to_rgb(pic, io::PixelFormat::RgbF32);
-  const effects::EquirectSampler s(rgb, {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
+  const effects::EquirectSampler s(rgb,
+                                   {effects::SampleFilter::Bilinear, effects::PoleRows::Clamp});
   cv::Mat out(h, w, CV_32FC3);
   out.forEach<cv::Vec3f>([&](cv::Vec3f& px, const int* pos) {
     const Eigen::Vector3d c = s.sample(v.world_ray(pos[1] + 0.5, pos[0] + 0.5, w, h));
@@ -71,7 +72,8 @@ io::Picture to_ten_bit(const io::Picture& p8) {
     cv::Mat wide;
     plane.convertTo(wide, CV_16UC1, 4.0);
     for (int y = 0; y < wide.rows; ++y)
-      for (int x = 0; x < wide.cols; ++x) wide.at<std::uint16_t>(y, x) += static_cast<std::uint16_t>((x / 8 + y / 8) % 4);
+      for (int x = 0; x < wide.cols; ++x)
+        wide.at<std::uint16_t>(y, x) += static_cast<std::uint16_t>((x / 8 + y / 8) % 4);
     plane = wide;
   }
   return p;

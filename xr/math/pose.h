@@ -7,10 +7,10 @@
 /// (effects/coords.h).
 #pragma once
 
-#include "effects/coords.h"
-
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
+
+#include "effects/coords.h"
 
 namespace vdfx::math {
 
