@@ -10,6 +10,7 @@
 #include <cstring>
 #include <string>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace vdfx::app {
@@ -43,8 +44,11 @@ PendingOutput::PendingOutput(std::filesystem::path target) : target_(std::move(t
                          " does not exist");
   if (std::filesystem::is_directory(target_, ec))
     throw io::InputError("cannot write " + target_.string() + ": it is a folder");
-  temp_ = dir / ("." + target_.stem().string() + ".tmp-" + std::to_string(::getpid()) +
-                 target_.extension().string());
+  // An export killed by SIGKILL (or a crash) cannot remove its temporary file: the next export
+  // to the same name does, once that process is gone.
+  const std::string prefix = "." + target_.stem().string() + ".tmp-";
+  io::remove_stale_temps(dir, prefix, target_.extension().string(), false);
+  temp_ = dir / (prefix + std::to_string(::getpid()) + target_.extension().string());
 }
 
 PendingOutput::~PendingOutput() {

@@ -60,30 +60,35 @@ std::filesystem::path temp_name(const std::filesystem::path& path) {
          (temp_prefix(path) + std::to_string(::getpid()) + "-" + std::to_string(counter++));
 }
 
-/// Removes `.NAME.tmp-PID-N` files that a killed writer of this very file left behind: only names
-/// of exactly that form, and only when no process PID exists on this machine (a live writer's
-/// file is never touched). Best effort: a file that cannot be removed is left.
-void remove_stale_temps(const std::filesystem::path& path, const std::filesystem::path& dir) {
-  const std::string prefix = temp_prefix(path);
+}  // namespace
+
+void remove_stale_temps(const std::filesystem::path& dir, const std::string& prefix,
+                        const std::string& suffix, bool numbered) {
   std::error_code ec;
   for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    if (name.size() <= prefix.size() + suffix.size() ||
+        name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
     const char* p = name.data() + prefix.size();
-    const char* last = name.data() + name.size();
+    const char* last = name.data() + name.size() - suffix.size();
     long pid = 0;
-    unsigned long n = 0;
     const auto a = std::from_chars(p, last, pid);
-    if (a.ec != std::errc() || a.ptr == last || *a.ptr != '-' || pid <= 0) continue;
-    const auto b = std::from_chars(a.ptr + 1, last, n);
-    if (b.ec != std::errc() || b.ptr != last) continue;
+    if (a.ec != std::errc() || pid <= 0) continue;
+    if (numbered) {
+      unsigned long n = 0;
+      if (a.ptr == last || *a.ptr != '-') continue;
+      const auto b = std::from_chars(a.ptr + 1, last, n);
+      if (b.ec != std::errc() || b.ptr != last) continue;
+    } else if (a.ptr != last) {
+      continue;
+    }
     if (pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
     std::error_code ignored;
     std::filesystem::remove(it->path(), ignored);
   }
 }
-
-}  // namespace
 
 void write_file_atomic(const std::filesystem::path& user_path, std::string_view bytes,
                        OutputName name) {
@@ -96,7 +101,7 @@ void write_file_atomic(const std::filesystem::path& user_path, std::string_view 
 
   struct stat old {};
   const bool existed = ::stat(path.c_str(), &old) == 0;
-  remove_stale_temps(path, dir);
+  remove_stale_temps(dir, temp_prefix(path), "", true);
 
   const std::filesystem::path tmp_path = temp_name(path);
   const int fd = ::open(tmp_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);

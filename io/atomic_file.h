@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 #include "io/output_path.h"
@@ -24,5 +25,12 @@ namespace vdfx::io {
 /// refused), io/output_path.h.
 void write_file_atomic(const std::filesystem::path& path, std::string_view bytes,
                        OutputName name = OutputName::Given);
+
+/// Removes what killed writers left in `dir`: files named `prefix` PID `suffix` (with `numbered`:
+/// `prefix` PID-N `suffix`), exactly that form, and only when no process PID exists on this
+/// machine (a live writer's file, this process's included, is never touched). Best effort: a
+/// file that cannot be removed is left.
+void remove_stale_temps(const std::filesystem::path& dir, const std::string& prefix,
+                        const std::string& suffix, bool numbered);
 
 }  // namespace vdfx::io
