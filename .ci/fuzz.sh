@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every libFuzzer target of tests/fuzz for a bounded time (issue 11): builds them in the
 # sanitizer build (.ci/asan_configure.sh, build-asan/ or $VDFX_ASAN_BUILD_DIR, shared with
-# .ci/sanitize.sh), then fuzzes each for $VDFX_FUZZ_SECONDS (default 10: a smoke run in CI that
+# .ci/sanitize.sh), then fuzzes each for $VDFX_FUZZ_SECONDS (default 60, as the issue asks: a bounded run in CI that
 # finds shallow faults in new reader code; run it longer by hand after changing a reader)
 # starting from a copy of its seed corpus, $VDFX_JOBS at a time. A crash, leak, timeout or
 # property failure fails the run; the input that caused it is in build-asan/artifacts/NAME/.
@@ -10,7 +10,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/.ci/deps.sh"
 build=${VDFX_ASAN_BUILD_DIR:-$root/build-asan}
-seconds=${VDFX_FUZZ_SECONDS:-10}
+seconds=${VDFX_FUZZ_SECONDS:-60}
 jobs=${VDFX_JOBS:-$(nproc)}
 targets=(sidecar recording hmd_profile hid_descriptor hid_reports)
 "$root/.ci/asan_configure.sh" "$build"
