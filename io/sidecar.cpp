@@ -67,6 +67,18 @@ nlohmann::ordered_json keyframe_to_json(const effects::Keyframe& k, nlohmann::or
   return kj;
 }
 
+nlohmann::ordered_json scalar_keyframes_to_json(const std::vector<effects::Keyframe>& keyframes,
+                                                std::span<const effects::ParamSpec> specs) {
+  ordered kfs = ordered::array();
+  for (const effects::Keyframe& k : keyframes) {
+    ordered params;
+    for (std::size_t j = 0; j < specs.size(); ++j)
+      params[std::string(specs[j].name)] = j < k.params.size() ? k.params[j] : specs[j].neutral;
+    kfs.push_back(keyframe_to_json(k, std::move(params)));
+  }
+  return kfs;
+}
+
 nlohmann::ordered_json interpolation_to_json(const effects::InterpolationSettings& s) {
   return interpolation_json(s);
 }

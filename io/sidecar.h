@@ -82,6 +82,11 @@ nlohmann::ordered_json params_to_json(effects::EffectType type, std::span<const 
 nlohmann::ordered_json keyframe_to_json(const effects::Keyframe& keyframe,
                                         nlohmann::ordered_json params);
 
+/// The "keyframes" array of an entry whose parameters are scalars (flare: intensity; grain:
+/// intensity, size): each value under its spec's name, a missing one as the spec's neutral.
+nlohmann::ordered_json scalar_keyframes_to_json(const std::vector<effects::Keyframe>& keyframes,
+                                                std::span<const effects::ParamSpec> specs);
+
 /// An "interpolation" object (the file's default or an effect's override).
 nlohmann::ordered_json interpolation_to_json(const effects::InterpolationSettings& settings);
 

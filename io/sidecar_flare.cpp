@@ -202,13 +202,7 @@ nlohmann::ordered_json flare_to_json(const effects::FlareEffect& f) {
   s["plane_m"] = f.settings.plane_m;
   e["settings"] = std::move(s);
   if (f.interpolation) e["interpolation"] = interpolation_to_json(*f.interpolation);
-  ordered kfs = ordered::array();
-  for (const effects::Keyframe& k : f.keyframes) {
-    ordered params;
-    params["intensity"] = k.params.empty() ? effects::kFlareIntensitySpec.neutral : k.params[0];
-    kfs.push_back(keyframe_to_json(k, std::move(params)));
-  }
-  e["keyframes"] = std::move(kfs);
+  e["keyframes"] = scalar_keyframes_to_json(f.keyframes, {&effects::kFlareIntensitySpec, 1});
   return e;
 }
 

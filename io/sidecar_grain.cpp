@@ -115,15 +115,7 @@ nlohmann::ordered_json grain_to_json(const effects::GrainEffect& g) {
   }
   e["settings"] = std::move(s);
   if (g.interpolation) e["interpolation"] = interpolation_to_json(*g.interpolation);
-  const auto& specs = effects::grain_param_specs();
-  ordered kfs = ordered::array();
-  for (const effects::Keyframe& k : g.keyframes) {
-    ordered params;
-    for (std::size_t j = 0; j < specs.size(); ++j)
-      params[std::string(specs[j].name)] = j < k.params.size() ? k.params[j] : specs[j].neutral;
-    kfs.push_back(keyframe_to_json(k, std::move(params)));
-  }
-  e["keyframes"] = std::move(kfs);
+  e["keyframes"] = scalar_keyframes_to_json(g.keyframes, effects::grain_param_specs());
   return e;
 }
 
