@@ -167,9 +167,10 @@ inline bool has_type(const json& entry, const char* type) {
   return t != entry.end() && t->is_string() && t->get<std::string>() == type;
 }
 
-/// An effect's "interpolation" override object (format 1's checks).
-void read_interpolation_settings(Checker& c, const json& v, const std::string& ptr,
-                                 effects::InterpolationSettings& out);
+/// An entry's optional "interpolation" override (format 1's checks): `out` is set when `entry`
+/// (at `ptr`) has one, left as it is otherwise.
+void read_interpolation_override(Checker& c, const json& entry, const std::string& ptr,
+                                 std::optional<effects::InterpolationSettings>& out);
 
 /// False, reported at `ptr`, when an array holds more than kMaxKeyframesPerEffect keyframes (the
 /// solver's limit): then they are not read at all, one clear message and no time spent.

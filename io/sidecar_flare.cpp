@@ -227,11 +227,7 @@ void read_flare(Checker& c, const json& entry, const std::string& ptr,
     read_light(c, *p, ptr + "/light", frames, out.light);
   if (const json* p = c.member(entry, ptr, "settings", false))
     read_settings(c, *p, ptr + "/settings", out.settings);
-  if (const json* p = c.member(entry, ptr, "interpolation", false)) {
-    effects::InterpolationSettings s;
-    read_interpolation_settings(c, *p, ptr + "/interpolation", s);
-    out.interpolation = s;
-  }
+  read_interpolation_override(c, entry, ptr, out.interpolation);
   if (const json* p = c.member(entry, ptr, "keyframes"))
     read_keyframes(c, *p, ptr + "/keyframes", frames, out.keyframes);
 }

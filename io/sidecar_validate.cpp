@@ -216,11 +216,7 @@ void read_effect(Checker& c, const json& v, const std::string& ptr,
       }
     }
   }
-  if (const json* p = c.member(*obj, ptr, "interpolation", /*required=*/false)) {
-    effects::InterpolationSettings s;
-    read_interpolation(c, *p, ptr + "/interpolation", s);
-    out.interpolation = s;
-  }
+  read_interpolation_override(c, *obj, ptr, out.interpolation);
   if (const json* p = c.member(*obj, ptr, "keyframes")) {
     const std::string kp = ptr + "/keyframes";
     if (!p->is_array()) {
@@ -299,9 +295,13 @@ bool keyframe_count_ok(Checker& c, const json& keyframes, const std::string& ptr
   return false;
 }
 
-void read_interpolation_settings(Checker& c, const json& v, const std::string& ptr,
-                                 effects::InterpolationSettings& out) {
-  read_interpolation(c, v, ptr, out);
+void read_interpolation_override(Checker& c, const json& entry, const std::string& ptr,
+                                 std::optional<effects::InterpolationSettings>& out) {
+  if (const json* p = c.member(entry, ptr, "interpolation", /*required=*/false)) {
+    effects::InterpolationSettings s;
+    read_interpolation(c, *p, ptr + "/interpolation", s);
+    out = s;
+  }
 }
 
 void read_keyframe_place(Checker& c, const json& v, const std::string& ptr,
