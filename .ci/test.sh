@@ -11,7 +11,9 @@ build=${VDFX_BUILD_DIR:-$root/build}
 cd "$build"
 # GL tests need a display; they are never skipped silently: without one they fail.
 export LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe
+# -noreset: by default Xvfb resets when its last client disconnects, and a GL test that connects
+# during that reset fails with "Failed to open display" (seen once in CI with two tests in flight).
 if [ -z "${DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1920x1080x24" ctest --output-on-failure -j "${VDFX_JOBS:-$(nproc)}" "$@"
+  exec xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --output-on-failure -j "${VDFX_JOBS:-$(nproc)}" "$@"
 fi
 exec ctest --output-on-failure -j "${VDFX_JOBS:-$(nproc)}" "$@"
