@@ -14,6 +14,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/atomic_file.h"
+
 extern char** environ;
 
 namespace vdfx::app::bench {
@@ -42,7 +44,7 @@ int run_gnuplot(const std::vector<std::string>& args, const std::filesystem::pat
 }
 
 std::string read_text(const std::filesystem::path& p) {
-  std::ifstream in(p);
+  std::ifstream in(p, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
@@ -264,23 +266,31 @@ std::vector<std::filesystem::path> write_plots(const Report& report, const PlotO
       std::filesystem::temp_directory_path() / ("vdfx-bench-plot-" + std::to_string(getpid()));
   std::filesystem::create_directories(work);
   std::vector<std::filesystem::path> written;
-  for (const Knob& k : report.knobs) {
-    std::vector<const Row*> rows;
-    for (const Row& r : report.rows)
-      if (r.knob == k.id && r.status == RowStatus::Ok && std::isfinite(r.time.median_s) &&
-          std::isfinite(plotted_error(r, k)))
-        rows.push_back(&r);
-    if (rows.empty()) continue;
-    const auto png = o.dir / (k.id + ".png");
-    const auto data = work / (k.id + ".dat"), script = work / (k.id + ".gp"),
-               log = work / (k.id + ".log");
-    std::ofstream(script) << script_for(k, rows, data, png, o);
-    if (run_gnuplot({script.string()}, log) != 0 || !std::filesystem::exists(png)) {
-      const std::string msg = read_text(log);
-      std::filesystem::remove_all(work);
-      throw std::runtime_error("gnuplot failed on the plot of " + k.id + ": " + msg);
+  try {
+    for (const Knob& k : report.knobs) {
+      std::vector<const Row*> rows;
+      for (const Row& r : report.rows)
+        if (r.knob == k.id && r.status == RowStatus::Ok && std::isfinite(r.time.median_s) &&
+            std::isfinite(plotted_error(r, k)))
+          rows.push_back(&r);
+      if (rows.empty()) continue;
+      const auto png = o.dir / (k.id + ".png");
+      // gnuplot draws into the work folder; the finished picture then replaces PNG atomically (a
+      // killed run or a failing gnuplot never leaves a half-written plot, a link is written
+      // through).
+      const auto data = work / (k.id + ".dat"), script = work / (k.id + ".gp"),
+                 log = work / (k.id + ".log"), drawn = work / (k.id + ".png");
+      std::ofstream(script) << script_for(k, rows, data, drawn, o);
+      if (run_gnuplot({script.string()}, log) != 0 || !std::filesystem::exists(drawn)) {
+        throw std::runtime_error("gnuplot failed on the plot of " + k.id + ": " + read_text(log));
+      }
+      io::write_file_atomic(png, read_text(drawn));
+      written.push_back(png);
     }
-    written.push_back(png);
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove_all(work, ec);
+    throw;
   }
   std::filesystem::remove_all(work);
   return written;

@@ -5,12 +5,15 @@
 /// size; GL rows listed as skipped without a display; usage and input errors. No timing is
 /// asserted. Also the Pareto front and the timing summaries on their own.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "app/bench_plot.h"
 #include "app/bench_report.h"
 #include "app/bench_timing.h"
 #include "command_test_util.h"
@@ -246,6 +249,52 @@ TEST(BenchReport, TheParetoFrontIsPerSeriesAndOnlyForAlternatives) {
   EXPECT_FALSE(rep.rows[2].pareto);  // slower and less accurate than the second
   EXPECT_TRUE(rep.rows[3].pareto);   // alone in its series
   EXPECT_FALSE(rep.rows[4].pareto);  // sizes are not alternatives
+}
+
+// A plot replaces its file atomically: the PNG is drawn in a work folder and then written with
+// io::write_file_atomic. So an old plot is replaced by a rename, never rewritten in place (a hard
+// link to the old file keeps the old bytes), a plot path that is a link keeps the link (its
+// target gets the picture), and nothing else is left in the folder.
+TEST(BenchPlot, PlotsReplaceTheirFilesByRenameAndWriteThroughLinks) {
+  namespace fs = std::filesystem;
+  ASSERT_EQ(b::gnuplot_problem(), "");
+  const fs::path dir = fs::temp_directory_path() / ("vdfx_plot_atomic_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "plots");
+  std::ofstream(dir / "plots" / "x.size.png") << "old";
+  fs::create_hard_link(dir / "plots" / "x.size.png", dir / "old.png");
+  std::ofstream(dir / "target.png") << "old";
+  fs::create_symlink(dir / "target.png", dir / "plots" / "x.alt.png");
+  b::Report rep;
+  rep.knobs = {{"x.size", "", "view", "px", "ref", "peer", b::PlotError::Max, false, false},
+               {"x.alt", "", "view", "px", "ref", "peer", b::PlotError::Max, false, true}};
+  for (const char* knob : {"x.size", "x.alt"})
+    for (int i = 1; i <= 3; ++i) {
+      b::Row r;
+      r.knob = knob;
+      r.setting = std::to_string(i);
+      r.time.median_s = i * 1e-3;
+      r.error = {1.0 / i, 0.5 / i};
+      rep.rows.push_back(r);
+    }
+  b::PlotOptions o;
+  o.dir = dir / "plots";
+  EXPECT_EQ(b::write_plots(rep, o).size(), 2u);
+  const auto head = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::string h(8, '\0');
+    in.read(h.data(), 8);
+    return h.substr(0, static_cast<std::size_t>(in.gcount()));
+  };
+  const std::string png = "\x89PNG\r\n\x1a\n";
+  EXPECT_EQ(head(dir / "plots" / "x.size.png"), png);
+  EXPECT_EQ(head(dir / "old.png"), "old");  // replaced by rename, not rewritten in place
+  EXPECT_TRUE(fs::is_symlink(dir / "plots" / "x.alt.png"));
+  EXPECT_EQ(head(dir / "target.png"), png);
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir / "plots")) ++entries;
+  EXPECT_EQ(entries, 2);  // the two plots: no temporary file left
+  fs::remove_all(dir);
 }
 
 TEST(BenchTiming, MedianP90AndInterleavedSamplesPerUnit) {
