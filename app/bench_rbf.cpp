@@ -298,7 +298,8 @@ void add_grid(Registry& r, bool quick) {
       quick ? std::vector<std::pair<int, int>>{{64, 32}, {256, 128}, {1024, 512}}
             : std::vector<std::pair<int, int>>{{16, 8},    {64, 32},   {128, 64},
                                                {256, 128}, {512, 256}, {1024, 512}};
-  for (const auto& [gw, gh] : sizes) {
+  for (const auto& size : sizes) {
+    const int gw = size.first, gh = size.second;  // clang 14 cannot capture structured bindings
     r.add(
         "rbf.grid", std::to_string(gw) + "x" + std::to_string(gh),
         [gw, gh](Row& row, const Context& ctx) {
