@@ -28,6 +28,7 @@
 namespace vdfx::app {
 
 class BakedGridCache;
+struct BakedGrid;
 
 struct BakedOptions {
   int param_step = 0;  //!< 0: automatic (the grid at most 512 columns: 1 up to 512-wide video)
@@ -40,7 +41,7 @@ struct BakedOptions {
 /// share one frame computes its grid once per export. Safe to share between render threads.
 class BakedGridCache {
  public:
-  using Grid = std::shared_ptr<const std::vector<double>>;
+  using Grid = std::shared_ptr<const BakedGrid>;
   /// The grid stored under `key`, or null.
   Grid find(const std::vector<std::int64_t>& key) const;
   void store(std::vector<std::int64_t> key, Grid grid);
@@ -96,9 +97,10 @@ inline void apply_colour_pixel(float* c, const float* p, const ColourMask& m) {
 cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& stack,
                      std::int64_t frame, const BakedOptions& options = {});
 /// The same in place: `rgb` becomes the rendered frame (its buffer is reused unless a blur needs
-/// a new one).
+/// a new one). With `scratch`, the blur writes into it and the two are swapped: a caller keeping
+/// both from frame to frame allocates nothing per frame.
 void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, std::int64_t frame,
-                       const BakedOptions& options = {});
+                       const BakedOptions& options = {}, cv::Mat* scratch = nullptr);
 
 /// `vdfx export --baked`'s frame renderer: decoded picture -> RGB float (one buffer per render
 /// thread, reused: no fresh 4K float image, and its page faults, per frame) -> render_baked_into

@@ -42,8 +42,9 @@ inline void add_shifted(float* acc, const float* src, float wgt, int shift, int 
 }
 
 /// The exact angular gather at this image's own resolution (sigma in radians), at the texels of
-/// `runs` only (all when null; the others are left unset).
-cv::Mat gather(const cv::Mat& img, double sigma, const RowRuns* runs) {
+/// `runs` only (all when null; the others are left unset, or 0 on the rows computed with
+/// `clear_rows`: a reduced level is read back along whole rows).
+cv::Mat gather(const cv::Mat& img, double sigma, const RowRuns* runs, bool clear_rows) {
   const int w = img.cols, h = img.rows;
   const double radius = 3.0 * sigma, cos_radius = std::cos(radius);
   const double dphi = kPi / h, dlam = 2.0 * kPi / w;
@@ -92,6 +93,7 @@ cv::Mat gather(const cv::Mat& img, double sigma, const RowRuns* runs) {
             add_shifted(acc.data(), src, wgt, ((d % w) + w) % w, w, a, b);
       }
       float* dst = out.ptr<float>(i);
+      if (clear_rows) std::fill(dst, dst + 3 * w, 0.0f);
       const float inv = static_cast<float>(1.0 / norm);
       for (const auto& [a, b] : row_runs)
         for (int t = 3 * a; t < 3 * b; ++t) dst[t] = acc[static_cast<std::size_t>(t)] * inv;
@@ -195,9 +197,9 @@ cv::Mat blurred_level(Pyramid& pyramid, int w, int h, double sigma_deg, const Ro
   const double texel_deg = 360.0 / w;
   const double sigma_px = sigma_deg / texel_deg;
   const int f = level_factor(sigma_deg, w, h);
-  if (f == 1) return gather(pyramid.at(1), sigma_deg * kPi / 180.0, runs);
+  if (f == 1) return gather(pyramid.at(1), sigma_deg * kPi / 180.0, runs, false);
   const double gather_px = std::sqrt(sigma_px * sigma_px - 0.25 * f * f);
-  return gather(pyramid.at(f), gather_px * texel_deg * kPi / 180.0, runs);
+  return gather(pyramid.at(f), gather_px * texel_deg * kPi / 180.0, runs, runs != nullptr);
 }
 
 /// Bilinear read-back along one axis: full-resolution index i reads reduced samples a[i], b[i]
@@ -228,48 +230,75 @@ Taps read_back_taps(int n, int m, bool wrap) {
   return taps;
 }
 
-/// A level sampled back to full resolution, added to output rows with per-pixel weights.
+/// A level sampled back to full resolution, added to output rows with per-pixel weights. A
+/// reduced level is first read back along x on each level row it has (`runs`: the level rows
+/// computed; all when null), so that each output row is a blend of two such wide rows: the
+/// per-pixel loop streams, with no index lookups.
 class ReadBack {
  public:
-  ReadBack(const cv::Mat& level, int w, int h)
+  ReadBack(const cv::Mat& level, int w, int h, const RowRuns* runs)
       : level_(level), full_(level.cols == w && level.rows == h) {
-    if (!full_) {
-      cols_ = read_back_taps(w, level.cols, true);
-      rows_ = read_back_taps(h, level.rows, false);
-    }
+    if (full_) return;
+    rows_ = read_back_taps(h, level.rows, false);
+    const Taps cols = read_back_taps(w, level.cols, true);
+    wide_.create(level.rows, w, CV_32FC3);
+    cv::parallel_for_(cv::Range(0, level.rows), [&](const cv::Range& r) {
+      for (int i = r.start; i < r.end; ++i) {
+        if (runs && (*runs)[static_cast<std::size_t>(i)].empty()) continue;
+        const float* src = level.ptr<float>(i);
+        float* d = wide_.ptr<float>(i);
+        for (int x = 0; x < w; ++x) {
+          const auto xx = static_cast<std::size_t>(x);
+          const float fx = cols.t[xx];
+          const float* p = src + 3 * cols.a[xx];
+          const float* q = src + 3 * cols.b[xx];
+          for (int c = 0; c < 3; ++c) d[3 * x + c] = p[c] * (1.0f - fx) + q[c] * fx;
+        }
+      }
+    });
   }
 
-  /// dst[x] += weight[x] * level(x, y) over x in [a, b) (weight null: 1). `line` is scratch.
-  void add(float* dst, int y, int a, int b, const float* weight, std::vector<float>& line) const {
-    if (full_) {
-      const float* src = level_.ptr<float>(y);
-      for (int x = a; x < b; ++x) {
-        const float k = weight ? weight[x] : 1.0f;
-        for (int c = 0; c < 3; ++c) dst[3 * x + c] += k * src[3 * x + c];
-      }
-      return;
-    }
-    // The two level rows blended once (vertical), then two neighbours per pixel (horizontal).
-    const auto yy = static_cast<std::size_t>(y);
-    const float* top = level_.ptr<float>(rows_.a[yy]);
-    const float* bottom = level_.ptr<float>(rows_.b[yy]);
-    const float fy = rows_.t[yy];
-    line.resize(static_cast<std::size_t>(3 * level_.cols));
-    for (int t = 0; t < 3 * level_.cols; ++t) line[t] = top[t] * (1.0f - fy) + bottom[t] * fy;
-    for (int x = a; x < b; ++x) {
-      const auto xx = static_cast<std::size_t>(x);
-      const float k = weight ? weight[x] : 1.0f;
-      const float fx = cols_.t[xx];
-      const float* p = line.data() + 3 * cols_.a[xx];
-      const float* q = line.data() + 3 * cols_.b[xx];
-      for (int c = 0; c < 3; ++c) dst[3 * x + c] += k * (p[c] * (1.0f - fx) + q[c] * fx);
-    }
+  /// dst[x] += weight[x] * level(x, y) over x in [a, b) (weight null: 1); with `assign`,
+  /// dst[x] = ... (the first level a pixel gets).
+  void add(float* dst, int y, int a, int b, const float* weight, bool assign) const {
+    if (assign)
+      put<true>(dst, y, a, b, weight);
+    else
+      put<false>(dst, y, a, b, weight);
   }
 
  private:
   const cv::Mat& level_;
   bool full_;
-  Taps cols_, rows_;
+  Taps rows_;
+  cv::Mat wide_;  //!< reduced level: its rows read back along x to full width
+
+  template <bool Assign>
+  void put(float* dst, int y, int a, int b, const float* weight) const {
+    auto store = [](float& d, float v) {
+      if constexpr (Assign)
+        d = v;
+      else
+        d += v;
+    };
+    if (full_) {
+      const float* src = level_.ptr<float>(y);
+      for (int x = a; x < b; ++x) {
+        const float k = weight ? weight[x] : 1.0f;
+        for (int c = 0; c < 3; ++c) store(dst[3 * x + c], k * src[3 * x + c]);
+      }
+      return;
+    }
+    const auto yy = static_cast<std::size_t>(y);
+    const float* top = wide_.ptr<float>(rows_.a[yy]);
+    const float* bottom = wide_.ptr<float>(rows_.b[yy]);
+    const float fy = rows_.t[yy], gy = 1.0f - fy;
+    for (int x = a; x < b; ++x) {
+      const float k = weight ? weight[x] : 1.0f;
+      for (int c = 0; c < 3; ++c)
+        store(dst[3 * x + c], k * (top[3 * x + c] * gy + bottom[3 * x + c] * fy));
+    }
+  }
 };
 
 void check_input(const cv::Mat& rgb) {
@@ -307,10 +336,14 @@ TileLevels tile_levels(const cv::Mat& sigma, const std::vector<double>& sigmas) 
       std::fill(hi.begin(), hi.end(), 0.0f);
       for (int y = ty * kTile; y < std::min(sigma.rows, (ty + 1) * kTile); ++y) {
         const float* s = sigma.ptr<float>(y);
-        for (int x = 0; x < sigma.cols; ++x) {
-          const auto tx = static_cast<std::size_t>(x / kTile);
-          lo[tx] = std::min(lo[tx], s[x]);
-          hi[tx] = std::max(hi[tx], s[x]);
+        for (int tx = 0; tx < t.tiles_w; ++tx) {
+          float l = lo[static_cast<std::size_t>(tx)], u = hi[static_cast<std::size_t>(tx)];
+          for (int x = tx * kTile; x < std::min(sigma.cols, (tx + 1) * kTile); ++x) {
+            l = std::min(l, s[x]);
+            u = std::max(u, s[x]);
+          }
+          lo[static_cast<std::size_t>(tx)] = l;
+          hi[static_cast<std::size_t>(tx)] = u;
         }
       }
       for (int tx = 0; tx < t.tiles_w; ++tx) {
@@ -325,41 +358,62 @@ TileLevels tile_levels(const cv::Mat& sigma, const std::vector<double>& sigmas) 
   return t;
 }
 
+/// The runs [first, last) of tiles of tile row ty that mix level k.
+std::vector<std::pair<int, int>> tile_runs(const TileLevels& t, int ty, int k) {
+  std::vector<std::pair<int, int>> runs;
+  const int* first = t.first.data() + static_cast<std::ptrdiff_t>(ty) * t.tiles_w;
+  const int* last = t.last.data() + static_cast<std::ptrdiff_t>(ty) * t.tiles_w;
+  for (int tx = 0; tx < t.tiles_w;) {
+    if (k < first[tx] || k > last[tx]) {
+      ++tx;
+      continue;
+    }
+    const int a = tx;
+    while (tx < t.tiles_w && k >= first[tx] && k <= last[tx]) ++tx;
+    runs.emplace_back(a, tx);
+  }
+  return runs;
+}
+
 /// The texels of a level (`lw` x `lh`, read back bilinearly onto the w x h image) that the tiles
 /// mixing level k read, as runs per level row.
 RowRuns level_runs(const TileLevels& t, int k, int w, int h, int lw, int lh) {
-  cv::Mat need(lh, lw, CV_8UC1, cv::Scalar(0));
   // The level samples full-resolution index i reads: floor((i + 0.5) m / n - 0.5) and one more.
   auto low = [](int i, int n, int m) {
     return static_cast<int>(std::floor((i + 0.5) * m / n - 0.5));
   };
-  for (int ty = 0; ty < t.tiles_h; ++ty)
-    for (int tx = 0; tx < t.tiles_w; ++tx) {
-      const auto i = static_cast<std::size_t>(ty * t.tiles_w + tx);
-      if (k < t.first[i] || k > t.last[i]) continue;
-      const int y0 = std::max(0, low(ty * kTile, h, lh));
-      const int y1 = std::min(lh - 1, low(std::min(h, (ty + 1) * kTile) - 1, h, lh) + 1);
-      const int x0 = low(tx * kTile, w, lw);
-      const int x1 = low(std::min(w, (tx + 1) * kTile) - 1, w, lw) + 1;
-      for (int y = y0; y <= y1; ++y) {
-        auto* row = need.ptr<std::uint8_t>(y);
-        for (int x = x0; x <= x1; ++x) row[((x % lw) + lw) % lw] = 1;
-      }
-    }
-  RowRuns runs(static_cast<std::size_t>(lh));
-  for (int y = 0; y < lh; ++y) {
-    const auto* row = need.ptr<std::uint8_t>(y);
-    for (int x = 0; x < lw;) {
-      if (!row[x]) {
-        ++x;
-        continue;
-      }
-      const int a = x;
-      while (x < lw && row[x]) ++x;
-      runs[static_cast<std::size_t>(y)].emplace_back(a, x);
+  RowRuns spans(static_cast<std::size_t>(lh));  // unwrapped column spans, may overlap
+  for (int ty = 0; ty < t.tiles_h; ++ty) {
+    const auto runs = tile_runs(t, ty, k);
+    if (runs.empty()) continue;
+    const int y0 = std::max(0, low(ty * kTile, h, lh));
+    const int y1 = std::min(lh - 1, low(std::min(h, (ty + 1) * kTile) - 1, h, lh) + 1);
+    for (const auto& [a, b] : runs) {
+      const int x0 = low(a * kTile, w, lw), x1 = low(std::min(w, b * kTile) - 1, w, lw) + 2;
+      for (int y = y0; y <= y1; ++y) spans[static_cast<std::size_t>(y)].emplace_back(x0, x1);
     }
   }
-  return runs;
+  // Wrapped into [0, lw) (split at the seam), sorted, merged.
+  for (auto& row : spans) {
+    std::vector<std::pair<int, int>> pieces;
+    for (const auto& [a, b] : row) {
+      if (b - a >= lw) {
+        pieces.emplace_back(0, lw);
+        continue;
+      }
+      const int a0 = ((a % lw) + lw) % lw, b0 = a0 + (b - a);
+      pieces.emplace_back(a0, std::min(b0, lw));
+      if (b0 > lw) pieces.emplace_back(0, b0 - lw);
+    }
+    std::sort(pieces.begin(), pieces.end());
+    row.clear();
+    for (const auto& piece : pieces)
+      if (!row.empty() && piece.first <= row.back().second)
+        row.back().second = std::max(row.back().second, piece.second);
+      else
+        row.push_back(piece);
+  }
+  return spans;
 }
 
 }  // namespace
@@ -370,25 +424,36 @@ cv::Mat blur_equirect(const cv::Mat& rgb, double sigma_deg) {
   Pyramid pyramid(rgb);
   const cv::Mat level = blurred_level(pyramid, rgb.cols, rgb.rows, sigma_deg, nullptr);
   if (level.size() == rgb.size()) return level;
-  cv::Mat out(rgb.size(), CV_32FC3, cv::Scalar::all(0));
-  const ReadBack back(level, rgb.cols, rgb.rows);
+  cv::Mat out(rgb.size(), CV_32FC3);
+  const ReadBack back(level, rgb.cols, rgb.rows, nullptr);
   cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& r) {
-    std::vector<float> line;
     for (int y = r.start; y < r.end; ++y)
-      back.add(out.ptr<float>(y), y, 0, rgb.cols, nullptr, line);
+      back.add(out.ptr<float>(y), y, 0, rgb.cols, nullptr, true);
   });
   return out;
 }
 
 cv::Mat blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, double ratio) {
+  cv::Mat out;
+  blur_equirect_varying(rgb, sigma_deg, out, ratio);
+  return out;
+}
+
+void blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat& out,
+                           double ratio) {
   check_input(rgb);
+  if (out.data == rgb.data && !rgb.empty())
+    throw std::invalid_argument("equirect blur: the output must not be the input's buffer");
   if (sigma_deg.size() != rgb.size() || sigma_deg.type() != CV_32FC1)
     throw std::invalid_argument(
         "equirect blur: the sigma map must be CV_32FC1 of the image's size");
   if (!(ratio > 1.0)) throw std::invalid_argument("equirect blur: level ratio must exceed 1");
   double max_sigma = 0.0;
   cv::minMaxLoc(sigma_deg, nullptr, &max_sigma);
-  if (!(max_sigma > 0.0)) return rgb.clone();
+  if (!(max_sigma > 0.0)) {
+    rgb.copyTo(out);
+    return;
+  }
   const int w = rgb.cols, h = rgb.rows;
   // Level 0 is the image itself (sigma 0); then half a texel, growing by `ratio`.
   std::vector<double> sigmas{0.0};
@@ -402,11 +467,13 @@ cv::Mat blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, doub
   const TileLevels tiles = tile_levels(sigma_deg, sigmas);
   Pyramid pyramid(rgb);
   std::vector<cv::Mat> levels{rgb};
+  std::vector<RowRuns> runs{RowRuns{}};
   for (int k = 1; k < count; ++k) {
     const int f = level_factor(sigmas[static_cast<std::size_t>(k)], w, h);
     const cv::Size size = pyramid.at(f).size();
-    const RowRuns runs = level_runs(tiles, k, w, h, size.width, size.height);
-    levels.push_back(blurred_level(pyramid, w, h, sigmas[static_cast<std::size_t>(k)], &runs));
+    runs.push_back(level_runs(tiles, k, w, h, size.width, size.height));
+    levels.push_back(
+        blurred_level(pyramid, w, h, sigmas[static_cast<std::size_t>(k)], &runs.back()));
   }
   // Pixel weight of level k: a hat in sigma, rising from sigma_{k-1} to 1 at sigma_k and falling
   // to 0 at sigma_{k+1} (level 0 is 1 at sigma <= 0, the last 1 from its sigma on):
@@ -423,34 +490,38 @@ cv::Mat blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, doub
   }
   std::vector<ReadBack> backs;
   backs.reserve(levels.size());
-  for (const cv::Mat& level : levels) backs.emplace_back(level, w, h);
-  cv::Mat out(rgb.size(), CV_32FC3, cv::Scalar::all(0));
+  for (std::size_t k = 0; k < levels.size(); ++k) backs.emplace_back(levels[k], w, h, &runs[k]);
+  // Levels go in ascending order: a pixel's first (its tile's first level) is stored, the
+  // others added, so the output needs no clearing.
+  out.create(rgb.size(), CV_32FC3);
   cv::parallel_for_(cv::Range(0, tiles.tiles_h), [&](const cv::Range& r) {
-    std::vector<float> weight(static_cast<std::size_t>(w)), line;
+    std::vector<float> weight(static_cast<std::size_t>(w));
     for (int ty = r.start; ty < r.end; ++ty)
       for (int k = 0; k < count; ++k) {
         const auto i = static_cast<std::size_t>(k);
-        for (int tx = 0; tx < tiles.tiles_w;) {  // runs of tiles that mix level k
-          const auto at = [&](int x) { return static_cast<std::size_t>(ty * tiles.tiles_w + x); };
-          if (k < tiles.first[at(tx)] || k > tiles.last[at(tx)]) {
-            ++tx;
-            continue;
-          }
-          const int first = tx;
-          while (tx < tiles.tiles_w && k >= tiles.first[at(tx)] && k <= tiles.last[at(tx)]) ++tx;
-          const int a = first * kTile, b = std::min(w, tx * kTile);
-          for (int y = ty * kTile; y < std::min(h, (ty + 1) * kTile); ++y) {
-            const float* s = sigma_deg.ptr<float>(y);
+        const auto runs = tile_runs(tiles, ty, k);
+        if (runs.empty()) continue;
+        const auto at = [&](int x) { return static_cast<std::size_t>(ty * tiles.tiles_w + x); };
+        for (int y = ty * kTile; y < std::min(h, (ty + 1) * kTile); ++y) {
+          const float* s = sigma_deg.ptr<float>(y);
+          for (const auto& [first, last] : runs) {
+            const int a = first * kTile, b = std::min(w, last * kTile);
             for (int x = a; x < b; ++x) {
               const float v = std::min((s[x] - base[i]) * rise[i], (top[i] - s[x]) * fall[i]);
               weight[static_cast<std::size_t>(x)] = std::clamp(v, 0.0f, 1.0f);
             }
-            backs[i].add(out.ptr<float>(y), y, a, b, weight.data(), line);
+            // Split where the tiles' first level changes between k and below it.
+            for (int tx = first; tx < last;) {
+              const bool assign = tiles.first[at(tx)] == k;
+              const int from = tx;
+              while (tx < last && (tiles.first[at(tx)] == k) == assign) ++tx;
+              backs[i].add(out.ptr<float>(y), y, from * kTile, std::min(w, tx * kTile),
+                           weight.data(), assign);
+            }
           }
         }
       }
   });
-  return out;
 }
 
 }  // namespace vdfx::effects

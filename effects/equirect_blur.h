@@ -31,5 +31,10 @@ cv::Mat blur_equirect(const cv::Mat& rgb, double sigma_deg);
 /// degrees, >= 0) by mixing blur_equirect levels. Pixels with sigma 0 are unchanged.
 cv::Mat blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg,
                               double ratio = 1.4142135623730951);
+/// The same into `out` (not `rgb`'s buffer), whose buffer is reused when it has the size and
+/// type already (a caller blurring frame after frame then has no fresh image, and its page
+/// faults, per frame).
+void blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat& out,
+                           double ratio = 1.4142135623730951);
 
 }  // namespace vdfx::effects

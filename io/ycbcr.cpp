@@ -89,9 +89,12 @@ void convert_rows(const Picture& p, const AffineMap3& map, const ChromaTaps& col
       cb[x] = cb_row[a] + fx * (cb_row[b] - cb_row[a]);
       cr[x] = cr_row[a] + fx * (cr_row[b] - cr_row[a]);
     }
+    // Byte stores may alias anything: locals (no vector or capture reloads) let it vectorise.
     Out* dst = out.ptr<Out>(y);
-    for (int x = 0; x < w; ++x) {
-      const float yy = py[x], u = cb[x], v = cr[x];
+    const float *pu = cb.data(), *pv = cr.data();
+    const int n = w;
+    for (int x = 0; x < n; ++x) {
+      const float yy = py[x], u = pu[x], v = pv[x];
       const float r = std::clamp(m[0] * yy + m[1] * u + m[2] * v + o[0], 0.0f, 1.0f);
       const float g = std::clamp(m[3] * yy + m[4] * u + m[5] * v + o[1], 0.0f, 1.0f);
       const float bl = std::clamp(m[6] * yy + m[7] * u + m[8] * v + o[2], 0.0f, 1.0f);
@@ -320,11 +323,17 @@ Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
           b[x] = clamp01(s[3 * x + 2]);
         }
       }
+      // Byte stores may alias anything: locals (and no vector or capture reloads) let it vectorise.
       std::uint8_t* d = p.planes[0].ptr<std::uint8_t>(y);
-      for (int x = 0; x < w; ++x) {
-        d[x] = code(m[0] * r[x] + m[1] * g[x] + m[2] * b[x] + o0);
-        u[x] = m[3] * r[x] + m[4] * g[x] + m[5] * b[x];
-        v[x] = m[6] * r[x] + m[7] * g[x] + m[8] * b[x];
+      const float *pr = r.data(), *pg = g.data(), *pb = b.data();
+      float *pu = u.data(), *pv = v.data();
+      const std::array<float, 9> k = m;
+      const float ko = o0;
+      const int n = w;
+      for (int x = 0; x < n; ++x) {
+        d[x] = code(k[0] * pr[x] + k[1] * pg[x] + k[2] * pb[x] + ko);
+        pu[x] = k[3] * pr[x] + k[4] * pg[x] + k[5] * pb[x];
+        pv[x] = k[6] * pr[x] + k[7] * pg[x] + k[8] * pb[x];
       }
       filter_line(fx, u.data(), cb_h.ptr<float>(y), cw);
       filter_line(fx, v.data(), cr_h.ptr<float>(y), cw);
@@ -346,9 +355,11 @@ Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
       }
       std::uint8_t* cb = p.planes[1].ptr<std::uint8_t>(i);
       std::uint8_t* cr = p.planes[2].ptr<std::uint8_t>(i);
-      for (int j = 0; j < cw; ++j) {
-        cb[j] = code(u[j]);
-        cr[j] = code(v[j]);
+      const float *pu = u.data(), *pv = v.data();
+      const int n = cw;
+      for (int j = 0; j < n; ++j) {
+        cb[j] = code(pu[j]);
+        cr[j] = code(pv[j]);
       }
     }
   });

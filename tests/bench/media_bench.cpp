@@ -174,7 +174,7 @@ void BM_BakedStagesHd(benchmark::State& state) {
   const int stage = static_cast<int>(state.range(0));
   const io::Sidecar sc = media_sidecar(stage == 2);
   const effects::StackInterpolator stack(sc.effects, sc.interpolation, sc.video.fps);
-  cv::Mat rgb, out;
+  cv::Mat rgb, out, scratch;  // reused as the export's render threads reuse theirs
   media_frame(0, 1920, 960).convertTo(rgb, CV_32FC3, 1.0 / 255.0);
   const io::YcbcrInfo info;
   const io::Picture pic = io::rgb_to_ycbcr(rgb, info);
@@ -187,7 +187,7 @@ void BM_BakedStagesHd(benchmark::State& state) {
     if (stage == 0) io::to_rgb(pic, io::PixelFormat::RgbF32, out);
     if (stage == 1 || stage == 2) {
       rgb.copyTo(out);
-      app::render_baked_into(out, stack, 0, o);
+      app::render_baked_into(out, stack, 0, o, &scratch);
     }
     if (stage == 3) benchmark::DoNotOptimize(io::rgb_to_ycbcr(rgb, info).planes[0].data);
     benchmark::DoNotOptimize(out.data);
