@@ -140,6 +140,7 @@ class Pyramid {
     const int h = s.image.rows / 2, w = s.image.cols / 2;
     Step out{cv::Mat(h, w, CV_32FC3), std::vector<float>(static_cast<std::size_t>(h)), true};
     cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& r) {
+      std::vector<float> rows(static_cast<std::size_t>(6 * w));
       for (int i = r.start; i < r.end; ++i) {
         const float wa = s.weight[static_cast<std::size_t>(2 * i)];
         const float wb = s.weight[static_cast<std::size_t>(2 * i + 1)];
@@ -148,10 +149,11 @@ class Pyramid {
         const float* a = s.image.ptr<float>(2 * i);
         const float* b = s.image.ptr<float>(2 * i + 1);
         float* d = out.image.ptr<float>(i);
+        // The two rows blended first (a streaming loop), then pairs of texels summed.
+        float* m = rows.data();
+        for (int t = 0; t < 6 * w; ++t) m[t] = ka * a[t] + kb * b[t];
         for (int x = 0; x < w; ++x)
-          for (int c = 0; c < 3; ++c)
-            d[3 * x + c] =
-                ka * (a[6 * x + c] + a[6 * x + 3 + c]) + kb * (b[6 * x + c] + b[6 * x + 3 + c]);
+          for (int c = 0; c < 3; ++c) d[3 * x + c] = m[6 * x + c] + m[6 * x + 3 + c];
       }
     });
     return out;
@@ -258,6 +260,38 @@ class ReadBack {
     });
   }
 
+  /// The two rows full-resolution row y blends and the weight of the second (a full level: its
+  /// own row twice, weight 0).
+  void sources(int y, const float*& top, const float*& bottom, float& fy) const {
+    if (full_) {
+      top = bottom = level_.ptr<float>(y);
+      fy = 0.0f;
+      return;
+    }
+    const auto yy = static_cast<std::size_t>(y);
+    top = wide_.ptr<float>(rows_.a[yy]);
+    bottom = wide_.ptr<float>(rows_.b[yy]);
+    fy = rows_.t[yy];
+  }
+
+  /// dst[x] = lerp(A(x, y), B(x, y), clamp((s[x] - base) rise, 0, 1)) over x in [a, b).
+  static void mix(float* dst, int y, int a, int b, const ReadBack& la, const ReadBack& lb,
+                  const float* s, float base, float rise) {
+    const float *ta, *ba, *tb, *bb;
+    float fa, fb;
+    la.sources(y, ta, ba, fa);
+    lb.sources(y, tb, bb, fb);
+    const float ga = 1.0f - fa, gb = 1.0f - fb;
+    for (int x = a; x < b; ++x) {
+      const float t = std::clamp((s[x] - base) * rise, 0.0f, 1.0f);
+      for (int c = 0; c < 3; ++c) {
+        const float va = ta[3 * x + c] * ga + ba[3 * x + c] * fa;
+        const float vb = tb[3 * x + c] * gb + bb[3 * x + c] * fb;
+        dst[3 * x + c] = va + t * (vb - va);
+      }
+    }
+  }
+
   /// dst[x] += weight[x] * level(x, y) over x in [a, b) (weight null: 1); with `assign`,
   /// dst[x] = ... (the first level a pixel gets).
   void add(float* dst, int y, int a, int b, const float* weight, bool assign) const {
@@ -289,10 +323,10 @@ class ReadBack {
       }
       return;
     }
-    const auto yy = static_cast<std::size_t>(y);
-    const float* top = wide_.ptr<float>(rows_.a[yy]);
-    const float* bottom = wide_.ptr<float>(rows_.b[yy]);
-    const float fy = rows_.t[yy], gy = 1.0f - fy;
+    const float *top, *bottom;
+    float fy;
+    sources(y, top, bottom, fy);
+    const float gy = 1.0f - fy;
     for (int x = a; x < b; ++x) {
       const float k = weight ? weight[x] : 1.0f;
       for (int c = 0; c < 3; ++c)
@@ -331,20 +365,27 @@ TileLevels tile_levels(const cv::Mat& sigma, const std::vector<double>& sigmas) 
   cv::parallel_for_(cv::Range(0, t.tiles_h), [&](const cv::Range& r) {
     constexpr float kNone = std::numeric_limits<float>::infinity();
     std::vector<float> lo(static_cast<std::size_t>(t.tiles_w)), hi(lo.size());
+    // Per column over the tile's rows first (a streaming loop), then per tile along x.
+    std::vector<float> col_lo(static_cast<std::size_t>(sigma.cols)), col_hi(col_lo.size());
     for (int ty = r.start; ty < r.end; ++ty) {
-      std::fill(lo.begin(), lo.end(), kNone);
-      std::fill(hi.begin(), hi.end(), 0.0f);
+      std::fill(col_lo.begin(), col_lo.end(), kNone);
+      std::fill(col_hi.begin(), col_hi.end(), 0.0f);
       for (int y = ty * kTile; y < std::min(sigma.rows, (ty + 1) * kTile); ++y) {
         const float* s = sigma.ptr<float>(y);
-        for (int tx = 0; tx < t.tiles_w; ++tx) {
-          float l = lo[static_cast<std::size_t>(tx)], u = hi[static_cast<std::size_t>(tx)];
-          for (int x = tx * kTile; x < std::min(sigma.cols, (tx + 1) * kTile); ++x) {
-            l = std::min(l, s[x]);
-            u = std::max(u, s[x]);
-          }
-          lo[static_cast<std::size_t>(tx)] = l;
-          hi[static_cast<std::size_t>(tx)] = u;
+        float *pl = col_lo.data(), *ph = col_hi.data();
+        for (int x = 0; x < sigma.cols; ++x) {
+          pl[x] = std::min(pl[x], s[x]);
+          ph[x] = std::max(ph[x], s[x]);
         }
+      }
+      for (int tx = 0; tx < t.tiles_w; ++tx) {
+        float l = kNone, u = 0.0f;
+        for (int x = tx * kTile; x < std::min(sigma.cols, (tx + 1) * kTile); ++x) {
+          l = std::min(l, col_lo[static_cast<std::size_t>(x)]);
+          u = std::max(u, col_hi[static_cast<std::size_t>(x)]);
+        }
+        lo[static_cast<std::size_t>(tx)] = l;
+        hi[static_cast<std::size_t>(tx)] = u;
       }
       for (int tx = 0; tx < t.tiles_w; ++tx) {
         const auto k = static_cast<std::size_t>(ty * t.tiles_w + tx);
@@ -358,21 +399,27 @@ TileLevels tile_levels(const cv::Mat& sigma, const std::vector<double>& sigmas) 
   return t;
 }
 
-/// The runs [first, last) of tiles of tile row ty that mix level k.
-std::vector<std::pair<int, int>> tile_runs(const TileLevels& t, int ty, int k) {
+/// The runs [first, last) of tiles of tile row ty whose levels [first, last] satisfy `pick`.
+template <typename Pick>
+std::vector<std::pair<int, int>> tile_runs_where(const TileLevels& t, int ty, Pick pick) {
   std::vector<std::pair<int, int>> runs;
   const int* first = t.first.data() + static_cast<std::ptrdiff_t>(ty) * t.tiles_w;
   const int* last = t.last.data() + static_cast<std::ptrdiff_t>(ty) * t.tiles_w;
   for (int tx = 0; tx < t.tiles_w;) {
-    if (k < first[tx] || k > last[tx]) {
+    if (!pick(first[tx], last[tx])) {
       ++tx;
       continue;
     }
     const int a = tx;
-    while (tx < t.tiles_w && k >= first[tx] && k <= last[tx]) ++tx;
+    while (tx < t.tiles_w && pick(first[tx], last[tx])) ++tx;
     runs.emplace_back(a, tx);
   }
   return runs;
+}
+
+/// The runs [first, last) of tiles of tile row ty that mix level k.
+std::vector<std::pair<int, int>> tile_runs(const TileLevels& t, int ty, int k) {
+  return tile_runs_where(t, ty, [k](int first, int last) { return k >= first && k <= last; });
 }
 
 /// The texels of a level (`lw` x `lh`, read back bilinearly onto the w x h image) that the tiles
@@ -496,10 +543,25 @@ void blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat
   out.create(rgb.size(), CV_32FC3);
   cv::parallel_for_(cv::Range(0, tiles.tiles_h), [&](const cv::Range& r) {
     std::vector<float> weight(static_cast<std::size_t>(w));
-    for (int ty = r.start; ty < r.end; ++ty)
+    for (int ty = r.start; ty < r.end; ++ty) {
+      // Tiles mixing exactly two levels k - 1 and k (nearly all): one pass, the linear mix in
+      // sigma of the two read-backs, lerp(A, B, (s - s_{k-1}) rise_k) (every sigma of such a
+      // tile is in (s_{k-1}, s_k]).
+      for (int k = 1; k < count; ++k) {
+        const auto runs = tile_runs_where(
+            tiles, ty, [k](int first, int last) { return first == k - 1 && last == k; });
+        const auto i = static_cast<std::size_t>(k);
+        for (int y = ty * kTile; y < std::min(h, (ty + 1) * kTile); ++y)
+          for (const auto& [first, last] : runs)
+            ReadBack::mix(out.ptr<float>(y), y, first * kTile, std::min(w, last * kTile),
+                          backs[i - 1], backs[i], sigma_deg.ptr<float>(y), base[i], rise[i]);
+      }
+      // The others level by level, each pixel weighted by its hat.
       for (int k = 0; k < count; ++k) {
         const auto i = static_cast<std::size_t>(k);
-        const auto runs = tile_runs(tiles, ty, k);
+        const auto runs = tile_runs_where(tiles, ty, [k](int first, int last) {
+          return k >= first && k <= last && !(first + 1 == last);
+        });
         if (runs.empty()) continue;
         const auto at = [&](int x) { return static_cast<std::size_t>(ty * tiles.tiles_w + x); };
         for (int y = ty * kTile; y < std::min(h, (ty + 1) * kTile); ++y) {
@@ -521,6 +583,7 @@ void blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat
           }
         }
       }
+    }
   });
 }
 
