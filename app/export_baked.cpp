@@ -114,18 +114,39 @@ void BakedGridCache::store(std::vector<std::int64_t> key, Grid grid) {
   grid_ = std::move(grid);
 }
 
-/// One frame's parameters: exact at the grid's pixels, and each grid row already blended along x
-/// to every pixel column (one plane per field), so that an image row is a blend of two such rows
-/// whose loops stream.
-struct BakedGrid {
-  std::vector<double> exact;  //!< kFields per grid entry, row by row
-  std::vector<float> rows;    //!< [grid row][field][x], w per plane
-  const float* plane(std::size_t grid_row, int field, int w) const {
-    return rows.data() + (grid_row * kFields + static_cast<std::size_t>(field)) * w;
+BakedGridCache::Grid BakedGridCache::get_or_make(const std::vector<std::int64_t>& key,
+                                                 const std::function<Grid()>& make) {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    if (grid_ && key == key_) return grid_;
+    if (std::find(making_.begin(), making_.end(), key) == making_.end()) break;
+    made_.wait(lock);
   }
-};
+  making_.push_back(key);
+  lock.unlock();
+  Grid grid;
+  try {
+    grid = make();
+  } catch (...) {
+    lock.lock();
+    making_.erase(std::find(making_.begin(), making_.end(), key));
+    made_.notify_all();
+    throw;
+  }
+  lock.lock();
+  making_.erase(std::find(making_.begin(), making_.end(), key));
+  key_ = key;
+  grid_ = grid;
+  made_.notify_all();
+  return grid;
+}
 
 namespace {
+
+/// The parameters at the grid's pixels, computed.
+BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int64_t frame, int w,
+                               int h, const std::vector<int>& gx, const std::vector<int>& gy,
+                               const Axis& ax);
 
 /// The parameters at the grid's pixels (BakedGrid), from the cache when the frame every active
 /// effect evaluates at is the one it was computed for.
@@ -138,9 +159,16 @@ BakedGridCache::Grid parameter_grid(const effects::StackInterpolator& stack, std
     if (const auto* rbf = stack.interpolator(static_cast<EffectType>(t)))
       key.push_back(rbf->effective_frame(frame));
   if (cache)
-    if (auto hit = cache->find(key)) return hit;
+    return cache->get_or_make(key, [&] { return make_grid(stack, frame, w, h, gx, gy, ax); });
+  return make_grid(stack, frame, w, h, gx, gy, ax);
+}
+
+BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int64_t frame, int w,
+                               int h, const std::vector<int>& gx, const std::vector<int>& gy,
+                               const Axis& ax) {
   const std::size_t cols = gx.size();
   auto grid = std::make_shared<BakedGrid>();
+  grid->fields = kFields;
   grid->exact.resize(cols * gy.size() * kFields);
   grid->rows.resize(gy.size() * kFields * static_cast<std::size_t>(w));
   cv::parallel_for_(cv::Range(0, static_cast<int>(gy.size())), [&](const cv::Range& r) {
@@ -161,7 +189,6 @@ BakedGridCache::Grid parameter_grid(const effects::StackInterpolator& stack, std
       }
     }
   });
-  if (cache) cache->store(std::move(key), grid);
   return grid;
 }
 
