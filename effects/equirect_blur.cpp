@@ -244,17 +244,22 @@ class ReadBack {
     rows_ = read_back_taps(h, level.rows, false);
     const Taps cols = read_back_taps(w, level.cols, true);
     wide_.create(level.rows, w, CV_32FC3);
+    const int lw = level.cols;
+    const std::vector<std::pair<int, int>> whole{{0, lw}};
     cv::parallel_for_(cv::Range(0, level.rows), [&](const cv::Range& r) {
       for (int i = r.start; i < r.end; ++i) {
-        if (runs && (*runs)[static_cast<std::size_t>(i)].empty()) continue;
         const float* src = level.ptr<float>(i);
         float* d = wide_.ptr<float>(i);
-        for (int x = 0; x < w; ++x) {
-          const auto xx = static_cast<std::size_t>(x);
-          const float fx = cols.t[xx];
-          const float* p = src + 3 * cols.a[xx];
-          const float* q = src + 3 * cols.b[xx];
-          for (int c = 0; c < 3; ++c) d[3 * x + c] = p[c] * (1.0f - fx) + q[c] * fx;
+        // Only the columns under the level's runs (the pixels that mix it read nothing else).
+        for (const auto& [c0, c1] : runs ? (*runs)[static_cast<std::size_t>(i)] : whole) {
+          const int x0 = c0 * w / lw, x1 = std::min(w, (c1 * w + lw - 1) / lw);
+          for (int x = x0; x < x1; ++x) {
+            const auto xx = static_cast<std::size_t>(x);
+            const float fx = cols.t[xx];
+            const float* p = src + 3 * cols.a[xx];
+            const float* q = src + 3 * cols.b[xx];
+            for (int c = 0; c < 3; ++c) d[3 * x + c] = p[c] * (1.0f - fx) + q[c] * fx;
+          }
         }
       }
     });
