@@ -69,6 +69,29 @@ void flatten(const StackParams& p, double* f) {
   f[5] = p.contrast;
 }
 
+/// apply_colour_pixel along a row, each parameter (gain r, g, b, saturation, contrast) blended
+/// between the planes of two grid rows, a[k] + t (b[k] - a[k]), with the mask known at compile
+/// time: a loop without branches, which vectorises.
+template <bool Gain, bool Saturation, bool Contrast>
+void colour_row_of(float* px, const float* const* a, const float* const* b, float t, int w) {
+  constexpr ColourMask mask{Gain, Saturation, Contrast};
+  for (int x = 0; x < w; ++x) {
+    float f[5];
+    for (int k = 0; k < 5; ++k) f[k] = a[k][x] + t * (b[k][x] - a[k][x]);
+    apply_colour_pixel(px + 3 * x, f, mask);
+  }
+}
+
+using ColourRow = void (*)(float*, const float* const*, const float* const*, float, int);
+ColourRow colour_row(const ColourMask& m) {
+  static constexpr ColourRow rows[8] = {
+      colour_row_of<false, false, false>, colour_row_of<true, false, false>,
+      colour_row_of<false, true, false>,  colour_row_of<true, true, false>,
+      colour_row_of<false, false, true>,  colour_row_of<true, false, true>,
+      colour_row_of<false, true, true>,   colour_row_of<true, true, true>};
+  return rows[(m.gain ? 1 : 0) + (m.saturation ? 2 : 0) + (m.contrast ? 4 : 0)];
+}
+
 }  // namespace
 
 int baked_param_step(const BakedOptions& o, int width) {
@@ -91,29 +114,81 @@ void BakedGridCache::store(std::vector<std::int64_t> key, Grid grid) {
   grid_ = std::move(grid);
 }
 
+BakedGridCache::Grid BakedGridCache::get_or_make(const std::vector<std::int64_t>& key,
+                                                 const std::function<Grid()>& make) {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    if (grid_ && key == key_) return grid_;
+    if (std::find(making_.begin(), making_.end(), key) == making_.end()) break;
+    made_.wait(lock);
+  }
+  making_.push_back(key);
+  lock.unlock();
+  Grid grid;
+  try {
+    grid = make();
+  } catch (...) {
+    lock.lock();
+    making_.erase(std::find(making_.begin(), making_.end(), key));
+    made_.notify_all();
+    throw;
+  }
+  lock.lock();
+  making_.erase(std::find(making_.begin(), making_.end(), key));
+  key_ = key;
+  grid_ = grid;
+  made_.notify_all();
+  return grid;
+}
+
 namespace {
 
-/// The exact parameters at the grid's pixels (flattened, kFields per entry, row by row), from the
-/// cache when the frame every active effect evaluates at is the one it was computed for.
+/// The parameters at the grid's pixels, computed.
+BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int64_t frame, int w,
+                               int h, const std::vector<int>& gx, const std::vector<int>& gy,
+                               const Axis& ax);
+
+/// The parameters at the grid's pixels (BakedGrid), from the cache when the frame every active
+/// effect evaluates at is the one it was computed for.
 BakedGridCache::Grid parameter_grid(const effects::StackInterpolator& stack, std::int64_t frame,
                                     int w, int h, int step, const std::vector<int>& gx,
-                                    const std::vector<int>& gy, BakedGridCache* cache) {
+                                    const std::vector<int>& gy, const Axis& ax,
+                                    BakedGridCache* cache) {
   std::vector<std::int64_t> key{w, h, step};
   for (int t = 0; t < effects::kEffectCount; ++t)
     if (const auto* rbf = stack.interpolator(static_cast<EffectType>(t)))
       key.push_back(rbf->effective_frame(frame));
   if (cache)
-    if (auto hit = cache->find(key)) return hit;
+    return cache->get_or_make(key, [&] { return make_grid(stack, frame, w, h, gx, gy, ax); });
+  return make_grid(stack, frame, w, h, gx, gy, ax);
+}
+
+BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int64_t frame, int w,
+                               int h, const std::vector<int>& gx, const std::vector<int>& gy,
+                               const Axis& ax) {
   const std::size_t cols = gx.size();
-  auto grid = std::make_shared<std::vector<double>>(cols * gy.size() * kFields);
+  auto grid = std::make_shared<BakedGrid>();
+  grid->fields = kFields;
+  grid->exact.resize(cols * gy.size() * kFields);
+  grid->rows.resize(gy.size() * kFields * static_cast<std::size_t>(w));
   cv::parallel_for_(cv::Range(0, static_cast<int>(gy.size())), [&](const cv::Range& r) {
-    for (int j = r.start; j < r.end; ++j)
+    for (int j = r.start; j < r.end; ++j) {
+      const auto jj = static_cast<std::size_t>(j);
+      const double* g = &grid->exact[jj * cols * kFields];
       for (std::size_t i = 0; i < cols; ++i)
-        flatten(
-            stack.evaluate(pixel_direction(gx[i], gy[static_cast<std::size_t>(j)], w, h), frame),
-            &(*grid)[(static_cast<std::size_t>(j) * cols + i) * kFields]);
+        flatten(stack.evaluate(pixel_direction(gx[i], gy[jj], w, h), frame),
+                &grid->exact[(jj * cols + i) * kFields]);
+      for (int k = 0; k < kFields; ++k) {
+        float* plane = grid->rows.data() + (jj * kFields + static_cast<std::size_t>(k)) * w;
+        for (int x = 0; x < w; ++x) {
+          const auto xx = static_cast<std::size_t>(x);
+          const double a = g[static_cast<std::size_t>(ax.a[xx]) * kFields + k];
+          const double b = g[static_cast<std::size_t>(ax.b[xx]) * kFields + k];
+          plane[x] = static_cast<float>(a + ax.t[xx] * (b - a));
+        }
+      }
+    }
   });
-  if (cache) cache->store(std::move(key), grid);
   return grid;
 }
 
@@ -131,71 +206,70 @@ FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, Bake
   auto cache = std::make_shared<BakedGridCache>();
   options.cache = cache.get();
   return [&stack, options, out, cache](const io::Picture& source, std::int64_t frame) {
-    thread_local cv::Mat rgb;  // each render thread's frame buffer, reused
+    thread_local cv::Mat rgb, scratch;  // each render thread's frame buffers, reused
     io::to_rgb(source, io::PixelFormat::RgbF32, rgb);
-    render_baked_into(rgb, stack, frame, options);
+    render_baked_into(rgb, stack, frame, options, &scratch);
     return io::rgb_to_ycbcr(rgb, out);
   };
 }
 
 void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, std::int64_t frame,
-                       const BakedOptions& options) {
+                       const BakedOptions& options, cv::Mat* scratch) {
   const int w = rgb.cols, h = rgb.rows;
   const int step = baked_param_step(options, w);
   const std::vector<int> gx = grid_positions(w, step, false), gy = grid_positions(h, step, true);
-  const BakedGridCache::Grid grid_ptr =
-      parameter_grid(stack, frame, w, h, step, gx, gy, options.cache);
-  const std::vector<double>& grid = *grid_ptr;
   const Axis ax = axis_weights(w, gx, true), ay = axis_weights(h, gy, false);
-  // Bilinear, split: the two grid rows around image row y are blended once per row, then each
-  // pixel blends two neighbouring entries of that row.
-  auto grid_row = [&](int y, std::vector<float>& row) {
-    const std::size_t ya = static_cast<std::size_t>(ay.a[static_cast<std::size_t>(y)]);
-    const std::size_t yb = static_cast<std::size_t>(ay.b[static_cast<std::size_t>(y)]);
-    const double ty = ay.t[static_cast<std::size_t>(y)];
-    row.resize(gx.size() * kFields);
-    for (std::size_t i = 0; i < row.size(); ++i) {
-      const double a = grid[ya * gx.size() * kFields + i], b = grid[yb * gx.size() * kFields + i];
-      row[i] = static_cast<float>(a + ty * (b - a));
-    }
+  const BakedGridCache::Grid grid_ptr =
+      parameter_grid(stack, frame, w, h, step, gx, gy, ax, options.cache);
+  const BakedGrid& grid = *grid_ptr;
+  // Bilinear, split: each grid row is blended along x once per grid (BakedGrid::rows), then
+  // image row y blends the two grid rows around it.
+  struct RowBlend {
+    std::size_t a, b;
+    float t;
   };
-  std::vector<float> axis_t(ax.t.begin(), ax.t.end());
-  auto params_at = [&](const std::vector<float>& row, int x, float* f) {
-    const std::size_t xa = static_cast<std::size_t>(ax.a[static_cast<std::size_t>(x)]) * kFields;
-    const std::size_t xb = static_cast<std::size_t>(ax.b[static_cast<std::size_t>(x)]) * kFields;
-    const float tx = axis_t[static_cast<std::size_t>(x)];
-    for (int k = 0; k < kFields; ++k) f[k] = row[xa + k] + tx * (row[xb + k] - row[xa + k]);
+  auto blend_of = [&](int y) {
+    const auto yy = static_cast<std::size_t>(y);
+    return RowBlend{static_cast<std::size_t>(ay.a[yy]), static_cast<std::size_t>(ay.b[yy]),
+                    static_cast<float>(ay.t[yy])};
   };
 
   // Blur first (the contract's order), each pixel with its own sigma, on the sphere.
   if (stack.active(EffectType::Blur)) {
-    cv::Mat sigma(h, w, CV_32FC1);
+    // Reused by this thread: no fresh map (and its page faults) per frame. A reference, so that
+    // the pool's threads below write this thread's map, not their own thread_local ones.
+    thread_local cv::Mat sigma_buffer;
+    cv::Mat& sigma = sigma_buffer;
+    sigma.create(h, w, CV_32FC1);
     cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& r) {
-      float f[kFields];
-      std::vector<float> row;
       for (int y = r.start; y < r.end; ++y) {
-        grid_row(y, row);
-        for (int x = 0; x < w; ++x) {
-          params_at(row, x, f);
-          sigma.at<float>(y, x) = static_cast<float>(f[0]);
-        }
+        const RowBlend rb = blend_of(y);
+        const float* a = grid.plane(rb.a, 0, w);
+        const float* b = grid.plane(rb.b, 0, w);
+        float* s = sigma.ptr<float>(y);
+        for (int x = 0; x < w; ++x) s[x] = a[x] + rb.t * (b[x] - a[x]);
       }
     });
-    rgb = effects::blur_equirect_varying(rgb, sigma);
+    if (scratch) {
+      effects::blur_equirect_varying(rgb, sigma, *scratch);
+      cv::swap(rgb, *scratch);
+    } else {
+      rgb = effects::blur_equirect_varying(rgb, sigma);
+    }
   }
   const ColourMask mask{stack.active(EffectType::Tint) || stack.active(EffectType::Exposure),
                         stack.active(EffectType::Saturation), stack.active(EffectType::Contrast)};
   if (!mask.any()) return;
+  const ColourRow colour = colour_row(mask);
   cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& r) {
-    float f[kFields];
-    std::vector<float> row;
     for (int y = r.start; y < r.end; ++y) {
-      grid_row(y, row);
-      cv::Vec3f* px = rgb.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < w; ++x) {
-        params_at(row, x, f);
-        apply_colour_pixel(&px[x][0], f + 1, mask);
+      const RowBlend rb = blend_of(y);
+      const float *a[5], *b[5];
+      for (int k = 0; k < 5; ++k) {
+        a[k] = grid.plane(rb.a, k + 1, w);
+        b[k] = grid.plane(rb.b, k + 1, w);
       }
+      colour(rgb.ptr<float>(y), a, b, rb.t, w);
     }
   });
 }

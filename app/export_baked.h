@@ -15,7 +15,9 @@
 /// difference between the default step and 1.
 #pragma once
 
+#include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <opencv2/core.hpp>
@@ -29,6 +31,20 @@ namespace vdfx::app {
 
 class BakedGridCache;
 
+/// One frame's parameters (`fields` of them: blur sigma, gain r, g, b, saturation, contrast):
+/// exact at the grid's pixels, and each grid row already blended along x to every pixel column
+/// (one plane per field), so that an image row is a blend of two such rows whose loops stream.
+struct BakedGrid {
+  int fields = 0;
+  std::vector<double> exact;  //!< `fields` per grid entry, row by row
+  std::vector<float> rows;    //!< [grid row][field][x], the image's width per plane
+  const float* plane(std::size_t grid_row, int field, int width) const {
+    return rows.data() +
+           (grid_row * static_cast<std::size_t>(fields) + static_cast<std::size_t>(field)) *
+               static_cast<std::size_t>(width);
+  }
+};
+
 struct BakedOptions {
   int param_step = 0;  //!< 0: automatic (the grid at most 512 columns: 1 up to 512-wide video)
   /// Where the parameter grid of one frame is kept for the next (null: computed every frame).
@@ -40,15 +56,21 @@ struct BakedOptions {
 /// share one frame computes its grid once per export. Safe to share between render threads.
 class BakedGridCache {
  public:
-  using Grid = std::shared_ptr<const std::vector<double>>;
+  using Grid = std::shared_ptr<const BakedGrid>;
   /// The grid stored under `key`, or null.
   Grid find(const std::vector<std::int64_t>& key) const;
   void store(std::vector<std::int64_t> key, Grid grid);
+  /// The grid under `key`: the stored one; or, while another thread is making the grid of that
+  /// key, that one (waited for: the render threads starting an export together compute the
+  /// shared grid once, not once each); else `make()`'s, stored.
+  Grid get_or_make(const std::vector<std::int64_t>& key, const std::function<Grid()>& make);
 
  private:
   mutable std::mutex mutex_;
+  std::condition_variable made_;
   std::vector<std::int64_t> key_;
   Grid grid_;
+  std::vector<std::vector<std::int64_t>> making_;  //!< keys other threads are making now
 };
 
 /// The step `options` resolves to for a video `width` pixels wide.
@@ -96,9 +118,10 @@ inline void apply_colour_pixel(float* c, const float* p, const ColourMask& m) {
 cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& stack,
                      std::int64_t frame, const BakedOptions& options = {});
 /// The same in place: `rgb` becomes the rendered frame (its buffer is reused unless a blur needs
-/// a new one).
+/// a new one). With `scratch`, the blur writes into it and the two are swapped: a caller keeping
+/// both from frame to frame allocates nothing per frame.
 void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, std::int64_t frame,
-                       const BakedOptions& options = {});
+                       const BakedOptions& options = {}, cv::Mat* scratch = nullptr);
 
 /// `vdfx export --baked`'s frame renderer: decoded picture -> RGB float (one buffer per render
 /// thread, reused: no fresh 4K float image, and its page faults, per frame) -> render_baked_into

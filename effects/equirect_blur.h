@@ -16,7 +16,11 @@
 /// Varying sigma (per pixel): levels of the constant blur at sigmas growing by `ratio` (half
 /// octaves by default, as the GPU per-pixel mode, xr/blur_method.h), the smallest one half a
 /// texel; each pixel mixes the two levels around its own sigma linearly in sigma (level 0 is the
-/// unblurred image). docs/export.md gives the measured error of the mix.
+/// unblurred image). A level is computed only where some pixel mixes it (8 x 8 tiles of the
+/// sigma map, each with the range of levels its sigmas need, dilated by the read-back), and the
+/// solid-angle reduction is made once per call as a chain shared by the levels: the result is
+/// the mix of whole levels, to float rounding. docs/export.md gives the measured error of the
+/// mix.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -31,5 +35,10 @@ cv::Mat blur_equirect(const cv::Mat& rgb, double sigma_deg);
 /// degrees, >= 0) by mixing blur_equirect levels. Pixels with sigma 0 are unchanged.
 cv::Mat blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg,
                               double ratio = 1.4142135623730951);
+/// The same into `out` (not `rgb`'s buffer), whose buffer is reused when it has the size and
+/// type already (a caller blurring frame after frame then has no fresh image, and its page
+/// faults, per frame).
+void blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat& out,
+                           double ratio = 1.4142135623730951);
 
 }  // namespace vdfx::effects

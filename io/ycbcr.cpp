@@ -67,9 +67,11 @@ void convert_rows(const Picture& p, const AffineMap3& map, const ChromaTaps& col
   for (int i = 0; i < 9; ++i) m[i] = static_cast<float>(map.m[i]);
   for (int i = 0; i < 3; ++i) o[i] = static_cast<float>(map.offset[i]);
   const int w = p.planes[0].cols, cw = p.planes[1].cols;
-  // Per row: the two chroma rows around it blended once (cw samples, vectorised), then each
-  // pixel blends two neighbours of that row: bilinear, in the other order of the separable lerps.
+  // Per row: the two chroma rows around it blended once (cw samples), then spread to every
+  // luma column (w samples per plane: bilinear, in the other order of the separable lerps), so
+  // that the per-pixel loop reads three planes in step and vectorises.
   std::vector<float> cb_row(static_cast<std::size_t>(cw)), cr_row(static_cast<std::size_t>(cw));
+  std::vector<float> cb(static_cast<std::size_t>(w)), cr(static_cast<std::size_t>(w));
   for (int y = range.start; y < range.end; ++y) {
     const T* py = p.planes[0].ptr<T>(y);
     const T* u0 = p.planes[1].ptr<T>(rows.i0[y]);
@@ -81,20 +83,29 @@ void convert_rows(const Picture& p, const AffineMap3& map, const ChromaTaps& col
       cb_row[j] = u0[j] + fy * (static_cast<float>(u1[j]) - u0[j]);
       cr_row[j] = v0[j] + fy * (static_cast<float>(v1[j]) - v0[j]);
     }
-    Out* dst = out.ptr<Out>(y);
     for (int x = 0; x < w; ++x) {
       const int a = cols.i0[x], b = cols.i1[x];
       const float fx = cols.f[x];
-      const float cb = cb_row[a] + fx * (cb_row[b] - cb_row[a]);
-      const float cr = cr_row[a] + fx * (cr_row[b] - cr_row[a]);
-      const float yy = py[x];
-      for (int c = 0; c < 3; ++c) {
-        const float v =
-            std::clamp(m[3 * c] * yy + m[3 * c + 1] * cb + m[3 * c + 2] * cr + o[c], 0.0f, 1.0f);
-        if constexpr (std::is_same_v<Out, cv::Vec3b>)
-          dst[x][c] = static_cast<std::uint8_t>(v * 255.0f + 0.5f);
-        else
-          dst[x][c] = v;
+      cb[x] = cb_row[a] + fx * (cb_row[b] - cb_row[a]);
+      cr[x] = cr_row[a] + fx * (cr_row[b] - cr_row[a]);
+    }
+    // Byte stores may alias anything: locals (no vector or capture reloads) let it vectorise.
+    Out* dst = out.ptr<Out>(y);
+    const float *pu = cb.data(), *pv = cr.data();
+    const int n = w;
+    for (int x = 0; x < n; ++x) {
+      const float yy = py[x], u = pu[x], v = pv[x];
+      const float r = std::clamp(m[0] * yy + m[1] * u + m[2] * v + o[0], 0.0f, 1.0f);
+      const float g = std::clamp(m[3] * yy + m[4] * u + m[5] * v + o[1], 0.0f, 1.0f);
+      const float bl = std::clamp(m[6] * yy + m[7] * u + m[8] * v + o[2], 0.0f, 1.0f);
+      if constexpr (std::is_same_v<Out, cv::Vec3b>) {
+        dst[x][0] = static_cast<std::uint8_t>(r * 255.0f + 0.5f);
+        dst[x][1] = static_cast<std::uint8_t>(g * 255.0f + 0.5f);
+        dst[x][2] = static_cast<std::uint8_t>(bl * 255.0f + 0.5f);
+      } else {
+        dst[x][0] = r;
+        dst[x][1] = g;
+        dst[x][2] = bl;
       }
     }
   }
@@ -144,41 +155,57 @@ std::vector<std::vector<std::pair<int, float>>> tent_taps(int out_n, int n, int 
 inline float clamp01(float v) {
   return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
 }
-inline cv::Vec3f clamp01(const cv::Vec3f& v) {
-  return {clamp01(v[0]), clamp01(v[1]), clamp01(v[2])};
+
+/// The tent filter along one axis as runs the loops can stream: every output sample j in
+/// [lo, hi) reads src[step j + offset[t]] with weight weight[t] (the same taps, shifted); the
+/// samples near the edges, where the clamp changes them, keep their own lists.
+struct TentFilter {
+  int step = 1, lo = 0, hi = 0;
+  std::vector<int> offset;
+  std::vector<float> weight;
+  std::vector<std::vector<std::pair<int, float>>> taps;  //!< every sample's own taps
+};
+
+TentFilter tent_filter(int out_n, int n, int log2_sub, double siting) {
+  TentFilter f;
+  f.taps = tent_taps(out_n, n, log2_sub, siting);
+  f.step = 1 << log2_sub;
+  // The pattern of a sample in the middle; the run is every sample whose taps are that pattern
+  // shifted by step j (all of them but at most a few at each edge).
+  const int mid = out_n / 2;
+  for (const auto& [x, wgt] : f.taps[static_cast<std::size_t>(mid)]) {
+    f.offset.push_back(x - f.step * mid);
+    f.weight.push_back(wgt);
+  }
+  auto regular = [&](int j) {
+    const auto& t = f.taps[static_cast<std::size_t>(j)];
+    if (t.size() != f.offset.size()) return false;
+    for (std::size_t k = 0; k < t.size(); ++k)
+      if (t[k].first != f.step * j + f.offset[k] || t[k].second != f.weight[k]) return false;
+    return true;
+  };
+  f.lo = mid;
+  while (f.lo > 0 && regular(f.lo - 1)) --f.lo;
+  f.hi = mid + 1;
+  while (f.hi < out_n && regular(f.hi)) ++f.hi;
+  return f;
 }
 
-/// R'G'B' (CV_32FC3 or CV_8UC3, clamped to [0, 1] on the way) filtered down to the chroma grid:
-/// along x, then along y; the result is CV_32FC3 of cw x ch.
-cv::Mat chroma_rgb(const cv::Mat& rgb, int cw, int ch, const YcbcrInfo& info) {
-  const auto tx = tent_taps(cw, rgb.cols, info.log2_chroma_w, info.chroma_x);
-  const auto ty = tent_taps(ch, rgb.rows, info.log2_chroma_h, info.chroma_y);
-  const bool bytes = rgb.depth() == CV_8U;
-  auto pixel = [&](int y, int x) {
-    if (bytes) return cv::Vec3f(rgb.at<cv::Vec3b>(y, x)) * (1.0f / 255.0f);
-    return clamp01(rgb.at<cv::Vec3f>(y, x));
-  };
-  cv::Mat horizontal(rgb.rows, cw, CV_32FC3), out(ch, cw, CV_32FC3);
-  std::vector<cv::Vec3f> line(static_cast<std::size_t>(rgb.cols));
-  for (int y = 0; y < rgb.rows; ++y) {
-    for (int x = 0; x < rgb.cols; ++x) line[static_cast<std::size_t>(x)] = pixel(y, x);
-    cv::Vec3f* d = horizontal.ptr<cv::Vec3f>(y);
-    for (int j = 0; j < cw; ++j) {
-      cv::Vec3f acc(0, 0, 0);
-      for (const auto& [x, wgt] : tx[static_cast<std::size_t>(j)])
-        acc += line[static_cast<std::size_t>(x)] * wgt;
-      d[j] = acc;
-    }
+/// out[j] = sum of the taps of sample j over src, j in [0, out_n).
+void filter_line(const TentFilter& f, const float* src, float* out, int out_n) {
+  for (int j = 0; j < out_n; ++j) {
+    if (j == f.lo) j = f.hi;  // the regular run, below
+    if (j >= out_n) break;
+    float acc = 0.0f;
+    for (const auto& [x, wgt] : f.taps[static_cast<std::size_t>(j)]) acc += wgt * src[x];
+    out[j] = acc;
   }
-  for (int i = 0; i < ch; ++i) {
-    cv::Vec3f* d = out.ptr<cv::Vec3f>(i);
-    for (int j = 0; j < cw; ++j) d[j] = cv::Vec3f(0, 0, 0);
-    for (const auto& [y, wgt] : ty[static_cast<std::size_t>(i)]) {
-      const cv::Vec3f* s = horizontal.ptr<cv::Vec3f>(y);
-      for (int j = 0; j < cw; ++j) d[j] += s[j] * wgt;
-    }
+  for (int j = f.lo; j < f.hi; ++j) out[j] = 0.0f;
+  for (std::size_t k = 0; k < f.offset.size(); ++k) {
+    const float wgt = f.weight[k];
+    const float* s = src + f.offset[k];
+    for (int j = f.lo; j < f.hi; ++j) out[j] += wgt * s[f.step * j];
   }
-  return out;
 }
 
 }  // namespace
@@ -268,34 +295,74 @@ Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
   p.planes[2].create(ch, cw, CV_8UC1);
   // Codes are never negative here (offsets >= 0, inputs clamped): rounding is + 0.5 and a cut.
   auto code = [](float v) { return static_cast<std::uint8_t>(std::clamp(v + 0.5f, 0.0f, 255.0f)); };
-  const float m0 = static_cast<float>(a.m[0]), m1 = static_cast<float>(a.m[1]),
-              m2 = static_cast<float>(a.m[2]);
+  std::array<float, 9> m{};
+  for (int i = 0; i < 9; ++i) m[i] = static_cast<float>(a.m[i]);
   const float o0 = static_cast<float>(a.offset[0]);
-  for (int y = 0; y < h; ++y) {
-    std::uint8_t* d = p.planes[0].ptr<std::uint8_t>(y);
-    if (rgb.depth() == CV_8U) {
-      const cv::Vec3b* s = rgb.ptr<cv::Vec3b>(y);
-      for (int x = 0; x < w; ++x)
-        d[x] = code((m0 * s[x][0] + m1 * s[x][1] + m2 * s[x][2]) * (1.0f / 255.0f) + o0);
-    } else {
-      const cv::Vec3f* s = rgb.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < w; ++x)
-        d[x] = code(m0 * clamp01(s[x][0]) + m1 * clamp01(s[x][1]) + m2 * clamp01(s[x][2]) + o0);
+  // Chroma: Cb and Cr of the clamped R'G'B' (without their offsets) filtered along x onto the
+  // chroma columns, row by row with the luma; then along y. The filter is linear, so this is
+  // filtering R'G'B' down to the chroma grid and converting there.
+  const TentFilter fx = tent_filter(cw, w, info.log2_chroma_w, info.chroma_x);
+  const TentFilter fy = tent_filter(ch, h, info.log2_chroma_h, info.chroma_y);
+  cv::Mat cb_h(h, cw, CV_32FC1), cr_h(h, cw, CV_32FC1);
+  cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& rows) {
+    std::vector<float> r(static_cast<std::size_t>(w)), g(r.size()), b(r.size()), u(r.size()),
+        v(r.size());
+    for (int y = rows.start; y < rows.end; ++y) {
+      if (rgb.depth() == CV_8U) {
+        const std::uint8_t* s = rgb.ptr<std::uint8_t>(y);
+        for (int x = 0; x < w; ++x) {
+          r[x] = s[3 * x] * (1.0f / 255.0f);
+          g[x] = s[3 * x + 1] * (1.0f / 255.0f);
+          b[x] = s[3 * x + 2] * (1.0f / 255.0f);
+        }
+      } else {
+        const float* s = rgb.ptr<float>(y);
+        for (int x = 0; x < w; ++x) {
+          r[x] = clamp01(s[3 * x]);
+          g[x] = clamp01(s[3 * x + 1]);
+          b[x] = clamp01(s[3 * x + 2]);
+        }
+      }
+      // Byte stores may alias anything: locals (and no vector or capture reloads) let it vectorise.
+      std::uint8_t* d = p.planes[0].ptr<std::uint8_t>(y);
+      const float *pr = r.data(), *pg = g.data(), *pb = b.data();
+      float *pu = u.data(), *pv = v.data();
+      const std::array<float, 9> k = m;
+      const float ko = o0;
+      const int n = w;
+      for (int x = 0; x < n; ++x) {
+        d[x] = code(k[0] * pr[x] + k[1] * pg[x] + k[2] * pb[x] + ko);
+        pu[x] = k[3] * pr[x] + k[4] * pg[x] + k[5] * pb[x];
+        pv[x] = k[6] * pr[x] + k[7] * pg[x] + k[8] * pb[x];
+      }
+      filter_line(fx, u.data(), cb_h.ptr<float>(y), cw);
+      filter_line(fx, v.data(), cr_h.ptr<float>(y), cw);
     }
-  }
-  // Chroma: R'G'B' filtered down to the chroma grid (linear, so the same as filtering Cb, Cr).
-  const cv::Mat sub = chroma_rgb(rgb, cw, ch, info);
-  for (int y = 0; y < ch; ++y) {
-    const cv::Vec3f* s = sub.ptr<cv::Vec3f>(y);
-    std::uint8_t* cb = p.planes[1].ptr<std::uint8_t>(y);
-    std::uint8_t* cr = p.planes[2].ptr<std::uint8_t>(y);
-    for (int x = 0; x < cw; ++x) {
-      cb[x] = code(
-          static_cast<float>(a.m[3] * s[x][0] + a.m[4] * s[x][1] + a.m[5] * s[x][2] + a.offset[1]));
-      cr[x] = code(
-          static_cast<float>(a.m[6] * s[x][0] + a.m[7] * s[x][1] + a.m[8] * s[x][2] + a.offset[2]));
+  });
+  const float o1 = static_cast<float>(a.offset[1]), o2 = static_cast<float>(a.offset[2]);
+  cv::parallel_for_(cv::Range(0, ch), [&](const cv::Range& rows) {
+    std::vector<float> u(static_cast<std::size_t>(cw)), v(u.size());
+    for (int i = rows.start; i < rows.end; ++i) {
+      std::fill(u.begin(), u.end(), o1);
+      std::fill(v.begin(), v.end(), o2);
+      for (const auto& [y, wgt] : fy.taps[static_cast<std::size_t>(i)]) {
+        const float* su = cb_h.ptr<float>(y);
+        const float* sv = cr_h.ptr<float>(y);
+        for (int j = 0; j < cw; ++j) {
+          u[j] += wgt * su[j];
+          v[j] += wgt * sv[j];
+        }
+      }
+      std::uint8_t* cb = p.planes[1].ptr<std::uint8_t>(i);
+      std::uint8_t* cr = p.planes[2].ptr<std::uint8_t>(i);
+      const float *pu = u.data(), *pv = v.data();
+      const int n = cw;
+      for (int j = 0; j < n; ++j) {
+        cb[j] = code(pu[j]);
+        cr[j] = code(pv[j]);
+      }
     }
-  }
+  });
   return p;
 }
 

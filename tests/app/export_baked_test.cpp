@@ -5,8 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <random>
+#include <stdexcept>
+#include <thread>
 
 #include "effects/coords.h"
 #include "effects/effect_stack.h"
@@ -149,6 +153,37 @@ TEST(ExportBaked, GridCacheReusesTheGridOnlyWhileTheEvaluatedFrameIsTheSame) {
   double worst = 0.0;
   cv::minMaxLoc(d.reshape(1), nullptr, &worst);
   EXPECT_GT(worst, 0.2);
+}
+
+TEST(ExportBaked, GridCacheMakesAKeyOnceForThreadsAskingTogether) {
+  // The render threads of an export start together and ask for the same grid: one makes it, the
+  // other waits for that one instead of making its own.
+  BakedGridCache cache;
+  const std::vector<std::int64_t> key{1, 2, 3};
+  std::atomic<int> made{0};
+  std::atomic<bool> entered{false};
+  const auto make = [&]() -> BakedGridCache::Grid {
+    ++made;
+    entered = true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    return std::make_shared<const BakedGrid>();
+  };
+  BakedGridCache::Grid first, second;
+  std::thread a([&] { first = cache.get_or_make(key, make); });
+  while (!entered) std::this_thread::yield();
+  std::thread b([&] { second = cache.get_or_make(key, make); });
+  a.join();
+  b.join();
+  EXPECT_EQ(made.load(), 1);
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(first, second);
+  // Another key is made anew; a failing make leaves no thread waiting on its key.
+  const std::vector<std::int64_t> other{4};
+  EXPECT_THROW(
+      cache.get_or_make(other, []() -> BakedGridCache::Grid { throw std::runtime_error("x"); }),
+      std::runtime_error);
+  EXPECT_NE(cache.get_or_make(other, make), nullptr);
+  EXPECT_EQ(made.load(), 2);
 }
 
 }  // namespace

@@ -9,7 +9,10 @@
 ///   same pipeline with no effects (decode, encode) and the same encoder settings; counter
 ///   "x_encode" (target >= 0.7);
 /// - one baked 4K frame with the parameters on the automatic grid and exactly per pixel, and the
-///   difference between the two.
+///   difference between the two;
+/// - the stages of one baked 1920 x 960 frame (the `vdfx bench` export clip's size), single
+///   threaded as each render thread runs them: Y'CbCr -> RGB, the render with the colour effects,
+///   with colour and blur, RGB -> Y'CbCr.
 /// The clips, the plain loop and the sidecar are app/bench_media.h's, which `vdfx bench` measures
 /// too; the clips are made once and kept in the system's temporary folder.
 #include <benchmark/benchmark.h>
@@ -19,6 +22,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <opencv2/core/utility.hpp>
 #include <string>
 
 #include "app/bench_media.h"
@@ -163,6 +167,34 @@ void BM_BakedFrame4k(benchmark::State& state) {
   }
 }
 
+/// One stage of the baked export's frame at 1920 x 960 on one thread (OpenCV's pool off, as in
+/// a render worker whose parallel_for_ runs serially): 0 Y'CbCr -> RGB float, 1 the render with
+/// the colour effects, 2 with colour and the 0..3 degree blur, 3 RGB -> Y'CbCr 4:2:0.
+void BM_BakedStagesHd(benchmark::State& state) {
+  const int stage = static_cast<int>(state.range(0));
+  const io::Sidecar sc = media_sidecar(stage == 2);
+  const effects::StackInterpolator stack(sc.effects, sc.interpolation, sc.video.fps);
+  cv::Mat rgb, out, scratch;  // reused as the export's render threads reuse theirs
+  media_frame(0, 1920, 960).convertTo(rgb, CV_32FC3, 1.0 / 255.0);
+  const io::YcbcrInfo info;
+  const io::Picture pic = io::rgb_to_ycbcr(rgb, info);
+  app::BakedGridCache cache;
+  app::BakedOptions o;
+  o.cache = &cache;
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(1);
+  for (auto _ : state) {
+    if (stage == 0) io::to_rgb(pic, io::PixelFormat::RgbF32, out);
+    if (stage == 1 || stage == 2) {
+      rgb.copyTo(out);
+      app::render_baked_into(out, stack, 0, o, &scratch);
+    }
+    if (stage == 3) benchmark::DoNotOptimize(io::rgb_to_ycbcr(rgb, info).planes[0].data);
+    benchmark::DoNotOptimize(out.data);
+  }
+  cv::setNumThreads(threads);
+}
+
 }  // namespace
 
 // Real time: the work runs on decoder, worker and encoder threads.
@@ -175,6 +207,7 @@ BENCHMARK(BM_ExportBaked)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);
+BENCHMARK(BM_BakedStagesHd)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK(BM_BakedFrame4k)
     ->Arg(0)
     ->Arg(1)

@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <vector>
 
 #include "effects/coords.h"
 
@@ -143,6 +145,48 @@ TEST(EquirectBlur, VaryingSigmaMixesLevelsCloseToTheConstantBlur) {
     std::cout << "sigma " << s << " deg: level mix vs constant blur, RMS " << rms * 255 << "/255\n";
     EXPECT_LT(rms, 6.0 / 255.0) << s;
   }
+}
+
+TEST(EquirectBlur, VaryingSigmaEqualsTheMixOfWholeLevelsAtEveryPixel) {
+  // The varying blur computes each level only where some pixel mixes it (tiles of the sigma map,
+  // dilated by the read-back): every pixel must still get exactly the linear mix of the two
+  // whole constant-blur levels around its sigma, whatever the neighbouring sigmas are.
+  const int w = 256, h = 128;
+  cv::Mat img(h, w, CV_32FC3);
+  cv::randu(img, 0.0, 1.0);
+  cv::Mat sigma(h, w, CV_32FC1);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)  // 0 (and below, clamped) on one side, up to 9 degrees, in steps
+      sigma.at<float>(y, x) = static_cast<float>(
+          std::max(-0.5, 9.0 * std::sin(kPi * x / w) * (y % 37 < 30 ? 1.0 : 0.3) - 1.0));
+  sigma.at<float>(64, 20) = 6.0f;  // one lone pixel far above its neighbours
+  const cv::Mat out = blur_equirect_varying(img, sigma);
+  double max_sigma = 0.0;
+  cv::minMaxLoc(sigma, nullptr, &max_sigma);
+  std::vector<double> sigmas{0.0};
+  std::vector<cv::Mat> levels{img};
+  for (double s = 0.5 * 360.0 / w;; s *= 1.4142135623730951) {
+    sigmas.push_back(s);
+    levels.push_back(blur_equirect(img, s));
+    if (s >= max_sigma) break;
+  }
+  double worst = 0.0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double s = std::max(0.0f, sigma.at<float>(y, x));
+      cv::Vec3f expected = img.at<cv::Vec3f>(y, x);
+      if (s > 0.0) {
+        std::size_t k = 1;
+        while (k + 1 < sigmas.size() && sigmas[k] < s) ++k;
+        const float t = static_cast<float>((s - sigmas[k - 1]) / (sigmas[k] - sigmas[k - 1]));
+        expected =
+            levels[k - 1].at<cv::Vec3f>(y, x) * (1.0f - t) + levels[k].at<cv::Vec3f>(y, x) * t;
+      }
+      const double e = cv::norm(out.at<cv::Vec3f>(y, x) - expected, cv::NORM_INF);
+      worst = std::max(worst, e);
+    }
+  std::cout << "varying map against whole levels: max difference " << worst << "\n";
+  EXPECT_LT(worst, 1e-5);
 }
 
 }  // namespace
