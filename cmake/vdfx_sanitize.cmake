@@ -29,3 +29,11 @@ if(VDFX_SANITIZE)
     add_compile_options(-Wno-maybe-uninitialized)
   endif()
 endif()
+
+# vdfx_keep_modules_loaded(TARGET): in a sanitizer build, TARGET's dlclose does nothing (the GL
+# driver's leaks then keep their library's name; cmake/sanitize_keep_modules.c says why).
+function(vdfx_keep_modules_loaded target)
+  if(VDFX_SANITIZE)
+    target_sources(${target} PRIVATE "${PROJECT_SOURCE_DIR}/cmake/sanitize_keep_modules.c")
+  endif()
+endfunction()
