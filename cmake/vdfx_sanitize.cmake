@@ -1,11 +1,11 @@
 # Sanitizer and fuzzing builds (issue 11; docs/reliability.md, "Sanitizers and fuzzing").
 #  VDFX_SANITIZE=ON  AddressSanitizer + UndefinedBehaviorSanitizer on every target (gcc or clang);
 #                    any undefined behaviour aborts (-fno-sanitize-recover), leaks fail at exit.
-#                    CI (.ci/sanitize.sh) builds the io, effects and xr tests this way with clang
-#                    and VDFX_FUZZ, without GL (docs/reliability.md says why).
+#                    CI (.ci/sanitize.sh) builds all of vdfx this way with clang, GL and
+#                    VDFX_FUZZ, and runs the whole suite (docs/reliability.md).
 #  VDFX_FUZZ=ON      the libFuzzer targets of tests/fuzz (clang only); implies the sanitizers and
 #                    instruments every library for coverage (-fsanitize=fuzzer-no-link).
-#                    .ci/fuzz.sh runs each target for a few seconds in CI.
+#                    .ci/fuzz.sh runs each target for 60 s in CI.
 option(VDFX_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
 option(VDFX_FUZZ "Build the libFuzzer targets (clang; implies VDFX_SANITIZE)" OFF)
 
@@ -31,7 +31,7 @@ if(VDFX_SANITIZE)
 endif()
 
 # vdfx_keep_modules_loaded(TARGET): in a sanitizer build, TARGET's dlclose does nothing (the GL
-# driver's leaks then keep their library's name; cmake/sanitize_keep_modules.c says why).
+# driver stays mapped, so what it holds at exit stays reachable; cmake/sanitize_keep_modules.c).
 function(vdfx_keep_modules_loaded target)
   if(VDFX_SANITIZE)
     target_sources(${target} PRIVATE "${PROJECT_SOURCE_DIR}/cmake/sanitize_keep_modules.c")
