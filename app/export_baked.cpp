@@ -108,12 +108,6 @@ BakedGridCache::Grid BakedGridCache::find(const std::vector<std::int64_t>& key) 
   return key == key_ ? grid_ : nullptr;
 }
 
-void BakedGridCache::store(std::vector<std::int64_t> key, Grid grid) {
-  const std::lock_guard lock(mutex_);
-  key_ = std::move(key);
-  grid_ = std::move(grid);
-}
-
 BakedGridCache::Grid BakedGridCache::get_or_make(const std::vector<std::int64_t>& key,
                                                  const std::function<Grid()>& make) {
   std::unique_lock lock(mutex_);
@@ -146,7 +140,30 @@ namespace {
 /// The parameters at the grid's pixels, computed.
 BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int64_t frame, int w,
                                int h, const std::vector<int>& gx, const std::vector<int>& gy,
-                               const Axis& ax);
+                               const Axis& ax) {
+  const std::size_t cols = gx.size();
+  auto grid = std::make_shared<BakedGrid>();
+  grid->fields = kFields;
+  grid->rows.resize(gy.size() * kFields * static_cast<std::size_t>(w));
+  cv::parallel_for_(cv::Range(0, static_cast<int>(gy.size())), [&](const cv::Range& r) {
+    std::vector<double> exact(cols * kFields);  // one grid row's exact parameters
+    for (int j = r.start; j < r.end; ++j) {
+      const auto jj = static_cast<std::size_t>(j);
+      for (std::size_t i = 0; i < cols; ++i)
+        flatten(stack.evaluate(pixel_direction(gx[i], gy[jj], w, h), frame), &exact[i * kFields]);
+      for (int k = 0; k < kFields; ++k) {
+        float* plane = grid->rows.data() + (jj * kFields + static_cast<std::size_t>(k)) * w;
+        for (int x = 0; x < w; ++x) {
+          const auto xx = static_cast<std::size_t>(x);
+          const double a = exact[static_cast<std::size_t>(ax.a[xx]) * kFields + k];
+          const double b = exact[static_cast<std::size_t>(ax.b[xx]) * kFields + k];
+          plane[x] = static_cast<float>(a + ax.t[xx] * (b - a));
+        }
+      }
+    }
+  });
+  return grid;
+}
 
 /// The parameters at the grid's pixels (BakedGrid), from the cache when the frame every active
 /// effect evaluates at is the one it was computed for.
@@ -161,35 +178,6 @@ BakedGridCache::Grid parameter_grid(const effects::StackInterpolator& stack, std
   if (cache)
     return cache->get_or_make(key, [&] { return make_grid(stack, frame, w, h, gx, gy, ax); });
   return make_grid(stack, frame, w, h, gx, gy, ax);
-}
-
-BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int64_t frame, int w,
-                               int h, const std::vector<int>& gx, const std::vector<int>& gy,
-                               const Axis& ax) {
-  const std::size_t cols = gx.size();
-  auto grid = std::make_shared<BakedGrid>();
-  grid->fields = kFields;
-  grid->exact.resize(cols * gy.size() * kFields);
-  grid->rows.resize(gy.size() * kFields * static_cast<std::size_t>(w));
-  cv::parallel_for_(cv::Range(0, static_cast<int>(gy.size())), [&](const cv::Range& r) {
-    for (int j = r.start; j < r.end; ++j) {
-      const auto jj = static_cast<std::size_t>(j);
-      const double* g = &grid->exact[jj * cols * kFields];
-      for (std::size_t i = 0; i < cols; ++i)
-        flatten(stack.evaluate(pixel_direction(gx[i], gy[jj], w, h), frame),
-                &grid->exact[(jj * cols + i) * kFields]);
-      for (int k = 0; k < kFields; ++k) {
-        float* plane = grid->rows.data() + (jj * kFields + static_cast<std::size_t>(k)) * w;
-        for (int x = 0; x < w; ++x) {
-          const auto xx = static_cast<std::size_t>(x);
-          const double a = g[static_cast<std::size_t>(ax.a[xx]) * kFields + k];
-          const double b = g[static_cast<std::size_t>(ax.b[xx]) * kFields + k];
-          plane[x] = static_cast<float>(a + ax.t[xx] * (b - a));
-        }
-      }
-    }
-  });
-  return grid;
 }
 
 }  // namespace

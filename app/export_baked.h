@@ -31,13 +31,13 @@ namespace vdfx::app {
 
 class BakedGridCache;
 
-/// One frame's parameters (`fields` of them: blur sigma, gain r, g, b, saturation, contrast):
-/// exact at the grid's pixels, and each grid row already blended along x to every pixel column
-/// (one plane per field), so that an image row is a blend of two such rows whose loops stream.
+/// One frame's parameters (`fields` of them: blur sigma, gain r, g, b, saturation, contrast),
+/// evaluated exactly at the grid's pixels and each grid row already blended along x to every pixel
+/// column (one plane per field), so that an image row is a blend of two such rows whose loops
+/// stream.
 struct BakedGrid {
   int fields = 0;
-  std::vector<double> exact;  //!< `fields` per grid entry, row by row
-  std::vector<float> rows;    //!< [grid row][field][x], the image's width per plane
+  std::vector<float> rows;  //!< [grid row][field][x], the image's width per plane
   const float* plane(std::size_t grid_row, int field, int width) const {
     return rows.data() +
            (grid_row * static_cast<std::size_t>(fields) + static_cast<std::size_t>(field)) *
@@ -59,7 +59,6 @@ class BakedGridCache {
   using Grid = std::shared_ptr<const BakedGrid>;
   /// The grid stored under `key`, or null.
   Grid find(const std::vector<std::int64_t>& key) const;
-  void store(std::vector<std::int64_t> key, Grid grid);
   /// The grid under `key`: the stored one; or, while another thread is making the grid of that
   /// key, that one (waited for: the render threads starting an export together compute the
   /// shared grid once, not once each); else `make()`'s, stored.
