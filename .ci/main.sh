@@ -32,8 +32,7 @@ echo "vdfx: demo views written to $out (demo-*.png: view-dependent; demo-*-pixel
 # the bundled demo (not saved), in the desktop view it was recorded in (1280 x 720), written as
 # a screenshot (Xvfb when there is no display), then the same session replayed headless: the
 # sidecar it authors and a few frames.
-run_gl() { if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"; fi; }
-run_gl "$vdfx" edit --input replay:"$root/recordings/demo.vdrec.jsonl" --frames 433 --hidden \
+"$root/.ci/with_display.sh" "$vdfx" edit --input replay:"$root/recordings/demo.vdrec.jsonl" --frames 433 --hidden \
   --screenshot "$out/editor.png"
 "$vdfx" replay "$root/recordings/demo.vdrec.jsonl" --video "$pano" \
   --sidecar-out "$out/demo-authored.vdfx.json" --frames "$out/replay"

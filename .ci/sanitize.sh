@@ -4,8 +4,8 @@
 # into build-asan/ or $VDFX_ASAN_BUILD_DIR), then runs every ctest test, the GL ones under Xvfb
 # with Mesa's llvmpipe as .ci/test.sh does, and the command tests through the sanitized vdfx
 # executable. Any undefined behaviour, memory error or leak fails the run; leaks inside
-# third-party libraries (the GL driver's among them) are excepted, each in
-# cmake/lsan_suppressions.txt with the reason.
+# third-party libraries are excepted, each in cmake/lsan_suppressions.txt with the reason (the GL
+# driver needs none: cmake/sanitize_keep_modules.c).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/.ci/deps.sh"
@@ -22,8 +22,4 @@ if command -v llvm-symbolizer-14 > /dev/null; then
   export ASAN_SYMBOLIZER_PATH=$(command -v llvm-symbolizer-14)
 fi
 export LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe
-# -noreset: see .ci/test.sh.
-if [ -z "${DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --output-on-failure -j "$jobs" "$@"
-fi
-exec ctest --output-on-failure -j "$jobs" "$@"
+exec "$root/.ci/with_display.sh" ctest --output-on-failure -j "$jobs" "$@"

@@ -10,10 +10,5 @@ if git -C "$root" rev-parse --git-dir > /dev/null 2>&1; then "$root/.ci/format.s
 build=${VDFX_BUILD_DIR:-$root/build}
 cd "$build"
 # GL tests need a display; they are never skipped silently: without one they fail.
-export LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe
-# -noreset: by default Xvfb resets when its last client disconnects, and a GL test that connects
-# during that reset fails with "Failed to open display" (seen once in CI with two tests in flight).
-if [ -z "${DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --output-on-failure -j "${VDFX_JOBS:-$(nproc)}" "$@"
-fi
-exec ctest --output-on-failure -j "${VDFX_JOBS:-$(nproc)}" "$@"
+export LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe  # the same renderer on any machine
+exec "$root/.ci/with_display.sh" ctest --output-on-failure -j "${VDFX_JOBS:-$(nproc)}" "$@"
