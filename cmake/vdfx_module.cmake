@@ -20,6 +20,12 @@ function(vdfx_add_module name)
   # Includes are written as "effects/rbf_interpolator.h", relative to the repository root.
   target_include_directories(vdfx_${name} PUBLIC "${PROJECT_SOURCE_DIR}")
   target_link_libraries(vdfx_${name} PUBLIC ${ARG_PUBLIC_LIBS} PRIVATE ${ARG_PRIVATE_LIBS})
-  target_compile_definitions(vdfx_${name} PUBLIC VDFX_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   vdfx_warnings(vdfx_${name})
+endfunction()
+
+# vdfx_source_dir_definition(SOURCES...): the few files that find bundled data in the source tree
+# (HMD profiles, the demo) get VDFX_SOURCE_DIR; no other compile line names the checkout, so the
+# objects of two checkouts are the same (a compiler cache shares them between worktrees).
+function(vdfx_source_dir_definition)
+  set_property(SOURCE ${ARGN} APPEND PROPERTY COMPILE_DEFINITIONS VDFX_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endfunction()
