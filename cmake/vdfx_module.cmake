@@ -8,10 +8,15 @@ function(vdfx_warnings target)
   endif()
 endfunction()
 
-# vdfx_add_module(NAME [PUBLIC_LIBS libs...] [PRIVATE_LIBS libs...] [EXCLUDE_REGEX regex])
+# vdfx_add_module(NAME [PUBLIC_LIBS libs...] [PRIVATE_LIBS libs...] [INCLUDE_REGEX regex]
+#                  [EXCLUDE_REGEX regex]): the folder's .cpp files (those matching INCLUDE_REGEX,
+# less those matching EXCLUDE_REGEX) as the static library vdfx_NAME, alias vdfx::NAME.
 function(vdfx_add_module name)
-  cmake_parse_arguments(ARG "" "EXCLUDE_REGEX" "PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "" "INCLUDE_REGEX;EXCLUDE_REGEX" "PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
   file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.cpp")
+  if(ARG_INCLUDE_REGEX)
+    list(FILTER sources INCLUDE REGEX "${ARG_INCLUDE_REGEX}")
+  endif()
   if(ARG_EXCLUDE_REGEX)
     list(FILTER sources EXCLUDE REGEX "${ARG_EXCLUDE_REGEX}")
   endif()

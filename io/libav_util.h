@@ -1,7 +1,7 @@
 /// @file
 /// @brief Small owning wrappers and error text for FFmpeg's C libraries (libavformat,
 /// libavcodec, libavutil), shared by the decoder, the encoder and their tests. Only io/ sources,
-/// tests and `vdfx bench`'s plain decode loop (app/bench_media.cpp, the decoder's peer) include
+/// tests and `vdfx bench`'s plain decode loop (app/bench/media.cpp, the decoder's peer) include
 /// this: nothing else sees the libav headers.
 #pragma once
 

@@ -13,9 +13,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "app/bench_plot.h"
-#include "app/bench_report.h"
-#include "app/bench_timing.h"
+#include "app/bench/plot.h"
+#include "app/bench/report.h"
+#include "app/bench/timing.h"
 #include "command_test_util.h"
 
 namespace vdfx::app {

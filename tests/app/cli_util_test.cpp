@@ -1,4 +1,4 @@
-#include "app/cli_util.h"
+#include "app/cli/cli_util.h"
 
 #include <gtest/gtest.h>
 

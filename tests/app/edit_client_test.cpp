@@ -5,7 +5,7 @@
 
 #include <map>
 
-#include "app/editor_client.h"
+#include "app/window/editor_client.h"
 #include "editor_test_util.h"
 #include "effects/effect_shaders.h"
 

@@ -8,8 +8,8 @@
 #include <csignal>
 #include <fstream>
 
-#include "app/autosave.h"
-#include "app/editor.h"
+#include "app/editor/autosave.h"
+#include "app/editor/editor.h"
 #include "editor_test_util.h"
 
 namespace vdfx::app {

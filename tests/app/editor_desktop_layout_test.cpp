@@ -4,7 +4,7 @@
 /// view centre stays clear; the heads-up line and expiring messages.
 #include <gtest/gtest.h>
 
-#include "app/editor.h"
+#include "app/editor/editor.h"
 #include "editor_scripts.h"
 #include "editor_test_util.h"
 #include "ui/theme.h"

@@ -4,7 +4,7 @@
 
 #include <functional>
 
-#include "app/document.h"
+#include "app/editor/document.h"
 #include "editor_test_util.h"
 #include "io/input_error.h"
 

@@ -5,9 +5,9 @@
 /// undo step each; the editor client draws the edited flare and grain live.
 #include <gtest/gtest.h>
 
-#include "app/document.h"
-#include "app/editor.h"
-#include "app/editor_client.h"
+#include "app/editor/document.h"
+#include "app/editor/editor.h"
+#include "app/window/editor_client.h"
 #include "editor_test_util.h"
 #include "io/sidecar.h"
 

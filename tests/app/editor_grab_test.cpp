@@ -4,7 +4,7 @@
 /// while selected, the effect widget shows and edits that keyframe's values; deselecting.
 #include <gtest/gtest.h>
 
-#include "app/editor.h"
+#include "app/editor/editor.h"
 #include "editor_scripts.h"
 #include "editor_test_util.h"
 #include "xr/input_backend.h"

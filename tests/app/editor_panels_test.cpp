@@ -2,7 +2,7 @@
 /// @brief Panel wiring: the sim's mouse pointer on the desktop layout's panels -> editor commands.
 #include <gtest/gtest.h>
 
-#include "app/editor.h"
+#include "app/editor/editor.h"
 #include "editor_scripts.h"
 #include "editor_test_util.h"
 #include "xr/input_backend.h"

@@ -5,7 +5,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "app/editor.h"
+#include "app/editor/editor.h"
 #include "editor_test_util.h"
 
 namespace vdfx::app {

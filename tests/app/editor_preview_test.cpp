@@ -7,8 +7,8 @@
 
 #include <random>
 
-#include "app/editor.h"
-#include "app/pending_edit.h"
+#include "app/editor/editor.h"
+#include "app/editor/pending_edit.h"
 #include "editor_test_util.h"
 
 namespace vdfx::app {

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <random>
 
-#include "app/editor.h"
-#include "app/visualizations.h"
+#include "app/editor/editor.h"
+#include "app/editor/visualizations.h"
 #include "editor_test_util.h"
 
 namespace vdfx::app {

@@ -7,7 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "app/editor_panels.h"
+#include "app/editor/editor_panels.h"
 #include "effects/effect_types.h"
 #include "ui/colour_wheel.h"
 #include "xr/input_backend.h"

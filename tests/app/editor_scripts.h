@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "app/editor_panels.h"
+#include "app/editor/editor_panels.h"
 
 namespace vdfx::app::test {
 

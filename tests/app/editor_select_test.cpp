@@ -4,7 +4,7 @@
 /// it, shown as the ring, title and status; the squeeze then grabs the selected keyframe.
 #include <gtest/gtest.h>
 
-#include "app/editor.h"
+#include "app/editor/editor.h"
 #include "editor_scripts.h"
 #include "editor_test_util.h"
 #include "xr/input_backend.h"

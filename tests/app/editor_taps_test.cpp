@@ -3,7 +3,7 @@
 /// (the sim's events queued before one poll, as a slow frame sees a quick tap) act exactly once.
 #include <gtest/gtest.h>
 
-#include "app/editor.h"
+#include "app/editor/editor.h"
 #include "editor_scripts.h"
 #include "editor_test_util.h"
 #include "xr/input_backend.h"

@@ -3,7 +3,7 @@
 /// delete nearest, unaltered (B), undo/redo bindings, playback frames.
 #include <gtest/gtest.h>
 
-#include "app/editor.h"
+#include "app/editor/editor.h"
 #include "editor_test_util.h"
 
 namespace vdfx::app {

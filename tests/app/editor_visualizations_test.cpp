@@ -2,8 +2,8 @@
 /// @brief Effect tracks, minimap, timeline markers and nearest/adjacent keyframes.
 #include <gtest/gtest.h>
 
-#include "app/editor.h"
-#include "app/visualizations.h"
+#include "app/editor/editor.h"
+#include "app/editor/visualizations.h"
 #include "editor_test_util.h"
 
 namespace vdfx::app {

@@ -1,8 +1,6 @@
 /// @file
 /// @brief The baked export's frame render: per-pixel colour formulas against the CPU reference,
 /// parameters at each pixel's own direction, the grid step's error, the vignette left out.
-#include "app/export_baked.h"
-
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -12,6 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "app/export/baked_export.h"
 #include "effects/coords.h"
 #include "effects/effect_stack.h"
 #include "effects/stack_interpolator.h"

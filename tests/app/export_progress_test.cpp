@@ -1,10 +1,10 @@
 /// @file
 /// @brief Export progress: the bar's and the lines' text, and how often each is written.
-#include "app/export_progress.h"
-
 #include <gtest/gtest.h>
 
 #include <sstream>
+
+#include "app/export/progress.h"
 
 namespace vdfx::app {
 namespace {

@@ -23,8 +23,8 @@ extern "C" {
 #include <libavutil/stereo3d.h>
 }
 
-#include "app/export_baked.h"
-#include "app/export_path.h"
+#include "app/export/baked_export.h"
+#include "app/export/path_export.h"
 #include "command_test_util.h"
 #include "effects/stack_interpolator.h"
 #include "effects/view_renderer.h"

@@ -1,7 +1,7 @@
 /// @file
 /// @brief Issue 11, class 4, the renderer's backstop: parameters that are not finite are refused
 /// with the sidecar and the view named (they rendered a black image, and eval printed null).
-#include "app/finite_params.h"
+#include "app/cli/finite_params.h"
 
 #include <gtest/gtest.h>
 

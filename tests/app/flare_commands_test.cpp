@@ -8,8 +8,8 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
-#include "app/document.h"
-#include "app/player.h"
+#include "app/editor/document.h"
+#include "app/window/player.h"
 #include "command_test_util.h"
 #include "effects/view_camera.h"
 #include "io/sidecar_validate.h"

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
-#include "app/frame_loop.h"
-#include "app/player.h"
+#include "app/window/frame_loop.h"
+#include "app/window/player.h"
 #include "io/input_error.h"
 #include "io/video_source.h"
 #include "player_test_support.h"

@@ -1,6 +1,6 @@
 /// @file
 /// @brief --stats accumulation: eyes summed per stage, medians per window and in total.
-#include "app/frame_loop_stats.h"
+#include "app/window/frame_loop_stats.h"
 
 #include <gtest/gtest.h>
 

@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "app/document.h"
-#include "app/player.h"
+#include "app/editor/document.h"
+#include "app/window/player.h"
 #include "command_test_util.h"
 #include "io/sidecar_validate.h"
 

@@ -9,8 +9,8 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
-#include "app/frame_loop.h"
-#include "app/player.h"
+#include "app/window/frame_loop.h"
+#include "app/window/player.h"
 #include "command_test_util.h"
 #include "io/video_source.h"
 #include "player_test_support.h"

@@ -11,7 +11,7 @@
 #include <map>
 #include <opencv2/imgproc.hpp>
 
-#include "app/view_render.h"
+#include "app/export/view_render.h"
 #include "effects/grain_layout.h"
 #include "effects/grain_stereo.h"
 #include "xr/eye_views.h"

@@ -3,7 +3,7 @@
 /// coalesce (latest wins); an older finished field is dropped for a newer one; shutdown while
 /// busy cancels and joins; the editor with visuals.async shows the same fields as the
 /// synchronous one once the worker caught up, and never blocks update() on it.
-#include "app/minimap_worker.h"
+#include "app/editor/minimap_worker.h"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,8 @@
 #include <thread>
 #include <vector>
 
-#include "app/editor.h"
-#include "app/visualizations.h"
+#include "app/editor/editor.h"
+#include "app/editor/visualizations.h"
 #include "editor_test_util.h"
 
 namespace vdfx::app {

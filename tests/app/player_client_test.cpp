@@ -2,7 +2,7 @@
 /// @brief Player as a FrameClient: keys, controller buttons, active effects, parameters.
 #include <gtest/gtest.h>
 
-#include "app/player.h"
+#include "app/window/player.h"
 #include "effects/effect_shaders.h"
 #include "player_test_support.h"
 

@@ -1,6 +1,6 @@
 /// @file
 /// @brief Playhead: exact display time -> frame, pause, seek, loop.
-#include "app/player_playhead.h"
+#include "app/window/player_playhead.h"
 
 #include <gtest/gtest.h>
 

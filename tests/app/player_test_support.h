@@ -10,7 +10,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "app/frame_loop.h"
+#include "app/window/frame_loop.h"
 #include "effects/keyframe.h"
 #include "io/frame_decoder.h"
 #include "io/recording.h"

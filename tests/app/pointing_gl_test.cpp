@@ -12,7 +12,7 @@
 #include <map>
 #include <opencv2/imgproc.hpp>
 
-#include "app/editor.h"
+#include "app/editor/editor.h"
 #include "editor_test_util.h"
 #include "xr/compositor.h"
 #include "xr/eye_views.h"

@@ -9,7 +9,7 @@
 #include <opencv2/videoio.hpp>
 #include <sstream>
 
-#include "app/editor_replay.h"
+#include "app/editor/replay.h"
 #include "editor_scripts.h"
 #include "editor_test_util.h"
 #include "io/input_error.h"

@@ -4,7 +4,7 @@
 /// allocated (it was GL_OUT_OF_MEMORY, exit 3, after 6 GB).
 #include <gtest/gtest.h>
 
-#include "app/size_limits.h"
+#include "app/cli/size_limits.h"
 #include "command_test_util.h"
 
 namespace vdfx::app::testing {

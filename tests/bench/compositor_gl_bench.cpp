@@ -20,7 +20,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "app/bench_inputs.h"
+#include "app/bench/inputs.h"
 #include "effects/effect_shaders.h"
 #include "gl_bench_support.h"
 #include "xr/distortion_gl.h"

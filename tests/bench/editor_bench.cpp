@@ -6,7 +6,7 @@
 ///
 /// The live preview (trigger placement or grab), per frame in which the preview keyframe moved:
 /// the old path (a fresh RbfInterpolator of all keyframes, O(N^3)) against the pending edit's
-/// interpolant (app/pending_edit.h: one O(N^2) KeyframeSet::move), each followed by one
+/// interpolant (app/editor/pending_edit.h: one O(N^2) KeyframeSet::move), each followed by one
 /// evaluation away from the view.
 /// The preview's start (trigger press or grab) at N = 1000: the old seed, one full solve of the
 /// keyframes and the pending keyframe (source 0, the peer), against the pending edit's seed,
@@ -20,9 +20,9 @@
 
 #include <random>
 
-#include "app/document.h"
-#include "app/editor.h"
-#include "app/visualizations.h"
+#include "app/editor/document.h"
+#include "app/editor/editor.h"
+#include "app/editor/visualizations.h"
 #include "effects/keyframe_set.h"
 #include "effects/rbf_interpolator.h"
 

@@ -9,7 +9,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "app/bench_inputs.h"
+#include "app/bench/inputs.h"
 #include "effects/effect_stack.h"
 #include "effects/equirect_sampler.h"
 #include "effects/gaussian_blur.h"

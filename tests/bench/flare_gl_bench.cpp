@@ -16,7 +16,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "app/bench_flare_setup.h"
+#include "app/bench/flare_setup.h"
 #include "effects/auto_light.h"
 #include "effects/effect_shaders.h"
 #include "effects/flare_layout.h"

@@ -10,7 +10,7 @@
 #include <functional>
 #include <vector>
 
-#include "app/bench_timing.h"
+#include "app/bench/timing.h"
 #include "xr/gpu_timer.h"
 
 namespace vdfx::bench {

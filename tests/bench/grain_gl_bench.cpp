@@ -16,8 +16,8 @@
 #include <memory>
 #include <vector>
 
-#include "app/bench_flare_setup.h"
-#include "app/bench_grain_setup.h"
+#include "app/bench/flare_setup.h"
+#include "app/bench/grain_setup.h"
 #include "effects/grain_layout.h"
 #include "gl_bench_support.h"
 #include "play_eye_fixture.h"

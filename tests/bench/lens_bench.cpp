@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "app/bench_inputs.h"
+#include "app/bench/inputs.h"
 #include "effects/distortion_mesh.h"
 
 namespace {
@@ -63,7 +63,7 @@ void BM_InverseNewton(benchmark::State& state) {
   run_inverse(state, InverseMethod::Newton);
 }
 
-/// The peer (app/bench_inputs.h): arg 0 OpenCV's default 5 iterations, N > 0 up to N.
+/// The peer (app/bench/inputs.h): arg 0 OpenCV's default 5 iterations, N > 0 up to N.
 void BM_InverseOpenCvUndistortPoints(benchmark::State& state) {
   std::vector<cv::Point2d> out;
   for (auto _ : state) {

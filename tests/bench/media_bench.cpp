@@ -13,7 +13,7 @@
 /// - the stages of one baked 1920 x 960 frame (the `vdfx bench` export clip's size), single
 ///   threaded as each render thread runs them: Y'CbCr -> RGB, the render with the colour effects,
 ///   with colour and blur, RGB -> Y'CbCr.
-/// The clips, the plain loop and the sidecar are app/bench_media.h's, which `vdfx bench` measures
+/// The clips, the plain loop and the sidecar are app/bench/media.h's, which `vdfx bench` measures
 /// too; the clips are made once and kept in the system's temporary folder.
 #include <benchmark/benchmark.h>
 
@@ -25,9 +25,9 @@
 #include <opencv2/core/utility.hpp>
 #include <string>
 
-#include "app/bench_media.h"
-#include "app/export_baked.h"
-#include "app/export_pipeline.h"
+#include "app/bench/media.h"
+#include "app/export/baked_export.h"
+#include "app/export/pipeline.h"
 #include "effects/keyframe.h"
 #include "effects/stack_interpolator.h"
 #include "io/frame_decoder.h"
@@ -108,7 +108,7 @@ void BM_DecodeVideoSource4k(benchmark::State& state) {
 
 constexpr int kExportW = 1920, kExportH = 960, kExportFrames = 8;
 
-/// One export run over the whole bench clip (app/bench_media.h's export_clip).
+/// One export run over the whole bench clip (app/bench/media.h's export_clip).
 void run_export(benchmark::State& state, const app::FrameRenderer& render, const std::string& key) {
   const fs::path clip = media_clip("vdfx_bench_2k_h264.mp4", kExportW, kExportH, kExportFrames);
   const fs::path out = fs::temp_directory_path() / ("vdfx_bench_export_" + key + ".mp4");

@@ -10,7 +10,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "app/bench_inputs.h"
+#include "app/bench/inputs.h"
 #include "effects/effect_shaders.h"
 #include "gl_bench_support.h"
 #include "xr/compositor.h"
@@ -20,7 +20,7 @@
 
 namespace vdfx::bench {
 
-// The inputs `vdfx bench` uses too (app/bench_inputs.h).
+// The inputs `vdfx bench` uses too (app/bench/inputs.h).
 using app::bench::head_at;
 using app::bench::synthetic_frame;
 

@@ -2,7 +2,7 @@
 /// @brief RBF interpolation speed: evaluation, the whole stack, incremental add, full solve.
 #include <benchmark/benchmark.h>
 
-#include "app/bench_inputs.h"
+#include "app/bench/inputs.h"
 #include "effects/keyframe_set.h"
 #include "effects/rbf_interpolator.h"
 #include "effects/stack_interpolator.h"

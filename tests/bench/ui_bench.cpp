@@ -11,7 +11,7 @@
 #include <cstring>
 #include <opencv2/core.hpp>
 
-#include "app/editor.h"
+#include "app/editor/editor.h"
 #include "ui/button.h"
 #include "ui/canvas.h"
 #include "ui/demo_panels.h"

@@ -41,7 +41,8 @@ static int fd_is(int fd, mode_t type) {
 int fsync(int fd) {
   static int (*real)(int) = NULL;
   if (real == NULL) next_symbol(&real, sizeof real, "fsync");
-  if ((fault_is("fsync_dir") && fd_is(fd, S_IFDIR)) || (fault_is("fsync_file") && fd_is(fd, S_IFREG))) {
+  if ((fault_is("fsync_dir") && fd_is(fd, S_IFDIR)) ||
+      (fault_is("fsync_file") && fd_is(fd, S_IFREG))) {
     errno = EIO;
     return -1;
   }

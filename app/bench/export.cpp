@@ -1,0 +1,72 @@
+/// @file
+/// @brief Baked export knob of `vdfx bench`: the export pipeline (decode, per-pixel render of a
+/// typical sidecar, encode with `vdfx export`'s defaults) over a generated H.264 clip, against
+/// the same pipeline passing every frame through unchanged (the encoder's floor). The error is
+/// that of the export's one approximation, the effect parameters interpolated on a grid
+/// (app/export/baked_export.h, automatic step) rather than exactly at every pixel, on the clip's
+/// first frame before encoding; the encoder's own loss is not counted.
+#include <filesystem>
+
+#include "app/bench/error.h"
+#include "app/bench/media.h"
+#include "app/bench/registry.h"
+#include "app/export/baked_export.h"
+
+namespace vdfx::app::bench {
+namespace {
+
+constexpr const char* kKnob = "video.export";
+
+/// Frame 0 of the clip's source (before encoding) baked with the automatic grid against exact
+/// per-pixel parameters.
+ErrorStats grid_error(const effects::StackInterpolator& stack, int w, int h, double* mean) {
+  cv::Mat rgb;
+  media_frame(0, w, h).convertTo(rgb, CV_32FC3, 1.0 / 255.0);
+  BakedOptions exact;
+  exact.param_step = 1;
+  return steps_error(render_baked(rgb, stack, 0), render_baked(rgb, stack, 0, exact), mean);
+}
+
+}  // namespace
+
+void add_export_knobs(Registry& r, bool quick) {
+  r.knob({kKnob,
+          "baked export (decode, render, encode: libx264 medium crf 18) of a generated H.264 clip",
+          "frame", "8-bit steps",
+          "the same frame baked with exact per-pixel parameters (param_step 1), before encoding",
+          "the same pipeline with no effects (decode, encode: the encoder's floor)", PlotError::Max,
+          false, false});
+  const int w = quick ? 960 : 1920, h = w / 2, frames = quick ? 6 : 8;
+  std::vector<bool> blurs{false};
+  if (!quick) blurs.push_back(true);
+  for (const bool blur : blurs) {
+    r.add(kKnob, blur ? "colour + blur" : "colour", [=](Row& row, const Context& ctx) {
+      namespace fs = std::filesystem;
+      const fs::path clip = media_clip("vdfx_bench_" + std::to_string(w) + "x" + std::to_string(h) +
+                                           "_" + std::to_string(frames) + "_h264.mp4",
+                                       w, h, frames);
+      const io::Sidecar sc = media_sidecar(blur);
+      const effects::StackInterpolator stack(sc.effects, sc.interpolation, sc.video.fps);
+      const fs::path out = fs::temp_directory_path() / "vdfx_bench_export.mp4";
+      const FrameRenderer baked = baked_renderer(stack), floor = unchanged_renderer();
+      const auto t =
+          measure_pair(Timed([&] { export_clip(clip, baked, out); }, frames),
+                       Timed([&] { export_clip(clip, floor, out); }, frames), ctx.budget);
+      std::error_code ec;
+      fs::remove(out, ec);
+      row.time = t.subject;
+      row.peer_time = t.peer;
+      double mean = 0.0;
+      row.error = grid_error(stack, w, h, &mean);
+      row.add("mean_error", mean);
+      row.add("param_step", baked_param_step({}, w));
+      row.add("frames_per_s", 1.0 / t.subject.median_s);
+      row.add("peer_frames_per_s", 1.0 / t.peer.median_s);
+      row.note = std::to_string(w) + "x" + std::to_string(h) + ", " + std::to_string(frames) +
+                 " frames; tint, exposure, saturation" + (blur ? ", blur 0..3 deg" : "") +
+                 "; threads: the pipeline's workers, the decoder's and x264's";
+    });
+  }
+}
+
+}  // namespace vdfx::app::bench

@@ -1,0 +1,299 @@
+/// @file
+/// @brief gnuplot scripts for the bench plots, and running gnuplot on them.
+#include "app/bench/plot.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/atomic_file.h"
+
+extern char** environ;
+
+namespace vdfx::app::bench {
+namespace {
+
+/// Runs gnuplot with `args`, its output into `log`; returns the exit status (-1: not started).
+int run_gnuplot(const std::vector<std::string>& args, const std::filesystem::path& log) {
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
+  posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+  std::vector<char*> argv;
+  std::vector<std::string> all{"gnuplot"};
+  all.insert(all.end(), args.begin(), args.end());
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, "gnuplot", &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A string inside a gnuplot single-quoted literal ('' is a quote there).
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
+  return q + "'";
+}
+
+struct Axis {
+  bool log = false;
+  double scale = 1.0;  //!< multiplies the values (time unit)
+  std::string unit;
+};
+
+/// A time unit that keeps the values between about 0.1 and 1000.
+Axis time_axis(const std::vector<double>& t) {
+  const double lo = *std::min_element(t.begin(), t.end()),
+               hi = *std::max_element(t.begin(), t.end());
+  Axis a;
+  const double ref = std::sqrt(lo * hi);
+  if (ref < 1e-6)
+    a = {false, 1e9, "ns"};
+  else if (ref < 1e-3)
+    a = {false, 1e6, "us"};
+  else if (ref < 1.0)
+    a = {false, 1e3, "ms"};
+  else
+    a = {false, 1.0, "s"};
+  a.log = lo > 0 && hi / lo > 20.0;
+  return a;
+}
+
+struct Point {
+  double t, e;
+  std::string label;
+  bool pareto;
+  std::string series;
+};
+
+/// Position of a value on an axis in [0, 1] (log or linear), for spotting crowded labels.
+double axis_pos(double v, double lo, double hi, bool log) {
+  if (log) return (std::log(v) - std::log(lo)) / std::max(std::log(hi) - std::log(lo), 1e-12);
+  return (v - lo) / std::max(hi - lo, 1e-300);
+}
+
+/// Wraps `text` at spaces into lines of at most `width` characters.
+std::vector<std::string> wrap(const std::string& text, std::size_t width) {
+  std::vector<std::string> lines{""};
+  std::istringstream in(text);
+  for (std::string w; in >> w;) {
+    if (!lines.back().empty() && lines.back().size() + 1 + w.size() > width) lines.emplace_back();
+    lines.back() += (lines.back().empty() ? "" : " ") + w;
+  }
+  return lines;
+}
+
+std::string script_for(const Knob& k, const std::vector<const Row*>& rows,
+                       const std::filesystem::path& data, const std::filesystem::path& png,
+                       const PlotOptions& o) {
+  std::vector<double> ts, es;
+  for (const Row* r : rows) {
+    ts.push_back(r->time.median_s);
+    es.push_back(plotted_error(*r, k));
+  }
+  // The peer's time as a dashed line when every setting has the same peer (and one series: a
+  // peer at another sigma is another time).
+  bool shared_peer = true;
+  std::vector<double> peer_t;
+  for (const Row* r : rows) {
+    shared_peer = shared_peer && r->peer == rows.front()->peer &&
+                  r->series == rows.front()->series && std::isfinite(r->peer_time.median_s);
+    peer_t.push_back(r->peer_time.median_s);
+  }
+  std::vector<double> all_t = ts;
+  double peer_s = NAN;
+  if (shared_peer) {
+    std::sort(peer_t.begin(), peer_t.end());
+    peer_s = peer_t[peer_t.size() / 2];
+    all_t.push_back(peer_s);
+  }
+  const Axis x = time_axis(all_t);
+  const double t_lo = *std::min_element(all_t.begin(), all_t.end()) * x.scale;
+  const double t_hi = *std::max_element(all_t.begin(), all_t.end()) * x.scale;
+  double pos_lo = INFINITY, pos_hi = 0.0;
+  bool zeros = false;
+  for (double e : es) {
+    if (e > 0) {
+      pos_lo = std::min(pos_lo, e);
+      pos_hi = std::max(pos_hi, e);
+    } else {
+      zeros = true;
+    }
+  }
+  const bool ylog = pos_hi > 0 && pos_hi / pos_lo > 20.0;
+  const double floor_e = ylog ? pos_lo / 10.0 : 0.0;  // where a zero error is drawn on a log axis
+  const double e_lo = ylog ? floor_e : 0.0, e_hi = std::max(pos_hi, 1e-300);
+
+  std::vector<Point> pts;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::string label = rows[i]->setting;
+    std::replace(label.begin(), label.end(), '"', '\'');
+    const bool zero = !(es[i] > 0);
+    pts.push_back({ts[i] * x.scale, zero ? floor_e : es[i], label + (zero && ylog ? " (0)" : ""),
+                   rows[i]->pareto, rows[i]->series});
+  }
+  // Data blocks: 0 every setting, 1 the fronts, 2 the shared peer's time, 3 to 6 the labels in
+  // each of their four places.
+  std::ofstream d(data);
+  d.precision(10);
+  for (const Point& p : pts) d << p.t << " " << p.e << "\n";
+  d << "\n\n";
+  // One front per series, each sorted by time; a single blank line breaks the line between them.
+  std::vector<Point> front;
+  for (const Point& p : pts)
+    if (p.pareto) front.push_back(p);
+  std::sort(front.begin(), front.end(), [](const Point& a, const Point& b) {
+    return a.series != b.series ? a.series < b.series : a.t < b.t;
+  });
+  for (std::size_t i = 0; i < front.size(); ++i) {
+    if (i > 0 && front[i].series != front[i - 1].series) d << "\n";
+    d << front[i].t << " " << front[i].e << "\n";
+  }
+  if (front.empty()) d << "NaN NaN\n";  // keeps the block, and so the next blocks' indices
+  d << "\n\n";
+  if (shared_peer)
+    d << peer_s * x.scale << " " << e_lo << "\n" << peer_s * x.scale << " " << e_hi << "\n";
+  else
+    d << "NaN NaN\n";
+  d << "\n\n";
+  // A label goes to the first of four places (above right, below right, above left, below left)
+  // that no earlier label near its point took.
+  std::vector<int> place(pts.size(), 0);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    std::array<bool, 4> taken{};
+    for (std::size_t j = 0; j < i; ++j) {
+      const double dx =
+          axis_pos(pts[i].t, t_lo, t_hi, x.log) - axis_pos(pts[j].t, t_lo, t_hi, x.log);
+      const double dy = axis_pos(pts[i].e, e_lo > 0 ? e_lo : 1e-300, e_hi, ylog) -
+                        axis_pos(pts[j].e, e_lo > 0 ? e_lo : 1e-300, e_hi, ylog);
+      if (std::abs(dx) < 0.25 && std::abs(dy) < 0.08)
+        taken[static_cast<std::size_t>(place[j])] = true;
+    }
+    while (place[i] < 3 && taken[static_cast<std::size_t>(place[i])]) ++place[i];
+  }
+  for (int where = 0; where < 4; ++where) {
+    bool any = false;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      if (place[i] == where) {
+        d << pts[i].t << " " << pts[i].e << " \"" << pts[i].label << "\"\n";
+        any = true;
+      }
+    if (!any) d << "NaN NaN \"\"\n";
+    d << "\n\n";
+  }
+  d.close();
+
+  std::string title = k.id;
+  for (const std::string& line : wrap(k.title, static_cast<std::size_t>(o.width / 7)))
+    title += "\\n" + line;
+  std::replace(title.begin(), title.end(), '"', '\'');
+  std::ostringstream s;
+  s << "set terminal pngcairo size " << o.width << "," << o.height
+    << " font 'DejaVu Sans,9' noenhanced\n"
+    << "set output " << quoted(png.string()) << "\n"
+    << "set title \"" << title << "\"\n"
+    << "set xlabel " << quoted("median time per " + k.per + " (" + x.unit + ")") << "\n"
+    << "set ylabel "
+    << quoted(std::string(k.plot_error == PlotError::Rms ? "RMS" : "max") + " error (" +
+              k.error_unit + ")")
+    << "\n"
+    << "set grid\nset key outside bottom center horizontal\n"
+    << "set offsets graph 0.05, graph 0.3, graph 0.1, graph 0.1\n";
+  if (x.log) s << "set logscale x\n";
+  if (ylog) {
+    s << "set logscale y\nset format y '%.0e'\n";
+    if (zeros)
+      s << "set label 1 'error 0 drawn at the bottom, marked (0)' at graph 0.01, graph 0.03 font "
+           "',8'\n";
+  } else if (pos_hi == 0.0) {
+    s << "set yrange [-1:1]\n";
+  }
+  s << "plot " << quoted(data.string())
+    << " index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'settings', \\\n"
+    << "  '' index 3 using 1:2:3 with labels left offset char 0.7,0.6 font ',8' notitle, \\\n"
+    << "  '' index 4 using 1:2:3 with labels left offset char 0.7,-0.7 font ',8' notitle, \\\n"
+    << "  '' index 5 using 1:2:3 with labels right offset char -0.7,0.6 font ',8' notitle, \\\n"
+    << "  '' index 6 using 1:2:3 with labels right offset char -0.7,-0.7 font ',8' notitle";
+  if (k.alternatives)
+    s << ", \\\n  '' index 1 using 1:2 with lines lw 2 lc rgb '#d62728' title "
+      << quoted(std::string("Pareto front") +
+                (rows.front()->series.empty() ? "" : " (per series)"));
+  if (shared_peer)
+    s << ", \\\n  '' index 2 using 1:2 with lines dt 2 lw 1.5 lc rgb '#555555' title "
+      << quoted("peer: " + rows.front()->peer);
+  s << "\n";
+  return s.str();
+}
+
+}  // namespace
+
+std::string gnuplot_problem() {
+  const auto log = std::filesystem::temp_directory_path() /
+                   ("vdfx-gnuplot-check-" + std::to_string(getpid()) + ".txt");
+  const int rc = run_gnuplot({"-e", "set terminal pngcairo"}, log);
+  const std::string out = read_text(log);
+  std::filesystem::remove(log);
+  if (rc == -1) return "gnuplot is not installed (Debian package gnuplot-nox)";
+  if (rc != 0) return "gnuplot has no pngcairo terminal: " + out;
+  return {};
+}
+
+std::vector<std::filesystem::path> write_plots(const Report& report, const PlotOptions& o) {
+  std::filesystem::create_directories(o.dir);
+  const auto work =
+      std::filesystem::temp_directory_path() / ("vdfx-bench-plot-" + std::to_string(getpid()));
+  std::filesystem::create_directories(work);
+  std::vector<std::filesystem::path> written;
+  try {
+    for (const Knob& k : report.knobs) {
+      std::vector<const Row*> rows;
+      for (const Row& r : report.rows)
+        if (r.knob == k.id && r.status == RowStatus::Ok && std::isfinite(r.time.median_s) &&
+            std::isfinite(plotted_error(r, k)))
+          rows.push_back(&r);
+      if (rows.empty()) continue;
+      const auto png = o.dir / (k.id + ".png");
+      // gnuplot draws into the work folder; the finished picture then replaces PNG atomically (a
+      // killed run or a failing gnuplot never leaves a half-written plot, a link is written
+      // through).
+      const auto data = work / (k.id + ".dat"), script = work / (k.id + ".gp"),
+                 log = work / (k.id + ".log"), drawn = work / (k.id + ".png");
+      std::ofstream(script) << script_for(k, rows, data, drawn, o);
+      if (run_gnuplot({script.string()}, log) != 0 || !std::filesystem::exists(drawn)) {
+        throw std::runtime_error("gnuplot failed on the plot of " + k.id + ": " + read_text(log));
+      }
+      io::write_file_atomic(png, read_text(drawn));
+      written.push_back(png);
+    }
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove_all(work, ec);
+    throw;
+  }
+  std::filesystem::remove_all(work);
+  return written;
+}
+
+}  // namespace vdfx::app::bench

@@ -1,0 +1,282 @@
+/// @file
+/// @brief Editor: the frame's conductor (input -> commands and panel events -> the document and
+/// the pending edit -> panels and visualizations), the playhead, the selection and the grab.
+#include "app/editor/editor.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/editor/panel_binding.h"
+#include "app/editor/visualizations.h"
+
+namespace vdfx::app {
+
+using effects::Direction;
+using effects::EffectType;
+
+namespace {
+std::shared_ptr<const ui::FontSet> fonts_or_default(std::shared_ptr<const ui::FontSet> f) {
+  return f ? f : std::make_shared<const ui::FontSet>(ui::FontSet::load());
+}
+double angle_deg(const Direction& a, const Direction& b) {
+  return effects::angle_between(effects::to_unit(a), effects::to_unit(b)) * effects::kRadToDeg;
+}
+}  // namespace
+
+Editor::Editor(io::Sidecar sidecar, DocumentOptions document_options, EditorOptions options)
+    : doc_(std::move(sidecar), document_options),
+      options_(options),
+      panels_(fonts_or_default(options.fonts), doc_.video().frames, options.layout,
+              options.viewport),
+      visuals_(options.visuals, doc_.video().frames),
+      fps_(io::fps_to_rational(doc_.video().fps)),
+      input_(xr::neutral_input_state(0)) {
+  if (options_.autosave_path) {
+    autosave_ = std::make_unique<Autosave>(*options_.autosave_path);
+    doc_.set_change_listener([this] { autosave_->save(doc_.sidecar()); });
+  }
+  select_effect(EffectType::Exposure);
+}
+
+void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
+  const double dt =
+      play_.last_t ? std::max<double>(0.0, static_cast<double>(t_ns - *play_.last_t) * 1e-9) : 0.0;
+  play_.last_t = t_ns;
+  play_.now = t_ns;
+  input_ = input;
+  if (!status_.message.empty() && t_ns - status_.message_t > kMessageLifetimeNs)
+    status_.message.clear();
+  if (input.head_tracked) view_ = xr::forward_direction(input.head);
+  if (play_.playing) {
+    // Frames elapsed since play was pressed, from the elapsed time itself (adding two rounded
+    // frame start times could land a nanosecond short of a frame).
+    const std::int64_t n = doc_.video().frames;
+    const std::int64_t f = play_.f0 + io::frame_at_time(t_ns - play_.t0, fps_);
+    play_.frame = options_.loop ? ((f % n) + n) % n : std::clamp<std::int64_t>(f, 0, n - 1);
+  }
+  panels_.place(input);
+  const std::vector<ui::Event> events = controls_.pointers(input, panels_, dt);
+  validate_selection();  // the document may have been edited from outside (tests, tools)
+  for (const auto& e : events) handle_panel_event(*this, panels_, e);
+  for (const EditorCommand c : controls_.commands(input.edges)) run(c);
+  unaltered_ = EditorControls::held(input.edges, EditorCommand::Unaltered);
+  if (status_.look_target && angle_deg(*status_.look_target, view_) < 5.0)
+    status_.look_target.reset();
+  sync_pending();
+  show_editor_state(*this, panels_);
+  VisualizationInput vi{effect_,      view_, play_.frame, sel_.index, selected_preview(),
+                        previewing(), 90.0,  90.0};
+  if (options_.layout == PanelLayout::Desktop) {
+    const DesktopViewport& v = panels_.viewport();
+    vi.view_hfov_deg = v.hfov_deg;
+    vi.view_vfov_deg =
+        2.0 * std::atan(std::tan(0.5 * v.hfov_deg * effects::kDegToRad) * v.height / v.width) *
+        effects::kRadToDeg;
+  }
+  visuals_.refresh(doc_, vi, panels_);
+}
+
+void Editor::run(EditorCommand c) {
+  switch (c) {
+    case EditorCommand::Grab: grab(); break;
+    case EditorCommand::GrabRelease:
+      if (grabbing()) grab_release();
+      break;
+    case EditorCommand::Deselect: deselect(); break;
+    case EditorCommand::Preview:
+      if (!grabbing()) begin_preview();
+      break;
+    case EditorCommand::Place:
+      if (previewing()) {
+        doc_.cancel_pending();
+        place_keyframe();
+      }
+      break;
+    case EditorCommand::Delete: delete_nearest(); break;
+    case EditorCommand::Undo: undo(); break;
+    case EditorCommand::Redo: redo(); break;
+    case EditorCommand::Unaltered:
+    case EditorCommand::Fine: break;  // held commands: asked for with EditorControls::held
+  }
+}
+
+effects::StackParams Editor::params_for_view(const Direction& direction, std::int64_t frame) const {
+  if (unaltered_) return {};
+  effects::StackParams sp = doc_.interpolator().evaluate(direction, frame);
+  const PendingEdit* p = doc_.pending();
+  const auto type = p ? p->target().stack_effect() : std::nullopt;
+  if (!type) return sp;  // a flare's or grain's pending edit is drawn by their layers
+  // At a new keyframe itself its values are exact; elsewhere interpolate with it.
+  if (!p->moved() && frame == p->key().frame && angle_deg(direction, p->key().direction) < 1e-9) {
+    sp.set(*type, p->key().params);
+    return sp;
+  }
+  const auto rbf = p->interpolant();  // a grab that has not moved changes nothing
+  if (!rbf) return sp;
+  const Eigen::VectorXd v = rbf->evaluate(direction, frame);
+  sp.set(*type, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
+  return sp;
+}
+
+std::shared_ptr<const effects::RbfInterpolator> Editor::interpolant(EditTarget target) const {
+  const PendingEdit* p = doc_.pending();
+  if (p && p->target() == target && p->changes_interpolant()) return p->interpolant();
+  return doc_.keyframe_set(target).solution();
+}
+
+void Editor::sync_pending() {
+  PendingEdit* p = doc_.pending();
+  if (!p) return;
+  if (!p->moved())
+    p->set_key({view_, play_.frame, doc_.params(effect_)});
+  else if (const auto k = selected_preview())
+    p->set_key(*k);
+}
+
+const std::vector<double>& Editor::widget_values() const {
+  const auto& ks = doc_.keyframes(effect_);
+  return sel_.index && *sel_.index < ks.size() ? ks[*sel_.index].params : doc_.params(effect_);
+}
+
+void Editor::set_viewport(const DesktopViewport& v) {
+  if (v == panels_.viewport()) return;
+  panels_.set_viewport(v);
+  show_editor_state(*this, panels_);
+}
+
+void Editor::set_loop_status(double frames_per_second, bool video_loading) {
+  status_.loop_fps = frames_per_second;
+  status_.video_loading = video_loading;
+}
+
+bool Editor::finish() {
+  return autosave_ ? autosave_->finish(doc_.sidecar()) : true;
+}
+
+void Editor::say(std::string message) {
+  status_.message = std::move(message);
+  status_.message_t = play_.now;
+}
+
+void Editor::select_effect(EditTarget type) {
+  if (type != effect_) {
+    sel_.index.reset();
+    doc_.cancel_pending();  // a grab of the old effect's keyframe is cancelled
+  } else if (previewing()) {
+    doc_.cancel_pending();
+  }
+  effect_ = type;
+  panels_.show_effect(type);
+  show_editor_state(*this, panels_);
+}
+
+void Editor::set_flare_style(effects::FlareStyle style) {
+  doc_.set_flare_style(style);
+  say(std::string("flare style ") + std::string(effects::flare_style_name(style)));
+}
+
+void Editor::set_light_here() {
+  doc_.set_flare_light(view_);
+  say("flare light set at az " + std::to_string(static_cast<int>(std::lround(view_.azimuth_deg))) +
+      " alt " + std::to_string(static_cast<int>(std::lround(view_.altitude_deg))));
+}
+
+void Editor::set_auto_light(bool on) {
+  if (!on) return set_light_here();
+  doc_.set_flare_light(effects::AutoLight{});
+  say("flare light: the brightest region of each frame");
+}
+
+void Editor::set_grain_style(effects::GrainStyle style) {
+  doc_.set_grain_style(style);
+  say(std::string("grain style ") + std::string(effects::grain_style_name(style)));
+}
+
+void Editor::set_chosen_params(std::vector<double> params) {
+  doc_.set_params(effect_, std::move(params));
+  sync_pending();
+}
+
+void Editor::set_playing(bool on) {
+  play_.playing = on;
+  play_.t0 = play_.now;
+  play_.f0 = play_.frame;
+}
+
+void Editor::seek(std::int64_t frame) {
+  play_.frame = std::clamp<std::int64_t>(frame, 0, doc_.video().frames - 1);
+  play_.t0 = play_.now;
+  play_.f0 = play_.frame;
+  sync_pending();
+}
+
+std::optional<Direction> Editor::jump_to_keyframe(int step) {
+  const auto& ks = doc_.keyframes(effect_);
+  const auto i = adjacent_keyframe(ks, view_, play_.frame, step);
+  if (!i) {
+    say(step > 0 ? "no keyframe after this frame" : "no keyframe before this frame");
+    return std::nullopt;
+  }
+  seek(ks[*i].frame);
+  status_.look_target = ks[*i].direction;
+  say({});
+  // The keyframe jumped to becomes the selection (its values in the widget, ready to grab); a
+  // grab in progress keeps its keyframe, which follows the playhead instead.
+  if (!grabbing()) select_keyframe(*i);
+  return status_.look_target;
+}
+
+bool Editor::delete_nearest() {
+  if (sel_.index) {
+    const std::size_t i = *sel_.index;
+    sel_.index.reset();
+    if (grabbing()) doc_.cancel_pending();
+    doc_.remove_keyframe(effect_, i);
+    say("deleted the selected keyframe");
+    return true;
+  }
+  const auto& ks = doc_.keyframes(effect_);
+  const auto i = nearest_keyframe(ks, view_, play_.frame, doc_.interpolation(effect_).time_scale,
+                                  doc_.video().fps);
+  if (!i) {
+    say("no keyframe to delete");
+    return false;
+  }
+  doc_.remove_keyframe(effect_, *i);
+  say("deleted a keyframe");
+  return true;
+}
+
+void Editor::place_keyframe() {
+  const auto edit = doc_.add_keyframe(effect_, {view_, play_.frame, doc_.params(effect_)});
+  say(edit.replaced ? "replaced a keyframe" : "placed a keyframe");
+}
+
+void Editor::begin_preview() {
+  deselect();  // the widget goes back to the chosen values that will be placed
+  doc_.begin_pending(effect_, std::nullopt, {view_, play_.frame, doc_.params(effect_)});
+}
+
+bool Editor::undo() {
+  if (grabbing()) doc_.cancel_pending();  // undo during a grab cancels it
+  const std::size_t count = doc_.keyframes(effect_).size();
+  const bool ok = doc_.undo();
+  keep_selection_if_stable(count);
+  say(ok ? "undone" : "nothing to undo");
+  return ok;
+}
+
+bool Editor::redo() {
+  if (grabbing()) doc_.cancel_pending();
+  const std::size_t count = doc_.keyframes(effect_).size();
+  const bool ok = doc_.redo();
+  keep_selection_if_stable(count);
+  say(ok ? "redone" : "nothing to redo");
+  return ok;
+}
+
+bool Editor::wait_for_visualizations(std::chrono::milliseconds timeout) {
+  return visuals_.wait(timeout, effect_, panels_);
+}
+
+}  // namespace vdfx::app

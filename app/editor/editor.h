@@ -1,0 +1,224 @@
+/// @file
+/// @brief The in-headset editor without GL: turns OpenXR-style actions into edits of a Document
+/// and says what to render (stack parameters, panels, status).
+///
+/// Per frame the GL loop calls update(input, t_ns) with the frame's input snapshot and display
+/// time, then current_params() (or params_for_view per eye/pixel) for the effect stack, panels()
+/// for the quad layers and status_text() for the window title. Time is passed in, never read, so
+/// replay is exact.
+///
+/// The editor is the conductor of a few parts (docs/editor.md has the picture):
+///   EditorControls (app/editor/editor_controls.h): the UI pointers and the binding table ->
+///   commands; panel_binding (app/editor/panel_binding.h): UI events -> editor actions, the
+///   document -> widgets; VisualizationCache (app/editor/visualization_cache.h): minimap, track
+///   plot and markers, recomputed
+///     when the document, the pending edit, the effect or the frame change;
+///   Document (app/editor/document.h) with its PendingEdit (app/editor/pending_edit.h): the
+///   keyframe being
+///     placed or held is part of the model, and its interpolant is what the preview shows.
+/// What stays here: the playhead, the view, the current effect, the selection and how a held
+/// keyframe follows the view and the playhead, and the messages.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/editor/autosave.h"
+#include "app/editor/document.h"
+#include "app/editor/editor_controls.h"
+#include "app/editor/editor_panels.h"
+#include "app/editor/visualization_cache.h"
+#include "effects/effect_types.h"
+#include "io/frame_time.h"
+#include "xr/actions.h"
+
+namespace vdfx::app {
+
+struct EditorOptions {
+  PanelLayout layout = PanelLayout::Hands;
+  /// Desktop layout: the desktop view the panels are laid out in (set_viewport follows a window).
+  DesktopViewport viewport;
+  std::shared_ptr<const ui::FontSet> fonts;  //!< null: ui::FontSet::load() (DejaVu)
+  VisualizationOptions visuals;              //!< minimap, track plot, markers
+  bool loop = true;                          //!< playback wraps at the end
+  //! Autosave every change to this sidecar path (+ a recovery copy, removed by finish()).
+  std::optional<std::filesystem::path> autosave_path;
+};
+
+class Editor {
+ public:
+  Editor(io::Sidecar sidecar, DocumentOptions document_options = {}, EditorOptions options = {});
+
+  /// One frame: input at display time t_ns (non-decreasing between calls).
+  void update(const xr::InputState& input, std::int64_t t_ns);
+
+  // ---- what to render
+  /// Stack parameters at the head's view direction and the current frame, the pending edit and
+  /// "unaltered" (right b) included.
+  effects::StackParams current_params() const { return params_for_view(view_, play_.frame); }
+  /// The same at any direction (per-eye centres, per-pixel mode): while a keyframe is placed or
+  /// held, the current effect's interpolant is the pending edit's.
+  effects::StackParams params_for_view(const effects::Direction& direction,
+                                       std::int64_t frame) const;
+  /// The panels for quad layers, with world poses (Panel::pose()) and textures (Panel::texture()).
+  std::vector<ui::Panel*> panels() { return panels_.all(); }
+  std::string status_text() const;
+  /// The heads-up line (Desktop): frame, time, heading, effect, selection, frame rate.
+  std::string hud_text() const;
+  /// Under it: the latest message while it lasts (kMessageLifetimeNs), else what to do now.
+  std::string hud_message() const;
+  /// Messages (placed, undone, ...) show this long (display time), then go.
+  static constexpr std::int64_t kMessageLifetimeNs = 4'000'000'000;
+
+  bool unaltered() const { return unaltered_; }
+  /// A new keyframe is being placed (it follows the view until the trigger is let go).
+  bool previewing() const { return doc_.pending() && !doc_.pending()->moved(); }
+  /// The selected keyframe is held (right squeeze).
+  bool grabbing() const { return doc_.pending() && doc_.pending()->moved(); }
+  /// The current effect's selected keyframe (index into its keyframes), if any.
+  const std::optional<std::size_t>& selected_keyframe() const { return sel_.index; }
+  /// While grabbing: where the held keyframe would land now (its values included), else the
+  /// selected keyframe as it is; nullopt without a selection.
+  std::optional<effects::Keyframe> selected_preview() const;
+  /// The values the effect widget shows and edits: the selected keyframe's, else the chosen.
+  const std::vector<double>& widget_values() const;
+  bool playing() const { return play_.playing; }
+  std::int64_t frame() const { return play_.frame; }
+  const effects::Direction& view_direction() const { return view_; }
+  /// The input of the last update.
+  const xr::InputState& input() const { return input_; }
+  EditTarget current_effect() const { return effect_; }
+  /// A target's interpolant as shown now: the pending edit's while one of its keyframes is
+  /// placed or held, else the document's solution (null or empty: no keyframes).
+  std::shared_ptr<const effects::RbfInterpolator> interpolant(EditTarget target) const;
+  /// A hand's UI pointer (what its ray hits, the widget under it).
+  const ui::Pointer& pointer(xr::Hand hand) const { return controls_.pointer(hand); }
+
+  // ---- the window around the editor
+  /// Desktop layout: the window's size or FOV changed; the panels follow.
+  void set_viewport(const DesktopViewport& viewport);
+  /// What the frame loop measures, for the heads-up line: frames per second, and whether the
+  /// video is still loading (no frame decoded yet).
+  void set_loop_status(double frames_per_second, bool video_loading);
+
+  // ---- actions (the bindings and the panels call these; so can tests)
+  void select_effect(EditTarget target);
+  /// The flare's style (one undo step).
+  void set_flare_style(effects::FlareStyle style);
+  /// "Set light here": the flare's light becomes the view centre (one undo step).
+  void set_light_here();
+  /// The flare's light found in each video frame (on), or fixed at the view centre (off).
+  void set_auto_light(bool on);
+  void set_grain_style(effects::GrainStyle style);
+  /// The current effect's chosen values (one undo step unless a group is open).
+  void set_chosen_params(std::vector<double> params);
+  void set_playing(bool on);
+  void seek(std::int64_t frame);
+  /// Jumps to the previous (-1) / next (+1) keyframe's frame and selects that keyframe (not
+  /// while grabbing); returns its direction.
+  std::optional<effects::Direction> jump_to_keyframe(int step);
+  /// Deletes the selected keyframe, else the current effect's keyframe nearest the view (RBF
+  /// distance); false when none.
+  bool delete_nearest();
+  /// Places the chosen values at the view centre and the current frame (replaces a keyframe
+  /// within 0.5 deg on the same frame).
+  void place_keyframe();
+  /// Starts previewing a new keyframe at the view centre (a selection is left first).
+  void begin_preview();
+  /// Selects the current effect's keyframe nearest the view (RBF distance); false when none.
+  bool select_nearest();
+  /// Selects the current effect's keyframe `index` (the minimap dot pressed, the keyframe
+  /// jumped to); false when there is none such or a grab is in progress.
+  bool select_keyframe(std::size_t index);
+  void deselect();
+  /// Holds the selected keyframe (without a selection, selects the nearest first): until
+  /// grab_release() it follows the view and the playhead by how far they moved since the grab
+  /// began. False when there is none.
+  bool grab();
+  /// Commits the grab as one undoable move (none when it did not move); the keyframe stays
+  /// selected. Landing within 0.5 deg of another keyframe at the same frame replaces that one.
+  void grab_release();
+  /// The selected keyframe's values (one undo step unless a group is open).
+  void set_selected_params(std::vector<double> params);
+  bool undo();
+  bool redo();
+  /// Locks the timeline panel in the world, or back on its anchor.
+  void lock_timeline(bool locked) { panels_.lock_timeline(locked); }
+
+  /// Clean exit: final save, recovery copy removed. False when saving failed.
+  bool finish();
+  /// The autosave line for the UI ("" without autosave).
+  std::string autosave_status() const { return autosave_ ? autosave_->status() : std::string(); }
+  /// Sidecar writes so far (each edit, or each group of edits such as a drag, once).
+  int autosave_saves() const { return autosave_ ? autosave_->saves() : 0; }
+
+  Document& document() { return doc_; }
+  const Document& document() const { return doc_; }
+  EditorPanels& ui() { return panels_; }
+  const EditorPanels& ui() const { return panels_; }
+
+  // ---- visualization data (VisualizationCache; kept up to date by update)
+  const cv::Mat& minimap_field() const { return visuals_.minimap_field(); }
+  const std::vector<double>& track_values() const { return visuals_.track_values(); }
+  const std::vector<std::int64_t>& track_frames() const { return visuals_.track_frames(); }
+  const std::vector<std::size_t>& near_keyframes() const { return visuals_.near_keyframes(); }
+  int minimap_computations() const { return visuals_.minimap_computations(); }
+  bool minimap_current() const { return visuals_.minimap_current(); }
+  /// Waits for the minimap worker and shows its field (tests, replays); minimap_current().
+  bool wait_for_visualizations(std::chrono::milliseconds timeout);
+
+ private:
+  void run(EditorCommand command);
+  void say(std::string message);
+  /// Keeps the pending edit's keyframe where the view, the playhead and the values put it.
+  void sync_pending();
+  /// After undo/redo: drops the selection when the keyframe count changed (indices renumbered).
+  void keep_selection_if_stable(std::size_t count_before);
+  void validate_selection();
+
+  /// Where the playhead is and how it moves.
+  struct Playhead {
+    std::int64_t frame = 0;
+    bool playing = false;
+    std::int64_t t0 = 0, f0 = 0;  //!< display time and frame when play was pressed
+    std::int64_t now = 0;         //!< the last update's display time
+    std::optional<std::int64_t> last_t;
+  };
+  /// The selected keyframe and, while it is held, where the view and the playhead were when the
+  /// grab began (it keeps its offsets from them).
+  struct Selection {
+    std::optional<std::size_t> index;
+    effects::Direction view0{};
+    std::int64_t frame0 = 0;
+    effects::Keyframe key0;
+  };
+  /// What the status lines say besides the model.
+  struct Status {
+    std::string message;
+    std::int64_t message_t = 0;                     //!< display time it was said
+    std::optional<effects::Direction> look_target;  //!< where a keyframe jump asks to look
+    double loop_fps = 0.0;
+    bool video_loading = false;
+  };
+
+  Document doc_;
+  EditorOptions options_;
+  std::unique_ptr<Autosave> autosave_;
+  EditorPanels panels_;
+  EditorControls controls_;
+  VisualizationCache visuals_;
+  io::Rational fps_;
+  xr::InputState input_;
+  effects::Direction view_{};
+  EditTarget effect_ = effects::EffectType::Exposure;
+  Playhead play_;
+  Selection sel_;
+  Status status_;
+  bool unaltered_ = false;
+};
+
+}  // namespace vdfx::app

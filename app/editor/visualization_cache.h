@@ -1,0 +1,104 @@
+/// @file
+/// @brief What the editor shows about the current effect's keyframes, kept on its panels: the
+/// track plot (the value over time at the view), the minimap (over the sphere at the playhead,
+/// with the keyframes as dots and the view's footprint) and the timeline's markers. Each is
+/// recomputed only when what it shows changed (the document's revision and solution, the pending
+/// edit's version, the effect, the frame, the view by a degree), so a frame that changes nothing
+/// costs nothing. While a keyframe is placed or held away from its place they show the pending
+/// edit's interpolant, the one the view shows.
+///
+/// The minimap is the costly one (8192 evaluations, 30 ms at N = 1000): with `async` (live
+/// `vdfx edit`) a MinimapWorker computes it and the newest finished field is shown a frame or two
+/// later; without (replays, tests) it is computed here, so every run shows the same pictures.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
+
+#include "app/editor/minimap_worker.h"
+#include "effects/keyframe.h"
+
+namespace vdfx::app {
+
+class Document;
+class EditorPanels;
+
+struct VisualizationOptions {
+  double marker_cone_deg = 30.0;  //!< timeline markers highlighted within this angle of the view
+  int track_samples = 240;        //!< frames sampled for the track plot
+  int minimap_width = 128;
+  int minimap_height = 64;
+  //! true (`vdfx edit`): the minimap on a worker, shown a frame or two late; the frame thread
+  //! never waits for it. false (replay, tests): computed in refresh().
+  bool async = false;
+};
+
+/// What the visualizations show this frame.
+struct VisualizationInput {
+  EditTarget effect = effects::EffectType::Exposure;
+  effects::Direction view{};
+  std::int64_t frame = 0;
+  std::optional<std::size_t> selected;
+  /// The selected keyframe where a grab holds it now (else as it is); nullopt without selection.
+  std::optional<effects::Keyframe> held;
+  bool previewing = false;                            //!< a new keyframe is placed at the playhead
+  double view_hfov_deg = 90.0, view_vfov_deg = 90.0;  //!< the footprint drawn on the minimap
+};
+
+class VisualizationCache {
+ public:
+  VisualizationCache(VisualizationOptions options, std::int64_t frame_count);
+  ~VisualizationCache();
+
+  /// Brings the plot, the minimap and the strip's markers on `panels` up to date.
+  void refresh(const Document& doc, const VisualizationInput& in, EditorPanels& panels);
+  /// Waits for the minimap worker to finish and shows its field (frame thread; tests, replays).
+  /// Returns minimap_current(). Immediate without async.
+  bool wait(std::chrono::milliseconds timeout, EditTarget effect, EditorPanels& panels);
+
+  const cv::Mat& minimap_field() const { return minimap_.field; }
+  const std::vector<double>& track_values() const { return track_.values; }
+  const std::vector<std::int64_t>& track_frames() const { return track_.frames; }
+  /// Indices of the current effect's keyframes within marker_cone_deg of the view.
+  const std::vector<std::size_t>& near_keyframes() const { return markers_.near; }
+  /// How often the minimap was recomputed (with async: the fields taken over from the worker).
+  int minimap_computations() const { return minimap_.computations; }
+  /// Whether the minimap shown is the one for the current keyframes, effect and frame.
+  bool minimap_current() const { return minimap_.shown == minimap_.requested; }
+
+ private:
+  void refresh_markers(const Document& doc, const VisualizationInput& in, EditorPanels& panels);
+  void show_minimap(const MinimapKey& key, cv::Mat field, EditTarget effect, EditorPanels& panels);
+
+  struct Markers {
+    std::uint64_t revision = ~0ull;
+    int effect = -1;
+    effects::Direction view{};
+    std::int64_t held_frame = -1;  //!< the selected keyframe's (held) frame at the last update
+    std::vector<std::size_t> near;
+  };
+  struct Track {
+    MinimapKey key;
+    effects::Direction view{};
+    std::vector<double> values;
+    std::vector<std::int64_t> frames;
+  };
+  struct Minimap {
+    MinimapKey shown;                    //!< what the field shown was computed for
+    MinimapKey requested;                //!< what it should show now
+    std::optional<std::size_t> nearest;  //!< nearest keyframe at the last request
+    cv::Mat field;
+    int computations = 0;
+  };
+  VisualizationOptions options_;
+  Markers markers_;
+  Track track_;
+  Minimap minimap_;
+  std::unique_ptr<MinimapWorker> worker_;  //!< with async
+};
+
+}  // namespace vdfx::app

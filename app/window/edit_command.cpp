@@ -1,0 +1,195 @@
+/// @file
+/// @brief `vdfx edit [VIDEO] [--sidecar F] [--recover yes|no] [loop options]`: the in-headset
+/// editor in the simulated headset's window (docs/editor.md, "In the window"). The loop is
+/// app/window/frame_loop.h; the per-frame logic is EditorClient around app/editor/editor.h's
+/// Editor.
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include "app/cli/cli_util.h"
+#include "app/cli/command_functions.h"
+#include "app/window/editor_client.h"
+#include "app/window/frame_loop_cli.h"
+#include "io/input_error.h"
+#include "io/recording.h"
+#include "io/sidecar.h"
+
+namespace vdfx::app {
+namespace {
+
+/// Thumbnails across the timeline strip.
+constexpr int kTimelineThumbnails = 10;
+
+namespace fs = std::filesystem;
+
+/// `vdfx edit`'s default --scale (the player keeps kDefaultEyeScale).
+constexpr double kEditDefaultEyeScale = 0.5;
+
+fs::path demo_sidecar() {
+  return fs::path(VDFX_SOURCE_DIR) / "app" / "demo" / "interior.vdfx.json";
+}
+
+// The sidecar's video path, relative to the sidecar's folder when relative.
+fs::path sidecar_video(const fs::path& sidecar_path, const io::Sidecar& s) {
+  fs::path p = s.video.path;
+  return p.is_absolute() ? p : sidecar_path.parent_path() / p;
+}
+
+// The desktop layout puts both panels in front of the head (the sim's mouse reaches them); sim
+// recordings were made with it, so their replays need it too.
+
+// Offers an unclean exit's recovery copy. Returns the file to load instead of the sidecar.
+std::optional<fs::path> handle_recovery(const fs::path& sidecar_path, const std::string& recover) {
+  const auto offer = find_recovery(sidecar_path);
+  if (!offer) return std::nullopt;
+  std::cerr << "vdfx edit: " << offer->message << "\n";
+  bool yes = recover == "yes";
+  if (recover == "ask") {
+    if (isatty(STDIN_FILENO)) {
+      std::cerr << "vdfx edit: load the recovery copy " << offer->path.string() << "? [y/N] "
+                << std::flush;
+      std::string answer;
+      std::getline(std::cin, answer);
+      yes = !answer.empty() && (answer[0] == 'y' || answer[0] == 'Y');
+    } else {
+      std::cerr << "vdfx edit: not interactive: not recovered (--recover yes loads it)\n";
+    }
+  }
+  if (yes) return offer->path;  // "recovered" is said once it has been read (cmd_edit)
+  // Not taken: this session's autosave would overwrite it and its clean exit remove it, so it is
+  // set aside, never deleted.
+  fs::path kept = offer->path;
+  kept += ".declined";
+  std::error_code ec;
+  fs::rename(offer->path, kept, ec);
+  if (ec) {
+    std::cerr << "vdfx edit: cannot set the recovery copy aside (" << ec.message() << ")\n";
+  } else {
+    std::cerr << "vdfx edit: recovery copy set aside as " << kept.string()
+              << "; to recover it later: mv " << kept.string() << " " << offer->path.string()
+              << " and run with --recover yes\n";
+  }
+  return std::nullopt;
+}
+
+std::string edit_help_footer() {
+  return "\nEditor controls (OpenXR actions):\n" + EditorClient::controls_text() +
+         "Window keys:\n" + frame_loop_keys_text() + "Simulated controllers (--input sim):\n" +
+         xr::sim_bindings_text(xr::SimConfig{}) +
+         "\nNo VIDEO and no --sidecar: the bundled demo (app/demo/interior.vdfx.json), edited "
+         "without "
+         "saving (copy it and pass --sidecar COPY to keep edits). VIDEO without --sidecar edits "
+         "VIDEO's NAME.vdfx.json next to it; a --sidecar that does not exist yet is created for "
+         "VIDEO. "
+         "Every change is saved at once (plus a NAME.vdfx.json.autosave recovery copy, removed on "
+         "a "
+         "clean exit; one left by a crash is offered at the next start: --recover).\n"
+         "With --input replay:REC the loop takes its times from the recording and stops at its "
+         "end.\n";
+}
+
+}  // namespace
+
+int cmd_edit(const Args& args) {
+  CLI::App cli("author view-dependent effects in the simulated headset (no VIDEO: the demo)",
+               "vdfx edit");
+  std::string video, sidecar_arg, recover = "ask";
+  LoopCli loop;
+  // Panel text must be legible in the mirror: at the player's 0.25 the timeline's small text
+  // blurs into a few eye pixels per glyph; 0.5 reads (docs/editor.md).
+  loop.scale = kEditDefaultEyeScale;
+  cli.add_option("VIDEO", video, "video file or still image; default: the sidecar's video");
+  cli.add_option("--sidecar", sidecar_arg,
+                 "effects file (.vdfx.json) to edit, created when missing; default: VIDEO's "
+                 "NAME.vdfx.json, or the bundled demo without VIDEO");
+  cli.add_option(
+         "--recover", recover,
+         "an autosave left by a crash: yes loads it, no sets it aside (NAME.autosave.declined); "
+         "default: ask on a terminal, else no")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"ask", "yes", "no"}));
+  add_loop_options(cli, loop);
+  cli.footer(edit_help_footer());
+  if (auto code = parse_cli(cli, args)) return *code;
+
+  const bool demo = video.empty() && sidecar_arg.empty();
+  fs::path sidecar_path;
+  if (demo) {
+    sidecar_path = demo_sidecar();
+  } else if (!sidecar_arg.empty()) {
+    sidecar_path = sidecar_arg;
+  } else {
+    sidecar_path = fs::path(video).parent_path() / (fs::path(video).stem().string() + ".vdfx.json");
+  }
+  const bool exists = fs::exists(sidecar_path);
+  if (!exists && video.empty())
+    throw io::InputError(sidecar_path.string() +
+                         ": no such sidecar (give VIDEO to start a new one)");
+
+  std::optional<fs::path> load_from;
+  if (exists && !demo) load_from = handle_recovery(sidecar_path, recover);
+  io::Sidecar sidecar;
+  if (exists) sidecar = io::read_sidecar(load_from ? *load_from : sidecar_path);
+  if (load_from) std::cerr << "vdfx edit: recovered " << load_from->string() << "\n";
+  const fs::path v = video.empty() ? sidecar_video(sidecar_path, sidecar) : fs::path(video);
+  LoopSetup setup = prepare_loop(loop, v, true, {{"--sidecar", sidecar_path}});
+  if (!exists) {
+    const io::VideoProperties& p = setup.video->properties();
+    sidecar = io::new_sidecar({fs::absolute(v).string(), p.fps.value(),
+                               std::max<std::int64_t>(1, p.frames), p.width, p.height});
+    std::cerr << "vdfx edit: new sidecar " << sidecar_path.string() << " for " << v.string()
+              << "\n";
+  }
+  if (demo)
+    std::cerr << "vdfx edit: the bundled demo, not saved (copy " << sidecar_path.string()
+              << " and pass --sidecar COPY to keep edits)\n";
+
+  EditorOptions eo;
+  // The sim (and replays of sessions recorded with it): the Desktop layout in the window's view;
+  // a replay keeps the view it was recorded in, a live window's panels follow its size.
+  const bool desktop = loop.input == "sim" || setup.recorded_desktop.has_value();
+  eo.layout = desktop ? PanelLayout::Desktop : PanelLayout::Hands;
+  if (setup.recorded_desktop)
+    eo.viewport = {setup.recorded_desktop->width, setup.recorded_desktop->height,
+                   setup.recorded_desktop->hfov_deg};
+  else
+    eo.viewport = {setup.options.window_width, setup.options.window_height,
+                   setup.options.desktop_hfov_deg};
+  if (!demo) eo.autosave_path = sidecar_path;
+  DocumentOptions dopts;
+  // Replays are exact: every solve and minimap finishes before the frame that shows it. Live,
+  // the minimap is computed on a worker so that playing a large set never stalls a frame.
+  const bool replay = loop.input.rfind("replay:", 0) == 0;
+  if (replay) dopts.keyframes.async = false;
+  eo.visuals.async = !replay;
+  Editor editor(std::move(sidecar), dopts, eo);
+  EditorClient client(editor, create_gl_panel_textures(),
+                      /*follow_window=*/desktop && !setup.recorded_desktop);
+  if (!setup.video->properties().is_still) {
+    auto thumbs = std::make_unique<ThumbnailWorker>(v, kTimelineThumbnails, cv::Size(192, 96));
+    // A replay must look the same every run: its thumbnails are there from the first frame.
+    if (replay) thumbs->wait(std::chrono::seconds(60));
+    client.set_thumbnails(std::move(thumbs));
+  }
+  FrameLoop frame_loop(setup.options, *setup.input, *setup.video, client);
+  FrameLoopResult result;
+  try {
+    result = frame_loop.run();
+  } catch (...) {
+    client.release_textures();
+    throw;
+  }
+  client.release_textures();
+  report_loop("vdfx edit", result);
+  if (!editor.finish()) {
+    std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
+    return kExitBadInput;  // the sidecar could not be written (e.g. a read-only folder)
+  }
+  if (!demo) std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
+  return kExitOk;
+}
+
+}  // namespace vdfx::app

@@ -1,0 +1,18 @@
+/// @file
+/// @brief flare_layouts: an auto light observed once per frame, then the set's layouts.
+#include "app/window/flare_layouts.h"
+
+#include "io/ycbcr.h"
+#include "xr/session.h"
+
+namespace vdfx::app {
+
+std::vector<effects::FlareLayout> flare_layouts(effects::FlareSet& set, const xr::Pose& head,
+                                                std::int64_t frame, const io::Picture* picture) {
+  if (set.empty()) return {};
+  if (set.uses_auto_light() && picture && !set.observed(frame))
+    set.observe(frame, io::to_rgb(*picture, io::PixelFormat::RgbF32));
+  return set.layouts({xr::position_of(head), xr::rotation_of(head)}, frame);
+}
+
+}  // namespace vdfx::app

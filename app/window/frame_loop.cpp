@@ -1,0 +1,374 @@
+/// @file
+/// @brief FrameLoop: window, session timing, input, decode, parameters, compositor, mirror.
+#include "app/window/frame_loop.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <iostream>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <optional>
+#include <thread>
+
+#include "app/window/frame_loop_stats.h"
+#include "effects/effect_shaders.h"
+#include "io/image_write.h"
+#include "io/input_error.h"
+#include "io/video_source.h"
+#include "xr/compositor.h"
+#include "xr/flare_gl.h"
+#include "xr/gl_context.h"
+#include "xr/glfw_input_glue.h"
+#include "xr/grain_gl.h"
+#include "xr/input_backend.h"
+#include "xr/param_grid.h"
+#include "xr/session.h"
+
+namespace vdfx::app {
+
+std::optional<xr::MirrorMode> mirror_for_key(xr::Key key) {
+  switch (key) {
+    case xr::Key::Num1: return xr::MirrorMode::Desktop;
+    case xr::Key::Num2: return xr::MirrorMode::PreDistorted;
+    case xr::Key::Num3: return xr::MirrorMode::ThroughTheLens;
+    case xr::Key::Num4: return xr::MirrorMode::SingleEye;
+    default: return std::nullopt;
+  }
+}
+
+std::string frame_loop_keys_text() {
+  return "  1                         window: desktop view (one undistorted view for a monitor)\n"
+         "  2                         window: headset mirror, pre-distorted panels (as the "
+         "displays show them)\n"
+         "  3                         window: headset mirror, through the lens (as the wearer sees "
+         "them)\n"
+         "  4                         window: headset mirror, left eye, undistorted\n"
+         "  Escape                    quit (closing the window too)\n";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// While no frame is shown yet, each frame waits up to this long for the first one.
+constexpr std::int64_t kLoadingWaitNs = 50'000'000;
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+struct FrameLoop::Impl {
+  FrameLoopOptions o;
+  xr::InputBackend& input;
+  io::VideoSource& video;
+  FrameClient& client;
+  std::unique_ptr<xr::GlContext> gl;
+  std::unique_ptr<xr::GlfwInputGlue> glue;
+  std::unique_ptr<xr::Compositor> compositor;
+  std::unique_ptr<xr::FlareGl> flare;  //!< the client's flares, drawn after the effects
+  std::unique_ptr<xr::GrainGl> grain;  //!< the client's grain, drawn after the flares
+  xr::MirrorMode mirror = xr::MirrorMode::Desktop;
+  std::optional<glm::dvec2> cursor;  //!< the last cursor position the window reported
+
+  // What is on screen: the decoded frame, and the parameter grid baked for it (per-pixel mode).
+  std::optional<io::VideoFrame> shown;
+  bool uploaded_any = false;
+  bool grid_valid = false;
+  std::int64_t grid_frame = -1;
+  std::uint64_t grid_revision = 0;
+  int geometry_w = 0, geometry_h = 0;
+
+  Impl(FrameLoopOptions opts, xr::InputBackend& in, io::VideoSource& v, FrameClient& c)
+      : o(std::move(opts)), input(in), video(v), client(c) {
+    // The command line checks its option; another caller passing this is a bug.
+    if (!(o.eye_scale > 0.0 && o.eye_scale <= 4.0))
+      throw std::invalid_argument("FrameLoop: eye_scale must be in (0, 4], got " +
+                                  std::to_string(o.eye_scale));
+    xr::GlContextOptions g;
+    g.width = o.window_width;
+    g.height = o.window_height;
+    g.visible = o.visible;
+    g.vsync = o.vsync;
+    g.resizable = o.resizable;
+    g.title = "vdfx";
+    gl = xr::GlContext::create(g);
+    glue = std::make_unique<xr::GlfwInputGlue>(gl->window());
+    xr::CompositorConfig cc;
+    const xr::EyeProfile& eye = o.profile.eye(xr::Eye::Left);
+    cc.eye_width = std::max(8, static_cast<int>(std::lround(eye.width * o.eye_scale)));
+    cc.eye_height = std::max(8, static_cast<int>(std::lround(eye.height * o.eye_scale)));
+    cc.lens = effects::LensModel(o.profile.lens);
+    cc.gpu_timing = o.stats;
+    cc.blur = o.blur;
+    compositor = std::make_unique<xr::Compositor>(cc);
+    flare = std::make_unique<xr::FlareGl>();
+    grain = std::make_unique<xr::GrainGl>();
+    mirror = o.mirror;
+  }
+
+  /// What the window shows now, for turning cursor positions into rays.
+  xr::MirrorGeometry mirror_geometry(int width, int height) const {
+    const xr::CompositorConfig& c = compositor->config();
+    return xr::MirrorGeometry::from_profile(o.profile, mirror, c.eye_width, c.eye_height, width,
+                                            height, o.desktop_hfov_deg);
+  }
+
+  /// A cursor position with the ray through what is drawn under it.
+  xr::MouseMoveEvent cursor_event(double x, double y, int width, int height) const {
+    xr::MouseMoveEvent m{x, y};
+    m.ray = xr::mirror_ray(mirror_geometry(width, height), x, y);
+    m.over_view = m.ray.has_value();
+    return m;
+  }
+
+  /// Uploads the shown frame as it is decoded.
+  void upload(FrameLoopStats& stats) {
+    const auto t0 = Clock::now();
+    compositor->set_video_frame(shown->picture);  // as decoded: the GPU converts Y'CbCr
+    stats.add_cpu("upload", ms_since(t0));
+    uploaded_any = true;
+  }
+
+  /// Per-pixel mode: bakes the client's parameters on the grid for the shown frame and uploads
+  /// it; the effect shader reads it per pixel (all six effects).
+  void bake(std::int64_t frame, FrameLoopStats& stats) {
+    const auto t0 = Clock::now();
+    const xr::ParamGrid grid =
+        xr::bake_param_grid([&](const effects::Direction& d) { return client.params(d, frame); },
+                            o.bake_width, o.bake_height);
+    compositor->set_param_grid(grid);
+    stats.add_cpu("bake", ms_since(t0));
+    grid_valid = true;
+    grid_frame = frame;
+    grid_revision = client.params_revision();
+  }
+
+  /// Loop keys; returns whether the mirror changed.
+  bool handle_loop_key(const xr::DesktopEvent& e, bool& quit) {
+    const auto* k = std::get_if<xr::KeyEvent>(&e);
+    if (!k || !k->pressed) return false;
+    if (k->key == xr::Key::Escape) quit = true;
+    const auto m = mirror_for_key(k->key);
+    if (!m || *m == mirror) return false;
+    mirror = *m;
+    return true;
+  }
+
+  /// No first frame yet: an input error once the start time-out has passed (or the decoder has
+  /// given up), naming the video.
+  void check_start_timeout(Clock::time_point wall0) const {
+    const io::VideoStats st = video.stats();
+    const bool gave_up = st.ended_early && st.decoded == 0;
+    if (!gave_up && Clock::now() - wall0 < o.start_timeout) return;
+    std::string why =
+        gave_up
+            ? "the decoder found no frame (" + std::to_string(st.decode_errors) + " failed)"
+            : "no frame was decoded within " +
+                  std::to_string(
+                      std::chrono::duration_cast<std::chrono::seconds>(o.start_timeout).count()) +
+                  " s";
+    throw io::InputError(video.properties().path.string() + ": cannot show the video: " + why);
+  }
+
+  void write_screenshot(int w, int h) {
+    xr::GlTarget target(w, h, xr::TexFormat::RGBA8);
+    compositor->draw_mirror(mirror, &target, w, h);
+    const cv::Mat bgr = xr::to_bgr8(target.read_float());
+    io::write_png(o.screenshot, bgr);
+  }
+
+  FrameLoopResult run() {
+    FrameLoopResult result;
+    FrameLoopStats stats;
+    std::ostream& out = o.stats_out ? *o.stats_out : std::cout;
+    const std::vector<std::int64_t> timeline = input.timeline();
+    const bool replay = !timeline.empty();
+    const auto wall0 = Clock::now();
+    auto last_stats = wall0, last_title = wall0;
+    const auto now_ns = [&] {
+      return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - wall0).count();
+    };
+
+    xr::Session session(o.profile);
+    session.poll_event(0);
+    session.begin(replay ? timeline.front() : now_ns());
+    bool video_paused = false, video_loop = video.loop();
+    bool quit = false;
+    for (std::int64_t n = 0; !quit; ++n) {
+      if (o.max_frames >= 0 && n >= o.max_frames) break;
+      if (replay && n >= static_cast<std::int64_t>(timeline.size())) break;
+      if (gl->should_close()) break;
+      const auto frame_t0 = Clock::now();
+
+      // Events: window, then script; the backend first (sim bindings), then loop and client.
+      gl->poll_events();
+      std::vector<xr::DesktopEvent> events = glue->drain();
+      if (o.script) {
+        auto more = o.script(n);
+        events.insert(events.end(), more.begin(), more.end());
+      }
+      int fbw = 0, fbh = 0;
+      gl->framebuffer_size(&fbw, &fbh);
+      // A hidden window (tests, screenshots) renders at the size asked for; so does a minimised
+      // one.
+      if (!o.visible || fbw <= 0 || fbh <= 0) fbw = o.window_width, fbh = o.window_height;
+      bool geometry_changed = false;
+      if (fbw != geometry_w || fbh != geometry_h) {
+        events.insert(events.begin(), xr::ViewGeometryEvent{fbw, fbh, o.desktop_hfov_deg});
+        geometry_w = fbw;
+        geometry_h = fbh;
+        geometry_changed = true;
+      }
+      std::vector<xr::DesktopEvent> routed;  // events with cursor rays for what the mirror shows
+      for (auto& e : events) {
+        if (auto* m = std::get_if<xr::MouseMoveEvent>(&e)) {
+          if (!m->ray) *m = cursor_event(m->x, m->y, fbw, fbh);
+          cursor = glm::dvec2(m->x, m->y);
+        }
+        routed.push_back(e);
+        if (handle_loop_key(e, quit)) geometry_changed = true;
+        if (geometry_changed && cursor) {
+          // The same cursor now points through another mirror: re-aim without moving.
+          routed.push_back(cursor_event(cursor->x, cursor->y, fbw, fbh));
+          geometry_changed = false;
+        }
+      }
+      if (geometry_changed && cursor)
+        routed.push_back(cursor_event(cursor->x, cursor->y, fbw, fbh));
+      for (const auto& e : routed) {
+        input.push_event(e);
+        client.on_desktop_event(e);
+      }
+
+      // Time: the recording's in replay, else the session's prediction.
+      const xr::FrameState fs = session.wait_frame(replay ? timeline[n] - 1 : now_ns());
+      if (!replay && o.vsync && fs.wait_ns > 0)
+        std::this_thread::sleep_for(std::chrono::nanoseconds(fs.wait_ns));
+      session.begin_frame();
+      const std::int64_t t = replay ? timeline[n] : fs.predicted_display_time_ns;
+
+      xr::InputState in = input.poll(t);
+      if (!in.head_tracked) in.head = xr::neutral_input_state(t).head;
+      FrameInfo info;
+      info.loop_frame = n;
+      info.display_time_ns = t;
+      info.head_forward = xr::forward_direction(in.head);
+      info.shown_video_frame = shown ? shown->index : -1;
+      client.update(in, t, info);
+      if (info.request_exit) quit = true;
+
+      // Video: never block (timeout 0 unless asked); a frame not ready keeps the previous one.
+      // Until the first frame is decoded the view is a dark field and the client shows
+      // "loading"; each frame then waits a little for it, so loading is not slowed by spinning.
+      if (info.video_paused != video_paused) video.set_paused(video_paused = info.video_paused);
+      if (info.video_loop != video_loop) video.set_loop(video_loop = info.video_loop);
+      const auto loading_wait = std::chrono::nanoseconds(shown ? 0 : kLoadingWaitNs);
+      auto f = video.frame_at(info.video_frame, std::max(o.decode_timeout, loading_wait));
+      if (!shown && !f) check_start_timeout(wall0);
+      bool changed = false;
+      if (f && (!shown || f->index != shown->index)) {
+        shown = std::move(f);
+        changed = true;
+      }
+      FrameRecord rec{t, info.video_frame, shown ? shown->index : -1, false};
+      rec.late = rec.shown_frame != rec.requested_frame;
+      if (rec.late) ++result.late_frames;
+      if (shown && (changed || !uploaded_any)) upload(stats);
+
+      // Parameters: view mode once per frame at the head's forward direction, the same for both
+      // eyes; per-pixel mode a grid, re-baked when the frame or the parameters change.
+      const std::int64_t param_frame = shown ? shown->index : info.video_frame;
+      const unsigned mask = client.unaltered() ? 0u : client.active_effects();
+      const bool per_pixel = mask && client.param_mode() == ParamMode::PerPixel;
+      effects::StackParams params;
+      if (per_pixel) {
+        if (!grid_valid || grid_frame != param_frame || grid_revision != client.params_revision())
+          bake(param_frame, stats);
+      } else if (mask) {
+        const auto params_t0 = Clock::now();
+        params = client.params(info.head_forward, param_frame);
+        stats.add_cpu("params", ms_since(params_t0));
+      }
+
+      // Flares: laid out once per frame from the head pose, drawn into both eyes.
+      const auto flares_t0 = Clock::now();
+      flare->set_layouts(client.unaltered() ? std::vector<effects::FlareLayout>{}
+                                            : client.flares(in.head, param_frame,
+                                                            shown ? &shown->picture : nullptr));
+      stats.add_cpu("flares", ms_since(flares_t0));
+      // Grain: laid out once per frame (pattern from the display time), drawn into both eyes.
+      const auto grains_t0 = Clock::now();
+      grain->set_layers(client.unaltered() ? std::vector<effects::GrainFrame>{}
+                                           : client.grains(in.head, t, param_frame));
+      stats.add_cpu("grains", ms_since(grains_t0));
+      const std::array<xr::EyeLayer*, 2> layers{flare.get(), grain.get()};
+
+      const std::vector<xr::QuadLayer> quads = client.quads();
+      if (mirror == xr::MirrorMode::Desktop) {
+        const xr::RenderView view = xr::desktop_view(in.head, o.desktop_hfov_deg, fbw, fbh);
+        compositor->render_desktop({view, params, mask, per_pixel, layers}, fbw, fbh,
+                                   o.desktop_video_scale, quads, in.head);
+      } else {
+        const auto views = session.locate_views(in.head, xr::ReferenceSpace::Local);
+        for (int e = 0; e < 2; ++e)
+          compositor->render_eye(e, {xr::render_view(views[e]), params, mask, per_pixel, layers},
+                                 quads, in.head);
+      }
+      if (o.on_frame) o.on_frame(*compositor, n);
+      compositor->draw_mirror(mirror, nullptr, fbw, fbh);
+      const bool last = quit || (o.max_frames >= 0 && n + 1 >= o.max_frames) ||
+                        (replay && n + 1 >= static_cast<std::int64_t>(timeline.size()));
+      if (last && !o.screenshot.empty()) write_screenshot(fbw, fbh);
+      gl->swap_buffers();
+      session.end_frame(fs.predicted_display_time_ns, quads);
+
+      ++result.frames;
+      if (o.keep_records) result.records.push_back(rec);
+      if (o.stats) stats.add_gpu(compositor->stage_times());
+      stats.add_cpu("frame", ms_since(frame_t0));
+      if (o.stats &&
+          std::chrono::duration<double>(Clock::now() - last_stats).count() >= o.stats_period_s) {
+        last_stats = Clock::now();
+        out << "stats: frame " << n << ", late " << result.late_frames << ": "
+            << FrameLoopStats::format(stats.take_window()) << "\n";
+      }
+      if (std::chrono::duration<double>(Clock::now() - last_title).count() >= 0.5) {
+        last_title = Clock::now();
+        const std::string title = "vdfx  " + client.status_line();
+        glfwSetWindowTitle(gl->window(), title.c_str());
+      }
+    }
+    if (session.state() != xr::SessionState::Idle) {
+      session.request_exit(0);
+      session.end(0);
+    }
+    result.wall_s = std::chrono::duration<double>(Clock::now() - wall0).count();
+    result.medians = stats.total();
+    if (o.stats) {
+      out << "stats (medians over " << result.frames << " frames, " << result.late_frames
+          << " late, " << (result.wall_s > 0 ? result.frames / result.wall_s : 0.0)
+          << " frames/s; GPU stages summed over both eyes): "
+          << FrameLoopStats::format(result.medians) << "\n";
+    }
+    return result;
+  }
+};
+
+FrameLoop::FrameLoop(FrameLoopOptions options, xr::InputBackend& input, io::VideoSource& video,
+                     FrameClient& client)
+    : impl_(std::make_unique<Impl>(std::move(options), input, video, client)) {}
+FrameLoop::~FrameLoop() = default;
+FrameLoopResult FrameLoop::run() {
+  return impl_->run();
+}
+
+}  // namespace vdfx::app

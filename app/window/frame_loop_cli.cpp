@@ -1,0 +1,164 @@
+/// @file
+/// @brief Shared options and setup of the windowed commands.
+#include "app/window/frame_loop_cli.h"
+
+#include <iostream>
+#include <limits>
+
+#include "app/cli/cli_util.h"
+#include "io/input_error.h"
+#include "xr/hmd_profile.h"
+
+namespace vdfx::app {
+namespace {
+std::string size_problem(const std::string& text, const char* option, const SizeLimit& limit) {
+  try {
+    parse_size(text, option, limit);
+    return {};
+  } catch (const CLI::ValidationError& e) {
+    return e.what();
+  }
+}
+std::string window_problem(const std::string& text) {
+  return size_problem(text, "--window", kOutputSizeLimit);
+}
+std::string bake_problem(const std::string& text) {
+  return size_problem(text, "--bake", kBakeSizeLimit);
+}
+
+// --record and --screenshot must not destroy an input, and must be regular files (or new).
+void check_loop_outputs(const LoopCli& o, const std::filesystem::path& video_path,
+                        const std::string& profile_source,
+                        const std::vector<io::NamedInput>& other_inputs) {
+  std::vector<io::NamedInput> inputs = other_inputs;
+  inputs.push_back({"VIDEO", video_path});
+  inputs.push_back({"--hmd", profile_source});
+  if (o.input.rfind("replay:", 0) == 0) inputs.push_back({"--input replay:", o.input.substr(7)});
+  for (const auto& [role, path] :
+       {std::pair{"--record", o.record}, {"--screenshot", o.screenshot}}) {
+    if (path.empty()) continue;
+    io::check_output_is_not_input(role, path, inputs);
+    io::resolve_output_path(path);
+  }
+}
+
+}  // namespace
+
+void add_loop_options(CLI::App& cli, LoopCli& o) {
+  cli.add_option("--hmd", o.hmd, "headset profile name or file (vdfx hmd list)")
+      ->capture_default_str();
+  cli.add_option("--input", o.input, "sim | hid[:SEL,...] | replay:REC.vdrec.jsonl")
+      ->capture_default_str();
+  cli.add_option("--record", o.record, "record the input to this .vdrec.jsonl file");
+  cli.add_flag("--stats", o.stats,
+               "GPU time per stage (video, effects, distortion): medians, "
+               "printed every 2 s and at exit");
+  cli.add_option("--scale", o.scale,
+                 "eye buffers at this fraction of the profile's resolution (1 = full; the default "
+                 "keeps llvmpipe interactive)")
+      ->capture_default_str()
+      ->check(finite_range(0.01, 4.0));
+  cli.add_option("--frames,--exit-after-frames", o.frames, "stop after N frames")
+      ->check(whole_range(0, std::numeric_limits<std::int64_t>::max()));
+  cli.add_option("--screenshot", o.screenshot, "write the mirror of the last frame to this PNG");
+  cli.add_option("--mirror", o.mirror,
+                 "what the window shows: desktop (one undistorted view for a monitor), pre "
+                 "(headset mirror: pre-distorted panels), lens (through the lens), eye (left eye, "
+                 "undistorted); auto: desktop for the sim and its recordings, else pre. Keys 1-4 "
+                 "switch while running")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "desktop", "pre", "lens", "eye"}));
+  cli.add_option("--fov", o.fov, "horizontal field of view of the desktop view, degrees")
+      ->capture_default_str()
+      ->check(finite_range(20.0, 160.0));
+  cli.add_option("--window", o.window, "window size WxH")
+      ->capture_default_str()
+      ->check(window_problem);
+  cli.add_flag("--hidden", o.hidden, "no visible window (offscreen; --screenshot still works)");
+  cli.add_flag("--no-vsync", o.no_vsync, "do not wait for the display's vsync (live input)");
+  cli.add_option("--decode-timeout", o.decode_timeout_ms,
+                 "ms a frame may wait for the decoder (0: never wait, show the previous frame)")
+      ->capture_default_str()
+      ->check(finite_range(0.0, 10000.0));
+  cli.add_option("--bake", o.bake, "per-pixel mode's parameter grid WxH (speed/error knob)")
+      ->capture_default_str()
+      ->check(bake_problem);
+  cli.add_option("--blur", o.blur,
+                 "GPU blur: pyramid (halvings + small residual blur, the live default) or exact "
+                 "(full-resolution separable Gaussian, as vdfx render --gpu)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"exact", "pyramid"}));
+}
+
+LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video,
+                       const std::vector<io::NamedInput>& other_inputs) {
+  LoopSetup s;
+  FrameLoopOptions& f = s.options;
+  f.profile = xr::load_hmd_profile(o.hmd);
+  check_loop_outputs(o, video_path, f.profile.source, other_inputs);
+  const ImageSize window = parse_size(o.window, "--window", kOutputSizeLimit);
+  const ImageSize bake = parse_size(o.bake, "--bake", kBakeSizeLimit);
+  f.window_width = window.width;
+  f.window_height = window.height;
+  f.bake_width = bake.width;
+  f.bake_height = bake.height;
+  f.blur = xr::blur_method_from_name(o.blur).value_or(xr::BlurMethod::Pyramid);
+  f.eye_scale = o.scale;
+  f.max_frames = o.frames;
+  f.screenshot = o.screenshot;
+  f.stats = o.stats;
+  f.visible = !o.hidden;
+  f.vsync = !o.no_vsync;
+  f.desktop_hfov_deg = o.fov;
+  f.decode_timeout = std::chrono::nanoseconds(static_cast<std::int64_t>(o.decode_timeout_ms * 1e6));
+
+  io::VideoSourceOptions vo;
+  vo.loop = loop_video;
+  s.video = io::VideoSource::open(video_path, vo);
+
+  // Which view the window opens on: the desktop view for the sim (a monitor and a mouse) and for
+  // replays of sessions recorded in it, a headset mirror otherwise.
+  const std::string replay_prefix = "replay:";
+  bool desktop_input = o.input == "sim";
+  if (o.input.rfind(replay_prefix, 0) == 0) {
+    const io::RecordingHeader h = io::read_recording(o.input.substr(replay_prefix.size())).header;
+    if (h.desktop)
+      s.recorded_desktop = h.desktop;
+    else if (h.hmd == "sim")
+      s.recorded_desktop = io::RecordedDesktopView{1280, 720, 90.0};  // before the extension
+    desktop_input = s.recorded_desktop.has_value();
+  }
+  f.mirror = o.mirror == "auto"
+                 ? (desktop_input ? xr::MirrorMode::Desktop : xr::MirrorMode::PreDistorted)
+                 : *xr::mirror_mode_from_name(o.mirror);
+
+  xr::InputBackendOptions io_opts;
+  io_opts.sim.window_width = window.width;
+  io_opts.sim.window_height = window.height;
+  io_opts.sim.hfov_deg = o.fov;
+  try {
+    s.input = xr::create_input_backend(o.input, io_opts);
+  } catch (const io::InputError& e) {
+    throw io::InputError("--input: " + std::string(e.what()));  // xr/ names no options
+  }
+  if (!o.record.empty()) {
+    io::RecordingHeader h;
+    h.hmd = f.profile.name;
+    h.video = video_path.string();
+    h.note = "vdfx " + o.input;
+    // The sim's panels are laid out for the window: the replay needs its size and FOV (the
+    // window is then not resizable while recording, docs/input.md).
+    if (o.input == "sim") h.desktop = io::RecordedDesktopView{window.width, window.height, o.fov};
+    f.resizable = o.input != "sim";
+    s.input = xr::create_recording_backend(std::move(s.input), o.record, h);
+  }
+  return s;
+}
+
+void report_loop(const char* command, const FrameLoopResult& r) {
+  std::cerr << command << ": " << r.frames << " frames in " << r.wall_s << " s ("
+            << (r.wall_s > 0 ? r.frames / r.wall_s : 0.0) << " frames/s), " << r.late_frames
+            << " late (video frame not decoded in time; the previous one stayed on screen)\n";
+}
+
+}  // namespace vdfx::app
