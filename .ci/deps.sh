@@ -9,6 +9,7 @@ packages=(
   libopencv-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libglfw3-dev libglm-dev libepoxy-dev libstb-dev libhidapi-dev
+  libopenxr-dev libopenxr-loader1 libx11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   fonts-dejavu-core blender-data ffmpeg
   gnuplot-nox python3-jsonschema

@@ -65,6 +65,13 @@ class Compositor {
   /// Renders one eye (0 left, 1 right). Quads are placed with Session::to_local(head_in_local).
   void render_eye(int eye, const EyeInput& in, std::span<const QuadLayer> quads = {},
                   const Pose& head_in_local = {});
+  /// Renders one eye's buffer only: video layer, effects and world-space layers, no quads and no
+  /// lens (a real OpenXR runtime composites the panels as quad layers and distorts itself). The
+  /// OpenXR backend copies eye_buffer(eye) into the eye's swapchain.
+  void render_eye_buffer(int eye, const EyeInput& in);
+  /// Draws quad layers over eye `eye`'s buffer as seen from its last rendered view (the OpenXR
+  /// mirror: the left eye as submitted, with the panels the runtime composites over it).
+  void draw_quads(int eye, std::span<const QuadLayer> quads, const Pose& head_in_local);
   /// Renders the desktop view (MirrorMode::Desktop): `in.view` is the cyclopean pinhole
   /// (xr::desktop_view); video and effects are rendered at video_scale of width x height and
   /// scaled up, then the quads are drawn at the full width x height (sharp UI panel text), no lens.

@@ -177,6 +177,17 @@ void Compositor::render_eye(int eye, const EyeInput& in, std::span<const QuadLay
   if (t) m.timer.stop();
 }
 
+void Compositor::render_eye_buffer(int eye, const EyeInput& in) {
+  if (eye < 0 || eye > 1) throw GlError("Compositor::render_eye_buffer: eye must be 0 or 1");
+  impl_->video_and_effects(eye, in, config_.eye_width, config_.eye_height, config_);
+}
+
+void Compositor::draw_quads(int eye, std::span<const QuadLayer> quads, const Pose& head_in_local) {
+  if (eye < 0 || eye > 1) throw GlError("Compositor::draw_quads: eye must be 0 or 1");
+  impl_->quads(impl_->eye_buffer[eye], impl_->views[eye], quads, head_in_local);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 void Compositor::render_desktop(const EyeInput& in, int width, int height, double video_scale,
                                 std::span<const QuadLayer> quads, const Pose& head_in_local) {
   if (width < 1 || height < 1 || !(video_scale > 0.0 && video_scale <= 1.0))

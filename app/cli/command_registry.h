@@ -16,7 +16,21 @@
 
 namespace vdfx::app {
 
-enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitInternal = 3 };
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitBadInput = 1,
+  kExitUsage = 2,
+  kExitInternal = 3,
+  /// Never seen by a user: a light command whose asked-for part needs the media module (`vdfx hmd
+  /// openxr`: GL and the OpenXR loader) returns it, and app/cli/main.cpp runs the command again
+  /// from the module.
+  kExitRunInMediaModule = 100,
+};
+
+/// The media module's implementation of `vdfx hmd openxr`, installed by the module at start
+/// (app/media/media_commands.cpp); unset in the `vdfx` executable, whose cmd_hmd then answers
+/// kExitRunInMediaModule.
+void set_hmd_openxr_command(int (*command)(const std::vector<std::string>& args));
 
 using Args = std::vector<std::string>;
 

@@ -1,5 +1,6 @@
 /// @file
-/// @brief `vdfx hmd list` and `vdfx hmd show NAME|FILE`: the simulated headsets.
+/// @brief `vdfx hmd list` and `vdfx hmd show NAME|FILE`: the simulated headsets; `vdfx hmd
+/// openxr` (a real one) runs from the media module.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -14,7 +15,13 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: vdfx hmd list              list the HMD profiles (name, resolution, FOV, refresh)\n"
-    "       vdfx hmd show NAME|FILE    print one profile and what follows from it\n";
+    "       vdfx hmd show NAME|FILE    print one profile and what follows from it\n"
+    "       vdfx hmd openxr            what the active OpenXR runtime and headset offer (runtime,\n"
+    "                                  system, views, refresh, swapchain formats, controller\n"
+    "                                  profiles; docs/openxr.md)\n";
+
+/// `vdfx hmd openxr`, installed by the media module (it needs GL and the OpenXR loader).
+CommandFn g_hmd_openxr = nullptr;
 
 std::string fov_text(const xr::FovDeg& f) {
   char buf[96];
@@ -78,6 +85,10 @@ int show(const std::string& arg) {
 
 }  // namespace
 
+void set_hmd_openxr_command(CommandFn command) {
+  g_hmd_openxr = command;
+}
+
 int cmd_hmd(const Args& args) {
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
     std::cout << kUsage;
@@ -85,6 +96,8 @@ int cmd_hmd(const Args& args) {
   }
   if (args.size() == 1 && args[0] == "list") return list();
   if (args.size() == 2 && args[0] == "show") return show(args[1]);
+  if (!args.empty() && args[0] == "openxr")
+    return g_hmd_openxr ? g_hmd_openxr(Args(args.begin() + 1, args.end())) : kExitRunInMediaModule;
   std::cerr << kUsage;
   return kExitUsage;
 }

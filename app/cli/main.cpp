@@ -73,7 +73,10 @@ int run_media_module(const char* command, int argc, char** argv) {
 int main(int argc, char** argv) {
   using namespace vdfx::app;
   return dispatch(Args(argv + 1, argv + argc), [&](const Command& c, const Args& rest) {
-    if (c.home == CommandHome::kLight) return run_guarded(c.name, c.light_run, rest);
+    if (c.home == CommandHome::kLight) {
+      const int code = run_guarded(c.name, c.light_run, rest);
+      if (code != kExitRunInMediaModule) return code;
+    }
     return run_media_module(c.name, argc, argv);
   });
 }

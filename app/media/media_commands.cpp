@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "app/cli/command_functions.h"
+#include "app/window/hmd_openxr_command.h"
 #include "io/library_logs.h"
 #include "xr/gl_context.h"
 
@@ -38,6 +39,7 @@ int gl_unavailable_is_usage(CommandFn fn, const Args& args) {
 
 int run_main(const Args& args) {
   if (!wants_verbose(args)) io::quiet_library_logs();
+  set_hmd_openxr_command(cmd_hmd_openxr);
   return dispatch(args, [](const Command& c, const Args& rest) {
     const CommandFn fn = command_function(c.name);
     return run_guarded(

@@ -150,7 +150,8 @@ int cmd_edit(const Args& args) {
   EditorOptions eo;
   // The sim (and replays of sessions recorded with it): the Desktop layout in the window's view;
   // a replay keeps the view it was recorded in, a live window's panels follow its size.
-  const bool desktop = loop.input == "sim" || setup.recorded_desktop.has_value();
+  const bool desktop =
+      (loop.input == "sim" && loop.runtime == "sim") || setup.recorded_desktop.has_value();
   eo.layout = desktop ? PanelLayout::Desktop : PanelLayout::Hands;
   if (setup.recorded_desktop)
     eo.viewport = {setup.recorded_desktop->width, setup.recorded_desktop->height,

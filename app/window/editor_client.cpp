@@ -34,7 +34,12 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
   editor_.set_loop_status(fps_, info.shown_video_frame < 0);
   if (thumbnails_)
     if (auto thumbs = thumbnails_->take()) editor_.ui().strip->set_thumbnails(std::move(*thumbs));
+  // A keyframe placed (the preview let go into the document): the controller's pulse.
+  const bool was_previewing = editor_.previewing();
+  const std::uint64_t revision_before = editor_.document().revision();
   editor_.update(input, t);
+  if (was_previewing && !editor_.previewing() && editor_.document().revision() != revision_before)
+    info.haptic_pulse = xr::Hand::Right;
   layers_.update(editor_);
   info.video_frame = editor_.frame();
   info.video_paused = !editor_.playing();

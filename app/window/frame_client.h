@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,8 @@ struct FrameInfo {
   bool video_paused = false;     //!< the decoder need not read ahead of video_frame
   bool video_loop = true;        //!< the decoder wraps at the end
   bool request_exit = false;     //!< end the loop after this frame
+  /// A short vibration on this hand's controller (a keyframe was placed); headsets only.
+  std::optional<xr::Hand> haptic_pulse;
 };
 
 class FrameClient {

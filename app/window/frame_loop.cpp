@@ -28,6 +28,7 @@
 #include "xr/glfw_input_glue.h"
 #include "xr/grain_gl.h"
 #include "xr/input_backend.h"
+#include "xr/openxr_runtime.h"
 #include "xr/param_grid.h"
 #include "xr/session.h"
 
@@ -86,6 +87,8 @@ struct FrameLoop::Impl {
   std::int64_t grid_frame = -1;
   std::uint64_t grid_revision = 0;
   int geometry_w = 0, geometry_h = 0;
+  bool video_paused = false, video_loop = true;  //!< what the decoder was last told
+  Clock::time_point last_stats, last_title;      //!< the last stats line and title update
 
   Impl(FrameLoopOptions opts, xr::InputBackend& in, io::VideoSource& v, FrameClient& c)
       : o(std::move(opts)), input(in), video(v), client(c) {
@@ -97,16 +100,30 @@ struct FrameLoop::Impl {
     g.width = o.window_width;
     g.height = o.window_height;
     g.visible = o.visible;
-    g.vsync = o.vsync;
+    // With a headset, xrWaitFrame paces the loop: the mirror must not wait for the monitor too.
+    g.vsync = o.vsync && !o.openxr;
     g.resizable = o.resizable;
     g.title = "vdfx";
     gl = xr::GlContext::create(g);
     glue = std::make_unique<xr::GlfwInputGlue>(gl->window());
     xr::CompositorConfig cc;
     const xr::EyeProfile& eye = o.profile.eye(xr::Eye::Left);
-    cc.eye_width = std::max(8, static_cast<int>(std::lround(eye.width * o.eye_scale)));
-    cc.eye_height = std::max(8, static_cast<int>(std::lround(eye.height * o.eye_scale)));
+    const auto scaled = [&](int px) {
+      return std::max(8, static_cast<int>(std::lround(px * o.eye_scale)));
+    };
+    cc.eye_width = scaled(eye.width);
+    cc.eye_height = scaled(eye.height);
     cc.lens = effects::LensModel(o.profile.lens);
+    if (o.openxr) {
+      // The runtime's recommended size, its swapchains, and no lens: the runtime distorts.
+      const xr::OpenXrViewInfo& v = o.openxr->info().views.at(0);
+      o.openxr->start_session(gl->window(), scaled(v.recommended_width),
+                              scaled(v.recommended_height));
+      cc.eye_width = o.openxr->swapchains().eye_width;
+      cc.eye_height = o.openxr->swapchains().eye_height;
+      cc.distortion.method = xr::DistortionMethod::None;
+      o.mirror = xr::MirrorMode::SingleEye;
+    }
     cc.gpu_timing = o.stats;
     cc.blur = o.blur;
     compositor = std::make_unique<xr::Compositor>(cc);
@@ -179,6 +196,76 @@ struct FrameLoop::Impl {
     throw io::InputError(video.properties().path.string() + ": cannot show the video: " + why);
   }
 
+  /// What both eyes show at display time t (the frame's input, the client's update, the video
+  /// frame, parameters, flares, grain and panels), the same for either headset backend.
+  struct Content {
+    xr::InputState in;
+    FrameInfo info;
+    FrameRecord rec;
+    effects::StackParams params;
+    unsigned mask = 0;
+    bool per_pixel = false;
+    std::vector<xr::QuadLayer> quads;
+  };
+  Content frame_content(std::int64_t n, std::int64_t t, Clock::time_point wall0,
+                        FrameLoopStats& stats, FrameLoopResult& result) {
+    Content c;
+    c.in = input.poll(t);
+    if (!c.in.head_tracked) c.in.head = xr::neutral_input_state(t).head;
+    FrameInfo& info = c.info;
+    info.loop_frame = n;
+    info.display_time_ns = t;
+    info.head_forward = xr::forward_direction(c.in.head);
+    info.shown_video_frame = shown ? shown->index : -1;
+    client.update(c.in, t, info);
+
+    // Video: never block (timeout 0 unless asked); a frame not ready keeps the previous one.
+    // Until the first frame is decoded the view is a dark field and the client shows
+    // "loading"; each frame then waits a little for it, so loading is not slowed by spinning.
+    if (info.video_paused != video_paused) video.set_paused(video_paused = info.video_paused);
+    if (info.video_loop != video_loop) video.set_loop(video_loop = info.video_loop);
+    const auto loading_wait = std::chrono::nanoseconds(shown ? 0 : kLoadingWaitNs);
+    auto f = video.frame_at(info.video_frame, std::max(o.decode_timeout, loading_wait));
+    if (!shown && !f) check_start_timeout(wall0);
+    bool changed = false;
+    if (f && (!shown || f->index != shown->index)) {
+      shown = std::move(f);
+      changed = true;
+    }
+    c.rec = {t, info.video_frame, shown ? shown->index : -1, false};
+    c.rec.late = c.rec.shown_frame != c.rec.requested_frame;
+    if (c.rec.late) ++result.late_frames;
+    if (shown && (changed || !uploaded_any)) upload(stats);
+
+    // Parameters: view mode once per frame at the head's forward direction, the same for both
+    // eyes; per-pixel mode a grid, re-baked when the frame or the parameters change.
+    const std::int64_t param_frame = shown ? shown->index : info.video_frame;
+    c.mask = client.unaltered() ? 0u : client.active_effects();
+    c.per_pixel = c.mask && client.param_mode() == ParamMode::PerPixel;
+    if (c.per_pixel) {
+      if (!grid_valid || grid_frame != param_frame || grid_revision != client.params_revision())
+        bake(param_frame, stats);
+    } else if (c.mask) {
+      const auto params_t0 = Clock::now();
+      c.params = client.params(info.head_forward, param_frame);
+      stats.add_cpu("params", ms_since(params_t0));
+    }
+
+    // Flares: laid out once per frame from the head pose, drawn into both eyes.
+    const auto flares_t0 = Clock::now();
+    flare->set_layouts(client.unaltered() ? std::vector<effects::FlareLayout>{}
+                                          : client.flares(c.in.head, param_frame,
+                                                          shown ? &shown->picture : nullptr));
+    stats.add_cpu("flares", ms_since(flares_t0));
+    // Grain: laid out once per frame (pattern from the display time), drawn into both eyes.
+    const auto grains_t0 = Clock::now();
+    grain->set_layers(client.unaltered() ? std::vector<effects::GrainFrame>{}
+                                         : client.grains(c.in.head, t, param_frame));
+    stats.add_cpu("grains", ms_since(grains_t0));
+    c.quads = client.quads();
+    return c;
+  }
+
   void write_screenshot(int w, int h) {
     xr::GlTarget target(w, h, xr::TexFormat::RGBA8);
     compositor->draw_mirror(mirror, &target, w, h);
@@ -186,14 +273,43 @@ struct FrameLoop::Impl {
     io::write_png(o.screenshot, bgr);
   }
 
+  /// After each frame: the periodic stats line (--stats) and the window title.
+  void report_progress(std::int64_t n, const FrameLoopResult& result, FrameLoopStats& stats) {
+    if (o.stats &&
+        std::chrono::duration<double>(Clock::now() - last_stats).count() >= o.stats_period_s) {
+      last_stats = Clock::now();
+      stats_stream() << "stats: frame " << n << ", late " << result.late_frames << ": "
+                     << FrameLoopStats::format(stats.take_window()) << "\n";
+    }
+    if (std::chrono::duration<double>(Clock::now() - last_title).count() >= 0.5) {
+      last_title = Clock::now();
+      const std::string title = "vdfx  " + client.status_line();
+      glfwSetWindowTitle(gl->window(), title.c_str());
+    }
+  }
+
+  std::ostream& stats_stream() const { return o.stats_out ? *o.stats_out : std::cout; }
+
+  /// The run's totals, and their line with --stats.
+  void finish(FrameLoopResult& result, FrameLoopStats& stats, Clock::time_point wall0) {
+    result.wall_s = std::chrono::duration<double>(Clock::now() - wall0).count();
+    result.medians = stats.total();
+    if (o.stats) {
+      stats_stream() << "stats (medians over " << result.frames << " frames, " << result.late_frames
+                     << " late, " << (result.wall_s > 0 ? result.frames / result.wall_s : 0.0)
+                     << " frames/s; GPU stages summed over both eyes): "
+                     << FrameLoopStats::format(result.medians) << "\n";
+    }
+  }
+
   FrameLoopResult run() {
+    if (o.openxr) return run_openxr();
     FrameLoopResult result;
     FrameLoopStats stats;
-    std::ostream& out = o.stats_out ? *o.stats_out : std::cout;
     const std::vector<std::int64_t> timeline = input.timeline();
     const bool replay = !timeline.empty();
     const auto wall0 = Clock::now();
-    auto last_stats = wall0, last_title = wall0;
+    last_stats = last_title = wall0;
     const auto now_ns = [&] {
       return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - wall0).count();
     };
@@ -201,7 +317,7 @@ struct FrameLoop::Impl {
     xr::Session session(o.profile);
     session.poll_event(0);
     session.begin(replay ? timeline.front() : now_ns());
-    bool video_paused = false, video_loop = video.loop();
+    video_loop = video.loop();
     bool quit = false;
     for (std::int64_t n = 0; !quit; ++n) {
       if (o.max_frames >= 0 && n >= o.max_frames) break;
@@ -256,63 +372,15 @@ struct FrameLoop::Impl {
       session.begin_frame();
       const std::int64_t t = replay ? timeline[n] : fs.predicted_display_time_ns;
 
-      xr::InputState in = input.poll(t);
-      if (!in.head_tracked) in.head = xr::neutral_input_state(t).head;
-      FrameInfo info;
-      info.loop_frame = n;
-      info.display_time_ns = t;
-      info.head_forward = xr::forward_direction(in.head);
-      info.shown_video_frame = shown ? shown->index : -1;
-      client.update(in, t, info);
-      if (info.request_exit) quit = true;
-
-      // Video: never block (timeout 0 unless asked); a frame not ready keeps the previous one.
-      // Until the first frame is decoded the view is a dark field and the client shows
-      // "loading"; each frame then waits a little for it, so loading is not slowed by spinning.
-      if (info.video_paused != video_paused) video.set_paused(video_paused = info.video_paused);
-      if (info.video_loop != video_loop) video.set_loop(video_loop = info.video_loop);
-      const auto loading_wait = std::chrono::nanoseconds(shown ? 0 : kLoadingWaitNs);
-      auto f = video.frame_at(info.video_frame, std::max(o.decode_timeout, loading_wait));
-      if (!shown && !f) check_start_timeout(wall0);
-      bool changed = false;
-      if (f && (!shown || f->index != shown->index)) {
-        shown = std::move(f);
-        changed = true;
-      }
-      FrameRecord rec{t, info.video_frame, shown ? shown->index : -1, false};
-      rec.late = rec.shown_frame != rec.requested_frame;
-      if (rec.late) ++result.late_frames;
-      if (shown && (changed || !uploaded_any)) upload(stats);
-
-      // Parameters: view mode once per frame at the head's forward direction, the same for both
-      // eyes; per-pixel mode a grid, re-baked when the frame or the parameters change.
-      const std::int64_t param_frame = shown ? shown->index : info.video_frame;
-      const unsigned mask = client.unaltered() ? 0u : client.active_effects();
-      const bool per_pixel = mask && client.param_mode() == ParamMode::PerPixel;
-      effects::StackParams params;
-      if (per_pixel) {
-        if (!grid_valid || grid_frame != param_frame || grid_revision != client.params_revision())
-          bake(param_frame, stats);
-      } else if (mask) {
-        const auto params_t0 = Clock::now();
-        params = client.params(info.head_forward, param_frame);
-        stats.add_cpu("params", ms_since(params_t0));
-      }
-
-      // Flares: laid out once per frame from the head pose, drawn into both eyes.
-      const auto flares_t0 = Clock::now();
-      flare->set_layouts(client.unaltered() ? std::vector<effects::FlareLayout>{}
-                                            : client.flares(in.head, param_frame,
-                                                            shown ? &shown->picture : nullptr));
-      stats.add_cpu("flares", ms_since(flares_t0));
-      // Grain: laid out once per frame (pattern from the display time), drawn into both eyes.
-      const auto grains_t0 = Clock::now();
-      grain->set_layers(client.unaltered() ? std::vector<effects::GrainFrame>{}
-                                           : client.grains(in.head, t, param_frame));
-      stats.add_cpu("grains", ms_since(grains_t0));
+      Content c = frame_content(n, t, wall0, stats, result);
+      if (c.info.request_exit) quit = true;
+      const xr::InputState& in = c.in;
+      const FrameRecord& rec = c.rec;
+      const effects::StackParams& params = c.params;
+      const unsigned mask = c.mask;
+      const bool per_pixel = c.per_pixel;
+      const std::vector<xr::QuadLayer>& quads = c.quads;
       const std::array<xr::EyeLayer*, 2> layers{flare.get(), grain.get()};
-
-      const std::vector<xr::QuadLayer> quads = client.quads();
       if (mirror == xr::MirrorMode::Desktop) {
         const xr::RenderView view = xr::desktop_view(in.head, o.desktop_hfov_deg, fbw, fbh);
         compositor->render_desktop({view, params, mask, per_pixel, layers}, fbw, fbh,
@@ -335,31 +403,112 @@ struct FrameLoop::Impl {
       if (o.keep_records) result.records.push_back(rec);
       if (o.stats) stats.add_gpu(compositor->stage_times());
       stats.add_cpu("frame", ms_since(frame_t0));
-      if (o.stats &&
-          std::chrono::duration<double>(Clock::now() - last_stats).count() >= o.stats_period_s) {
-        last_stats = Clock::now();
-        out << "stats: frame " << n << ", late " << result.late_frames << ": "
-            << FrameLoopStats::format(stats.take_window()) << "\n";
-      }
-      if (std::chrono::duration<double>(Clock::now() - last_title).count() >= 0.5) {
-        last_title = Clock::now();
-        const std::string title = "vdfx  " + client.status_line();
-        glfwSetWindowTitle(gl->window(), title.c_str());
-      }
+      report_progress(n, result, stats);
     }
     if (session.state() != xr::SessionState::Idle) {
       session.request_exit(0);
       session.end(0);
     }
-    result.wall_s = std::chrono::duration<double>(Clock::now() - wall0).count();
-    result.medians = stats.total();
-    if (o.stats) {
-      out << "stats (medians over " << result.frames << " frames, " << result.late_frames
-          << " late, " << (result.wall_s > 0 ? result.frames / result.wall_s : 0.0)
-          << " frames/s; GPU stages summed over both eyes): "
-          << FrameLoopStats::format(result.medians) << "\n";
-    }
+    finish(result, stats, wall0);
     return result;
+  }
+
+  // ---- --runtime openxr (docs/openxr.md)
+
+  /// The window's events in a headset session: Escape or closing the window leave; the input
+  /// backend and the client see them as in the sim (the OpenXR backend takes no desktop input).
+  /// Returns whether to leave.
+  bool openxr_window_events(std::int64_t n) {
+    gl->poll_events();
+    std::vector<xr::DesktopEvent> events = glue->drain();
+    if (o.script) {
+      auto more = o.script(n);
+      events.insert(events.end(), more.begin(), more.end());
+    }
+    bool quit = gl->should_close();
+    for (const auto& e : events) {
+      input.push_event(e);
+      client.on_desktop_event(e);
+      const auto* k = std::get_if<xr::KeyEvent>(&e);
+      if (k && k->pressed && k->key == xr::Key::Escape) quit = true;
+    }
+    return quit;
+  }
+
+  /// Both eyes into the runtime's swapchains (no quads, no lens), the panels as quad layers,
+  /// and the panels drawn over the left eye for the mirror.
+  void render_openxr(xr::OpenXrRuntime& rt, const Content& c) {
+    const std::array<xr::EyeLayer*, 2> layers{flare.get(), grain.get()};
+    const std::array<xr::EyeView, 2> views = rt.locate_views();
+    for (int e = 0; e < 2; ++e) {
+      compositor->render_eye_buffer(
+          e, {xr::render_view(views[e]), c.params, c.mask, c.per_pixel, layers});
+      rt.submit_eye(e, compositor->eye_buffer(e).texture());
+    }
+    rt.submit_quads(c.quads);
+    compositor->draw_quads(0, c.quads, c.in.head);
+  }
+
+  /// The window: the left eye as submitted, with the panels.
+  void present_mirror(int& fbw, int& fbh) {
+    gl->framebuffer_size(&fbw, &fbh);
+    if (!o.visible || fbw <= 0 || fbh <= 0) fbw = o.window_width, fbh = o.window_height;
+    compositor->draw_mirror(mirror, nullptr, fbw, fbh);
+    gl->swap_buffers();
+  }
+
+  /// The headset's loop: the runtime's lifecycle decides when frames run, xrWaitFrame is the
+  /// clock (its predicted display time drives the video, the grain and the input), and a
+  /// request to leave (Escape, the window closed, --frames, the client) goes through the
+  /// runtime's states to EXITING. "frame" (--stats, vdfx bench) is the CPU time from xrWaitFrame's
+  /// return to xrEndFrame's.
+  FrameLoopResult run_openxr() {
+    xr::OpenXrRuntime& rt = *o.openxr;
+    FrameLoopResult result;
+    FrameLoopStats stats;
+    const auto wall0 = Clock::now();
+    last_stats = last_title = wall0;
+    video_loop = video.loop();
+    int fbw = o.window_width, fbh = o.window_height;
+    try {
+      openxr_frames(rt, result, stats, wall0, fbw, fbh);
+    } catch (const xr::OpenXrSessionLost&) {
+      rt.session_lost();  // the headset went away mid-frame: leave as on LOSS_PENDING
+    }
+    if (!o.screenshot.empty() && result.frames > 0) write_screenshot(fbw, fbh);
+    result.end_reason = rt.lifecycle().reason();
+    finish(result, stats, wall0);
+    return result;
+  }
+
+  /// run_openxr's frames, until the lifecycle leaves.
+  void openxr_frames(xr::OpenXrRuntime& rt, FrameLoopResult& result, FrameLoopStats& stats,
+                     Clock::time_point wall0, int& fbw, int& fbh) {
+    bool quit = false;
+    for (std::int64_t n = 0;;) {
+      quit = openxr_window_events(n) || quit;
+      if (quit || (o.max_frames >= 0 && n >= o.max_frames)) rt.request_exit();
+      rt.poll_events();
+      if (rt.lifecycle().leaving()) break;
+      if (!rt.lifecycle().running()) {  // IDLE: waiting for the runtime to make it READY
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        continue;
+      }
+      const xr::OpenXrFrame f = rt.begin_frame();
+      const auto frame_t0 = Clock::now();
+      Content c = frame_content(n, f.time_ns, wall0, stats, result);
+      if (c.info.request_exit) quit = true;
+      if (c.info.haptic_pulse) rt.haptic_pulse(*c.info.haptic_pulse);
+      if (f.should_render) render_openxr(rt, c);
+      if (o.on_frame) o.on_frame(*compositor, n);
+      rt.end_frame();
+      stats.add_cpu("frame", ms_since(frame_t0));
+      if (o.stats) stats.add_gpu(compositor->stage_times());
+      if (o.keep_records) result.records.push_back(c.rec);
+      ++result.frames;
+      present_mirror(fbw, fbh);
+      report_progress(n++, result, stats);
+    }
   }
 };
 

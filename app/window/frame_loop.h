@@ -35,6 +35,7 @@ class VideoSource;
 namespace vdfx::xr {
 class Compositor;
 class InputBackend;
+class OpenXrRuntime;
 }  // namespace vdfx::xr
 
 namespace vdfx::app {
@@ -81,6 +82,10 @@ struct FrameLoopOptions {
   std::function<void(xr::Compositor&, std::int64_t loop_frame)> on_frame;
   /// Events injected before the window's own at a given loop frame (tests, scripted demos).
   std::function<std::vector<xr::DesktopEvent>(std::int64_t loop_frame)> script;
+  /// `--runtime openxr`: the frames go to this runtime's headset (its session is started on the
+  /// loop's GL context; eye buffers at its recommended size x eye_scale, no lens, the panels as
+  /// quad layers, the window mirrors the left eye). Null: the simulated headset.
+  std::shared_ptr<xr::OpenXrRuntime> openxr;
 };
 
 struct FrameRecord {
@@ -102,6 +107,9 @@ struct FrameLoopResult {
   double wall_s = 0.0;
   std::vector<FrameRecord> records;  //!< keep_records only
   std::vector<StageMedian> medians;  //!< stats only: GPU stages (both eyes), CPU parts
+  /// Why the loop ended when the headset's runtime ended it ("the OpenXR session is being lost
+  /// ..."); empty when vdfx did.
+  std::string end_reason;
 };
 
 class FrameLoop {

@@ -6,8 +6,10 @@
 #include <limits>
 
 #include "app/cli/cli_util.h"
+#include "app/cli/command_registry.h"
 #include "io/input_error.h"
 #include "xr/hmd_profile.h"
+#include "xr/openxr_runtime.h"
 
 namespace vdfx::app {
 namespace {
@@ -42,9 +44,36 @@ void check_loop_outputs(const LoopCli& o, const std::filesystem::path& video_pat
   }
 }
 
+// --runtime openxr: the runtime (its errors before any window opens), its controllers as the
+// input, recorded with --record, the eyes at its recommended size (--scale 1 unless given).
+void prepare_openxr(const LoopCli& o, const std::filesystem::path& video_path, LoopSetup& s) {
+  if (o.input != "sim")
+    throw UsageError("--input " + o.input +
+                     ": with --runtime openxr the input is the headset's controllers (replay a "
+                     "headset recording in the sim: --runtime sim --input replay:REC)");
+  FrameLoopOptions& f = s.options;
+  f.openxr = xr::OpenXrRuntime::create();
+  if (o.scale_option && o.scale_option->count() == 0) f.eye_scale = 1.0;
+  f.mirror = xr::MirrorMode::SingleEye;
+  s.input = f.openxr->create_input_backend();
+  if (o.record.empty()) return;
+  io::RecordingHeader h;
+  h.hmd = "openxr";  // no sim profile: a replay uses the Hands layout, as the headset did
+  h.video = video_path.string();
+  const xr::OpenXrSystemInfo& info = f.openxr->info();
+  h.note = "vdfx --runtime openxr: " + info.runtime_name + " " + info.runtime_version + ", " +
+           info.system_name;
+  s.input = xr::create_recording_backend(std::move(s.input), o.record, h);
+}
+
 }  // namespace
 
 void add_loop_options(CLI::App& cli, LoopCli& o) {
+  cli.add_option("--runtime", o.runtime,
+                 "sim (the simulated headset in the window) or openxr (a headset through the "
+                 "active OpenXR runtime: Monado, WiVRn, SteamVR; docs/openxr.md)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"sim", "openxr"}));
   cli.add_option("--hmd", o.hmd, "headset profile name or file (vdfx hmd list)")
       ->capture_default_str();
   cli.add_option("--input", o.input, "sim | hid[:SEL,...] | replay:REC.vdrec.jsonl")
@@ -53,11 +82,12 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
   cli.add_flag("--stats", o.stats,
                "GPU time per stage (video, effects, distortion): medians, "
                "printed every 2 s and at exit");
-  cli.add_option("--scale", o.scale,
-                 "eye buffers at this fraction of the profile's resolution (1 = full; the default "
-                 "keeps llvmpipe interactive)")
-      ->capture_default_str()
-      ->check(finite_range(0.01, 4.0));
+  o.scale_option = cli.add_option("--scale", o.scale,
+                                  "eye buffers at this fraction of the profile's resolution (1 = "
+                                  "full; the default keeps llvmpipe interactive; with --runtime "
+                                  "openxr: of the runtime's recommended size, default 1)")
+                       ->capture_default_str()
+                       ->check(finite_range(0.01, 4.0));
   cli.add_option("--frames,--exit-after-frames", o.frames, "stop after N frames")
       ->check(whole_range(0, std::numeric_limits<std::int64_t>::max()));
   cli.add_option("--screenshot", o.screenshot, "write the mirror of the last frame to this PNG");
@@ -115,6 +145,10 @@ LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path
   io::VideoSourceOptions vo;
   vo.loop = loop_video;
   s.video = io::VideoSource::open(video_path, vo);
+  if (o.runtime == "openxr") {
+    prepare_openxr(o, video_path, s);
+    return s;
+  }
 
   // Which view the window opens on: the desktop view for the sim (a monitor and a mouse) and for
   // replays of sessions recorded in it, a headset mirror otherwise.
@@ -159,6 +193,7 @@ void report_loop(const char* command, const FrameLoopResult& r) {
   std::cerr << command << ": " << r.frames << " frames in " << r.wall_s << " s ("
             << (r.wall_s > 0 ? r.frames / r.wall_s : 0.0) << " frames/s), " << r.late_frames
             << " late (video frame not decoded in time; the previous one stayed on screen)\n";
+  if (!r.end_reason.empty()) std::cerr << command << ": " << r.end_reason << "\n";
 }
 
 }  // namespace vdfx::app

@@ -33,10 +33,14 @@ struct LoopCli {
   double decode_timeout_ms = 0.0;
   std::string bake = "256x128";
   std::string blur = "pyramid";  //!< exact | pyramid (xr::BlurMethod)
+  std::string runtime = "sim";   //!< sim | openxr (docs/openxr.md)
+  /// The --scale option once added (whether the user gave it: with a headset the default is 1).
+  const CLI::Option* scale_option = nullptr;
 };
 
-/// Adds --hmd, --input, --record, --stats, --scale, --frames (alias --exit-after-frames),
-/// --screenshot, --mirror, --fov, --window, --hidden, --no-vsync, --decode-timeout, --bake, --blur.
+/// Adds --runtime, --hmd, --input, --record, --stats, --scale, --frames (alias
+/// --exit-after-frames), --screenshot, --mirror, --fov, --window, --hidden, --no-vsync,
+/// --decode-timeout, --bake, --blur.
 void add_loop_options(CLI::App& cli, LoopCli& o);
 
 struct LoopSetup {
@@ -49,7 +53,9 @@ struct LoopSetup {
 };
 
 /// Loads the profile, opens the video (a still is a one-frame video) and the input backend
-/// (wrapped in the recording decorator with --record). Throws io::InputError naming what is wrong,
+/// (wrapped in the recording decorator with --record); with --runtime openxr, the runtime
+/// (xr::OpenXrRuntime::create: no runtime, headset or OpenGL support is an input error before any
+/// window opens) and its controllers as the input. Throws io::InputError naming what is wrong,
 /// including a --record or --screenshot that is the same file as the video, the profile, the
 /// replayed recording or one of `other_inputs` (the command's sidecar).
 LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video,

@@ -34,7 +34,7 @@ std::set<std::string> needed_libraries(const fs::path& elf) {
 
 /// The libraries the light commands must never make the executable load at start-up.
 const std::regex kMediaLibrary(
-    R"(^lib(avcodec|avformat|avutil|swscale|GL|GLX|EGL|OpenGL|epoxy|glfw|opencv_videoio|opencv_imgcodecs)\.so.*)");
+    R"(^lib(avcodec|avformat|avutil|swscale|GL|GLX|EGL|OpenGL|epoxy|glfw|opencv_videoio|opencv_imgcodecs|openxr_loader)\.so.*)");
 
 TEST(LightExecutable, NeedsNoVideoImageOrGlLibrary) {
   const std::set<std::string> exe = needed_libraries(VDFX_BINARY);
@@ -47,7 +47,7 @@ TEST(LightExecutable, NeedsNoVideoImageOrGlLibrary) {
   std::set<std::string> media_found;
   for (const std::string& lib : needed_libraries(module))
     if (std::regex_match(lib, kMediaLibrary)) media_found.insert(lib.substr(0, lib.find('.')));
-  for (const char* lib : {"libavcodec", "libavformat", "libepoxy", "libglfw"})
+  for (const char* lib : {"libavcodec", "libavformat", "libepoxy", "libglfw", "libopenxr_loader"})
     EXPECT_TRUE(media_found.count(lib)) << module << " does not need " << lib;
 }
 
@@ -83,6 +83,10 @@ TEST(LightExecutable, LightCommandsRunWithoutTheModuleAndMediaOnesAskForIt) {
   }
   EXPECT_GE(light, 4);
   EXPECT_GE(media, 5);
+  // `hmd` is light, but its OpenXR part (GL and the loader) asks for the module.
+  const testing::CommandResult openxr = run_shell(exe.string() + " hmd openxr");
+  EXPECT_EQ(openxr.exit_code, kExitInternal) << openxr.output;
+  EXPECT_NE(openxr.output.find("cannot load the media module"), std::string::npos) << openxr.output;
   // A light command does its whole job alone.
   const std::string demo = std::string(VDFX_SOURCE_DIR) + "/app/demo/interior.vdfx.json";
   const testing::CommandResult v = run_shell(exe.string() + " validate " + demo);
