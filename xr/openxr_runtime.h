@@ -157,6 +157,14 @@ class OpenXrRuntime {
   void end_frame();
   /// A short vibration (xrApplyHapticFeedback) on a hand's controller.
   void haptic_pulse(Hand hand);
+  /// Destroys the session, its spaces and swapchains, with the GL context it was started on
+  /// (which must still exist: the frame loop calls this before closing its window). The
+  /// instance stays; the destructor does this too when it was not done.
+  void end_session();
+
+  /// How often an xr call left another GL context current and vdfx made its own current again
+  /// (SteamVR's habit; docs/openxr.md, "Runtime quirks handled").
+  int context_restores() const;
 
   /// The loop time <-> the runtime's XrTime (valid after the first begin_frame()).
   bool has_epoch() const;

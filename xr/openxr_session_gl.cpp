@@ -147,6 +147,8 @@ void OpenXrRuntime::Impl::destroy_session() {
   xrDestroySession(session);
   session = XR_NULL_HANDLE;
   if (window) restore_context();
+  window = nullptr;  // the session was bound to it; nothing is drawn for OpenXR after this
+  glx_context = nullptr;
 }
 
 void OpenXrRuntime::Impl::handle_event(const XrEventDataBuffer& event) {
@@ -216,6 +218,10 @@ const OpenXrLifecycle& OpenXrRuntime::lifecycle() const {
 void OpenXrRuntime::request_exit() {
   Impl& m = *impl_;
   if (m.lifecycle.request_exit()) xr_check(xrRequestExitSession(m.session), "xrRequestExitSession");
+}
+
+void OpenXrRuntime::end_session() {
+  impl_->destroy_session();
 }
 
 void OpenXrRuntime::session_lost() {
@@ -323,6 +329,10 @@ void OpenXrRuntime::haptic_pulse(Hand hand) {
   v.amplitude = 0.6f;
   xr_check(xrApplyHapticFeedback(m.session, &hi, reinterpret_cast<XrHapticBaseHeader*>(&v)),
            "xrApplyHapticFeedback");
+}
+
+int OpenXrRuntime::context_restores() const {
+  return impl_->context_restores;
 }
 
 bool OpenXrRuntime::has_epoch() const {

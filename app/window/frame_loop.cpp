@@ -90,6 +90,11 @@ struct FrameLoop::Impl {
   bool video_paused = false, video_loop = true;  //!< what the decoder was last told
   Clock::time_point last_stats, last_title;      //!< the last stats line and title update
 
+  ~Impl() {
+    // The session's swapchains are GL objects of this window's context: gone before it is.
+    if (o.openxr) o.openxr->end_session();
+  }
+
   Impl(FrameLoopOptions opts, xr::InputBackend& in, io::VideoSource& v, FrameClient& c)
       : o(std::move(opts)), input(in), video(v), client(c) {
     // The command line checks its option; another caller passing this is a bug.
