@@ -131,6 +131,10 @@ std::vector<SwapchainFormat> parse_swapchain_formats(const std::string& text) {
   return out;
 }
 
+bool opengl_offered_from_environment() {
+  return env("VDFX_TEST_RUNTIME_NO_OPENGL") != "1";
+}
+
 Config read_config_from_environment() {
   Config c;
   c.script_path = env("VDFX_TEST_RUNTIME_SCRIPT");

@@ -47,6 +47,11 @@ struct Config {
 /// Reads the variables; throws std::runtime_error naming the variable and what is wrong.
 Config read_config_from_environment();
 
+/// Whether XR_KHR_opengl_enable is offered (VDFX_TEST_RUNTIME_NO_OPENGL is not 1). The loader
+/// lists the extensions before it creates an instance: that list must not fail on another
+/// variable's bad value, which xrCreateInstance then reports.
+bool opengl_offered_from_environment();
+
 /// Parses one variable's value (exposed for tests).
 CaptureSpec parse_capture_spec(const std::string& text);
 std::vector<SwapchainFormat> parse_swapchain_formats(const std::string& text);

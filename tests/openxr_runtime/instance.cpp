@@ -15,9 +15,9 @@ constexpr XrVersion kMinGlVersion = XR_MAKE_VERSION(3, 3, 0);
 constexpr XrVersion kMaxGlVersion = XR_MAKE_VERSION(4, 6, 0);
 
 /// The extensions offered: OpenGL unless VDFX_TEST_RUNTIME_NO_OPENGL=1 (a runtime without it).
-std::vector<XrExtensionProperties> offered_extensions(const Config& config) {
+std::vector<XrExtensionProperties> offered_extensions(bool opengl) {
   std::vector<XrExtensionProperties> out;
-  if (!config.no_opengl) {
+  if (opengl) {
     XrExtensionProperties p{};
     p.type = XR_TYPE_EXTENSION_PROPERTIES;
     std::strncpy(p.extensionName, XR_KHR_OPENGL_ENABLE_EXTENSION_NAME, XR_MAX_EXTENSION_NAME_SIZE);
@@ -78,7 +78,7 @@ XRAPI_ATTR XrResult XRAPI_CALL xrEnumerateInstanceExtensionProperties(
   constexpr const char* fn = "xrEnumerateInstanceExtensionProperties";
   return guarded(fn, [&] {
     if (layerName) return fail(fn, XR_ERROR_API_LAYER_NOT_PRESENT, "the runtime has no layers");
-    const auto offered = offered_extensions(read_config_from_environment());
+    const auto offered = offered_extensions(opengl_offered_from_environment());
     return two_call(
         fn, capacity, count, properties, offered.size(),
         [&](XrExtensionProperties& p, std::size_t i) {
@@ -109,7 +109,7 @@ XRAPI_ATTR XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* info
       return fail(fn, XR_ERROR_NAME_INVALID, "applicationInfo.applicationName is empty");
     }
     auto inst = make_instance();
-    const auto offered = offered_extensions(inst->config);
+    const auto offered = offered_extensions(!inst->config.no_opengl);
     for (uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
       const std::string name = info->enabledExtensionNames[i];
       bool found = false;
