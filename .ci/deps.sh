@@ -9,11 +9,12 @@ packages=(
   libopencv-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libglfw3-dev libglm-dev libepoxy-dev libstb-dev libhidapi-dev
-  libopenxr-dev libopenxr-loader1 libx11-dev
+  libx11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   fonts-dejavu-core blender-data ffmpeg
   gnuplot-nox python3-jsonschema
   xvfb xauth libgl1-mesa-dri mesa-utils
+  libopenxr-dev libopenxr-loader1 openxr-layer-corevalidation libopenxr-utils
   clang-14 libclang-rt-14-dev llvm-14 clang-format-14
 )
 
