@@ -177,6 +177,39 @@ TEST(BenchCommand, GrainRowsCompareTheShaderStylesAndNameTheMissingReference) {
   }
 }
 
+// The OpenXR knob (GL, the simulated runtime beside the executable in the build tree): the
+// headset's frame and the sim's, both measured, no error (the pixels are OpenXrFrames' tests);
+// and where the runtime is not beside the executable, the row says what it needs.
+TEST(BenchCommand, OpenXrRowTimesTheHeadsetFrameBesideTheSims) {
+  const auto dir = test_dir();
+  const auto r =
+      run_vdfx("bench --quick --filter '^openxr\\.' --json " + (dir / "r.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(schema_problem(dir / "r.json"), "");
+  const auto j = nlohmann::json::parse(read_file(dir / "r.json"));
+  ASSERT_EQ(j["rows"].size(), 1u);
+  const auto& row = j["rows"][0];
+  ASSERT_EQ(row["status"], "ok") << row.dump();
+  EXPECT_GT(row["time"]["median_s"].get<double>(), 0.0);
+  EXPECT_GT(row["peer"]["median_s"].get<double>(), 0.0);
+  EXPECT_TRUE(row["error"]["max"].is_null());
+
+  // A copy of the executables without the build tree's runtime beside them.
+  const auto alone = dir / "alone";
+  std::filesystem::create_directories(alone);
+  for (const char* f : {"vdfx", "libvdfx_media.so"})
+    std::filesystem::copy_file(std::filesystem::path(VDFX_BINARY).parent_path() / f, alone / f);
+  const std::string cmd = (alone / "vdfx").string() +
+                          " bench --quick --filter '^openxr\\.' --json " +
+                          (dir / "s.json").string() + " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const auto k = nlohmann::json::parse(read_file(dir / "s.json"));
+  ASSERT_EQ(k["rows"].size(), 1u);
+  EXPECT_EQ(k["rows"][0]["status"], "skipped");
+  EXPECT_NE(k["rows"][0]["reason"].get<std::string>().find("simulated OpenXR runtime"),
+            std::string::npos);
+}
+
 // The video knobs (a generated clip): vdfx's decode path hands on exactly the code values
 // FFmpeg's plain loop decodes, every frame in order; the baked export's grid stays within one
 // 8-bit step of the exact per-pixel render (with a step above 1: the grid is what is compared).
