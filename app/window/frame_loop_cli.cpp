@@ -51,6 +51,11 @@ void prepare_openxr(const LoopCli& o, const std::filesystem::path& video_path, L
     throw UsageError("--input " + o.input +
                      ": with --runtime openxr the input is the headset's controllers (replay a "
                      "headset recording in the sim: --runtime sim --input replay:REC)");
+  for (const CLI::Option* opt : o.sim_only)
+    if (opt->count() > 0)
+      throw UsageError(opt->get_name() +
+                       " does nothing with --runtime openxr: the runtime gives the views and "
+                       "paces the frames, and the window mirrors the left eye (docs/openxr.md)");
   FrameLoopOptions& f = s.options;
   f.openxr = xr::OpenXrRuntime::create();
   if (o.scale_option && o.scale_option->count() == 0) f.eye_scale = 1.0;
@@ -74,8 +79,9 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
                  "active OpenXR runtime: Monado, WiVRn, SteamVR; docs/openxr.md)")
       ->capture_default_str()
       ->check(CLI::IsMember({"sim", "openxr"}));
-  cli.add_option("--hmd", o.hmd, "headset profile name or file (vdfx hmd list)")
-      ->capture_default_str();
+  o.sim_only.push_back(
+      cli.add_option("--hmd", o.hmd, "headset profile name or file (vdfx hmd list)")
+          ->capture_default_str());
   cli.add_option("--input", o.input, "sim | hid[:SEL,...] | replay:REC.vdrec.jsonl")
       ->capture_default_str();
   cli.add_option("--record", o.record, "record the input to this .vdrec.jsonl file");
@@ -91,21 +97,25 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
   cli.add_option("--frames,--exit-after-frames", o.frames, "stop after N frames")
       ->check(whole_range(0, std::numeric_limits<std::int64_t>::max()));
   cli.add_option("--screenshot", o.screenshot, "write the mirror of the last frame to this PNG");
-  cli.add_option("--mirror", o.mirror,
-                 "what the window shows: desktop (one undistorted view for a monitor), pre "
-                 "(headset mirror: pre-distorted panels), lens (through the lens), eye (left eye, "
-                 "undistorted); auto: desktop for the sim and its recordings, else pre. Keys 1-4 "
-                 "switch while running")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"auto", "desktop", "pre", "lens", "eye"}));
-  cli.add_option("--fov", o.fov, "horizontal field of view of the desktop view, degrees")
-      ->capture_default_str()
-      ->check(finite_range(20.0, 160.0));
+  o.sim_only.push_back(
+      cli.add_option(
+             "--mirror", o.mirror,
+             "what the window shows: desktop (one undistorted view for a monitor), pre "
+             "(headset mirror: pre-distorted panels), lens (through the lens), eye (left eye, "
+             "undistorted); auto: desktop for the sim and its recordings, else pre. Keys 1-4 "
+             "switch while running")
+          ->capture_default_str()
+          ->check(CLI::IsMember({"auto", "desktop", "pre", "lens", "eye"})));
+  o.sim_only.push_back(
+      cli.add_option("--fov", o.fov, "horizontal field of view of the desktop view, degrees")
+          ->capture_default_str()
+          ->check(finite_range(20.0, 160.0)));
   cli.add_option("--window", o.window, "window size WxH")
       ->capture_default_str()
       ->check(window_problem);
   cli.add_flag("--hidden", o.hidden, "no visible window (offscreen; --screenshot still works)");
-  cli.add_flag("--no-vsync", o.no_vsync, "do not wait for the display's vsync (live input)");
+  o.sim_only.push_back(
+      cli.add_flag("--no-vsync", o.no_vsync, "do not wait for the display's vsync (live input)"));
   cli.add_option("--decode-timeout", o.decode_timeout_ms,
                  "ms a frame may wait for the decoder (0: never wait, show the previous frame)")
       ->capture_default_str()

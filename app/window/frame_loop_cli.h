@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/window/frame_loop.h"
 #include "io/output_path.h"
@@ -36,6 +37,9 @@ struct LoopCli {
   std::string runtime = "sim";   //!< sim | openxr (docs/openxr.md)
   /// The --scale option once added (whether the user gave it: with a headset the default is 1).
   const CLI::Option* scale_option = nullptr;
+  /// Options of the simulated headset's window that do nothing with --runtime openxr (--hmd,
+  /// --mirror, --fov, --no-vsync): given together with it, a usage error.
+  std::vector<const CLI::Option*> sim_only;
 };
 
 /// Adds --runtime, --hmd, --input, --record, --stats, --scale, --frames (alias

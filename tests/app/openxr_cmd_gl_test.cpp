@@ -171,6 +171,8 @@ TEST_F(OpenXrCmd, EachErrorIsAMessageWithItsExitCode) {
        "offers no swapchain format vdfx can render to (it offers: GL_DEPTH_COMPONENT24"},
       {"input", "VDFX_TEST_RUNTIME_CAPTURE", "none", "--input hid", 2,
        "with --runtime openxr the input is the headset's controllers"},
+      {"sim option", "VDFX_TEST_RUNTIME_CAPTURE", "none", "--fov 90", 2,
+       "--fov does nothing with --runtime openxr"},
   };
   for (const Row& row : rows) {
     SCOPED_TRACE(row.name);
