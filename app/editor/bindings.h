@@ -1,16 +1,16 @@
 /// @file
-/// @brief The one binding table of the editor: which controller action runs which command, and
-/// the thresholds that make analog controls buttons (xr::kPressThreshold / kReleaseThreshold,
-/// also given to the UI pointers). The sim's keys for each action are in docs/input.md.
+/// @brief The one binding table of the editor: which controller action runs which command. The
+/// thresholds that make analog controls buttons are xr's (xr::kPressThreshold /
+/// kReleaseThreshold), and xr::ActionEdges is the one edge detector: the commands and the UI
+/// pointers both act on its edges. The sim's keys for each action are in docs/input.md.
 ///
-/// The right trigger is the pointer's (ui::Pointer, with these thresholds): on a panel it is the
-/// UI; pressed on nothing it previews a new keyframe, which its release places. The commands run
-/// in this order every frame.
+/// The right trigger is also the right pointer's (ui::Pointer): on a panel it is the UI; pressed
+/// on nothing it previews a new keyframe, which its release places. The commands run in this
+/// order every frame.
 #pragma once
 
 #include <array>
 
-#include "ui/interaction.h"
 #include "xr/actions.h"
 
 namespace vdfx::app {
@@ -60,25 +60,6 @@ inline bool fires(const Binding& b, const xr::ActionEdges& e) {
     case When::Up: return !e.is_down(b.hand, b.control);
   }
   return false;
-}
-
-/// The same for a control whose state the UI pointer keeps (the right trigger).
-inline bool fires(const Binding& b, const ui::Pointer& p) {
-  switch (b.when) {
-    case When::Pressed: return p.trigger_pressed();
-    case When::Released: return p.trigger_released();
-    case When::Down: return p.trigger_down();
-    case When::Up: return !p.trigger_down();
-  }
-  return false;
-}
-
-/// The UI pointers use the same thresholds for their trigger as the action edges.
-inline ui::PointerSettings pointer_settings() {
-  ui::PointerSettings s;
-  s.press_threshold = xr::kPressThreshold;
-  s.release_threshold = xr::kReleaseThreshold;
-  return s;
 }
 
 }  // namespace vdfx::app
