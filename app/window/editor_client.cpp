@@ -33,7 +33,7 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
   }
   editor_.set_loop_status(fps_, info.shown_video_frame < 0);
   if (thumbnails_)
-    if (auto thumbs = thumbnails_->take()) editor_.ui().strip->set_thumbnails(std::move(*thumbs));
+    if (auto thumbs = thumbnails_->take()) editor_.set_thumbnails(std::move(*thumbs));
   editor_.update(input, t);
   layers_.update(editor_);
   info.video_frame = editor_.frame();
@@ -206,7 +206,7 @@ void EditorClient::add_pointer_quads(std::vector<xr::QuadLayer>& out) {
     const glm::dvec3 origin = hs.aim.position, dir = xr::forward(hs.aim);
     // The dot sits where the ray meets a panel, else far along it, over the video.
     const bool on_panel = ptr.hit().has_value();
-    if (h == xr::Hand::Left && editor_.ui().layout == PanelLayout::Desktop)
+    if (h == xr::Hand::Left && editor_.ui().layout() == PanelLayout::Desktop)
       continue;  // the sim's resting hand
     glm::dvec3 end = on_panel ? ptr.hit()->panel->world_of_pixel(ptr.hit()->pixel)
                               : origin + drawing_.far_m * dir;
