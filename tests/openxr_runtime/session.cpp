@@ -61,9 +61,15 @@ void begin_exit(Instance& inst, Session& s) {
 
 void destroy_session(Instance& inst) {
   Session& s = *inst.session;
-  if (!s.swapchains.empty() || s.own_context) {
+  const bool kept = s.recorder && s.recorder->kept();
+  if (!s.swapchains.empty() || s.own_context || kept) {
     {
       GlContextScope scope(s);
+      if (kept) {
+        for (auto& layer : s.recorder->kept()->layers) {
+          for (auto& view : layer.views) resolve_copy(view);
+        }
+      }
       for (auto& sc : s.swapchains) delete_swapchain_textures(*sc);
     }
     destroy_own_context(s);
