@@ -3,6 +3,7 @@
 /// SYNCHRONIZED at the first xrWaitFrame, VISIBLE and FOCUSED once a frame is submitted,
 /// STOPPING when the app or the script asks to leave, then IDLE and EXITING after xrEndSession;
 /// LOSS_PENDING on request. The events go through the instance's queue (xrPollEvent).
+#include <algorithm>
 #include <cstring>
 
 #include "tests/openxr_runtime/capture.h"
