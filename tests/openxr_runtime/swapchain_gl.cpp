@@ -183,7 +183,9 @@ CapturedImage read_back(const Swapchain& sc, std::uint32_t image, std::uint32_t 
 
 GLuint copy_region(const Swapchain& sc, std::uint32_t image, std::uint32_t array_index,
                    const XrRect2Di& rect) {
-  if (epoxy_gl_version() < 43 && !epoxy_has_gl_extension("GL_ARB_copy_image")) return 0;
+  const bool can = epoxy_gl_version() >= 43 || (epoxy_has_gl_extension("GL_ARB_copy_image") &&
+                                                epoxy_has_gl_extension("GL_ARB_texture_storage"));
+  if (!can) return 0;
   GLint previous = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
   GLuint copy = 0;
