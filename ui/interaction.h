@@ -41,26 +41,36 @@ struct PanelHit {
 /// The nearest visible panel hit from the front within its bounds.
 std::optional<PanelHit> hit_panels(std::span<Panel* const> panels, const Ray& ray);
 
+/// A button as the caller's edge detector sees it this frame (vdfx: xr::ActionEdges, whose
+/// thresholds, hysteresis and taps kept between polls are the only ones; the pointer detects
+/// nothing itself). A tap between two frames is pressed in one update and released in the next.
+struct ButtonEdges {
+  bool down = false;      //!< down in this update
+  bool pressed = false;   //!< went down since the last update
+  bool released = false;  //!< went up since the last update
+};
+
 /// One controller as the UI sees it.
 struct PointerInput {
   Ray ray;
-  double trigger = 0.0;        //!< [0, 1]
+  ButtonEdges trigger;
   glm::dvec2 thumbstick{0.0};  //!< [-1, 1]^2, +x right, +y up
   /// Fine adjustment held (the other hand's grip; Shift in the sim): a drag moves the widget by
   /// PointerSettings::fine_factor of the pointer's motion, without a jump when it starts or ends.
   bool fine = false;
 };
 
-/// Press / release thresholds with hysteresis, and the thumbstick dead zone.
+/// The thumbstick's dead zone and repeat, and the fine drag's gain.
 struct PointerSettings {
-  double press_threshold = 0.55;
-  double release_threshold = 0.45;
   double stick_dead_zone = 0.2;
   double stick_repeat_delay_s = 0.35;  //!< a push steps once; held this long it moves on
   double fine_factor = 0.1;            //!< drag gain while PointerInput::fine is held
 };
 
-/// The interaction state of one pointer (one per hand).
+/// The interaction state of one pointer (one per hand). It refers to the widgets it hovers,
+/// holds and focuses directly; a widget counts only while its panel is among those given to
+/// update() (a hand's reach can change), and must live as long as it is referred to (panels
+/// never remove widgets).
 class Pointer {
  public:
   explicit Pointer(PointerSettings s = {}) : settings_(s) {}
@@ -69,33 +79,33 @@ class Pointer {
   /// Returns the events of this frame in the order they happened.
   std::vector<Event> update(std::span<Panel* const> panels, const PointerInput& in, double dt);
 
-  /// Trigger state after hysteresis.
-  bool trigger_down() const { return down_; }
-  /// The trigger went down / up in the last update.
-  bool trigger_pressed() const { return down_ && !was_down_; }
-  bool trigger_released() const { return !down_ && was_down_; }
   /// Current hit (nullopt when the ray misses every panel).
   const std::optional<PanelHit>& hit() const { return hit_; }
-  /// Panel and widget ids under the pointer / held / focused ("" when none).
-  const std::string& hovered_widget() const { return hover_.widget; }
-  const std::string& pressed_widget() const { return press_.widget; }
-  const std::string& focused_widget() const { return focus_.widget; }
-  const std::string& focused_panel() const { return focus_.panel; }
+  /// The widget under the pointer / held by its trigger / focused (null when none).
+  const Widget* hovered() const { return hover_.widget; }
+  const Widget* pressed() const { return press_.widget; }
+  const Widget* focused() const { return focus_.widget; }
   /// Drops focus (e.g. when the editor closes a panel).
-  void clear_focus(std::span<Panel* const> panels);
+  void clear_focus();
 
  private:
+  /// A widget and the panel holding it.
   struct Ref {
-    std::string panel, widget;
-    bool empty() const { return widget.empty(); }
+    Panel* panel = nullptr;
+    Widget* widget = nullptr;
+    bool empty() const { return widget == nullptr; }
     bool operator==(const Ref&) const = default;
   };
-  static Panel* panel_of(std::span<Panel* const> panels, const std::string& id);
-  static Widget* widget_of(std::span<Panel* const> panels, const Ref& r);
+  /// One update's working set: the panels in reach and the events so far.
+  struct Frame;
+  static Widget* in_reach(std::span<Panel* const> panels, const Ref& r);
+  void hover(Frame& f);
+  void press(Frame& f);
+  void drag(Frame& f);
+  void release(Frame& f);
+  void stick(Frame& f);
 
   PointerSettings settings_;
-  bool down_ = false;
-  bool was_down_ = false;  //!< down_ before the last update
   std::optional<PanelHit> hit_;
   Ref hover_, press_, focus_;
   glm::dvec2 drag_start_value_{0.0};

@@ -48,9 +48,9 @@ enum class Control : std::uint8_t {
 };
 inline constexpr int kControlCount = 10;
 
-/// The one binding table of thresholds: an analog control (trigger, squeeze, a thumbstick axis)
-/// goes down above kPressThreshold and up again below kReleaseThreshold. ui::PointerSettings
-/// uses the same pair for the trigger.
+/// The one table of thresholds: an analog control (trigger, squeeze, a thumbstick axis) goes
+/// down above kPressThreshold and up again below kReleaseThreshold. ActionEdges is the only edge
+/// detector: the UI pointers take the trigger's edges from it (ui::ButtonEdges).
 inline constexpr double kPressThreshold = 0.55;
 inline constexpr double kReleaseThreshold = 0.45;
 

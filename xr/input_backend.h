@@ -85,5 +85,8 @@ std::unique_ptr<InputBackend> create_recording_backend(std::unique_ptr<InputBack
 
 /// The sim bindings as a two-column text table (for --help and docs/input.md).
 std::string sim_bindings_text(const SimConfig& config);
+/// What presses one control in the sim, as sim_bindings_text names it ("Space", "left mouse
+/// button"); empty when nothing does. For help texts that name the sim's keys.
+std::vector<std::string> sim_inputs_of(Hand hand, Control control, const SimConfig& config);
 
 }  // namespace vdfx::xr

@@ -260,4 +260,14 @@ std::string sim_bindings_text(const SimConfig& config) {
   return out.str();
 }
 
+std::vector<std::string> sim_inputs_of(Hand hand, Control control, const SimConfig& config) {
+  std::vector<std::string> out;
+  const Hand main = config.left_handed ? Hand::Left : Hand::Right;
+  if (hand == main && control == Control::Trigger) out.emplace_back("left mouse button");
+  for (const KeyBinding& b : kKeyBindings)
+    if (b.control == control && hand_of(b.role, config.left_handed) == hand)
+      out.emplace_back(key_name(b.key));
+  return out;
+}
+
 }  // namespace vdfx::xr

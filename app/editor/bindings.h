@@ -1,16 +1,19 @@
 /// @file
 /// @brief The one binding table of the editor: which controller action runs which command, and
-/// the thresholds that make analog controls buttons (xr::kPressThreshold / kReleaseThreshold,
-/// also given to the UI pointers). The sim's keys for each action are in docs/input.md.
+/// what it does (the help text of `vdfx edit --help` and docs/editor.md is generated from it,
+/// bindings_help_text()). The thresholds that make analog controls buttons are xr's
+/// (xr::kPressThreshold / kReleaseThreshold), and xr::ActionEdges is the one edge detector: the
+/// commands and the UI pointers both act on its edges.
 ///
-/// The right trigger is the pointer's (ui::Pointer, with these thresholds): on a panel it is the
-/// UI; pressed on nothing it previews a new keyframe, which its release places. The commands run
-/// in this order every frame.
+/// The right trigger is also the right pointer's (ui::Pointer): on a panel it is the UI; pressed
+/// on nothing it previews a new keyframe, which its release places. The commands run in this
+/// order every frame.
 #pragma once
 
 #include <array>
+#include <string>
+#include <string_view>
 
-#include "ui/interaction.h"
 #include "xr/actions.h"
 
 namespace vdfx::app {
@@ -36,19 +39,29 @@ struct Binding {
   xr::Control control;
   When when;
   EditorCommand command;
+  std::string_view does;  //!< for the help text
 };
 
 inline constexpr std::array<Binding, 10> kBindings{{
-    {xr::Hand::Right, xr::Control::Squeeze, When::Pressed, EditorCommand::Grab},
-    {xr::Hand::Right, xr::Control::Squeeze, When::Up, EditorCommand::GrabRelease},
-    {xr::Hand::Right, xr::Control::StickClick, When::Pressed, EditorCommand::Deselect},
-    {xr::Hand::Right, xr::Control::Trigger, When::Pressed, EditorCommand::Preview},
-    {xr::Hand::Right, xr::Control::Trigger, When::Up, EditorCommand::Place},
-    {xr::Hand::Right, xr::Control::Secondary, When::Down, EditorCommand::Unaltered},
-    {xr::Hand::Right, xr::Control::Primary, When::Pressed, EditorCommand::Delete},
-    {xr::Hand::Left, xr::Control::Primary, When::Pressed, EditorCommand::Undo},
-    {xr::Hand::Left, xr::Control::Secondary, When::Pressed, EditorCommand::Redo},
-    {xr::Hand::Left, xr::Control::Squeeze, When::Down, EditorCommand::Fine},
+    {xr::Hand::Right, xr::Control::Squeeze, When::Pressed, EditorCommand::Grab,
+     "grab: hold the selected keyframe (without a selection, the one nearest the view); it "
+     "follows the view and the playhead"},
+    {xr::Hand::Right, xr::Control::Squeeze, When::Up, EditorCommand::GrabRelease,
+     "let go: the held keyframe moves there (one undo step)"},
+    {xr::Hand::Right, xr::Control::StickClick, When::Pressed, EditorCommand::Deselect,
+     "deselect (a grab in progress is cancelled); so does the Deselect button"},
+    {xr::Hand::Right, xr::Control::Trigger, When::Pressed, EditorCommand::Preview,
+     "on no panel: preview the current effect's values at the view centre (the reticle)"},
+    {xr::Hand::Right, xr::Control::Trigger, When::Up, EditorCommand::Place,
+     "let go: a keyframe is placed there, at the current frame"},
+    {xr::Hand::Right, xr::Control::Secondary, When::Down, EditorCommand::Unaltered,
+     "the unaltered film (no effects) while held"},
+    {xr::Hand::Right, xr::Control::Primary, When::Pressed, EditorCommand::Delete,
+     "delete the selected keyframe, else the one nearest the view"},
+    {xr::Hand::Left, xr::Control::Primary, When::Pressed, EditorCommand::Undo, "undo"},
+    {xr::Hand::Left, xr::Control::Secondary, When::Pressed, EditorCommand::Redo, "redo"},
+    {xr::Hand::Left, xr::Control::Squeeze, When::Down, EditorCommand::Fine,
+     "while held, a drag moves the widget by a tenth of the pointer's motion"},
 }};
 
 /// Whether a binding fires for these edges.
@@ -62,23 +75,26 @@ inline bool fires(const Binding& b, const xr::ActionEdges& e) {
   return false;
 }
 
-/// The same for a control whose state the UI pointer keeps (the right trigger).
-inline bool fires(const Binding& b, const ui::Pointer& p) {
-  switch (b.when) {
-    case When::Pressed: return p.trigger_pressed();
-    case When::Released: return p.trigger_released();
-    case When::Down: return p.trigger_down();
-    case When::Up: return !p.trigger_down();
-  }
-  return false;
-}
+/// What the UI pointers do with a hand's controls (EditorControls::pointers): no command, the
+/// panels' own events. Listed for the help text beside kBindings.
+struct PointerUse {
+  xr::Hand hand;
+  xr::Control control;  //!< StickUp stands for the whole thumbstick
+  std::string_view does;
+};
 
-/// The UI pointers use the same thresholds for their trigger as the action edges.
-inline ui::PointerSettings pointer_settings() {
-  ui::PointerSettings s;
-  s.press_threshold = xr::kPressThreshold;
-  s.release_threshold = xr::kReleaseThreshold;
-  return s;
-}
+inline constexpr std::array<PointerUse, 4> kPointerUses{{
+    {xr::Hand::Right, xr::Control::Trigger,
+     "on a panel: use it (menus, sliders, buttons, the timeline, minimap dots)"},
+    {xr::Hand::Left, xr::Control::Trigger, "the same, on the panels not held by the left hand"},
+    {xr::Hand::Right, xr::Control::StickUp,
+     "one step of the slider, pad, menu or timeline under the pointer, else the focused one; "
+     "held, it moves on"},
+    {xr::Hand::Left, xr::Control::StickUp, "the same for the left hand's pointer"},
+}};
+
+/// The editor's controls as text (`vdfx edit --help`, docs/editor.md), one row per binding and
+/// pointer use, generated from kBindings and kPointerUses, with the sim's keys in brackets.
+std::string bindings_help_text();
 
 }  // namespace vdfx::app

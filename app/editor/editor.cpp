@@ -1,6 +1,7 @@
 /// @file
-/// @brief Editor: the frame's conductor (input -> commands and panel events -> the document and
-/// the pending edit -> panels and visualizations), the playhead, the selection and the grab.
+/// @brief Editor: the frame's conductor (input -> commands and panel events -> actions -> the
+/// document and the pending edit -> visualizations -> one view on the panels), the playhead and
+/// the actions.
 #include "app/editor/editor.h"
 
 #include <algorithm>
@@ -38,15 +39,13 @@ Editor::Editor(io::Sidecar sidecar, DocumentOptions document_options, EditorOpti
   select_effect(EffectType::Exposure);
 }
 
-void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
+double Editor::advance(std::int64_t t_ns) {
   const double dt =
       play_.last_t ? std::max<double>(0.0, static_cast<double>(t_ns - *play_.last_t) * 1e-9) : 0.0;
   play_.last_t = t_ns;
   play_.now = t_ns;
-  input_ = input;
   if (!status_.message.empty() && t_ns - status_.message_t > kMessageLifetimeNs)
     status_.message.clear();
-  if (input.head_tracked) view_ = xr::forward_direction(input.head);
   if (play_.playing) {
     // Frames elapsed since play was pressed, from the elapsed time itself (adding two rounded
     // frame start times could land a nanosecond short of a frame).
@@ -54,6 +53,14 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
     const std::int64_t f = play_.f0 + io::frame_at_time(t_ns - play_.t0, fps_);
     play_.frame = options_.loop ? ((f % n) + n) % n : std::clamp<std::int64_t>(f, 0, n - 1);
   }
+  return dt;
+}
+
+void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
+  const double dt = advance(t_ns);
+  input_ = input;
+  if (input.head_tracked) view_ = xr::forward_direction(input.head);
+  updating_ = true;
   panels_.place(input);
   const std::vector<ui::Event> events = controls_.pointers(input, panels_, dt);
   validate_selection();  // the document may have been edited from outside (tests, tools)
@@ -63,8 +70,13 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
   if (status_.look_target && angle_deg(*status_.look_target, view_) < 5.0)
     status_.look_target.reset();
   sync_pending();
-  show_editor_state(*this, panels_);
-  VisualizationInput vi{effect_,      view_, play_.frame, sel_.index, selected_preview(),
+  visuals_.refresh(doc_, visualization_input());
+  updating_ = false;
+  show();
+}
+
+VisualizationInput Editor::visualization_input() const {
+  VisualizationInput vi{effect_,      view_, play_.frame, selected_, selected_preview(),
                         previewing(), 90.0,  90.0};
   if (options_.layout == PanelLayout::Desktop) {
     const DesktopViewport& v = panels_.viewport();
@@ -73,7 +85,43 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
         2.0 * std::atan(std::tan(0.5 * v.hfov_deg * effects::kDegToRad) * v.height / v.width) *
         effects::kRadToDeg;
   }
-  visuals_.refresh(doc_, vi, panels_);
+  return vi;
+}
+
+EditorView Editor::view() const {
+  EditorView v;
+  v.effect = effect_;
+  v.values = widget_values();
+  const effects::FlareEffect flare = doc_.flare();
+  v.flare_style = flare.style;
+  v.auto_light = std::holds_alternative<effects::AutoLight>(flare.light);
+  v.grain_style = doc_.grain().style;
+  const auto s = doc_.interpolation(effect_);
+  v.exponent = s.exponent;
+  v.time_scale_deg_per_s = effects::deg_per_s_from_time_scale(s.time_scale);
+  v.can_undo = doc_.undo_stack().can_undo();
+  v.can_redo = doc_.undo_stack().can_redo();
+  v.selected = selected_;
+  v.keyframe_count = doc_.keyframes(effect_).size();
+  v.grabbing = grabbing();
+  v.autosave = autosave_status();
+  v.playing = play_.playing;
+  v.frame = play_.frame;
+  v.fps = doc_.video().fps;
+  v.thumbnails = &thumbnails_.images;
+  v.thumbnails_version = thumbnails_.version;
+  v.status = status_text();
+  v.hud_line = hud_text();
+  v.hud_message = hud_message();
+  v.show_track_plot = views_.track_plot;
+  v.show_minimap = views_.minimap;
+  v.timeline_locked = views_.timeline_locked;
+  v.visuals = &visuals_.data();
+  return v;
+}
+
+void Editor::show() {
+  if (!updating_) panels_.show(view());
 }
 
 void Editor::run(EditorCommand c) {
@@ -125,28 +173,28 @@ std::shared_ptr<const effects::RbfInterpolator> Editor::interpolant(EditTarget t
 }
 
 void Editor::sync_pending() {
-  PendingEdit* p = doc_.pending();
-  if (!p) return;
-  if (!p->moved())
-    p->set_key({view_, play_.frame, doc_.params(effect_)});
-  else if (const auto k = selected_preview())
-    p->set_key(*k);
+  if (PendingEdit* p = doc_.pending()) p->follow(view_, play_.frame);
 }
 
 const std::vector<double>& Editor::widget_values() const {
   const auto& ks = doc_.keyframes(effect_);
-  return sel_.index && *sel_.index < ks.size() ? ks[*sel_.index].params : doc_.params(effect_);
+  return selected_ && *selected_ < ks.size() ? ks[*selected_].params : doc_.params(effect_);
 }
 
 void Editor::set_viewport(const DesktopViewport& v) {
   if (v == panels_.viewport()) return;
   panels_.set_viewport(v);
-  show_editor_state(*this, panels_);
+  show();
 }
 
 void Editor::set_loop_status(double frames_per_second, bool video_loading) {
   status_.loop_fps = frames_per_second;
   status_.video_loading = video_loading;
+}
+
+void Editor::set_thumbnails(std::vector<cv::Mat> thumbnails) {
+  thumbnails_.images = std::move(thumbnails);
+  ++thumbnails_.version;
 }
 
 bool Editor::finish() {
@@ -160,14 +208,13 @@ void Editor::say(std::string message) {
 
 void Editor::select_effect(EditTarget type) {
   if (type != effect_) {
-    sel_.index.reset();
+    selected_.reset();
     doc_.cancel_pending();  // a grab of the old effect's keyframe is cancelled
   } else if (previewing()) {
     doc_.cancel_pending();
   }
   effect_ = type;
-  panels_.show_effect(type);
-  show_editor_state(*this, panels_);
+  show();
 }
 
 void Editor::set_flare_style(effects::FlareStyle style) {
@@ -195,6 +242,47 @@ void Editor::set_grain_style(effects::GrainStyle style) {
 void Editor::set_chosen_params(std::vector<double> params) {
   doc_.set_params(effect_, std::move(params));
   sync_pending();
+}
+
+void Editor::set_widget_values(std::vector<double> values) {
+  if (selected_)
+    set_selected_params(std::move(values));
+  else
+    set_chosen_params(std::move(values));
+}
+
+void Editor::set_exponent(double exponent) {
+  auto s = doc_.interpolation(effect_);
+  s.exponent = exponent;
+  doc_.set_interpolation(effect_, s);
+}
+
+void Editor::set_time_scale_deg_per_s(double deg_per_s) {
+  auto s = doc_.interpolation(effect_);
+  s.time_scale = effects::time_scale_from_deg_per_s(deg_per_s);
+  doc_.set_interpolation(effect_, s);
+}
+
+void Editor::begin_gesture(const std::string& label) {
+  doc_.begin_group(label);
+}
+
+void Editor::end_gesture() {
+  doc_.end_group();
+}
+
+void Editor::lock_timeline(bool locked) {
+  views_.timeline_locked = locked;
+  panels_.lock_timeline(locked);
+  show();
+}
+
+void Editor::show_track_plot(bool on) {
+  views_.track_plot = on;
+}
+
+void Editor::show_minimap(bool on) {
+  views_.minimap = on;
 }
 
 void Editor::set_playing(bool on) {
@@ -227,17 +315,15 @@ std::optional<Direction> Editor::jump_to_keyframe(int step) {
 }
 
 bool Editor::delete_nearest() {
-  if (sel_.index) {
-    const std::size_t i = *sel_.index;
-    sel_.index.reset();
+  if (selected_) {
+    const std::size_t i = *selected_;
+    selected_.reset();
     if (grabbing()) doc_.cancel_pending();
     doc_.remove_keyframe(effect_, i);
     say("deleted the selected keyframe");
     return true;
   }
-  const auto& ks = doc_.keyframes(effect_);
-  const auto i = nearest_keyframe(ks, view_, play_.frame, doc_.interpolation(effect_).time_scale,
-                                  doc_.video().fps);
+  const auto i = nearest_to_view();
   if (!i) {
     say("no keyframe to delete");
     return false;
@@ -276,7 +362,9 @@ bool Editor::redo() {
 }
 
 bool Editor::wait_for_visualizations(std::chrono::milliseconds timeout) {
-  return visuals_.wait(timeout, effect_, panels_);
+  const bool current = visuals_.wait(timeout, effect_);
+  show();
+  return current;
 }
 
 }  // namespace vdfx::app

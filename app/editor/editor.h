@@ -7,17 +7,15 @@
 /// for the quad layers and status_text() for the window title. Time is passed in, never read, so
 /// replay is exact.
 ///
-/// The editor is the conductor of a few parts (docs/editor.md has the picture):
-///   EditorControls (app/editor/editor_controls.h): the UI pointers and the binding table ->
-///   commands; panel_binding (app/editor/panel_binding.h): UI events -> editor actions, the
-///   document -> widgets; VisualizationCache (app/editor/visualization_cache.h): minimap, track
-///   plot and markers, recomputed
-///     when the document, the pending edit, the effect or the frame change;
-///   Document (app/editor/document.h) with its PendingEdit (app/editor/pending_edit.h): the
-///   keyframe being
-///     placed or held is part of the model, and its interpolant is what the preview shows.
-/// What stays here: the playhead, the view, the current effect, the selection and how a held
-/// keyframe follows the view and the playhead, and the messages.
+/// One way round (docs/editor.md, "Shape", has the picture): EditorControls
+/// (app/editor/editor_controls.h) turns the input's edges into UI events and the binding table's
+/// commands; panel_binding (app/editor/panel_binding.h) turns each UI event into a call of one
+/// of the actions below; the actions edit the Document (app/editor/document.h) and its
+/// PendingEdit (app/editor/pending_edit.h: the keyframe being placed or held, with the whole
+/// grab); VisualizationCache (app/editor/visualization_cache.h) computes the plot, minimap and
+/// markers as data; and once a frame view() gathers it all into one EditorView that
+/// EditorPanels::show writes onto the widgets. What stays here: the playhead, the view, the
+/// current effect, the selection, what the views panel shows, and the messages.
 #pragma once
 
 #include <chrono>
@@ -31,6 +29,7 @@
 #include "app/editor/document.h"
 #include "app/editor/editor_controls.h"
 #include "app/editor/editor_panels.h"
+#include "app/editor/editor_view.h"
 #include "app/editor/visualization_cache.h"
 #include "effects/effect_types.h"
 #include "io/frame_time.h"
@@ -66,6 +65,10 @@ class Editor {
                                        std::int64_t frame) const;
   /// The panels for quad layers, with world poses (Panel::pose()) and textures (Panel::texture()).
   std::vector<ui::Panel*> panels() { return panels_.all(); }
+  /// One of them by id (kEffectPanelId, ...), or null.
+  ui::Panel* panel(std::string_view id) { return panels_.panel(id); }
+  /// Everything the panels show, as of now (update() shows it once a frame).
+  EditorView view() const;
   std::string status_text() const;
   /// The heads-up line (Desktop): frame, time, heading, effect, selection, frame rate.
   std::string hud_text() const;
@@ -80,7 +83,7 @@ class Editor {
   /// The selected keyframe is held (right squeeze).
   bool grabbing() const { return doc_.pending() && doc_.pending()->moved(); }
   /// The current effect's selected keyframe (index into its keyframes), if any.
-  const std::optional<std::size_t>& selected_keyframe() const { return sel_.index; }
+  const std::optional<std::size_t>& selected_keyframe() const { return selected_; }
   /// While grabbing: where the held keyframe would land now (its values included), else the
   /// selected keyframe as it is; nullopt without a selection.
   std::optional<effects::Keyframe> selected_preview() const;
@@ -104,6 +107,8 @@ class Editor {
   /// What the frame loop measures, for the heads-up line: frames per second, and whether the
   /// video is still loading (no frame decoded yet).
   void set_loop_status(double frames_per_second, bool video_loading);
+  /// Video thumbnails for the timeline strip (ThumbnailWorker's), shown from the next frame.
+  void set_thumbnails(std::vector<cv::Mat> thumbnails);
 
   // ---- actions (the bindings and the panels call these; so can tests)
   void select_effect(EditTarget target);
@@ -116,6 +121,17 @@ class Editor {
   void set_grain_style(effects::GrainStyle style);
   /// The current effect's chosen values (one undo step unless a group is open).
   void set_chosen_params(std::vector<double> params);
+  /// What the effect widget edits: the selected keyframe's values, else the chosen ones.
+  void set_widget_values(std::vector<double> values);
+  /// The current effect's own exponent / time scale (in degrees of view per second of video,
+  /// docs/interpolation.md), written as its interpolation override (one undo step unless a
+  /// group is open).
+  void set_exponent(double exponent);
+  void set_time_scale_deg_per_s(double deg_per_s);
+  /// A gesture (a drag, a thumbstick push) is one undo step: the edits between these are one
+  /// group, labelled `label`.
+  void begin_gesture(const std::string& label);
+  void end_gesture();
   void set_playing(bool on);
   void seek(std::int64_t frame);
   /// Jumps to the previous (-1) / next (+1) keyframe's frame and selects that keyframe (not
@@ -147,7 +163,10 @@ class Editor {
   bool undo();
   bool redo();
   /// Locks the timeline panel in the world, or back on its anchor.
-  void lock_timeline(bool locked) { panels_.lock_timeline(locked); }
+  void lock_timeline(bool locked);
+  /// Shows or hides the track plot / the minimap.
+  void show_track_plot(bool on);
+  void show_minimap(bool on);
 
   /// Clean exit: final save, recovery copy removed. False when saving failed.
   bool finish();
@@ -158,7 +177,7 @@ class Editor {
 
   Document& document() { return doc_; }
   const Document& document() const { return doc_; }
-  EditorPanels& ui() { return panels_; }
+  /// The panels, to read (they are written by update() only, from view()).
   const EditorPanels& ui() const { return panels_; }
 
   // ---- visualization data (VisualizationCache; kept up to date by update)
@@ -174,6 +193,14 @@ class Editor {
  private:
   void run(EditorCommand command);
   void say(std::string message);
+  /// Advances the clock and the playhead to t_ns; returns the seconds since the last update.
+  double advance(std::int64_t t_ns);
+  /// What the visualizations are asked to show this frame.
+  VisualizationInput visualization_input() const;
+  /// Writes view() onto the panels; within update() only once, at its end.
+  void show();
+  /// The current effect's keyframe nearest the view (contract distance), if any.
+  std::optional<std::size_t> nearest_to_view() const;
   /// Keeps the pending edit's keyframe where the view, the playhead and the values put it.
   void sync_pending();
   /// After undo/redo: drops the selection when the keyframe count changed (indices renumbered).
@@ -188,13 +215,14 @@ class Editor {
     std::int64_t now = 0;         //!< the last update's display time
     std::optional<std::int64_t> last_t;
   };
-  /// The selected keyframe and, while it is held, where the view and the playhead were when the
-  /// grab began (it keeps its offsets from them).
-  struct Selection {
-    std::optional<std::size_t> index;
-    effects::Direction view0{};
-    std::int64_t frame0 = 0;
-    effects::Keyframe key0;
+  /// What the views panel shows and where the timeline is.
+  struct Views {
+    bool track_plot = true, minimap = true, timeline_locked = false;
+  };
+  /// Thumbnails for the timeline strip, and how often they were set.
+  struct Thumbnails {
+    std::vector<cv::Mat> images;
+    std::uint64_t version = 0;
   };
   /// What the status lines say besides the model.
   struct Status {
@@ -216,9 +244,14 @@ class Editor {
   effects::Direction view_{};
   EditTarget effect_ = effects::EffectType::Exposure;
   Playhead play_;
-  Selection sel_;
+  /// The current effect's selected keyframe. While it is held (grabbing()), the document's
+  /// PendingEdit holds it and keeps the rest of the grab.
+  std::optional<std::size_t> selected_;
+  Views views_;
+  Thumbnails thumbnails_;
   Status status_;
   bool unaltered_ = false;
+  bool updating_ = false;  //!< inside update(): the panels are shown once, at its end
 };
 
 }  // namespace vdfx::app

@@ -1,7 +1,8 @@
 /// @file
 /// @brief The editor's input side: each hand's UI pointer on the panels it may use, turning the
 /// frame's input into UI events, and the binding table's commands (app/editor/bindings.h) due
-/// this frame. Holds no editing state: the Editor runs what it returns.
+/// this frame. Both act on the input's edges (xr::ActionEdges, the one edge detector). Holds no
+/// editing state: the Editor runs what it returns.
 #pragma once
 
 #include <vector>
@@ -15,11 +16,9 @@ namespace vdfx::app {
 
 class EditorControls {
  public:
-  EditorControls() : left_(pointer_settings()), right_(pointer_settings()) {}
-
   /// Both pointers for this frame (left, then right), each on the panels not held by its own
-  /// hand; the right one drags finely while EditorCommand::Fine's control is down. Returns the UI
-  /// events in the order they happened.
+  /// hand, with its trigger's edges; the right one drags finely while EditorCommand::Fine's
+  /// control is down. Returns the UI events in the order they happened.
   std::vector<ui::Event> pointers(const xr::InputState& input, EditorPanels& panels, double dt);
   /// The commands of the binding table that fire this frame (after pointers()), in table order;
   /// held ones (When::Down) are asked for with held(). Preview only when the trigger went down on

@@ -1,5 +1,7 @@
 /// @file
-/// @brief The editor's panels (ui/): their widgets and where they sit.
+/// @brief The editor's panels (ui/): their widgets, where they sit, what the editor's state looks
+/// like on them (show: the one writer of the widgets) and what their widgets are for (control_of:
+/// their events become editor actions in app/editor/panel_binding.h).
 ///
 /// Effect panel: title, effect menu (the six effects, Flare and Grain, in two columns), the
 /// current effect's widget (tint: colour wheel; vignette: 2-D pad radius x falloff; blur,
@@ -31,6 +33,7 @@
 #include <vector>
 
 #include "app/editor/edit_target.h"
+#include "app/editor/editor_view.h"
 #include "effects/effect_types.h"
 #include "effects/flare.h"
 #include "effects/grain.h"
@@ -86,95 +89,86 @@ double desktop_ui_scale(const DesktopViewport& v);
 PanelPlacement desktop_placement(const DesktopViewport& v, const ScreenRect& r, double distance_m,
                                  glm::dvec2* size_m);
 
+/// What a widget of the panels is for: panel_binding turns its events into editor actions.
+enum class PanelControl {
+  None,          //!< labels, or a widget of another effect
+  EffectMenu,    //!< the effect menu
+  EffectValues,  //!< the current effect's widget (the grain's two sliders)
+  Exponent,
+  TimeScale,
+  FlareStyle,
+  SetLight,
+  AutoLight,
+  GrainStyle,
+  Undo,
+  Redo,
+  Delete,
+  Deselect,
+  Minimap,  //!< a keyframe dot pressed
+  Play,
+  PreviousKey,
+  NextKey,
+  Strip,
+  ShowTrackPlot,
+  ShowMinimap,
+  LockTimeline,
+};
+
 class EditorPanels {
  public:
   EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frame_count,
                PanelLayout layout, DesktopViewport viewport = {});
 
+  /// Shows the editor's state: the only writer of the widgets (besides the UI pointers' own
+  /// interaction: hover, press, focus, a held widget's value). The current effect's widgets are
+  /// laid out and selected in the menu; a widget the pointer holds keeps its own value; the
+  /// visualizations are taken over when their versions moved. Setters compare, so an unchanged
+  /// view costs no redraw.
+  void show(const EditorView& view);
   /// Moves the panels to their anchors (locked panels stay).
   void place(const xr::InputState& input);
   /// Desktop: the window changed; panels are re-placed, re-sized and re-scaled for it.
   void set_viewport(const DesktopViewport& viewport);
   const DesktopViewport& viewport() const { return viewport_; }
+  /// Locks the timeline panel in the world where it is now, or re-attaches it to its anchor.
+  void lock_timeline(bool locked);
+  PanelLayout layout() const { return layout_; }
+  /// Where a panel is anchored (kEffectPanelId, ...); a Hands layout has no views or HUD panel.
+  const PanelPlacement& placement(std::string_view panel_id) const;
   /// Desktop: where each panel covers the window (for tests and screenshots); empty for Hands.
   ScreenRect screen_rect(std::string_view panel_id) const;
-  /// Shows only the current target's widgets and selects it in the menu.
-  void show_effect(EditTarget target);
-  /// Shows a target's values (flat, EditTarget::params() layout) on its widgets; a widget the
-  /// pointer holds keeps its own value, and the wheel keeps its hue and saturation unless the
-  /// gains moved them (tint normalisation would nudge a held wheel).
-  void show_values(EditTarget target, std::span<const double> values);
-  /// Whether `widget` is one of the widgets that set `target`'s values.
-  bool edits_values(EditTarget target, const ui::Widget* widget) const;
+
+  /// What `widget` is for while `target` is shown (PanelControl::None: nothing to do).
+  PanelControl control_of(const ui::Widget* widget, EditTarget target) const;
   /// The values (flat) an event of one of `target`'s value widgets sets, the others kept from
   /// `current`: the slider's value, the pad's two, the wheel's hue and saturation as normalised
   /// tint gains, the grain's intensity or size.
   std::vector<double> values_of(EditTarget target, const ui::Event& event,
                                 std::span<const double> current) const;
-  /// The flare's and the grain's options as the document has them (style, light).
-  void show_options(const effects::FlareEffect& flare, const effects::GrainEffect& grain);
-  /// Every panel, in hit-test order.
+
+  /// Every panel, in hit-test order (to render them and hit-test them).
   std::vector<ui::Panel*> all();
   /// The panel with this id, or null.
   ui::Panel* panel(std::string_view id);
-  /// The panel holding a widget, or null.
-  ui::Panel* panel_of(const ui::Widget* widget);
+  const ui::Panel* panel(std::string_view id) const;
   /// The panels the given hand's aim ray may use: those not anchored to that hand.
   std::vector<ui::Panel*> reachable_by(xr::Hand hand);
-  /// Locks the timeline panel in the world where it is now, or re-attaches it to its anchor.
-  void lock_timeline(bool locked);
 
-  PanelLayout layout;
-  std::unique_ptr<ui::Panel> effect, timeline;
-  std::unique_ptr<ui::Panel> views, hud;  //!< Desktop only
-  PanelPlacement effect_place, timeline_place, views_place, hud_place;
-
-  // effect panel
-  ui::Label* title = nullptr;
-  ui::MenuList* menu = nullptr;
-  //! One (main) widget per target, indexed by EditTarget::index(); only the current target's
-  //! widgets have rectangles.
-  std::array<ui::Widget*, EditTarget::kCount> effect_widgets{};
-  // The same, typed.
-  ui::Slider1D* blur = nullptr;
-  ui::ColourWheel* tint = nullptr;
-  ui::Slider1D* exposure = nullptr;
-  ui::Slider1D* saturation = nullptr;
-  ui::Slider1D* contrast = nullptr;
-  ui::Pad2D* vignette = nullptr;
-  ui::Slider1D* flare_intensity = nullptr;
-  ui::MenuList* flare_style = nullptr;  //!< Headset | Directional (effects::FlareStyle order)
-  ui::Button* set_light = nullptr;      //!< "Set light here": the light at the view centre
-  ui::Toggle* auto_light = nullptr;     //!< the light found in each video frame
-  ui::Slider1D* grain_intensity = nullptr;
-  ui::Slider1D* grain_size = nullptr;
-  ui::MenuList* grain_style = nullptr;  //!< effects::kGrainStyles order, two columns
-  ui::Button* undo = nullptr;
-  ui::Button* redo = nullptr;
-  ui::Button* delete_nearest = nullptr;  //!< deletes the selected keyframe, else the nearest
-  ui::Button* deselect = nullptr;  //!< leaves the selected keyframe (right thumbstick click too)
-  ui::Slider1D* exponent = nullptr;
-  ui::Slider1D* time_scale = nullptr;  //!< degrees of view one second of video weighs like
-  ui::Label* status = nullptr;
-
-  // timeline panel
-  ui::Button* play = nullptr;
-  ui::Button* prev_key = nullptr;
-  ui::Button* next_key = nullptr;
-  ui::Label* time = nullptr;
-  ui::TimelineStrip* strip = nullptr;
-  ui::Label* hint = nullptr;  //!< Hands: the status line under the strip (Desktop: the HUD)
-
-  // plot and minimap (timeline panel for Hands, views panel for Desktop)
-  ui::Toggle* show_tracks = nullptr;
-  ui::Toggle* show_minimap = nullptr;
-  ui::Toggle* lock = nullptr;
-  ui::Plot* plot = nullptr;
-  ui::Minimap* minimap = nullptr;
-
-  // heads-up panel (Desktop)
-  ui::Label* hud_line = nullptr;     //!< frame, time, heading, effect, selection, frame rate
-  ui::Label* hud_message = nullptr;  //!< the latest message (expires), or what to do now
+  // ---- the widgets, to read (tests, recordings' scripts)
+  const ui::Label& title() const { return *title_; }
+  const ui::MenuList& menu() const { return *menu_; }
+  /// The target's main widget (its slider, the tint wheel, the vignette pad).
+  const ui::Widget& effect_widget(EditTarget target) const {
+    return *effect_widgets_[static_cast<std::size_t>(target.index())];
+  }
+  const ui::Button& undo_button() const { return *undo_; }
+  const ui::Button& deselect_button() const { return *deselect_; }
+  const ui::TimelineStrip& strip() const { return *strip_; }
+  const ui::Plot& plot() const { return *plot_; }
+  const ui::Minimap& minimap() const { return *minimap_; }
+  const ui::Toggle& minimap_toggle() const { return *show_minimap_; }
+  /// Desktop: the heads-up line; null for Hands.
+  const ui::Label* hud_line() const { return hud_line_; }
 
  private:
   void build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, int width, int height,
@@ -183,10 +177,74 @@ class EditorPanels {
   void build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frames);
   void add_visualizations(ui::Panel& p, ui::Stack& col, double toggles_h, bool stacked);
   void add_transport_row(ui::Panel& p, ui::Stack& col);
+  // show(), in parts
+  void show_effect(EditTarget target);
+  void show_values(EditTarget target, std::span<const double> values);
+  void show_effect_panel(const EditorView& view);
+  void show_timeline(const EditorView& view);
+  void show_visualizations(const EditorView& view);
+
+  PanelLayout layout_;
+  std::unique_ptr<ui::Panel> effect_, timeline_;
+  std::unique_ptr<ui::Panel> views_, hud_;  //!< Desktop only
+  PanelPlacement effect_place_, timeline_place_, views_place_, hud_place_;
+
+  // effect panel
+  ui::Label* title_ = nullptr;
+  ui::MenuList* menu_ = nullptr;
+  //! One (main) widget per target, indexed by EditTarget::index(); only the current target's
+  //! widgets have rectangles.
+  std::array<ui::Widget*, EditTarget::kCount> effect_widgets_{};
+  // The same, typed.
+  ui::Slider1D* blur_ = nullptr;
+  ui::ColourWheel* tint_ = nullptr;
+  ui::Slider1D* exposure_ = nullptr;
+  ui::Slider1D* saturation_ = nullptr;
+  ui::Slider1D* contrast_ = nullptr;
+  ui::Pad2D* vignette_ = nullptr;
+  ui::Slider1D* flare_intensity_ = nullptr;
+  ui::MenuList* flare_style_ = nullptr;  //!< Headset | Directional (effects::FlareStyle order)
+  ui::Button* set_light_ = nullptr;      //!< "Set light here": the light at the view centre
+  ui::Toggle* auto_light_ = nullptr;     //!< the light found in each video frame
+  ui::Slider1D* grain_intensity_ = nullptr;
+  ui::Slider1D* grain_size_ = nullptr;
+  ui::MenuList* grain_style_ = nullptr;  //!< effects::kGrainStyles order, two columns
+  ui::Button* undo_ = nullptr;
+  ui::Button* redo_ = nullptr;
+  ui::Button* delete_nearest_ = nullptr;  //!< deletes the selected keyframe, else the nearest
+  ui::Button* deselect_ = nullptr;  //!< leaves the selected keyframe (right thumbstick click too)
+  ui::Slider1D* exponent_ = nullptr;
+  ui::Slider1D* time_scale_ = nullptr;  //!< degrees of view one second of video weighs like
+  ui::Label* status_ = nullptr;
+
+  // timeline panel
+  ui::Button* play_ = nullptr;
+  ui::Button* prev_key_ = nullptr;
+  ui::Button* next_key_ = nullptr;
+  ui::Label* time_ = nullptr;
+  ui::TimelineStrip* strip_ = nullptr;
+  ui::Label* hint_ = nullptr;  //!< Hands: the status line under the strip (Desktop: the HUD)
+
+  // plot and minimap (timeline panel for Hands, views panel for Desktop)
+  ui::Toggle* show_tracks_ = nullptr;
+  ui::Toggle* show_minimap_ = nullptr;
+  ui::Toggle* lock_ = nullptr;
+  ui::Plot* plot_ = nullptr;
+  ui::Minimap* minimap_ = nullptr;
+
+  // heads-up panel (Desktop)
+  ui::Label* hud_line_ = nullptr;     //!< frame, time, heading, effect, selection, frame rate
+  ui::Label* hud_message_ = nullptr;  //!< the latest message (expires), or what to do now
 
   DesktopViewport viewport_;
   ui::Rect effect_widget_rect_, options_rect_;
   ui::Rect plot_rect_, minimap_rect_;
+  /// The versions of what show() took over last (EditorView::thumbnails_version, the
+  /// visualizations'): 0, nothing yet.
+  struct Shown {
+    std::uint64_t thumbnails = 0, markers = 0, track = 0, field = 0;
+  };
+  Shown shown_;
 };
 
 /// Widget ids of the per-target main widgets ("blur", "tint", ..., "flare", "grain": the sidecar

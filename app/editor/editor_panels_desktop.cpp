@@ -47,36 +47,36 @@ void EditorPanels::build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts
                                         std::int64_t frames) {
   using namespace ui;
   build_effect_panel(fonts, kDeskEffectW, kDeskEffectH, glm::dvec2(0.2, 0.4));
-  timeline = std::make_unique<Panel>(kTimelinePanelId, kDeskTimelineW, kDeskTimelineH,
-                                     glm::dvec2(0.5, 0.12), fonts);
+  timeline_ = std::make_unique<Panel>(kTimelinePanelId, kDeskTimelineW, kDeskTimelineH,
+                                      glm::dvec2(0.5, 0.12), fonts);
   {
-    Panel& p = *timeline;
+    Panel& p = *timeline_;
     Stack col(Rect{0, 0, kDeskTimelineW, kDeskTimelineH}.inset(40.0), p.theme().gap);
     add_transport_row(p, col);
-    strip = &p.add<TimelineStrip>("strip", static_cast<int>(frames));
-    strip->set_rect(col.rest());
+    strip_ = &p.add<TimelineStrip>("strip", static_cast<int>(frames));
+    strip_->set_rect(col.rest());
   }
-  views = std::make_unique<Panel>(kViewsPanelId, kDeskViewsW, kDeskViewsH, glm::dvec2(0.2, 0.26),
-                                  fonts);
+  views_ = std::make_unique<Panel>(kViewsPanelId, kDeskViewsW, kDeskViewsH, glm::dvec2(0.2, 0.26),
+                                   fonts);
   {
-    Panel& p = *views;
+    Panel& p = *views_;
     Stack col(Rect{0, 0, kDeskViewsW, kDeskViewsH}.inset(40.0), p.theme().gap);
     add_visualizations(p, col, p.theme().row_height, true);
   }
-  hud = std::make_unique<Panel>(kHudPanelId, kDeskHudW, kDeskHudH, glm::dvec2(0.4, 0.03), fonts);
+  hud_ = std::make_unique<Panel>(kHudPanelId, kDeskHudW, kDeskHudH, glm::dvec2(0.4, 0.03), fonts);
   {
-    Panel& p = *hud;
+    Panel& p = *hud_;
     const Rect inner = Rect{0, 0, kDeskHudW, kDeskHudH}.inset(24.0, 10.0);
-    hud_line = &p.add<Label>("hud_line", "", Label::Role::Small, Align::Centre);
-    hud_line->set_rect(split_rows(inner, 2, 0, 2.0));
-    hud_message = &p.add<Label>("hud_message", "", Label::Role::Small, Align::Centre, true);
-    hud_message->set_rect(split_rows(inner, 2, 1, 2.0));
+    hud_line_ = &p.add<Label>("hud_line", "", Label::Role::Small, Align::Centre);
+    hud_line_->set_rect(split_rows(inner, 2, 0, 2.0));
+    hud_message_ = &p.add<Label>("hud_message", "", Label::Role::Small, Align::Centre, true);
+    hud_message_->set_rect(split_rows(inner, 2, 1, 2.0));
   }
 }
 
 void EditorPanels::set_viewport(const DesktopViewport& v) {
   viewport_ = v;
-  if (layout != PanelLayout::Desktop) return;
+  if (layout_ != PanelLayout::Desktop) return;
   const double s = desktop_ui_scale(v);
   const auto put = [&](ui::Panel& p, PanelPlacement& place, const ScreenRect& r) {
     glm::dvec2 size;
@@ -85,14 +85,14 @@ void EditorPanels::set_viewport(const DesktopViewport& v) {
     p.set_size_m(size);
     p.set_render_scale(s);
   };
-  put(*effect, effect_place, screen_rect(kEffectPanelId));
-  put(*timeline, timeline_place, screen_rect(kTimelinePanelId));
-  put(*views, views_place, screen_rect(kViewsPanelId));
-  put(*hud, hud_place, screen_rect(kHudPanelId));
+  put(*effect_, effect_place_, screen_rect(kEffectPanelId));
+  put(*timeline_, timeline_place_, screen_rect(kTimelinePanelId));
+  put(*views_, views_place_, screen_rect(kViewsPanelId));
+  put(*hud_, hud_place_, screen_rect(kHudPanelId));
 }
 
 ScreenRect EditorPanels::screen_rect(std::string_view id) const {
-  if (layout != PanelLayout::Desktop) return {};
+  if (layout_ != PanelLayout::Desktop) return {};
   const DesktopViewport& v = viewport_;
   const double s = desktop_ui_scale(v);
   const auto px = [&](int layout_px) { return static_cast<int>(std::lround(layout_px * s)); };

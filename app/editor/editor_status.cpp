@@ -35,7 +35,7 @@ std::string Editor::status_text() const {
                               fmt(" alt %.0f", k->direction.altitude_deg) + " frame " +
                               std::to_string(k->frame);
     const std::string which =
-        std::to_string(*sel_.index + 1) + "/" + std::to_string(doc_.keyframes(effect_).size());
+        std::to_string(*selected_ + 1) + "/" + std::to_string(doc_.keyframes(effect_).size());
     s += grabbing() ? " | GRAB keyframe " + which + " -> " + where + ": release to move"
                     : " | SELECTED keyframe " + which + " (" + where + "): widget edits it";
   }
@@ -60,8 +60,7 @@ std::string Editor::hud_text() const {
                   fmt("%.0f\u00b0", view_.azimuth_deg) + " alt " +
                   fmt("%.0f\u00b0", view_.altitude_deg) + "   " + effect_.title() + " (" +
                   std::to_string(doc_.keyframes(effect_).size()) + " keyframes)";
-  if (sel_.index)
-    s += (grabbing() ? "   moving " : "   selected ") + std::to_string(*sel_.index + 1);
+  if (selected_) s += (grabbing() ? "   moving " : "   selected ") + std::to_string(*selected_ + 1);
   if (play_.playing) s += "   \u25b6";
   if (status_.loop_fps > 0.0) s += "   " + fmt("%.0f fps", status_.loop_fps);
   return s;
@@ -72,7 +71,7 @@ std::string Editor::hud_message() const {
   if (previewing()) return "release to place the keyframe at the centre of the view";
   if (grabbing()) return "turn or scrub to move the keyframe; release to drop it";
   if (unaltered_) return "showing the unaltered film";
-  if (sel_.index) return "the widget edits the selected keyframe; G (hold) moves it, L deselects";
+  if (selected_) return "the widget edits the selected keyframe; G (hold) moves it, L deselects";
   return "click the view or Space: keyframe at the centre   right-drag: look   arrows: step   "
          "Shift: fine";
 }

@@ -1,109 +1,80 @@
 /// @file
-/// @brief Panel events -> editor actions; editor state -> widgets.
+/// @brief Panel events -> editor actions.
 #include "app/editor/panel_binding.h"
 
-#include <algorithm>
-#include <cstdio>
-
 #include "app/editor/editor.h"
-#include "app/editor/text_format.h"
 
 namespace vdfx::app {
 
-using effects::EffectType;
+namespace {
 
-void handle_panel_event(Editor& ed, EditorPanels& p, const ui::Event& e) {
-  using ui::EventKind;
-  const ui::Widget* w = e.source;
-  const bool drag_begin = e.kind == EventKind::DragBegin, drag_end = e.kind == EventKind::DragEnd;
-  const bool changed = e.kind == EventKind::ValueChanged, clicked = e.kind == EventKind::Clicked;
-  const EditTarget effect = ed.current_effect();
-  Document& doc = ed.document();
-  if (w == p.menu && changed) {
-    ed.select_effect(EditTarget::from_index(static_cast<int>(e.new_value.x)));
-  } else if (p.edits_values(effect, w) || w == p.exponent || w == p.time_scale) {
-    // A drag (or a thumbstick gesture) is one undo step.
-    if (drag_begin) doc.begin_group(e.widget);
-    if (drag_end) doc.end_group();
-    if (!changed) return;
-    if (w == p.exponent || w == p.time_scale) {
-      auto s = doc.interpolation(effect);
-      if (w == p.exponent)
-        s.exponent = e.new_value.x;
-      else
-        s.time_scale = effects::time_scale_from_deg_per_s(e.new_value.x);
-      doc.set_interpolation(effect, s);
-    } else if (ed.selected_keyframe()) {
-      ed.set_selected_params(p.values_of(effect, e, ed.widget_values()));
-    } else {
-      ed.set_chosen_params(p.values_of(effect, e, ed.widget_values()));
-    }
-  } else if (w == p.flare_style && changed) {
-    ed.set_flare_style(static_cast<effects::FlareStyle>(static_cast<int>(e.new_value.x)));
-  } else if (clicked && w == p.set_light) {
-    ed.set_light_here();
-  } else if (w == p.auto_light && changed) {
-    ed.set_auto_light(e.new_value.x > 0.5);
-  } else if (w == p.grain_style && changed) {
-    ed.set_grain_style(effects::kGrainStyles.at(static_cast<std::size_t>(e.new_value.x)));
-  } else if (clicked && w == p.undo) {
-    ed.undo();
-  } else if (clicked && w == p.redo) {
-    ed.redo();
-  } else if (clicked && w == p.delete_nearest) {
-    ed.delete_nearest();
-  } else if (clicked && w == p.deselect) {
-    ed.deselect();
-  } else if (w == p.minimap && changed) {
-    if (e.new_value.x >= 0.0) ed.select_keyframe(static_cast<std::size_t>(e.new_value.x));
-  } else if (clicked && w == p.play) {
-    ed.set_playing(!ed.playing());
-  } else if (clicked && w == p.prev_key) {
-    ed.jump_to_keyframe(-1);
-  } else if (clicked && w == p.next_key) {
-    ed.jump_to_keyframe(+1);
-  } else if (w == p.strip && drag_begin) {
-    ed.set_playing(false);
-  } else if (w == p.strip && changed) {
-    ed.seek(static_cast<std::int64_t>(e.new_value.x));
-  } else if (w == p.lock && changed) {
-    ed.lock_timeline(e.new_value.x > 0.5);
+/// A value widget's event: a drag (or a thumbstick gesture) is one undo step.
+void value_event(Editor& ed, const EditorPanels& p, PanelControl control, const ui::Event& e) {
+  if (e.kind == ui::EventKind::DragBegin) ed.begin_gesture(e.widget);
+  if (e.kind == ui::EventKind::DragEnd) ed.end_gesture();
+  if (e.kind != ui::EventKind::ValueChanged) return;
+  if (control == PanelControl::Exponent)
+    ed.set_exponent(e.new_value.x);
+  else if (control == PanelControl::TimeScale)
+    ed.set_time_scale_deg_per_s(e.new_value.x);
+  else
+    ed.set_widget_values(p.values_of(ed.current_effect(), e, ed.widget_values()));
+}
+
+/// A button's click.
+void clicked(Editor& ed, PanelControl control) {
+  switch (control) {
+    case PanelControl::SetLight: ed.set_light_here(); break;
+    case PanelControl::Undo: ed.undo(); break;
+    case PanelControl::Redo: ed.redo(); break;
+    case PanelControl::Delete: ed.delete_nearest(); break;
+    case PanelControl::Deselect: ed.deselect(); break;
+    case PanelControl::Play: ed.set_playing(!ed.playing()); break;
+    case PanelControl::PreviousKey: ed.jump_to_keyframe(-1); break;
+    case PanelControl::NextKey: ed.jump_to_keyframe(+1); break;
+    default: break;
   }
 }
 
-void show_editor_state(const Editor& ed, EditorPanels& p) {
-  const Document& doc = ed.document();
-  const EditTarget effect = ed.current_effect();
-  p.show_values(effect, ed.widget_values());
-  p.show_options(doc.flare(), doc.grain());
-  const auto s = doc.interpolation(effect);
-  if (!p.exponent->pressed()) p.exponent->set_value(s.exponent);
-  if (!p.time_scale->pressed())
-    p.time_scale->set_value(effects::deg_per_s_from_time_scale(s.time_scale));
-  p.undo->set_enabled(doc.undo_stack().can_undo());
-  p.redo->set_enabled(doc.undo_stack().can_redo());
-  const std::string name = effect.title();
-  if (const auto& sel = ed.selected_keyframe()) {
-    const std::string which =
-        std::to_string(*sel + 1) + " of " + std::to_string(doc.keyframes(effect).size());
-    p.title->set_text(name + (ed.grabbing() ? " \u2014 moving keyframe " : " \u2014 keyframe ") +
-                      which);
-  } else {
-    p.title->set_text("Effects \u2014 " + name);
+/// A menu's, toggle's, strip's or minimap's new value.
+void changed(Editor& ed, PanelControl control, glm::dvec2 v) {
+  const int index = static_cast<int>(v.x);
+  const bool on = v.x > 0.5;
+  switch (control) {
+    case PanelControl::EffectMenu: ed.select_effect(EditTarget::from_index(index)); break;
+    case PanelControl::FlareStyle:
+      ed.set_flare_style(static_cast<effects::FlareStyle>(index));
+      break;
+    case PanelControl::AutoLight: ed.set_auto_light(on); break;
+    case PanelControl::GrainStyle:
+      ed.set_grain_style(effects::kGrainStyles.at(static_cast<std::size_t>(v.x)));
+      break;
+    case PanelControl::Minimap:  // a dot pressed (-1: the map away from every dot)
+      if (v.x >= 0.0) ed.select_keyframe(static_cast<std::size_t>(v.x));
+      break;
+    case PanelControl::Strip: ed.seek(static_cast<std::int64_t>(v.x)); break;
+    case PanelControl::ShowTrackPlot: ed.show_track_plot(on); break;
+    case PanelControl::ShowMinimap: ed.show_minimap(on); break;
+    case PanelControl::LockTimeline: ed.lock_timeline(on); break;
+    default: break;
   }
-  p.delete_nearest->set_label(ed.selected_keyframe() ? "Delete selected" : "Delete nearest");
-  p.deselect->set_enabled(ed.selected_keyframe().has_value());
-  p.play->set_icon(ed.playing() ? ui::Icon::Pause : ui::Icon::Play);
-  p.strip->set_playhead(static_cast<int>(ed.frame()));
-  const double fps = doc.video().fps;
-  p.time->set_text(fmt("frame %.0f", static_cast<double>(ed.frame())) +
-                   fmt("  %.2f s", static_cast<double>(ed.frame()) / fps));
-  p.status->set_text(ed.autosave_status());
-  if (p.hint) p.hint->set_text(ed.status_text());
-  if (p.hud_line) {
-    p.hud_line->set_text(ed.hud_text());
-    p.hud_message->set_text(ed.hud_message());
+}
+
+}  // namespace
+
+void handle_panel_event(Editor& ed, const EditorPanels& p, const ui::Event& e) {
+  const PanelControl control = p.control_of(e.source, ed.current_effect());
+  switch (control) {
+    case PanelControl::EffectValues:
+    case PanelControl::Exponent:
+    case PanelControl::TimeScale: return value_event(ed, p, control, e);
+    case PanelControl::Strip:
+      if (e.kind == ui::EventKind::DragBegin) ed.set_playing(false);  // scrubbing stops playback
+      break;
+    default: break;
   }
+  if (e.kind == ui::EventKind::Clicked) clicked(ed, control);
+  if (e.kind == ui::EventKind::ValueChanged) changed(ed, control, e.new_value);
 }
 
 }  // namespace vdfx::app

@@ -3,6 +3,8 @@
 /// keyframe at a time.
 #include "app/editor/pending_edit.h"
 
+#include <algorithm>
+
 #include "app/editor/document.h"
 
 namespace vdfx::app {
@@ -40,6 +42,24 @@ void PendingEdit::set_key(effects::Keyframe key) {
   const bool changing = changes_interpolant();
   if (changing) version_ = ++stats_.serial;
   was_changing_ = changing;
+}
+
+void PendingEdit::hold_from(const effects::Direction& view, std::int64_t frame) {
+  hold_ = Hold{view, frame, key_};
+}
+
+effects::Keyframe PendingEdit::placed_at(const effects::Direction& view, std::int64_t frame) const {
+  if (!moved_) return {view, frame, doc_.params(target_)};
+  const auto& ks = doc_.keyframes(target_);
+  if (!hold_ || *moved_ >= ks.size()) return key_;
+  effects::Keyframe k = ks[*moved_];
+  const effects::Keyframe& k0 = hold_->key;
+  k.direction.azimuth_deg = effects::wrap_azimuth_deg(k0.direction.azimuth_deg +
+                                                      (view.azimuth_deg - hold_->view.azimuth_deg));
+  k.direction.altitude_deg = std::clamp(
+      k0.direction.altitude_deg + (view.altitude_deg - hold_->view.altitude_deg), -90.0, 90.0);
+  k.frame = std::clamp<std::int64_t>(k0.frame + (frame - hold_->frame), 0, doc_.video().frames - 1);
+  return k;
 }
 
 bool PendingEdit::changes_interpolant() const {

@@ -1,8 +1,10 @@
 /// @file
 /// @brief The edit being made before it is committed: a new keyframe being placed (it follows the
 /// view) or a keyframe being held (grabbed, it follows the view and the playhead). Owned by the
-/// Document (Document::begin_pending); the editor moves it, the renderer and the visualizations
-/// read its interpolant, and the editor commits or cancels it.
+/// Document (Document::begin_pending); it is the grab's whole state (which keyframe is held,
+/// where the view and the playhead were when it was grabbed, where it is now). The editor moves
+/// it (follow), the renderer and the visualizations read its interpolant, and the editor commits
+/// or cancels it.
 ///
 /// Its interpolant is the document's keyframes of the effect with the pending keyframe where it
 /// is now. A fresh RbfInterpolator per frame would be an O(N^3) solve (tens of ms at N = 1000);
@@ -53,6 +55,19 @@ class PendingEdit {
   const effects::Keyframe& key() const { return key_; }
   /// Moves the pending keyframe (or changes its values).
   void set_key(effects::Keyframe key);
+  /// A held keyframe follows the view and the playhead by how far they moved since the hold
+  /// began: this is where they were then (Editor::grab), and the key where it was.
+  void hold_from(const effects::Direction& view, std::int64_t frame);
+  /// Where the pending keyframe goes for this view and playhead: a new one at the view centre,
+  /// with the target's chosen values; a held one (after hold_from) keeps the offsets it had from
+  /// the view (in azimuth and altitude, clamped to +-90) and from the playhead (in frames,
+  /// clamped to the clip), with the held keyframe's values as the document has them now. So
+  /// holding alone moves nothing, and a keyframe held while looked at stays at the view centre.
+  effects::Keyframe placed_at(const effects::Direction& view, std::int64_t frame) const;
+  /// set_key(placed_at(view, frame)).
+  void follow(const effects::Direction& view, std::int64_t frame) {
+    set_key(placed_at(view, frame));
+  }
   /// False while a held keyframe sits where it is in the document: the interpolant is then the
   /// document's.
   bool changes_interpolant() const;
@@ -75,6 +90,13 @@ class PendingEdit {
   EditTarget target_;
   std::optional<std::size_t> moved_;
   effects::Keyframe key_;
+  /// Where the view and the playhead were when the hold began, and the key then.
+  struct Hold {
+    effects::Direction view{};
+    std::int64_t frame = 0;
+    effects::Keyframe key;
+  };
+  std::optional<Hold> hold_;
   std::uint64_t version_ = 0;
   bool was_changing_ = false;  //!< changes_interpolant() when the version last moved
   effects::KeyframeSetOptions options_;

@@ -6,7 +6,6 @@
 #include <algorithm>
 
 #include "app/editor/document.h"
-#include "app/editor/editor_panels.h"
 #include "app/editor/visualizations.h"
 
 namespace vdfx::app {
@@ -14,6 +13,10 @@ namespace vdfx::app {
 namespace {
 double angle_deg(const effects::Direction& a, const effects::Direction& b) {
   return effects::angle_between(effects::to_unit(a), effects::to_unit(b)) * effects::kRadToDeg;
+}
+/// The index of the first sampled frame at or after `frame` (frames.size() when none).
+std::ptrdiff_t sample_at(std::span<const std::int64_t> frames, std::int64_t frame) {
+  return std::lower_bound(frames.begin(), frames.end(), frame) - frames.begin();
 }
 }  // namespace
 
@@ -25,8 +28,7 @@ VisualizationCache::VisualizationCache(VisualizationOptions options, std::int64_
 
 VisualizationCache::~VisualizationCache() = default;
 
-void VisualizationCache::refresh_markers(const Document& doc, const VisualizationInput& in,
-                                         EditorPanels& panels) {
+void VisualizationCache::refresh_markers(const Document& doc, const VisualizationInput& in) {
   // Markers follow the view: recomputed when it moved by a degree, or the keyframes changed.
   const auto& ks = doc.keyframes(in.effect);
   const int eff = in.effect.index();
@@ -35,107 +37,108 @@ void VisualizationCache::refresh_markers(const Document& doc, const Visualizatio
       angle_deg(markers_.view, in.view) <= 1.0 && markers_.held_frame == held_frame)
     return;
   markers_.near = keyframes_near_view(ks, in.view, options_.marker_cone_deg);
-  std::vector<int> frames, highlighted;
+  out_.marker_frames.clear();
+  out_.highlighted_frames.clear();
   for (std::size_t i = 0; i < ks.size(); ++i)
-    frames.push_back(static_cast<int>(in.held && i == *in.selected ? in.held->frame : ks[i].frame));
-  for (const auto i : markers_.near) highlighted.push_back(static_cast<int>(ks[i].frame));
-  if (in.held) highlighted.push_back(static_cast<int>(in.held->frame));
-  panels.strip->set_keyframes(frames);
-  panels.strip->set_highlighted(highlighted);
+    out_.marker_frames.push_back(static_cast<int>(in.shown(ks, i).frame));
+  for (const auto i : markers_.near)
+    out_.highlighted_frames.push_back(static_cast<int>(ks[i].frame));
+  if (in.held) out_.highlighted_frames.push_back(static_cast<int>(in.held->frame));
+  ++out_.markers_version;
   markers_.revision = doc.revision();
   markers_.effect = eff;
   markers_.view = in.view;
   markers_.held_frame = held_frame;
 }
 
-void VisualizationCache::refresh(const Document& doc, const VisualizationInput& in,
-                                 EditorPanels& panels) {
+void VisualizationCache::refresh_track(const VisualizationInput& in,
+                                       std::span<const effects::Keyframe> ks, const MinimapKey& key,
+                                       const effects::RbfInterpolator* rbf) {
+  out_.track = effect_track(rbf, in.effect, in.view, track_.frames);
+  std::tie(out_.track_lo, out_.track_hi) = display_range(in.effect);
+  // Keyframe marks: the held keyframe where it is held, a placed one at the playhead.
+  std::vector<std::int64_t> key_frames;
+  for (std::size_t i = 0; i < ks.size(); ++i) key_frames.push_back(in.shown(ks, i).frame);
+  if (in.previewing) key_frames.push_back(in.frame);
+  out_.track_marks.clear();
+  for (const auto f : key_frames)
+    if (const auto i = sample_at(track_.frames, f);
+        i < static_cast<std::ptrdiff_t>(track_.frames.size()))
+      out_.track_marks.push_back(static_cast<int>(i));
+  ++out_.track_version;
+  track_.key = key;
+  track_.view = in.view;
+}
+
+void VisualizationCache::refresh_minimap(
+    const Document& doc, const VisualizationInput& in, const MinimapKey& key,
+    const std::function<std::shared_ptr<const effects::RbfInterpolator>()>& rbf) {
   const auto& ks = doc.keyframes(in.effect);
-  const int eff = in.effect.index();
-  refresh_markers(doc, in, panels);
+  if (!(minimap_.requested == key)) {
+    const auto s = doc.interpolation(in.effect);
+    minimap_.nearest = nearest_keyframe(ks, in.view, in.frame, s.time_scale, doc.video().fps);
+    minimap_.requested = key;
+    if (worker_)
+      worker_->request(
+          {key, rbf(), in.effect, in.frame, options_.minimap_width, options_.minimap_height});
+    else
+      take_field(key,
+                 effect_minimap(rbf().get(), in.effect, in.frame, options_.minimap_width,
+                                options_.minimap_height),
+                 in.effect);
+  }
+  // A field finished for an earlier frame or edit is shown until the current one is ready (a
+  // frame or two while playing large sets); one for another effect is dropped.
+  if (worker_)
+    if (auto r = worker_->take(); r && r->key.effect == in.effect.index())
+      take_field(r->key, std::move(r->field), in.effect);
+  // Keyframe dots: the selected one ringed (and carried along while held).
+  out_.dots.clear();
+  for (std::size_t i = 0; i < ks.size(); ++i) out_.dots.push_back(in.shown(ks, i).direction);
+  out_.nearest = minimap_.nearest ? static_cast<int>(*minimap_.nearest) : -1;
+  out_.selected = in.selected ? static_cast<int>(*in.selected) : -1;
+  out_.view = in.view;
+  out_.view_hfov_deg = in.view_hfov_deg;
+  out_.view_vfov_deg = in.view_vfov_deg;
+}
+
+const Visualizations& VisualizationCache::refresh(const Document& doc,
+                                                  const VisualizationInput& in) {
+  refresh_markers(doc, in);
   // While a keyframe is placed, or held away from its place, the track and the field are the
   // pending edit's interpolant (the one the view shows); each new place is a new version.
   const PendingEdit* pending = doc.pending();
   const bool shows_pending =
       pending && pending->target() == in.effect && pending->changes_interpolant();
   std::shared_ptr<const effects::RbfInterpolator> rbf;
-  auto interpolant = [&] {
+  const auto interpolant = [&] {
     if (!rbf) rbf = shows_pending ? pending->interpolant() : doc.keyframe_set(in.effect).solution();
     return rbf;
   };
-  const MinimapKey base{doc.revision(), doc.keyframe_set(in.effect).solution_version(), eff, -1,
-                        shows_pending ? pending->version() : 0};
-  const auto [lo, hi] = display_range(in.effect);
-  if (!(track_.key == base) || angle_deg(track_.view, in.view) > 1.0) {
-    track_.values = effect_track(interpolant().get(), in.effect, in.view, track_.frames);
-    panels.plot->set_values(track_.values);
-    panels.plot->set_range(lo, hi);
-    // Keyframe marks: the held keyframe where it is held, a placed one at the playhead.
-    std::vector<std::int64_t> key_frames;
-    for (std::size_t i = 0; i < ks.size(); ++i)
-      key_frames.push_back(in.held && i == *in.selected ? in.held->frame : ks[i].frame);
-    if (in.previewing) key_frames.push_back(in.frame);
-    std::vector<int> marks;  // keyframe frames as sample indices
-    for (const auto f : key_frames) {
-      const auto it = std::lower_bound(track_.frames.begin(), track_.frames.end(), f);
-      if (it != track_.frames.end()) marks.push_back(static_cast<int>(it - track_.frames.begin()));
-    }
-    panels.plot->set_keyframes(marks);
-    track_.key = base;
-    track_.view = in.view;
-  }
-  {
-    const auto it = std::lower_bound(track_.frames.begin(), track_.frames.end(), in.frame);
-    panels.plot->set_playhead(static_cast<int>(std::min<std::ptrdiff_t>(
-        it - track_.frames.begin(), static_cast<std::ptrdiff_t>(track_.frames.size()) - 1)));
-  }
-  MinimapKey mk = base;
-  mk.frame = in.frame;
-  if (!(minimap_.requested == mk)) {
-    const auto s = doc.interpolation(in.effect);
-    minimap_.nearest = nearest_keyframe(ks, in.view, in.frame, s.time_scale, doc.video().fps);
-    minimap_.requested = mk;
-    if (worker_)
-      worker_->request({mk, interpolant(), in.effect, in.frame, options_.minimap_width,
-                        options_.minimap_height});
-    else
-      show_minimap(mk,
-                   effect_minimap(interpolant().get(), in.effect, in.frame, options_.minimap_width,
-                                  options_.minimap_height),
-                   in.effect, panels);
-  }
-  // A field finished for an earlier frame or edit is shown until the current one is ready (a
-  // frame or two while playing large sets); one for another effect is dropped.
-  if (worker_)
-    if (auto r = worker_->take(); r && r->key.effect == eff)
-      show_minimap(r->key, std::move(r->field), in.effect, panels);
-  {
-    // Keyframe dots: the selected one ringed (and carried along while held). Setters compare,
-    // so an unchanged set costs no redraw.
-    std::vector<effects::Direction> dirs;
-    for (std::size_t i = 0; i < ks.size(); ++i)
-      dirs.push_back(in.held && i == *in.selected ? in.held->direction : ks[i].direction);
-    panels.minimap->set_keyframes(std::move(dirs),
-                                  minimap_.nearest ? static_cast<int>(*minimap_.nearest) : -1,
-                                  in.selected ? static_cast<int>(*in.selected) : -1);
-  }
-  panels.minimap->set_view(in.view, in.view_hfov_deg, in.view_vfov_deg);
+  const MinimapKey base{doc.revision(), doc.keyframe_set(in.effect).solution_version(),
+                        in.effect.index(), -1, shows_pending ? pending->version() : 0};
+  if (!(track_.key == base) || angle_deg(track_.view, in.view) > 1.0)
+    refresh_track(in, doc.keyframes(in.effect), base, interpolant().get());
+  out_.track_playhead = static_cast<int>(std::min(
+      sample_at(track_.frames, in.frame), static_cast<std::ptrdiff_t>(track_.frames.size()) - 1));
+  MinimapKey key = base;
+  key.frame = in.frame;
+  refresh_minimap(doc, in, key, interpolant);
+  return out_;
 }
 
-void VisualizationCache::show_minimap(const MinimapKey& key, cv::Mat field, EditTarget effect,
-                                      EditorPanels& panels) {
-  const auto [lo, hi] = display_range(effect);
-  minimap_.field = std::move(field);
-  panels.minimap->set_field(minimap_.field, lo, hi);
+void VisualizationCache::take_field(const MinimapKey& key, cv::Mat field, EditTarget effect) {
+  std::tie(out_.field_lo, out_.field_hi) = display_range(effect);
+  out_.field = std::move(field);
+  ++out_.field_version;
   minimap_.shown = key;
   ++minimap_.computations;
 }
 
-bool VisualizationCache::wait(std::chrono::milliseconds timeout, EditTarget effect,
-                              EditorPanels& panels) {
+bool VisualizationCache::wait(std::chrono::milliseconds timeout, EditTarget effect) {
   if (worker_ && worker_->wait_idle(timeout))
     if (auto r = worker_->take(); r && r->key.effect == effect.index())
-      show_minimap(r->key, std::move(r->field), effect, panels);
+      take_field(r->key, std::move(r->field), effect);
   return minimap_current();
 }
 

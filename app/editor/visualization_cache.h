@@ -1,6 +1,6 @@
 /// @file
-/// @brief What the editor shows about the current effect's keyframes, kept on its panels: the
-/// track plot (the value over time at the view), the minimap (over the sphere at the playhead,
+/// @brief What the editor shows about the current effect's keyframes, as data for its panels:
+/// the track plot (the value over time at the view), the minimap (over the sphere at the playhead,
 /// with the keyframes as dots and the view's footprint) and the timeline's markers. Each is
 /// recomputed only when what it shows changed (the document's revision and solution, the pending
 /// edit's version, the effect, the frame, the view by a degree), so a frame that changes nothing
@@ -14,9 +14,11 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "app/editor/minimap_worker.h"
@@ -25,7 +27,6 @@
 namespace vdfx::app {
 
 class Document;
-class EditorPanels;
 
 struct VisualizationOptions {
   double marker_cone_deg = 30.0;  //!< timeline markers highlighted within this angle of the view
@@ -37,7 +38,7 @@ struct VisualizationOptions {
   bool async = false;
 };
 
-/// What the visualizations show this frame.
+/// What the visualizations are asked to show this frame.
 struct VisualizationInput {
   EditTarget effect = effects::EffectType::Exposure;
   effects::Direction view{};
@@ -47,6 +48,36 @@ struct VisualizationInput {
   std::optional<effects::Keyframe> held;
   bool previewing = false;                            //!< a new keyframe is placed at the playhead
   double view_hfov_deg = 90.0, view_vfov_deg = 90.0;  //!< the footprint drawn on the minimap
+
+  /// Keyframe i as the visualizations show it: the selected one where it is held.
+  const effects::Keyframe& shown(std::span<const effects::Keyframe> keyframes,
+                                 std::size_t i) const {
+    return held && selected && i == *selected ? *held : keyframes[i];
+  }
+};
+
+/// What the track plot, the minimap and the timeline's markers show: data, no widgets
+/// (EditorPanels::show draws it). The costly parts carry versions that move when they were
+/// recomputed, so the panels take them over only then.
+struct Visualizations {
+  // ---- the timeline strip's markers
+  std::uint64_t markers_version = 0;
+  std::vector<int> marker_frames;       //!< one per keyframe (the held one where it is held)
+  std::vector<int> highlighted_frames;  //!< the keyframes near the view, and the held one
+  // ---- the track plot: the display value over time at the view
+  std::uint64_t track_version = 0;
+  std::vector<double> track;  //!< at VisualizationCache::track_frames()
+  double track_lo = 0.0, track_hi = 1.0;
+  std::vector<int> track_marks;  //!< keyframes as indices into the sampled frames
+  int track_playhead = 0;        //!< the playhead as an index into the sampled frames
+  // ---- the minimap: the display value over the sphere at the playhead
+  std::uint64_t field_version = 0;  //!< 0: no field yet
+  cv::Mat field;
+  double field_lo = 0.0, field_hi = 1.0;
+  std::vector<effects::Direction> dots;  //!< the keyframes (the held one where it is held)
+  int nearest = -1, selected = -1;       //!< dot indices, -1 for none
+  effects::Direction view{};
+  double view_hfov_deg = 90.0, view_vfov_deg = 90.0;
 };
 
 class VisualizationCache {
@@ -54,14 +85,16 @@ class VisualizationCache {
   VisualizationCache(VisualizationOptions options, std::int64_t frame_count);
   ~VisualizationCache();
 
-  /// Brings the plot, the minimap and the strip's markers on `panels` up to date.
-  void refresh(const Document& doc, const VisualizationInput& in, EditorPanels& panels);
-  /// Waits for the minimap worker to finish and shows its field (frame thread; tests, replays).
+  /// Brings the visualizations up to date and returns them.
+  const Visualizations& refresh(const Document& doc, const VisualizationInput& in);
+  /// The visualizations as the last refresh() or wait() left them.
+  const Visualizations& data() const { return out_; }
+  /// Waits for the minimap worker to finish and takes its field (frame thread; tests, replays).
   /// Returns minimap_current(). Immediate without async.
-  bool wait(std::chrono::milliseconds timeout, EditTarget effect, EditorPanels& panels);
+  bool wait(std::chrono::milliseconds timeout, EditTarget effect);
 
-  const cv::Mat& minimap_field() const { return minimap_.field; }
-  const std::vector<double>& track_values() const { return track_.values; }
+  const cv::Mat& minimap_field() const { return out_.field; }
+  const std::vector<double>& track_values() const { return out_.track; }
   const std::vector<std::int64_t>& track_frames() const { return track_.frames; }
   /// Indices of the current effect's keyframes within marker_cone_deg of the view.
   const std::vector<std::size_t>& near_keyframes() const { return markers_.near; }
@@ -71,8 +104,12 @@ class VisualizationCache {
   bool minimap_current() const { return minimap_.shown == minimap_.requested; }
 
  private:
-  void refresh_markers(const Document& doc, const VisualizationInput& in, EditorPanels& panels);
-  void show_minimap(const MinimapKey& key, cv::Mat field, EditTarget effect, EditorPanels& panels);
+  void refresh_markers(const Document& doc, const VisualizationInput& in);
+  void refresh_track(const VisualizationInput& in, std::span<const effects::Keyframe> ks,
+                     const MinimapKey& key, const effects::RbfInterpolator* rbf);
+  void refresh_minimap(const Document& doc, const VisualizationInput& in, const MinimapKey& key,
+                       const std::function<std::shared_ptr<const effects::RbfInterpolator>()>& rbf);
+  void take_field(const MinimapKey& key, cv::Mat field, EditTarget effect);
 
   struct Markers {
     std::uint64_t revision = ~0ull;
@@ -84,20 +121,19 @@ class VisualizationCache {
   struct Track {
     MinimapKey key;
     effects::Direction view{};
-    std::vector<double> values;
     std::vector<std::int64_t> frames;
   };
   struct Minimap {
     MinimapKey shown;                    //!< what the field shown was computed for
     MinimapKey requested;                //!< what it should show now
     std::optional<std::size_t> nearest;  //!< nearest keyframe at the last request
-    cv::Mat field;
     int computations = 0;
   };
   VisualizationOptions options_;
   Markers markers_;
   Track track_;
   Minimap minimap_;
+  Visualizations out_;
   std::unique_ptr<MinimapWorker> worker_;  //!< with async
 };
 

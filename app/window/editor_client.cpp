@@ -7,6 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <opencv2/core.hpp>
 
+#include "app/editor/bindings.h"
 #include "app/window/flare_layouts.h"
 #include "effects/effect_shaders.h"
 
@@ -33,7 +34,7 @@ void EditorClient::update(const xr::InputState& input, std::int64_t t, FrameInfo
   }
   editor_.set_loop_status(fps_, info.shown_video_frame < 0);
   if (thumbnails_)
-    if (auto thumbs = thumbnails_->take()) editor_.ui().strip->set_thumbnails(std::move(*thumbs));
+    if (auto thumbs = thumbnails_->take()) editor_.set_thumbnails(std::move(*thumbs));
   editor_.update(input, t);
   layers_.update(editor_);
   info.video_frame = editor_.frame();
@@ -206,7 +207,7 @@ void EditorClient::add_pointer_quads(std::vector<xr::QuadLayer>& out) {
     const glm::dvec3 origin = hs.aim.position, dir = xr::forward(hs.aim);
     // The dot sits where the ray meets a panel, else far along it, over the video.
     const bool on_panel = ptr.hit().has_value();
-    if (h == xr::Hand::Left && editor_.ui().layout == PanelLayout::Desktop)
+    if (h == xr::Hand::Left && editor_.ui().layout() == PanelLayout::Desktop)
       continue;  // the sim's resting hand
     glm::dvec3 end = on_panel ? ptr.hit()->panel->world_of_pixel(ptr.hit()->pixel)
                               : origin + drawing_.far_m * dir;
@@ -238,31 +239,8 @@ std::string EditorClient::status_line() const {
 }
 
 std::string EditorClient::controls_text() {
-  return "On a desktop (--input sim, the desktop view):\n"
-         "  click the view / Space     preview the current effect's values at the centre reticle;\n"
-         "                            release places a keyframe there at the current frame\n"
-         "  click a panel              use it (menus, sliders, buttons, timeline, minimap dots)\n"
-         "  right-drag                 look around\n"
-         "  arrow keys                 one step of the slider, pad, menu or timeline under the\n"
-         "                            pointer (held: continuous); the step shows beside the value\n"
-         "  Shift (held) while dragging fine adjustment: a tenth of the mouse's motion\n"
-         "  G (held)                   grab the selected keyframe (else the nearest): it follows\n"
-         "                            the view and the playhead; release moves it (one undo step)\n"
-         "  J / L / K (held)           delete selected or nearest / deselect / unaltered film\n"
-         "  X / Y                      undo / redo\n"
-         "With controllers (headset layout):\n"
-         "  right trigger (on no panel) preview at the view centre; release places a keyframe\n"
-         "  right trigger (on a panel) use the panel\n"
-         "  left trigger + left aim   use the panels not held by the left hand\n"
-         "  right a                   delete the selected keyframe, else the one nearest the view\n"
-         "  right squeeze (held)      grab the selected keyframe (else the nearest); release moves "
-         "it\n"
-         "  right thumbstick click    deselect (so does the Deselect button or a trigger "
-         "placement)\n"
-         "  right b (held)            unaltered film (no effects) while held\n"
-         "  left x / left y           undo / redo\n"
-         "  thumbstick                step the widget under that hand's pointer (else its focus)\n"
-         "  left squeeze (held)       fine adjustment while dragging\n"
+  // The controls come from the binding table; what the panels hold is said once, here.
+  return bindings_help_text() +
          "Panels: effects (menu, the effect's widget, undo / redo, delete, deselect, exponent, "
          "the\n"
          "time scale as degrees of view per second of video, autosave status), timeline (play,\n"

@@ -60,7 +60,7 @@ TEST(DesktopLayout, PanelsFollowTheWindow) {
   const ScreenRect r = ed.ui().screen_rect(kTimelinePanelId);
   EXPECT_EQ(r.x + r.w, 1920 - 12);
   EXPECT_EQ(r.y + r.h, 1080 - 12);
-  EXPECT_EQ(ed.ui().timeline->texture_width(), r.w);
+  EXPECT_EQ(ed.ui().panel(kTimelinePanelId)->texture_width(), r.w);
   EXPECT_GT(desktop_ui_scale({1920, 1080, 100.0}), desktop_ui_scale({}));
 }
 
@@ -74,7 +74,7 @@ TEST(DesktopLayout, HeadsUpLineAndExpiringMessages) {
   for (const char* s :
        {"frame 45 / 90", "0:01.50", "az 30\u00b0 alt -5\u00b0", "Exposure (0 keyframes)", "12 fps"})
     EXPECT_NE(hud.find(s), std::string::npos) << s << " in " << hud;
-  EXPECT_EQ(ed.ui().hud_line->text(), hud);
+  EXPECT_EQ(ed.ui().hud_line()->text(), hud);
   ed.place_keyframe();
   ed.update(test::looking(30.0, -5.0, 2), 2);
   EXPECT_EQ(ed.hud_message(), "placed a keyframe");

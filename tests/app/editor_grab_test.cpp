@@ -51,12 +51,12 @@ class Grab : public ::testing::Test {
 TEST_F(Grab, SqueezeSelectsTheNearestKeyframeAndHighlightsIt) {
   frame(35.0, 0.0, 0.0);
   EXPECT_FALSE(ed_.selected_keyframe());
-  EXPECT_EQ(ed_.ui().minimap->selected(), -1);
+  EXPECT_EQ(ed_.ui().minimap().selected(), -1);
   frame(35.0, 0.0, 1.0);
   ASSERT_TRUE(ed_.selected_keyframe());
   EXPECT_EQ(*ed_.selected_keyframe(), 1u);  // B is nearest
   EXPECT_TRUE(ed_.grabbing());
-  EXPECT_EQ(ed_.ui().minimap->selected(), 1);
+  EXPECT_EQ(ed_.ui().minimap().selected(), 1);
   EXPECT_NE(ed_.status_text().find("GRAB keyframe 2/2"), std::string::npos) << ed_.status_text();
   // Released without turning: nothing moved, no undo step, still selected.
   frame(35.0, 0.0, 0.0);
@@ -66,9 +66,9 @@ TEST_F(Grab, SqueezeSelectsTheNearestKeyframeAndHighlightsIt) {
   EXPECT_EQ(key(1).direction.azimuth_deg, 40.0);
   EXPECT_NE(ed_.status_text().find("SELECTED keyframe 2/2"), std::string::npos)
       << ed_.status_text();
-  EXPECT_NE(ed_.ui().title->text().find("keyframe 2 of 2"), std::string::npos)
-      << ed_.ui().title->text();
-  EXPECT_TRUE(ed_.ui().deselect->enabled());
+  EXPECT_NE(ed_.ui().title().text().find("keyframe 2 of 2"), std::string::npos)
+      << ed_.ui().title().text();
+  EXPECT_TRUE(ed_.ui().deselect_button().enabled());
 }
 
 TEST_F(Grab, NoKeyframeNoSelection) {
@@ -99,7 +99,7 @@ TEST_F(Grab, HeldKeyframeFollowsTheViewLiveAndReleaseIsOneUndoableMove) {
   for (const Direction d : {Direction{40.0, 0.0}, Direction{0.0, 30.0}})
     EXPECT_NEAR(ed_.params_for_view(d, 10).exposure_stops, ref.evaluate(d, 10)[0], 1e-9);
   // The minimap dot moves with it.
-  EXPECT_NEAR(ed_.ui().minimap->keyframes().at(1).azimuth_deg, 60.0, 1e-9);
+  EXPECT_NEAR(ed_.ui().minimap().keyframes().at(1).azimuth_deg, 60.0, 1e-9);
   EXPECT_NE(ed_.status_text().find("az 60 alt 10 frame 10"), std::string::npos)
       << ed_.status_text();
 
@@ -164,8 +164,7 @@ TEST_F(Grab, SelectedKeyframeParamsAreEditedInsteadOfTheChosenValues) {
   frame(40.0, 0.0, 0.0);
   // The slider keeps a position in [0, 1] and maps it back to the range: equal to a few ulps
   // (fused multiply-adds with -march=x86-64-v3 round differently).
-  auto* slider =
-      dynamic_cast<ui::Slider1D*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Exposure)]);
+  auto* slider = dynamic_cast<const ui::Slider1D*>(&ed_.ui().effect_widget(EffectType::Exposure));
   EXPECT_NEAR(slider->get(), -1.0, 1e-12);  // the widget shows the keyframe's value
   ed_.set_selected_params({2.5});
   EXPECT_EQ(key(1).params, std::vector<double>{2.5});
@@ -263,8 +262,7 @@ TEST(GrabPanels, SliderDragOnTheSelectedKeyframeIsOneUndoStep) {
   key(xr::Key::G);
   ASSERT_TRUE(ed.selected_keyframe());
   const auto steps0 = ed.document().undo_stack().undo_size();
-  auto* s =
-      dynamic_cast<ui::Slider1D*>(ed.ui().effect_widgets[static_cast<int>(EffectType::Exposure)]);
+  auto* s = dynamic_cast<const ui::Slider1D*>(&ed.ui().effect_widget(EffectType::Exposure));
   const double y = s->rect().y + s->rect().h / 2;
   auto px = [&](double v) {
     return test::cursor_for(kEffectPanelId,

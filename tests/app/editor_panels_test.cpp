@@ -62,7 +62,7 @@ TEST_F(PanelWiring, PanelsAreInsideTheSimView) {
 }
 
 TEST_F(PanelWiring, MenuRowsSelectEveryEffect) {
-  auto* menu = ed_.ui().menu;
+  const ui::MenuList* menu = &ed_.ui().menu();
   ASSERT_EQ(static_cast<int>(menu->items().size()), EditTarget::kCount);
   for (int item = 0; item < EditTarget::kCount; ++item) {
     const ui::Rect r = menu->cell(item);
@@ -72,8 +72,7 @@ TEST_F(PanelWiring, MenuRowsSelectEveryEffect) {
 }
 
 TEST_F(PanelWiring, SliderDragIsOneUndoStepAndUndoButtonRevertsIt) {
-  auto* s =
-      dynamic_cast<ui::Slider1D*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Exposure)]);
+  auto* s = dynamic_cast<const ui::Slider1D*>(&ed_.ui().effect_widget(EffectType::Exposure));
   const double y = s->rect().y + s->rect().h / 2;
   auto px = [&](double v) {
     return test::cursor_for(
@@ -95,7 +94,7 @@ TEST_F(PanelWiring, SliderDragIsOneUndoStepAndUndoButtonRevertsIt) {
 }
 
 TEST_F(PanelWiring, TimelineScrubPlayAndToggles) {
-  auto* strip = ed_.ui().strip;
+  const ui::TimelineStrip* strip = &ed_.ui().strip();
   click(test::cursor_for(kTimelinePanelId, {strip->x_of(45), strip->rect().y + strip->rect().h / 2},
                          test::kClipFrames));
   EXPECT_EQ(ed_.frame(), 45);
@@ -106,17 +105,16 @@ TEST_F(PanelWiring, TimelineScrubPlayAndToggles) {
   click(at(kTimelinePanelId, "play"));
   EXPECT_FALSE(ed_.playing());
   click(at(kViewsPanelId, "show_minimap"));
-  EXPECT_FALSE(ed_.ui().show_minimap->on());
-  EXPECT_EQ(ed_.ui().minimap->rect().w, 0.0);
+  EXPECT_FALSE(ed_.ui().minimap_toggle().on());
+  EXPECT_EQ(ed_.ui().minimap().rect().w, 0.0);
   click(at(kViewsPanelId, "lock"));
-  EXPECT_EQ(ed_.ui().timeline_place.anchor, Anchor::World);
+  EXPECT_EQ(ed_.ui().placement(kTimelinePanelId).anchor, Anchor::World);
 }
 
 TEST_F(PanelWiring, VignettePadAndTintWheelSetTheChosenValues) {
   ed_.select_effect(EffectType::Vignette);
   step();
-  auto* pad =
-      dynamic_cast<ui::Pad2D*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Vignette)]);
+  auto* pad = dynamic_cast<const ui::Pad2D*>(&ed_.ui().effect_widget(EffectType::Vignette));
   const ui::Rect a = pad->area();
   click(test::cursor_for(kEffectPanelId, {a.x + a.w / 3.0, a.y + a.h / 2.0}));
   const auto& v = ed_.document().params(EffectType::Vignette);
@@ -124,8 +122,7 @@ TEST_F(PanelWiring, VignettePadAndTintWheelSetTheChosenValues) {
   EXPECT_NEAR(v[1], 90.0, 1.0);
   ed_.select_effect(EffectType::Tint);
   step();
-  auto* wheel =
-      dynamic_cast<ui::ColourWheel*>(ed_.ui().effect_widgets[static_cast<int>(EffectType::Tint)]);
+  auto* wheel = dynamic_cast<const ui::ColourWheel*>(&ed_.ui().effect_widget(EffectType::Tint));
   click(test::cursor_for(kEffectPanelId,
                          wheel->disc_centre() + glm::dvec2(0.5 * wheel->disc_radius(), 0.0)));
   const auto& g = ed_.document().params(EffectType::Tint);

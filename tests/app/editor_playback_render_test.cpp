@@ -33,7 +33,7 @@ TEST_P(PlaybackRender, PartialRendersEqualAFullRedraw) {
   ed.select_effect(GetParam().current);
   std::int64_t t = 0;
   ed.update(test::looking(10.0, 0.0, t), t);
-  ui::Panel& p = *ed.ui().timeline;
+  ui::Panel& p = *ed.panel(kTimelinePanelId);
   p.texture();
   const int full0 = p.full_render_count();
   ed.set_playing(true);

@@ -54,13 +54,22 @@ ui::Panel& panel_of(EditorPanels& p, const std::string& id) {
   return *p.panel(id);
 }
 
+// Lays out the panels as the editor shows `target` (its widgets have rectangles only then).
+EditorPanels& panels_showing(EditTarget target) {
+  auto& p = panels_for(1);
+  EditorView v;
+  v.effect = target;
+  v.values = target.neutral();
+  p.show(v);
+  return p;
+}
+
 // Pixel of a value on the effect panel's widgets.
 glm::dvec2 slider_cursor(const std::string& id, double v) {
   auto& p = panels_for(1);
-  auto* s = p.effect->find_as<ui::Slider1D>(id);
-  if (s->rect().w == 0) {  // per-effect sliders are laid out only while shown
-    p.show_effect(*effects::effect_type_from_name(id));
-  }
+  auto* s = panel_of(p, kEffectPanelId).find_as<ui::Slider1D>(id);
+  if (s->rect().w == 0)  // per-effect sliders are laid out only while shown
+    panels_showing(*effects::effect_type_from_name(id));
   const double t = (v - s->axis().min) / (s->axis().max - s->axis().min);
   const glm::dvec2 px{s->track_x0() + t * (s->track_x1() - s->track_x0()),
                       s->rect().y + s->rect().h * 0.5};
@@ -68,18 +77,16 @@ glm::dvec2 slider_cursor(const std::string& id, double v) {
 }
 
 glm::dvec2 pad_cursor(double x, double y) {
-  auto& p = panels_for(1);
-  p.show_effect(effects::EffectType::Vignette);
-  auto* pad = p.effect->find_as<ui::Pad2D>("vignette");
+  auto& p = panels_showing(effects::EffectType::Vignette);
+  auto* pad = panel_of(p, kEffectPanelId).find_as<ui::Pad2D>("vignette");
   const ui::Rect a = pad->area();
   return cursor_for(kEffectPanelId,
                     {a.x + a.w * (x / 180.0), a.y + a.h - a.h * ((y - 0.01) / (180.0 - 0.01))});
 }
 
 glm::dvec2 wheel_cursor(double hue_deg, double sat) {
-  auto& p = panels_for(1);
-  p.show_effect(effects::EffectType::Tint);
-  auto* w = p.effect->find_as<ui::ColourWheel>("tint");
+  auto& p = panels_showing(effects::EffectType::Tint);
+  auto* w = panel_of(p, kEffectPanelId).find_as<ui::ColourWheel>("tint");
   const double a = hue_deg * 3.14159265358979323846 / 180.0;
   const glm::dvec2 px =
       w->disc_centre() + sat * w->disc_radius() * glm::dvec2(std::cos(a), -std::sin(a));
@@ -87,14 +94,14 @@ glm::dvec2 wheel_cursor(double hue_deg, double sat) {
 }
 
 glm::dvec2 menu_cursor(int item) {
-  const ui::Rect r = panels_for(1).menu->cell(item);
+  const ui::Rect r = panels_for(1).menu().cell(item);
   return cursor_for(kEffectPanelId, {r.x + r.w * 0.5, r.y + r.h * 0.5});
 }
 
 glm::dvec2 strip_cursor(int frame, int frames) {
   auto& p = panels_for(frames);
-  const ui::Rect r = p.strip->rect();
-  return cursor_for(kTimelinePanelId, {p.strip->x_of(frame), r.y + r.h * 0.5}, frames);
+  const ui::Rect r = p.strip().rect();
+  return cursor_for(kTimelinePanelId, {p.strip().x_of(frame), r.y + r.h * 0.5}, frames);
 }
 
 // A sim session being recorded, one poll per 30 Hz frame.

@@ -52,7 +52,7 @@ class SelectByPointing : public ::testing::Test {
     step(2);
   }
   glm::dvec2 dot(std::size_t i) {
-    return ed_.ui().minimap->to_pixel(ed_.document().keyframes(EffectType::Exposure)[i].direction);
+    return ed_.ui().minimap().to_pixel(ed_.document().keyframes(EffectType::Exposure)[i].direction);
   }
 
   std::unique_ptr<xr::InputBackend> sim_;
@@ -66,26 +66,24 @@ TEST_F(SelectByPointing, PressingAMinimapDotSelectsThatKeyframe) {
   ASSERT_EQ(ed_.selected_keyframe(), std::optional<std::size_t>(2)) << ed_.status_text();
   EXPECT_FALSE(ed_.previewing()) << "a press on the panel never previews";
   EXPECT_EQ(ed_.document().keyframes(EffectType::Exposure).size(), 3u) << "nothing placed";
-  EXPECT_EQ(ed_.ui().minimap->selected(), 2) << "ringed";
-  EXPECT_NE(ed_.ui().title->text().find("keyframe 3 of 3"), std::string::npos)
-      << ed_.ui().title->text();
+  EXPECT_EQ(ed_.ui().minimap().selected(), 2) << "ringed";
+  EXPECT_NE(ed_.ui().title().text().find("keyframe 3 of 3"), std::string::npos)
+      << ed_.ui().title().text();
   EXPECT_NE(ed_.status_text().find("SELECTED keyframe 3/3 (az 120 alt 30 frame 40)"),
             std::string::npos)
       << ed_.status_text();
   // The widget shows its values.
-  EXPECT_DOUBLE_EQ(dynamic_cast<ui::Slider1D*>(
-                       ed_.ui().effect_widgets[static_cast<std::size_t>(EffectType::Exposure)])
-                       ->value()
-                       .x,
-                   2.0);
+  EXPECT_DOUBLE_EQ(
+      dynamic_cast<const ui::Slider1D*>(&ed_.ui().effect_widget(EffectType::Exposure))->value().x,
+      2.0);
 
   // A press on the map away from every dot keeps the selection; another dot moves it.
-  const ui::Rect map = ed_.ui().minimap->map_area();
+  const ui::Rect map = ed_.ui().minimap().map_area();
   click_views({map.x + 0.5 * map.w, map.y + 0.9 * map.h});
   EXPECT_EQ(ed_.selected_keyframe(), std::optional<std::size_t>(2));
   click_views(dot(0));
   EXPECT_EQ(ed_.selected_keyframe(), std::optional<std::size_t>(0));
-  EXPECT_EQ(ed_.ui().minimap->selected(), 0);
+  EXPECT_EQ(ed_.ui().minimap().selected(), 0);
   // Pressing the same dot again after deselecting selects it again.
   ed_.deselect();
   click_views(dot(0));
@@ -135,7 +133,7 @@ TEST(SelectByJump, PreviousAndNextSelectTheKeyframeTheyJumpTo) {
   EXPECT_EQ(ed.frame(), 40);
   EXPECT_EQ(ed.selected_keyframe(), std::optional<std::size_t>(2));
   ed.update(test::looking(0.0, 0.0), 33'333'333);
-  EXPECT_EQ(ed.ui().minimap->selected(), 2);
+  EXPECT_EQ(ed.ui().minimap().selected(), 2);
   EXPECT_NE(ed.status_text().find("SELECTED keyframe 3/3"), std::string::npos) << ed.status_text();
   ASSERT_TRUE(ed.jump_to_keyframe(-1));
   EXPECT_EQ(ed.frame(), 20);

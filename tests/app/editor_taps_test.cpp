@@ -86,7 +86,7 @@ TEST_F(Taps, QuickClickOnAButtonClicksIt) {
   ed_.document().add_keyframe(EffectType::Exposure, {{0.0, 0.0}, 0, {1.0}});
   step();
   ASSERT_EQ(count(), 1u);
-  const ui::Rect r = ed_.ui().undo->rect();
+  const ui::Rect r = ed_.ui().undo_button().rect();
   click(test::cursor_for(kEffectPanelId, r.centre()));
   EXPECT_EQ(count(), 0u) << ed_.status_text();
   EXPECT_EQ(ed_.document().undo_stack().redo_size(), 1u);

@@ -18,6 +18,7 @@ Editor make_editor(std::int64_t frames = 90) {
   return Editor(test::empty_sidecar(frames), DocumentOptions{{.async = false}}, EditorOptions{});
 }
 
+/// The right trigger at `v` (run it through an xr::ActionSync for its edges, as a backend's poll).
 xr::InputState with_trigger(xr::InputState in, double v) {
   in.right.trigger = v;
   return in;
@@ -25,22 +26,23 @@ xr::InputState with_trigger(xr::InputState in, double v) {
 
 TEST(EditorTools, TriggerPreviewsFollowsHeadAndPlacesOnRelease) {
   Editor ed = make_editor();
+  xr::ActionSync sync;  //!< the edges InputBackend::poll would add
   ed.set_chosen_params({2.0});
   std::int64_t t = 0;
   ed.update(looking(10.0, 0.0, t), t);
   EXPECT_FALSE(ed.previewing());
   EXPECT_EQ(ed.current_params().exposure_stops, 0.0);
   t += kFrame;
-  ed.update(with_trigger(looking(10.0, 0.0, t), 1.0), t);
+  ed.update(sync.sync(with_trigger(looking(10.0, 0.0, t), 1.0)), t);
   EXPECT_TRUE(ed.previewing());
   EXPECT_EQ(ed.current_params().exposure_stops, 2.0);  // as if a keyframe sat at the view centre
   EXPECT_TRUE(ed.document().keyframes(EffectType::Exposure).empty());
   // Turning the head moves the preview with it; nothing is placed yet.
   t += kFrame;
-  ed.update(with_trigger(looking(40.0, 5.0, t), 1.0), t);
+  ed.update(sync.sync(with_trigger(looking(40.0, 5.0, t), 1.0)), t);
   EXPECT_EQ(ed.current_params().exposure_stops, 2.0);
   t += kFrame;
-  ed.update(with_trigger(looking(40.0, 5.0, t), 0.0), t);
+  ed.update(sync.sync(with_trigger(looking(40.0, 5.0, t), 0.0)), t);
   EXPECT_FALSE(ed.previewing());
   const auto& ks = ed.document().keyframes(EffectType::Exposure);
   ASSERT_EQ(ks.size(), 1u);
@@ -52,9 +54,10 @@ TEST(EditorTools, TriggerPreviewsFollowsHeadAndPlacesOnRelease) {
 
 TEST(EditorTools, PreviewAwayFromTheViewInterpolatesWithThePreviewKeyframe) {
   Editor ed = make_editor();
+  xr::ActionSync sync;  //!< the edges InputBackend::poll would add
   ed.document().add_keyframe(EffectType::Exposure, {{-90.0, 0.0}, 0, {-2.0}});
   ed.set_chosen_params({3.0});
-  ed.update(with_trigger(looking(60.0, 0.0), 1.0), 0);
+  ed.update(sync.sync(with_trigger(looking(60.0, 0.0), 1.0)), 0);
   ASSERT_TRUE(ed.previewing());
   const effects::RbfInterpolator ref(
       std::vector<effects::Keyframe>{{{-90.0, 0.0}, 0, {-2.0}}, {{60.0, 0.0}, 0, {3.0}}}, 1,
@@ -66,13 +69,14 @@ TEST(EditorTools, PreviewAwayFromTheViewInterpolatesWithThePreviewKeyframe) {
 
 TEST(EditorTools, ReleaseNearAnExistingKeyframeOnTheSameFrameReplacesIt) {
   Editor ed = make_editor();
+  xr::ActionSync sync;  //!< the edges InputBackend::poll would add
   ed.set_chosen_params({1.0});
   std::int64_t t = 0;
   auto click_at = [&](double az) {
     t += kFrame;
-    ed.update(with_trigger(looking(az, 0.0, t), 1.0), t);
+    ed.update(sync.sync(with_trigger(looking(az, 0.0, t), 1.0)), t);
     t += kFrame;
-    ed.update(with_trigger(looking(az, 0.0, t), 0.0), t);
+    ed.update(sync.sync(with_trigger(looking(az, 0.0, t), 0.0)), t);
   };
   click_at(20.0);
   ed.set_chosen_params({-1.0});

@@ -81,7 +81,7 @@ TEST(EditorVisualizations, EditorHighlightsMarkersNearTheView) {
   ed.document().add_keyframe(EffectType::Exposure, {{90.0, 0.0}, 50, {1.0}});
   ed.update(test::looking(80.0, 0.0), 0);
   EXPECT_EQ(ed.near_keyframes(), std::vector<std::size_t>{1});
-  EXPECT_EQ(ed.ui().strip->keyframes(), (std::vector<int>{5, 50}));
+  EXPECT_EQ(ed.ui().strip().keyframes(), (std::vector<int>{5, 50}));
   ed.update(test::looking(10.0, 0.0), 1);
   EXPECT_EQ(ed.near_keyframes(), std::vector<std::size_t>{0});
 }

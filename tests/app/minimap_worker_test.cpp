@@ -154,7 +154,7 @@ TEST(EditorAsyncMinimap, CatchesUpWithTheSynchronousFieldsWhilePlaying) {
   }
   ASSERT_TRUE(async.wait_for_visualizations(10s));
   EXPECT_TRUE(same_field(async.minimap_field(), sync.minimap_field()));
-  EXPECT_EQ(async.ui().minimap->keyframes().size(), 3u);
+  EXPECT_EQ(async.ui().minimap().keyframes().size(), 3u);
   // An edit: the next field follows it.
   sync.set_playing(false);
   async.set_playing(false);

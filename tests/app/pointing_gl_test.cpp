@@ -72,6 +72,12 @@ std::optional<glm::dvec2> drawn_centre(const cv::Mat& bgr, const cv::Vec3b& colo
   return glm::dvec2(sx / n, sy / n);
 }
 
+/// The id of the widget under the mouse's ray ("" for none).
+std::string hovered_id(const Editor& ed) {
+  const ui::Widget* w = ed.pointer(xr::Hand::Right).hovered();
+  return w ? w->id() : std::string();
+}
+
 TEST(PointingGl, APressAtTheDrawnCentreOfEveryWidgetHitsItInEveryMirrorMode) {
   xr::GlContextOptions go;
   go.width = 64;
@@ -161,7 +167,7 @@ TEST(PointingGl, APressAtTheDrawnCentreOfEveryWidgetHitsItInEveryMirrorMode) {
         sim->push_event(m);
         t += 33'333'333;
         ed.update(sim->poll(t), t);
-        const std::string& got = ed.pointer(xr::Hand::Right).hovered_widget();
+        const std::string got = hovered_id(ed);
         const bool ok = got == tg.widget;
         hit += ok;
         EXPECT_TRUE(ok) << xr::mirror_mode_name(mode) << " eye " << e << ": " << tg.panel << "/"
@@ -172,7 +178,7 @@ TEST(PointingGl, APressAtTheDrawnCentreOfEveryWidgetHitsItInEveryMirrorMode) {
         sim->push_event(xr::MouseMoveEvent{c->x, c->y});
         t += 33'333'333;
         ed.update(sim->poll(t), t);
-        pinhole_hits += ed.pointer(xr::Hand::Right).hovered_widget() == tg.widget;
+        pinhole_hits += hovered_id(ed) == tg.widget;
         char buf[64];
         std::snprintf(buf, sizeof buf, "%s(%.0f, %.0f) %s", cell.empty() ? "" : "; ", c->x, c->y,
                       ok ? "hit" : "MISS");

@@ -117,7 +117,7 @@ void BM_EditorTimelinePlaying(benchmark::State& state) {
   std::int64_t t = 0;
   ed.update(in, t);
   ed.set_playing(true);
-  Panel& p = *ed.ui().timeline;
+  Panel& p = *ed.panel(vdfx::app::kTimelinePanelId);
   p.texture();
   const bool full = state.range(0) == 0;
   for (auto _ : state) {

@@ -1,5 +1,5 @@
 /// @file
-/// @brief Ray hit testing, pointer states, drags, hysteresis, thumbstick, events; panel dirty
+/// @brief Ray hit testing, pointer states, drags, trigger edges, thumbstick, events; panel dirty
 /// tracking and placement. No GL context anywhere.
 #include "ui/interaction.h"
 
@@ -23,16 +23,29 @@ struct Scene {
   std::unique_ptr<Panel> panel = make_effect_panel();
   std::vector<Panel*> panels{panel.get()};
   Pointer pointer;
+  bool trigger_down = false;  //!< the edges' level before this step
   Scene() { panel->set_world_pose({{0.0, 1.5, -1.0}, glm::dquat(1, 0, 0, 0)}); }
   Ray ray_to(glm::dvec2 pixel) const { return {kEye, panel->world_of_pixel(pixel) - kEye}; }
   Ray ray_to(const std::string& widget, glm::dvec2 offset = {0, 0}) const {
     return ray_to(panel->find(widget)->rect().centre() + offset);
   }
+  /// The trigger as a button with its edges (the caller's edge detector, here a plain level).
+  ButtonEdges edges(double trigger) {
+    const bool down = trigger > 0.5;
+    const ButtonEdges e{down, down && !trigger_down, !down && trigger_down};
+    trigger_down = down;
+    return e;
+  }
   std::vector<Event> step(const Ray& r, double trigger, glm::dvec2 stick = {0, 0},
                           double dt = 1.0 / 72) {
-    return pointer.update(panels, {r, trigger, stick}, dt);
+    return pointer.update(panels, {r, edges(trigger), stick}, dt);
   }
 };
+
+/// A widget's id, "" for none.
+std::string id_of(const Widget* w) {
+  return w ? w->id() : std::string();
+}
 
 std::vector<EventKind> kinds(const std::vector<Event>& ev) {
   std::vector<EventKind> k;
@@ -77,11 +90,11 @@ TEST(HitTest, RaysHitKnownWidgets) {
   Scene s;
   for (const char* id : {"undo", "redo", "exposure", "effect_menu", "world_lock"}) {
     s.step(s.ray_to(id), 0.0);
-    EXPECT_EQ(s.pointer.hovered_widget(), id);
+    EXPECT_EQ(id_of(s.pointer.hovered()), id);
     EXPECT_TRUE(s.panel->find(id)->hovered());
   }
   s.step(s.ray_to("title"), 0.0);  // labels are not interactive
-  EXPECT_EQ(s.pointer.hovered_widget(), "");
+  EXPECT_EQ(id_of(s.pointer.hovered()), "");
   EXPECT_FALSE(s.panel->find("world_lock")->hovered());
 }
 
@@ -157,18 +170,19 @@ TEST(Pointer, ToggleAndMenuReportValueChanges) {
   EXPECT_EQ(menu->selected(), 5);
 }
 
-// Trigger sequence -> pressed state: press above 0.55, release below 0.45.
-TEST(Pointer, TriggerHysteresis) {
-  const struct {
-    double trigger;
-    bool down;
-  } steps[] = {{0.0, false},  {0.5, false}, {0.56, true},  {0.5, true}, {0.46, true},
-               {0.44, false}, {0.5, false}, {0.54, false}, {0.9, true}, {0.2, false}};
+// The pointer takes the trigger's edges as given: a level without a press edge presses nothing,
+// and a tap (pressed in one update, released in the next) clicks.
+TEST(Pointer, ActsOnTheTriggerEdgesItIsGiven) {
   Scene s;
-  for (const auto& st : steps) {
-    s.step(s.ray_to("undo"), st.trigger);
-    EXPECT_EQ(s.pointer.trigger_down(), st.down) << "trigger " << st.trigger;
-  }
+  Pointer& p = s.pointer;
+  const Ray undo = s.ray_to("undo");
+  EXPECT_TRUE(p.update(s.panels, {undo, {true, false, false}}, 0.0).empty());
+  EXPECT_EQ(p.pressed(), nullptr) << "down, but no press edge";
+  p.update(s.panels, {undo, {true, true, false}}, 0.0);
+  EXPECT_EQ(id_of(p.pressed()), "undo");
+  const auto ev = p.update(s.panels, {undo, {false, false, true}}, 0.0);
+  ASSERT_EQ(kinds(ev), std::vector{EventKind::Clicked});
+  EXPECT_EQ(p.pressed(), nullptr);
 }
 
 TEST(Pointer, DragMovesSliderMonotonicallyAndBracketsTheGesture) {
@@ -216,7 +230,7 @@ TEST(Pointer, ThumbstickPushStepsOnceThenMovesAtATimeBasedRate) {
     s.step(s.ray_to("exposure"), 0.0);
     s.step(s.ray_to("exposure"), 1.0);
     s.step(s.ray_to("exposure"), 0.0);
-    EXPECT_EQ(s.pointer.focused_widget(), "exposure");
+    EXPECT_EQ(id_of(s.pointer.focused()), "exposure");
     auto* sl = s.panel->find_as<Slider1D>("exposure");
     sl->set_value(0.0);
     std::vector<Event> all;
@@ -247,7 +261,7 @@ TEST(Pointer, ThumbstickActsOnTheHoveredWidget) {
   auto* sl = s.panel->find_as<Slider1D>("exposure");
   sl->set_value(0.0);
   s.step(s.ray_to("exposure"), 0.0, {0.0, 0.0}, 0.05);
-  EXPECT_TRUE(s.pointer.focused_widget().empty());
+  EXPECT_TRUE(s.pointer.focused() == nullptr);
   s.step(s.ray_to("exposure"), 0.0, {-1.0, 0.0}, 0.05);
   s.step(s.ray_to("exposure"), 0.0, {0.0, 0.0}, 0.05);
   EXPECT_NEAR(sl->get(), -0.1, 1e-12);
@@ -260,7 +274,7 @@ TEST(Pointer, FineDragMovesATenthOfThePointerWithoutJumps) {
   const double per_px = 16.0 / (sl->track_x1() - sl->track_x0());  // stops per panel pixel
   const glm::dvec2 thumb = *sl->drag_point();
   const auto fine = [&](glm::dvec2 p, double trigger, bool on) {
-    return s.pointer.update(s.panels, {s.ray_to(p), trigger, {0.0, 0.0}, on}, 1.0 / 72);
+    return s.pointer.update(s.panels, {s.ray_to(p), s.edges(trigger), {0.0, 0.0}, on}, 1.0 / 72);
   };
   // A fine press away from the thumb keeps the value; 200 px of motion move it by 20 px' worth.
   const glm::dvec2 press = thumb + glm::dvec2(150.0, 0.0);
@@ -285,7 +299,7 @@ TEST(Pointer, ThumbstickStepsMenuWithRepeat) {
   const glm::dvec2 row0{menu->rect().centre().x, menu->rect().y + 40};
   s.step(s.ray_to(row0), 1.0);
   s.step(s.ray_to(row0), 0.0);
-  ASSERT_EQ(s.pointer.focused_widget(), "effect_menu");
+  ASSERT_EQ(id_of(s.pointer.focused()), "effect_menu");
   const double dt = 0.05;
   const int frames = 20;  // 1 s held down
   for (int i = 0; i < frames; ++i) s.step(s.ray_to(row0), 0.0, {0.0, -1.0}, dt);
