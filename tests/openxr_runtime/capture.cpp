@@ -122,13 +122,16 @@ void Recorder::haptic(HapticRecord record) {
   haptics_.push_back(std::move(record));
 }
 
-void Recorder::frame(CapturedFrame frame) {
-  if (spec_.mode == CaptureSpec::Mode::Last) {
-    // The last frame that showed something: the frames on the way out submit no layers.
-    if (!frame.layers.empty()) last_ = std::move(frame);
-  } else {
+std::optional<CapturedFrame> Recorder::frame(CapturedFrame frame) {
+  if (spec_.mode != CaptureSpec::Mode::Last) {
     write_frame(frame);
+    return std::nullopt;
   }
+  // The last frame that showed something: the frames on the way out submit no layers.
+  if (frame.layers.empty()) return frame;
+  std::optional<CapturedFrame> old = std::move(last_);
+  last_ = std::move(frame);
+  return old;
 }
 
 void Recorder::write_frame(const CapturedFrame& frame) {

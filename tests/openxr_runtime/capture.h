@@ -35,6 +35,11 @@ struct CapturedView {
   std::uint32_t array_index = 0;
   std::uint32_t image_index = 0;  //!< which swapchain image it was
   CapturedImage image;
+  /// VDFX_TEST_RUNTIME_CAPTURE=last: a GPU copy of the region, read into `image` only when the
+  /// session ends (reading every frame back would cost a generic90 frame about 50 ms on
+  /// llvmpipe); 0 once read.
+  GLuint pending_copy = 0;
+  bool format_srgb = false;
 };
 
 struct CapturedLayer {
@@ -76,8 +81,12 @@ class Recorder {
   void interaction_profile(const std::string& path, XrTime time);
   void haptic(HapticRecord record);
   /// Writes the frame's files now, or (VDFX_TEST_RUNTIME_CAPTURE=last) keeps it for finish() when
-  /// it has layers.
-  void frame(CapturedFrame frame);
+  /// it has layers; returns the frame it no longer keeps, whose GPU copies the caller drops.
+  std::optional<CapturedFrame> frame(CapturedFrame frame);
+  /// Whether frames are kept (last) rather than written at once.
+  bool keeps_last() const { return spec_.mode == CaptureSpec::Mode::Last; }
+  /// The kept frame, whose GPU copies are read before finish().
+  std::optional<CapturedFrame>& kept() { return last_; }
   /// Writes the last frame (when kept) and session.json; again later, it does nothing.
   void finish(std::int64_t frames_waited, std::int64_t frames_ended);
 

@@ -71,9 +71,10 @@ XrResult check_sub_image(const char* fn, const std::string& what, const XrSwapch
   return XR_SUCCESS;
 }
 
+/// A view's record; its pixels read now, or (`later`) copied on the GPU to be read at the end.
 CapturedView capture_view(const Instance& inst, const Session& s, const Space& space, XrTime time,
                           const XrPosef& pose, const XrSwapchainSubImage& si, const Swapchain& sc,
-                          bool read) {
+                          bool later) {
   CapturedView v;
   v.pose = pose;
   if (const auto base = space_pose(inst, s, space, time)) {
@@ -85,13 +86,15 @@ CapturedView capture_view(const Instance& inst, const Session& s, const Space& s
   v.rect = si.imageRect;
   v.array_index = si.imageArrayIndex;
   v.image_index = *sc.released;
-  if (read) v.image = read_back(sc, *sc.released, si.imageArrayIndex, si.imageRect);
+  v.format_srgb = sc.format.srgb;
+  if (later) v.pending_copy = copy_region(sc, *sc.released, si.imageArrayIndex, si.imageRect);
+  if (!v.pending_copy) v.image = read_back(sc, *sc.released, si.imageArrayIndex, si.imageRect);
   return v;
 }
 
 XrResult check_projection(const char* fn, const std::string& what,
                           const XrCompositionLayerProjection& p, const Instance& inst,
-                          const Session& s, CapturedLayer* out, XrTime time) {
+                          const Session& s, CapturedLayer* out, XrTime time, bool later) {
   if (p.viewCount != 2 || !p.views) {
     return fail(fn, XR_ERROR_VALIDATION_FAILURE,
                 what + ".viewCount must be 2 (the stereo view configuration)");
@@ -107,7 +110,7 @@ XrResult check_projection(const char* fn, const std::string& what,
     if (XR_FAILED(r)) return r;
     if (out) {
       CapturedView cv = capture_view(inst, s, *find_space(p.space), time, pv.pose, pv.subImage,
-                                     *si.swapchain, true);
+                                     *si.swapchain, later);
       cv.fov = pv.fov;
       out->views.push_back(std::move(cv));
     }
@@ -116,7 +119,8 @@ XrResult check_projection(const char* fn, const std::string& what,
 }
 
 XrResult check_quad(const char* fn, const std::string& what, const XrCompositionLayerQuad& q,
-                    const Instance& inst, const Session& s, CapturedLayer* out, XrTime time) {
+                    const Instance& inst, const Session& s, CapturedLayer* out, XrTime time,
+                    bool later) {
   if (q.eyeVisibility != XR_EYE_VISIBILITY_BOTH && q.eyeVisibility != XR_EYE_VISIBILITY_LEFT &&
       q.eyeVisibility != XR_EYE_VISIBILITY_RIGHT) {
     return fail(fn, XR_ERROR_VALIDATION_FAILURE, what + ".eyeVisibility");
@@ -130,15 +134,16 @@ XrResult check_quad(const char* fn, const std::string& what, const XrComposition
                               ? "both"
                               : (q.eyeVisibility == XR_EYE_VISIBILITY_LEFT ? "left" : "right");
     out->size = q.size;
-    out->views.push_back(
-        capture_view(inst, s, *find_space(q.space), time, q.pose, q.subImage, *si.swapchain, true));
+    out->views.push_back(capture_view(inst, s, *find_space(q.space), time, q.pose, q.subImage,
+                                      *si.swapchain, later));
   }
   return XR_SUCCESS;
 }
 
-/// Checks one layer; with `out`, also reads it back.
+/// Checks one layer; with `out`, also reads it back (`later`: copies it to read at the end).
 XrResult check_layer(const char* fn, std::uint32_t index, const XrCompositionLayerBaseHeader* layer,
-                     const Instance& inst, const Session& s, CapturedLayer* out, XrTime time) {
+                     const Instance& inst, const Session& s, CapturedLayer* out, XrTime time,
+                     bool later = false) {
   const std::string what = "frameEndInfo->layers[" + std::to_string(index) + "]";
   if (!layer) return fail(fn, XR_ERROR_LAYER_INVALID, what + " is null");
   if (layer->type != XR_TYPE_COMPOSITION_LAYER_PROJECTION &&
@@ -161,11 +166,11 @@ XrResult check_layer(const char* fn, std::uint32_t index, const XrCompositionLay
   if (layer->type == XR_TYPE_COMPOSITION_LAYER_PROJECTION) {
     if (out) out->type = "projection";
     return check_projection(fn, what, *reinterpret_cast<const XrCompositionLayerProjection*>(layer),
-                            inst, s, out, time);
+                            inst, s, out, time, later);
   }
   if (out) out->type = "quad";
   return check_quad(fn, what, *reinterpret_cast<const XrCompositionLayerQuad*>(layer), inst, s, out,
-                    time);
+                    time, later);
 }
 
 }  // namespace
@@ -251,11 +256,17 @@ XRAPI_ATTR XrResult XRAPI_CALL xrEndFrame(XrSession session, const XrFrameEndInf
         frame.frame = s->begun_frame;
         frame.display_time = info->displayTime;
         frame.predicted_display_time = kClockOriginNs + s->begun_frame * inst.hmd.period_ns();
+        const bool later = s->recorder->keeps_last();
         for (uint32_t i = 0; i < info->layerCount; ++i) {
           frame.layers.emplace_back();
-          check_layer(fn, i, info->layers[i], inst, *s, &frame.layers.back(), info->displayTime);
+          check_layer(fn, i, info->layers[i], inst, *s, &frame.layers.back(), info->displayTime,
+                      later);
         }
-        s->recorder->frame(std::move(frame));
+        if (auto dropped = s->recorder->frame(std::move(frame))) {
+          for (auto& layer : dropped->layers) {
+            for (auto& view : layer.views) drop_copy(view);
+          }
+        }
       }
     }
     s->in_frame = false;

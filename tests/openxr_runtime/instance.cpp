@@ -1,6 +1,7 @@
 /// @file
 /// @brief Instance, system and view configuration entry points, paths, strings and the event
 /// queue (xrPollEvent).
+#include <cstdio>
 #include <cstring>
 
 #include "tests/openxr_runtime/entry_points.h"

@@ -3,6 +3,7 @@
 /// SYNCHRONIZED at the first xrWaitFrame, VISIBLE and FOCUSED once a frame is submitted,
 /// STOPPING when the app or the script asks to leave, then IDLE and EXITING after xrEndSession;
 /// LOSS_PENDING on request. The events go through the instance's queue (xrPollEvent).
+#include <algorithm>
 #include <cstring>
 
 #include "tests/openxr_runtime/capture.h"
@@ -61,9 +62,15 @@ void begin_exit(Instance& inst, Session& s) {
 
 void destroy_session(Instance& inst) {
   Session& s = *inst.session;
-  if (!s.swapchains.empty() || s.own_context) {
+  const bool kept = s.recorder && s.recorder->kept();
+  if (!s.swapchains.empty() || s.own_context || kept) {
     {
       GlContextScope scope(s);
+      if (kept) {
+        for (auto& layer : s.recorder->kept()->layers) {
+          for (auto& view : layer.views) resolve_copy(view);
+        }
+      }
       for (auto& sc : s.swapchains) delete_swapchain_textures(*sc);
     }
     destroy_own_context(s);

@@ -121,13 +121,18 @@ void delete_swapchain_textures(Swapchain& sc) {
   sc.textures.clear();
 }
 
-CapturedImage read_back(const Swapchain& sc, std::uint32_t image, std::uint32_t array_index,
-                        const XrRect2Di& rect) {
+namespace {
+
+/// Reads `rect` of layer `layer` of a texture (`width` x `height`, `layers` deep) as the headset
+/// would show it, leaving the app's GL state as it was.
+CapturedImage read_texture(GLenum target, GLuint texture, std::uint32_t width, std::uint32_t height,
+                           std::uint32_t layers, std::uint32_t layer, bool srgb,
+                           const XrRect2Di& rect) {
   GLint previous = 0;
-  glGetIntegerv(binding_query(sc.target), &previous);
+  glGetIntegerv(binding_query(target), &previous);
   const PackState pack;
-  glBindTexture(sc.target, sc.textures.at(image));
-  const std::size_t layer_pixels = std::size_t{sc.width} * sc.height;
+  glBindTexture(target, texture);
+  const std::size_t layer_pixels = std::size_t{width} * height;
   CapturedImage out;
   out.width = rect.extent.width;
   out.height = rect.extent.height;
@@ -136,27 +141,27 @@ CapturedImage read_back(const Swapchain& sc, std::uint32_t image, std::uint32_t 
   std::vector<std::uint16_t> shorts;
   // sRGB swapchains hold display values already: read their bytes. Every other format holds
   // linear light for the compositor: read it and encode it as the display would.
-  if (sc.format.srgb) {
-    bytes.resize(layer_pixels * sc.array_size * 4);
-    glGetTexImage(sc.target, 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+  if (srgb) {
+    bytes.resize(layer_pixels * layers * 4);
+    glGetTexImage(target, 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
     out.encoding = "stored";
   } else {
-    shorts.resize(layer_pixels * sc.array_size * 4);
-    glGetTexImage(sc.target, 0, GL_RGBA, GL_UNSIGNED_SHORT, shorts.data());
+    shorts.resize(layer_pixels * layers * 4);
+    glGetTexImage(target, 0, GL_RGBA, GL_UNSIGNED_SHORT, shorts.data());
     out.encoding = "linear-to-srgb";
   }
   const auto& table = srgb_table();
-  glBindTexture(sc.target, static_cast<GLuint>(previous));
+  glBindTexture(target, static_cast<GLuint>(previous));
   // GL's rows go up from the bottom; the PNG's go down from the top.
   for (int y = 0; y < out.height; ++y) {
     const std::size_t src_row = std::size_t(rect.offset.y) + std::size_t(out.height - 1 - y);
     for (int x = 0; x < out.width; ++x) {
-      const std::size_t src = (array_index * layer_pixels + src_row * sc.width +
-                               std::size_t(rect.offset.x) + std::size_t(x)) *
-                              4;
+      const std::size_t src =
+          (layer * layer_pixels + src_row * width + std::size_t(rect.offset.x) + std::size_t(x)) *
+          4;
       std::uint8_t* dst = &out.rgba[(std::size_t(y) * out.width + std::size_t(x)) * 4];
       for (int c = 0; c < 4; ++c) {
-        if (sc.format.srgb) {
+        if (srgb) {
           dst[c] = bytes[src + std::size_t(c)];
         } else {
           const std::uint16_t v = shorts[src + std::size_t(c)];
@@ -166,6 +171,48 @@ CapturedImage read_back(const Swapchain& sc, std::uint32_t image, std::uint32_t 
     }
   }
   return out;
+}
+
+}  // namespace
+
+CapturedImage read_back(const Swapchain& sc, std::uint32_t image, std::uint32_t array_index,
+                        const XrRect2Di& rect) {
+  return read_texture(sc.target, sc.textures.at(image), sc.width, sc.height, sc.array_size,
+                      array_index, sc.format.srgb, rect);
+}
+
+GLuint copy_region(const Swapchain& sc, std::uint32_t image, std::uint32_t array_index,
+                   const XrRect2Di& rect) {
+  const bool can = epoxy_gl_version() >= 43 || (epoxy_has_gl_extension("GL_ARB_copy_image") &&
+                                                epoxy_has_gl_extension("GL_ARB_texture_storage"));
+  if (!can) return 0;
+  GLint previous = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
+  GLuint copy = 0;
+  glGenTextures(1, &copy);
+  glBindTexture(GL_TEXTURE_2D, copy);
+  glTexStorage2D(GL_TEXTURE_2D, 1, static_cast<GLenum>(sc.format.gl_format), rect.extent.width,
+                 rect.extent.height);
+  glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
+  glCopyImageSubData(sc.textures.at(image), sc.target, 0, rect.offset.x, rect.offset.y,
+                     static_cast<GLint>(array_index), copy, GL_TEXTURE_2D, 0, 0, 0, 0,
+                     rect.extent.width, rect.extent.height, 1);
+  return copy;
+}
+
+void resolve_copy(CapturedView& view) {
+  if (!view.pending_copy) return;
+  const XrRect2Di whole{{0, 0}, view.rect.extent};
+  view.image = read_texture(
+      GL_TEXTURE_2D, view.pending_copy, static_cast<std::uint32_t>(view.rect.extent.width),
+      static_cast<std::uint32_t>(view.rect.extent.height), 1, 0, view.format_srgb, whole);
+  drop_copy(view);
+}
+
+void drop_copy(CapturedView& view) {
+  if (!view.pending_copy) return;
+  glDeleteTextures(1, &view.pending_copy);
+  view.pending_copy = 0;
 }
 
 namespace api {

@@ -16,4 +16,15 @@ void delete_swapchain_textures(Swapchain& sc);
 CapturedImage read_back(const Swapchain& sc, std::uint32_t image, std::uint32_t array_index,
                         const XrRect2Di& rect);
 
+/// Copies `rect` of one array layer of one image into a new texture of the same format on the
+/// GPU (glCopyImageSubData: no GL state of the app is touched), for a read-back later; 0 when
+/// the context cannot (OpenGL before 4.3 without ARB_copy_image and ARB_texture_storage): then
+/// read back at once.
+GLuint copy_region(const Swapchain& sc, std::uint32_t image, std::uint32_t array_index,
+                   const XrRect2Di& rect);
+
+/// Reads a view's pending copy into its image and deletes the copy; drop_copy only deletes it.
+void resolve_copy(CapturedView& view);
+void drop_copy(CapturedView& view);
+
 }  // namespace vdfx::test_runtime
