@@ -11,9 +11,11 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "effects/effect_types.h"
 #include "effects/keyframe.h"
 #include "io/excerpt.h"
 #include "io/json_text.h"
@@ -68,12 +70,19 @@ class Checker {
   /// Reports every key that is not in `known` (a reader must never silently drop data).
   void only_keys(const json& obj, const std::string& ptr,
                  std::initializer_list<const char*> known) {
+    only_keys_in(obj, ptr, known);
+  }
+  void only_keys(const json& obj, const std::string& ptr, const std::vector<std::string>& known) {
+    only_keys_in(obj, ptr, known);
+  }
+  template <class Names>
+  void only_keys_in(const json& obj, const std::string& ptr, const Names& known) {
     for (const auto& [k, v] : obj.items()) {
       bool ok = false;
-      for (const char* n : known) ok = ok || k == n;
+      for (const auto& n : known) ok = ok || k == n;
       if (!ok) {
         std::string list;
-        for (const char* n : known) list += std::string(list.empty() ? "" : ", ") + n;
+        for (const auto& n : known) list += std::string(list.empty() ? "" : ", ") + n;
         error(ptr + "/" + excerpt(json_pointer_token(k)),
               "unknown field \"" + excerpt(k) + "\" (expected: " + list + ")");
       }
@@ -180,5 +189,12 @@ bool keyframe_count_ok(Checker& c, const json& keyframes, const std::string& ptr
 /// its "params" must be an object, whose fields the caller reads.
 void read_keyframe_place(Checker& c, const json& v, const std::string& ptr,
                          std::optional<std::int64_t> frames, effects::Keyframe& out);
+
+/// The keyframes of an extension effect (flare, grain), whose params are the scalars `specs`:
+/// each required and within its range; each keyframe starts from the specs' neutral values.
+void read_scalar_keyframes(Checker& c, const json& v, const std::string& ptr,
+                           std::optional<std::int64_t> frames,
+                           std::span<const effects::ParamSpec> specs,
+                           std::vector<effects::Keyframe>& out);
 
 }  // namespace vdfx::io::detail

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "effects/coords.h"
+#include "effects/direction_angle.h"
 #include "io/sidecar.h"
 #include "io/sidecar_checker.h"
 
@@ -88,10 +88,7 @@ void read_track(Checker& c, const json& arr, const std::string& ptr,
               "frame " + std::to_string(s.frame) + " is not after the previous sample's " +
                   std::to_string(previous->frame) + " (a track's frames strictly increase)");
     if (direction_ok && previous &&
-        effects::angle_between(effects::to_unit(previous->direction),
-                               effects::to_unit(s.direction)) *
-                effects::kRadToDeg >=
-            kAntipodalDeg)
+        effects::angle_between_deg(previous->direction, s.direction) >= kAntipodalDeg)
       c.error(sp,
               "this sample and the previous one point in opposite directions: the great circle "
               "between them is not unique (add a sample in between)");
@@ -159,31 +156,6 @@ void read_settings(Checker& c, const json& v, const std::string& ptr, effects::F
             " (the flare must vanish before the light leaves the half-space in front of the gaze)");
 }
 
-void read_keyframes(Checker& c, const json& v, const std::string& ptr,
-                    std::optional<std::int64_t> frames, std::vector<effects::Keyframe>& out) {
-  if (!v.is_array()) {
-    c.error(ptr, std::string("expected an array, found ") + detail::type_name(v));
-    return;
-  }
-  if (!detail::keyframe_count_ok(c, v, ptr)) return;
-  out.resize(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const std::string kp = ptr + "/" + std::to_string(i);
-    effects::Keyframe& k = out[i];
-    detail::read_keyframe_place(c, v[i], kp, frames, k);
-    k.params = {effects::kFlareIntensitySpec.neutral};
-    if (!v[i].is_object()) continue;
-    const auto params = v[i].find("params");
-    if (params == v[i].end() || !params->is_object()) continue;  // reported above
-    const std::string pp = kp + "/params";
-    c.only_keys(*params, pp, {"intensity"});
-    const effects::ParamSpec& spec = effects::kFlareIntensitySpec;
-    if (const json* p = c.member(*params, pp, "intensity"))
-      if (auto d = c.number(*p, pp + "/intensity", {spec.min, spec.max, false, false}))
-        k.params[0] = *d;
-  }
-}
-
 }  // namespace
 
 bool is_flare_entry(const nlohmann::json& entry) {
@@ -229,7 +201,8 @@ void read_flare(Checker& c, const json& entry, const std::string& ptr,
     read_settings(c, *p, ptr + "/settings", out.settings);
   read_interpolation_override(c, entry, ptr, out.interpolation);
   if (const json* p = c.member(entry, ptr, "keyframes"))
-    read_keyframes(c, *p, ptr + "/keyframes", frames, out.keyframes);
+    detail::read_scalar_keyframes(c, *p, ptr + "/keyframes", frames,
+                                  {&effects::kFlareIntensitySpec, 1}, out.keyframes);
 }
 
 }  // namespace detail

@@ -64,36 +64,6 @@ void read_settings(Checker& c, const json& v, const std::string& ptr,
   }
 }
 
-/// Keyframes whose params are the grain's scalars, each required and within its range.
-void read_keyframes(Checker& c, const json& v, const std::string& ptr,
-                    std::optional<std::int64_t> frames, std::vector<effects::Keyframe>& out) {
-  if (!v.is_array()) {
-    c.error(ptr, std::string("expected an array, found ") + detail::type_name(v));
-    return;
-  }
-  if (!detail::keyframe_count_ok(c, v, ptr)) return;
-  const auto& specs = effects::grain_param_specs();
-  out.resize(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const std::string kp = ptr + "/" + std::to_string(i);
-    effects::Keyframe& k = out[i];
-    detail::read_keyframe_place(c, v[i], kp, frames, k);
-    k.params.clear();
-    for (const effects::ParamSpec& s : specs) k.params.push_back(s.neutral);
-    if (!v[i].is_object()) continue;
-    const auto params = v[i].find("params");
-    if (params == v[i].end() || !params->is_object()) continue;  // reported above
-    const std::string pp = kp + "/params";
-    c.only_keys(*params, pp, {"intensity", "size"});
-    for (std::size_t j = 0; j < specs.size(); ++j) {
-      const std::string name(specs[j].name);
-      if (const json* p = c.member(*params, pp, name.c_str()))
-        if (auto d = c.number(*p, pp + "/" + name, {specs[j].min, specs[j].max, false, false}))
-          k.params[j] = *d;
-    }
-  }
-}
-
 }  // namespace
 
 bool is_grain_entry(const nlohmann::json& entry) {
@@ -144,7 +114,8 @@ void read_grain(Checker& c, const json& entry, const std::string& ptr,
     read_settings(c, *p, ptr + "/settings", style, out.settings);
   read_interpolation_override(c, entry, ptr, out.interpolation);
   if (const json* p = c.member(entry, ptr, "keyframes"))
-    read_keyframes(c, *p, ptr + "/keyframes", frames, out.keyframes);
+    detail::read_scalar_keyframes(c, *p, ptr + "/keyframes", frames, effects::grain_param_specs(),
+                                  out.keyframes);
 }
 
 }  // namespace detail

@@ -309,6 +309,36 @@ void read_keyframe_place(Checker& c, const json& v, const std::string& ptr,
   read_keyframe(c, v, ptr, nullptr, frames, out);
 }
 
+void read_scalar_keyframes(Checker& c, const json& v, const std::string& ptr,
+                           std::optional<std::int64_t> frames,
+                           std::span<const effects::ParamSpec> specs,
+                           std::vector<effects::Keyframe>& out) {
+  if (!v.is_array()) {
+    c.error(ptr, std::string("expected an array, found ") + detail::type_name(v));
+    return;
+  }
+  if (!keyframe_count_ok(c, v, ptr)) return;
+  std::vector<std::string> names;
+  for (const effects::ParamSpec& s : specs) names.emplace_back(s.name);
+  out.resize(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::string kp = ptr + "/" + std::to_string(i);
+    effects::Keyframe& k = out[i];
+    read_keyframe_place(c, v[i], kp, frames, k);
+    k.params.clear();
+    for (const effects::ParamSpec& s : specs) k.params.push_back(s.neutral);
+    if (!v[i].is_object()) continue;
+    const auto params = v[i].find("params");
+    if (params == v[i].end() || !params->is_object()) continue;  // reported above
+    const std::string pp = kp + "/params";
+    c.only_keys(*params, pp, names);
+    for (std::size_t j = 0; j < specs.size(); ++j)
+      if (const json* p = c.member(*params, pp, names[j].c_str()))
+        if (auto d = c.number(*p, pp + "/" + names[j], {specs[j].min, specs[j].max, false, false}))
+          k.params[j] = *d;
+  }
+}
+
 }  // namespace detail
 
 Sidecar parse_sidecar(const json& document, const std::string& file_for_messages,

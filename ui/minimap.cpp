@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ui/canvas.h"
+#include "ui/card.h"
 #include "ui/font.h"
 #include "ui/theme.h"
 
@@ -117,10 +118,7 @@ std::vector<std::vector<glm::dvec2>> Minimap::footprint() const {
 void Minimap::draw(DrawContext& ctx) const {
   const Theme& t = ctx.theme;
   Canvas& c = ctx.canvas;
-  const Rect r = rect();
-  c.fill_rounded_rect(r, t.corner_radius, t.surface);
-  c.text(*ctx.fonts.regular, t.font_body, title_,
-         {r.x + t.padding, r.y + 8, r.w - 2 * t.padding, 56}, Align::Left, t.text);
+  draw_titled_card(ctx, rect(), title_);
   const Rect a = map_area();
   if (!image_.empty())
     c.image(scaled_.get(image_, a, ChannelOrder::Bgr, c.scale()), a, ChannelOrder::Rgb);

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "ui/canvas.h"
+#include "ui/card.h"
 #include "ui/font.h"
 #include "ui/theme.h"
 
@@ -58,9 +59,7 @@ void Plot::draw(DrawContext& ctx) const {
   const Theme& t = ctx.theme;
   Canvas& c = ctx.canvas;
   const Rect r = rect();
-  c.fill_rounded_rect(r, t.corner_radius, t.surface);
-  c.text(*ctx.fonts.regular, t.font_body, title_,
-         {r.x + t.padding, r.y + 8, r.w - 2 * t.padding, 56}, Align::Left, t.text);
+  draw_titled_card(ctx, r, title_);
   const Rect a = plot_area();
   const int n = static_cast<int>(values_.size());
   auto xf = [&](double f) { return n > 1 ? a.x + a.w * f / (n - 1) : a.x; };

@@ -9,6 +9,7 @@
 
 #include "app/editor/panel_binding.h"
 #include "app/editor/visualizations.h"
+#include "effects/direction_angle.h"
 
 namespace vdfx::app {
 
@@ -18,9 +19,6 @@ using effects::EffectType;
 namespace {
 std::shared_ptr<const ui::FontSet> fonts_or_default(std::shared_ptr<const ui::FontSet> f) {
   return f ? f : std::make_shared<const ui::FontSet>(ui::FontSet::load());
-}
-double angle_deg(const Direction& a, const Direction& b) {
-  return effects::angle_between(effects::to_unit(a), effects::to_unit(b)) * effects::kRadToDeg;
 }
 }  // namespace
 
@@ -67,7 +65,7 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
   for (const auto& e : events) handle_panel_event(*this, panels_, e);
   for (const EditorCommand c : controls_.commands(input.edges)) run(c);
   unaltered_ = EditorControls::held(input.edges, EditorCommand::Unaltered);
-  if (status_.look_target && angle_deg(*status_.look_target, view_) < 5.0)
+  if (status_.look_target && effects::angle_between_deg(*status_.look_target, view_) < 5.0)
     status_.look_target.reset();
   sync_pending();
   visuals_.refresh(doc_, visualization_input());
@@ -155,7 +153,8 @@ effects::StackParams Editor::params_for_view(const Direction& direction, std::in
   const auto type = p ? p->target().stack_effect() : std::nullopt;
   if (!type) return sp;  // a flare's or grain's pending edit is drawn by their layers
   // At a new keyframe itself its values are exact; elsewhere interpolate with it.
-  if (!p->moved() && frame == p->key().frame && angle_deg(direction, p->key().direction) < 1e-9) {
+  if (!p->moved() && frame == p->key().frame &&
+      effects::angle_between_deg(direction, p->key().direction) < 1e-9) {
     sp.set(*type, p->key().params);
     return sp;
   }

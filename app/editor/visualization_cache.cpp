@@ -7,13 +7,11 @@
 
 #include "app/editor/document.h"
 #include "app/editor/visualizations.h"
+#include "effects/direction_angle.h"
 
 namespace vdfx::app {
 
 namespace {
-double angle_deg(const effects::Direction& a, const effects::Direction& b) {
-  return effects::angle_between(effects::to_unit(a), effects::to_unit(b)) * effects::kRadToDeg;
-}
 /// The index of the first sampled frame at or after `frame` (frames.size() when none).
 std::ptrdiff_t sample_at(std::span<const std::int64_t> frames, std::int64_t frame) {
   return std::lower_bound(frames.begin(), frames.end(), frame) - frames.begin();
@@ -34,7 +32,8 @@ void VisualizationCache::refresh_markers(const Document& doc, const Visualizatio
   const int eff = in.effect.index();
   const std::int64_t held_frame = in.held ? in.held->frame : -1;
   if (markers_.revision == doc.revision() && markers_.effect == eff &&
-      angle_deg(markers_.view, in.view) <= 1.0 && markers_.held_frame == held_frame)
+      effects::angle_between_deg(markers_.view, in.view) <= 1.0 &&
+      markers_.held_frame == held_frame)
     return;
   markers_.near = keyframes_near_view(ks, in.view, options_.marker_cone_deg);
   out_.marker_frames.clear();
@@ -117,7 +116,7 @@ const Visualizations& VisualizationCache::refresh(const Document& doc,
   };
   const MinimapKey base{doc.revision(), doc.keyframe_set(in.effect).solution_version(),
                         in.effect.index(), -1, shows_pending ? pending->version() : 0};
-  if (!(track_.key == base) || angle_deg(track_.view, in.view) > 1.0)
+  if (!(track_.key == base) || effects::angle_between_deg(track_.view, in.view) > 1.0)
     refresh_track(in, doc.keyframes(in.effect), base, interpolant().get());
   out_.track_playhead = static_cast<int>(std::min(
       sample_at(track_.frames, in.frame), static_cast<std::ptrdiff_t>(track_.frames.size()) - 1));

@@ -12,9 +12,9 @@
 #include <opencv2/core.hpp>
 
 #include "app/editor/editor.h"
+#include "tests/support/demo_panels.h"
 #include "ui/button.h"
 #include "ui/canvas.h"
-#include "ui/demo_panels.h"
 #include "ui/plot.h"
 #include "ui/theme.h"
 #include "ui/timeline_strip.h"

@@ -1,8 +1,8 @@
 /// @file
-/// @brief The demo panels of ui/demo_panels.h under the names the ui tests use.
+/// @brief The demo panels of tests/support/demo_panels.h under the names the ui tests use.
 #pragma once
 
-#include "ui/demo_panels.h"
+#include "tests/support/demo_panels.h"
 
 namespace vdfx::ui::test {
 

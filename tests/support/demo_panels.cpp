@@ -1,6 +1,6 @@
 /// @file
 /// @brief The demo panels of demo_panels.h.
-#include "ui/demo_panels.h"
+#include "tests/support/demo_panels.h"
 
 #include <cmath>
 #include <opencv2/imgproc.hpp>

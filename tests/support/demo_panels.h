@@ -1,8 +1,8 @@
 /// @file
 /// @brief Demo editor panels built only from ui/ widgets, with synthetic thumbnails and fields:
 /// an effect panel and a timeline panel. The golden images, the interaction tests and the
-/// render benchmark (tests/bench/ui_bench.cpp) all draw these, so they live in the library
-/// rather than in one test folder.
+/// render benchmark (tests/bench/ui_bench.cpp) all draw these: test support (the library
+/// `vdfx_test_support`), never part of ui/ itself.
 #pragma once
 
 #include <memory>
