@@ -13,6 +13,9 @@ namespace vdfx::xr {
 
 enum class TexFormat { RGBA8, RGBA16F, RGBA32F, RG32F };
 
+/// Levels of a full mip chain for a width x height image (down to 1 x 1).
+int full_mip_levels(int width, int height);
+
 class GlTexture {
  public:
   GlTexture() = default;
@@ -26,6 +29,11 @@ class GlTexture {
 
   /// Replaces level 0 with a CV_8UC3/CV_8UC4/CV_32FC3/CV_32FC4 BGR(A) mat of the same size.
   void upload(const cv::Mat& bgr);
+  /// Replaces `region` (in the mat's pixels) of level 0 with that part of `rgba`, a CV_8UC4 RGBA
+  /// mat of the texture's size, rows as stored: row 0 is the texture's first row (t = 0). Unlike
+  /// upload() nothing is flipped or swapped: panel images come RGBA in the quads' row order
+  /// (app/window/editor_client.h), and only their damaged rectangles are sent.
+  void upload_rgba_region(const cv::Mat& rgba, const cv::Rect& region);
   void generate_mipmaps();
   /// Sets min/mag filter and wrap: linear (+ trilinear when mipmapped), wrap_s repeat or clamp.
   void set_sampling(bool linear, bool repeat_s);
@@ -33,6 +41,9 @@ class GlTexture {
   cv::Mat read_float() const;
 
   unsigned id() const { return id_; }
+  /// Lets go of the texture without deleting it, for an owner that may outlive its context
+  /// (destroying the context frees it); this object is then empty.
+  void disown() { id_ = 0; }
   int width() const { return width_; }
   int height() const { return height_; }
   int levels() const { return levels_; }

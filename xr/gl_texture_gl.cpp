@@ -2,6 +2,8 @@
 /// @brief GlTexture and GlTarget.
 #include <epoxy/gl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <string>
@@ -23,6 +25,10 @@ GLenum internal_format(TexFormat f) {
 }
 
 }  // namespace
+
+int full_mip_levels(int width, int height) {
+  return 1 + static_cast<int>(std::floor(std::log2(std::max({width, height, 1}))));
+}
 
 GlTexture::GlTexture(int width, int height, TexFormat format, int mip_levels)
     : width_(width), height_(height), levels_(std::max(1, mip_levels)), format_(format) {
@@ -93,6 +99,25 @@ void GlTexture::upload(const cv::Mat& m) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, fmt, type, c.data);
   check_gl("GlTexture::upload");
+}
+
+void GlTexture::upload_rgba_region(const cv::Mat& rgba, const cv::Rect& region) {
+  if (rgba.type() != CV_8UC4 || rgba.cols != width_ || rgba.rows != height_)
+    throw GlError("GlTexture::upload_rgba_region: a " + std::to_string(width_) + "x" +
+                  std::to_string(height_) + " RGBA8 image expected, got " +
+                  std::to_string(rgba.cols) + "x" + std::to_string(rgba.rows) + " of type " +
+                  std::to_string(rgba.type()));
+  if ((region & cv::Rect(0, 0, width_, height_)) != region)
+    throw GlError("GlTexture::upload_rgba_region: the region is outside the image");
+  if (region.empty()) return;
+  glBindTexture(GL_TEXTURE_2D, id_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, static_cast<GLint>(rgba.step1() / 4));
+  const cv::Mat part = rgba(region);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, region.x, region.y, region.width, region.height, GL_RGBA,
+                  GL_UNSIGNED_BYTE, part.data);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  check_gl("GlTexture::upload_rgba_region");
 }
 
 void GlTexture::generate_mipmaps() {

@@ -101,7 +101,7 @@ struct PlaneTexture {
       if (id) glDeleteTextures(1, &id);
       glGenTextures(1, &id);
       glBindTexture(GL_TEXTURE_2D, id);
-      const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(m.cols, m.rows))));
+      const int levels = full_mip_levels(m.cols, m.rows);
       glTexStorage2D(GL_TEXTURE_2D, levels, internal_fmt, m.cols, m.rows);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, levels - 1);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
@@ -153,8 +153,7 @@ void VideoLayerGl::set_frame(const cv::Mat& equirect) {
   const int depth = equirect.depth();
   GlTexture& t = impl_->texture;
   if (!t || t.width() != equirect.cols || t.height() != equirect.rows || impl_->depth != depth) {
-    const int levels =
-        1 + static_cast<int>(std::floor(std::log2(std::max(equirect.cols, equirect.rows))));
+    const int levels = full_mip_levels(equirect.cols, equirect.rows);
     t = GlTexture(equirect.cols, equirect.rows,
                   depth == CV_8U ? TexFormat::RGBA8 : TexFormat::RGBA32F, levels);
     t.set_sampling(true, true);

@@ -42,7 +42,7 @@ class PanelTextures {
 };
 
 /// GL textures with mipmaps (panels are seen much smaller than their pixel size). Needs a current
-/// GL context at upload and release; throws std::runtime_error in a build without OpenGL.
+/// GL context at upload and release.
 std::unique_ptr<PanelTextures> create_gl_panel_textures();
 
 /// How the client draws the pointers and the placement reticle in the scene (quads composited

@@ -1,10 +1,10 @@
 /// @file
-/// @brief create_gl_panel_textures: panel images as mipmapped GL textures.
-#include <epoxy/gl.h>
-
+/// @brief create_gl_panel_textures: panel images as mipmapped GL textures (xr::GlTexture).
 #include <stdexcept>
+#include <vector>
 
 #include "app/window/editor_client.h"
+#include "xr/gl_texture.h"
 
 namespace vdfx::app {
 
@@ -12,49 +12,37 @@ namespace {
 
 class GlPanelTextures : public PanelTextures {
  public:
+  /// Frees nothing: the window's context may be gone (release() frees them while it is not).
+  ~GlPanelTextures() override {
+    for (xr::GlTexture& t : textures_) t.disown();
+  }
+
   unsigned upload(std::size_t slot, const cv::Mat& image,
                   const std::vector<cv::Rect>& regions) override {
     if (image.type() != CV_8UC4 || !image.isContinuous())
       throw std::invalid_argument("GlPanelTextures::upload: continuous RGBA8 image expected");
-    if (names_.size() <= slot) names_.resize(slot + 1, 0u);
-    unsigned& name = names_[slot];
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    if (!name || regions.empty()) {
-      if (!name) glGenTextures(1, &name);
-      glBindTexture(GL_TEXTURE_2D, name);
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.cols, image.rows, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                   image.data);
-      // A 1000-2000 px panel covers a few hundred eye pixels: without mipmaps text aliases.
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (textures_.size() <= slot) textures_.resize(slot + 1);
+    xr::GlTexture& t = textures_[slot];
+    const cv::Rect whole(0, 0, image.cols, image.rows);
+    if (!t || t.width() != image.cols || t.height() != image.rows) {
+      // A 1000-2000 px panel covers a few hundred eye pixels: without mipmaps text aliases
+      // (the texture samples trilinearly, clamped at the edges).
+      t = xr::GlTexture(image.cols, image.rows, xr::TexFormat::RGBA8,
+                        xr::full_mip_levels(image.cols, image.rows));
+      t.upload_rgba_region(image, whole);
+    } else if (regions.empty()) {
+      t.upload_rgba_region(image, whole);
     } else {
-      glBindTexture(GL_TEXTURE_2D, name);
-      glPixelStorei(GL_UNPACK_ROW_LENGTH, image.cols);
-      for (const cv::Rect& r : regions) {
-        glPixelStorei(GL_UNPACK_SKIP_PIXELS, r.x);
-        glPixelStorei(GL_UNPACK_SKIP_ROWS, r.y);
-        glTexSubImage2D(GL_TEXTURE_2D, 0, r.x, r.y, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                        image.data);
-      }
-      glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-      glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-      glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+      for (const cv::Rect& r : regions) t.upload_rgba_region(image, r);
     }
-    glGenerateMipmap(GL_TEXTURE_2D);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    return name;
+    t.generate_mipmaps();
+    return t.id();
   }
 
-  void release() override {
-    for (unsigned& n : names_)
-      if (n) glDeleteTextures(1, &n);
-    names_.clear();
-  }
+  void release() override { textures_.clear(); }
 
  private:
-  std::vector<unsigned> names_;
+  std::vector<xr::GlTexture> textures_;
 };
 
 }  // namespace
