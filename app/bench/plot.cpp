@@ -105,62 +105,98 @@ std::vector<std::string> wrap(const std::string& text, std::size_t width) {
   return lines;
 }
 
-std::string script_for(const Knob& k, const std::vector<const Row*>& rows,
-                       const std::filesystem::path& data, const std::filesystem::path& png,
-                       const PlotOptions& o) {
+/// What one knob's plot shows: its points in the axes' units, the axes' ranges and the shared
+/// peer's time.
+struct PlotData {
+  std::vector<Point> pts;
+  Axis x;
+  double t_lo = 0.0, t_hi = 0.0;  //!< time range, scaled
+  bool ylog = false;
+  bool zeros = false;   //!< some error is 0 (drawn at the bottom of a log axis)
+  double pos_hi = 0.0;  //!< the largest positive error (0: none)
+  double e_lo = 0.0, e_hi = 0.0;
+  bool shared_peer = true;  //!< every setting has the same peer (and one series)
+  double peer_s = NAN;      //!< that peer's median time, unscaled
+};
+
+/// The peer's time as a dashed line when every setting has the same peer (and one series: a
+/// peer at another sigma is another time): the median of its times.
+void find_shared_peer(const std::vector<const Row*>& rows, PlotData& p) {
+  std::vector<double> peer_t;
+  for (const Row* r : rows) {
+    p.shared_peer = p.shared_peer && r->peer == rows.front()->peer &&
+                    r->series == rows.front()->series && std::isfinite(r->peer_time.median_s);
+    peer_t.push_back(r->peer_time.median_s);
+  }
+  if (!p.shared_peer) return;
+  std::sort(peer_t.begin(), peer_t.end());
+  p.peer_s = peer_t[peer_t.size() / 2];
+}
+
+/// The error axis: logarithmic when the positive errors span more than a factor 20, a zero error
+/// then drawn a decade below the smallest.
+void error_axis(const std::vector<double>& es, PlotData& p) {
+  double pos_lo = INFINITY;
+  for (double e : es) {
+    if (e > 0) {
+      pos_lo = std::min(pos_lo, e);
+      p.pos_hi = std::max(p.pos_hi, e);
+    } else {
+      p.zeros = true;
+    }
+  }
+  p.ylog = p.pos_hi > 0 && p.pos_hi / pos_lo > 20.0;
+  p.e_lo = p.ylog ? pos_lo / 10.0 : 0.0;
+  p.e_hi = std::max(p.pos_hi, 1e-300);
+}
+
+PlotData plot_data(const Knob& k, const std::vector<const Row*>& rows) {
+  PlotData p;
   std::vector<double> ts, es;
   for (const Row* r : rows) {
     ts.push_back(r->time.median_s);
     es.push_back(plotted_error(*r, k));
   }
-  // The peer's time as a dashed line when every setting has the same peer (and one series: a
-  // peer at another sigma is another time).
-  bool shared_peer = true;
-  std::vector<double> peer_t;
-  for (const Row* r : rows) {
-    shared_peer = shared_peer && r->peer == rows.front()->peer &&
-                  r->series == rows.front()->series && std::isfinite(r->peer_time.median_s);
-    peer_t.push_back(r->peer_time.median_s);
-  }
+  find_shared_peer(rows, p);
   std::vector<double> all_t = ts;
-  double peer_s = NAN;
-  if (shared_peer) {
-    std::sort(peer_t.begin(), peer_t.end());
-    peer_s = peer_t[peer_t.size() / 2];
-    all_t.push_back(peer_s);
-  }
-  const Axis x = time_axis(all_t);
-  const double t_lo = *std::min_element(all_t.begin(), all_t.end()) * x.scale;
-  const double t_hi = *std::max_element(all_t.begin(), all_t.end()) * x.scale;
-  double pos_lo = INFINITY, pos_hi = 0.0;
-  bool zeros = false;
-  for (double e : es) {
-    if (e > 0) {
-      pos_lo = std::min(pos_lo, e);
-      pos_hi = std::max(pos_hi, e);
-    } else {
-      zeros = true;
-    }
-  }
-  const bool ylog = pos_hi > 0 && pos_hi / pos_lo > 20.0;
-  const double floor_e = ylog ? pos_lo / 10.0 : 0.0;  // where a zero error is drawn on a log axis
-  const double e_lo = ylog ? floor_e : 0.0, e_hi = std::max(pos_hi, 1e-300);
-
-  std::vector<Point> pts;
+  if (p.shared_peer) all_t.push_back(p.peer_s);
+  p.x = time_axis(all_t);
+  p.t_lo = *std::min_element(all_t.begin(), all_t.end()) * p.x.scale;
+  p.t_hi = *std::max_element(all_t.begin(), all_t.end()) * p.x.scale;
+  error_axis(es, p);
+  const double floor_e = p.ylog ? p.e_lo : 0.0;  // where a zero error is drawn on a log axis
   for (std::size_t i = 0; i < rows.size(); ++i) {
     std::string label = rows[i]->setting;
     std::replace(label.begin(), label.end(), '"', '\'');
     const bool zero = !(es[i] > 0);
-    pts.push_back({ts[i] * x.scale, zero ? floor_e : es[i], label + (zero && ylog ? " (0)" : ""),
-                   rows[i]->pareto, rows[i]->series});
+    p.pts.push_back({ts[i] * p.x.scale, zero ? floor_e : es[i],
+                     label + (zero && p.ylog ? " (0)" : ""), rows[i]->pareto, rows[i]->series});
   }
-  // Data blocks: 0 every setting, 1 the fronts, 2 the shared peer's time, 3 to 6 the labels in
-  // each of their four places.
-  std::ofstream d(data);
-  d.precision(10);
-  for (const Point& p : pts) d << p.t << " " << p.e << "\n";
-  d << "\n\n";
-  // One front per series, each sorted by time; a single blank line breaks the line between them.
+  return p;
+}
+
+/// A label goes to the first of four places (above right, below right, above left, below left)
+/// that no earlier label near its point took.
+std::vector<int> label_places(const PlotData& p) {
+  const double e_lo = p.e_lo > 0 ? p.e_lo : 1e-300;
+  std::vector<int> place(p.pts.size(), 0);
+  for (std::size_t i = 0; i < p.pts.size(); ++i) {
+    std::array<bool, 4> taken{};
+    for (std::size_t j = 0; j < i; ++j) {
+      const double dx = axis_pos(p.pts[i].t, p.t_lo, p.t_hi, p.x.log) -
+                        axis_pos(p.pts[j].t, p.t_lo, p.t_hi, p.x.log);
+      const double dy =
+          axis_pos(p.pts[i].e, e_lo, p.e_hi, p.ylog) - axis_pos(p.pts[j].e, e_lo, p.e_hi, p.ylog);
+      if (std::abs(dx) < 0.25 && std::abs(dy) < 0.08)
+        taken[static_cast<std::size_t>(place[j])] = true;
+    }
+    while (place[i] < 3 && taken[static_cast<std::size_t>(place[i])]) ++place[i];
+  }
+  return place;
+}
+
+/// One front per series, each sorted by time; a single blank line breaks the line between them.
+void write_fronts(std::ostream& d, const std::vector<Point>& pts) {
   std::vector<Point> front;
   for (const Point& p : pts)
     if (p.pareto) front.push_back(p);
@@ -172,64 +208,72 @@ std::string script_for(const Knob& k, const std::vector<const Row*>& rows,
     d << front[i].t << " " << front[i].e << "\n";
   }
   if (front.empty()) d << "NaN NaN\n";  // keeps the block, and so the next blocks' indices
+}
+
+/// Data blocks: 0 every setting, 1 the fronts, 2 the shared peer's time, 3 to 6 the labels in
+/// each of their four places.
+void write_data(const PlotData& p, const std::filesystem::path& data) {
+  std::ofstream d(data);
+  d.precision(10);
+  for (const Point& pt : p.pts) d << pt.t << " " << pt.e << "\n";
   d << "\n\n";
-  if (shared_peer)
-    d << peer_s * x.scale << " " << e_lo << "\n" << peer_s * x.scale << " " << e_hi << "\n";
+  write_fronts(d, p.pts);
+  d << "\n\n";
+  const double peer_t = p.peer_s * p.x.scale;
+  if (p.shared_peer)
+    d << peer_t << " " << p.e_lo << "\n" << peer_t << " " << p.e_hi << "\n";
   else
     d << "NaN NaN\n";
   d << "\n\n";
-  // A label goes to the first of four places (above right, below right, above left, below left)
-  // that no earlier label near its point took.
-  std::vector<int> place(pts.size(), 0);
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    std::array<bool, 4> taken{};
-    for (std::size_t j = 0; j < i; ++j) {
-      const double dx =
-          axis_pos(pts[i].t, t_lo, t_hi, x.log) - axis_pos(pts[j].t, t_lo, t_hi, x.log);
-      const double dy = axis_pos(pts[i].e, e_lo > 0 ? e_lo : 1e-300, e_hi, ylog) -
-                        axis_pos(pts[j].e, e_lo > 0 ? e_lo : 1e-300, e_hi, ylog);
-      if (std::abs(dx) < 0.25 && std::abs(dy) < 0.08)
-        taken[static_cast<std::size_t>(place[j])] = true;
-    }
-    while (place[i] < 3 && taken[static_cast<std::size_t>(place[i])]) ++place[i];
-  }
+  const std::vector<int> place = label_places(p);
   for (int where = 0; where < 4; ++where) {
     bool any = false;
-    for (std::size_t i = 0; i < pts.size(); ++i)
+    for (std::size_t i = 0; i < p.pts.size(); ++i)
       if (place[i] == where) {
-        d << pts[i].t << " " << pts[i].e << " \"" << pts[i].label << "\"\n";
+        d << p.pts[i].t << " " << p.pts[i].e << " \"" << p.pts[i].label << "\"\n";
         any = true;
       }
     if (!any) d << "NaN NaN \"\"\n";
     d << "\n\n";
   }
-  d.close();
+}
 
+/// The terminal, title, axes' labels and scales.
+void write_frame(std::ostream& s, const Knob& k, const PlotData& p,
+                 const std::filesystem::path& png, const PlotOptions& o) {
   std::string title = k.id;
   for (const std::string& line : wrap(k.title, static_cast<std::size_t>(o.width / 7)))
     title += "\\n" + line;
   std::replace(title.begin(), title.end(), '"', '\'');
-  std::ostringstream s;
   s << "set terminal pngcairo size " << o.width << "," << o.height
     << " font 'DejaVu Sans,9' noenhanced\n"
     << "set output " << quoted(png.string()) << "\n"
     << "set title \"" << title << "\"\n"
-    << "set xlabel " << quoted("median time per " + k.per + " (" + x.unit + ")") << "\n"
+    << "set xlabel " << quoted("median time per " + k.per + " (" + p.x.unit + ")") << "\n"
     << "set ylabel "
     << quoted(std::string(k.plot_error == PlotError::Rms ? "RMS" : "max") + " error (" +
               k.error_unit + ")")
     << "\n"
     << "set grid\nset key outside bottom center horizontal\n"
     << "set offsets graph 0.05, graph 0.3, graph 0.1, graph 0.1\n";
-  if (x.log) s << "set logscale x\n";
-  if (ylog) {
+  if (p.x.log) s << "set logscale x\n";
+  if (p.ylog) {
     s << "set logscale y\nset format y '%.0e'\n";
-    if (zeros)
+    if (p.zeros)
       s << "set label 1 'error 0 drawn at the bottom, marked (0)' at graph 0.01, graph 0.03 font "
            "',8'\n";
-  } else if (pos_hi == 0.0) {
+  } else if (p.pos_hi == 0.0) {
     s << "set yrange [-1:1]\n";
   }
+}
+
+std::string script_for(const Knob& k, const std::vector<const Row*>& rows,
+                       const std::filesystem::path& data, const std::filesystem::path& png,
+                       const PlotOptions& o) {
+  const PlotData p = plot_data(k, rows);
+  write_data(p, data);
+  std::ostringstream s;
+  write_frame(s, k, p, png, o);
   s << "plot " << quoted(data.string())
     << " index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'settings', \\\n"
     << "  '' index 3 using 1:2:3 with labels left offset char 0.7,0.6 font ',8' notitle, \\\n"
@@ -240,7 +284,7 @@ std::string script_for(const Knob& k, const std::vector<const Row*>& rows,
     s << ", \\\n  '' index 1 using 1:2 with lines lw 2 lc rgb '#d62728' title "
       << quoted(std::string("Pareto front") +
                 (rows.front()->series.empty() ? "" : " (per series)"));
-  if (shared_peer)
+  if (p.shared_peer)
     s << ", \\\n  '' index 2 using 1:2 with lines dt 2 lw 1.5 lc rgb '#555555' title "
       << quoted("peer: " + rows.front()->peer);
   s << "\n";

@@ -18,6 +18,18 @@ namespace vdfx::app {
 /// (0 after --help, kExitUsage after a usage error, whose message goes to stderr).
 std::optional<int> parse_cli(CLI::App& cli, const Args& args);
 
+/// Runs `parse` (what turns a command's parsed options into its request) and returns its
+/// result; a CLI::ValidationError it throws becomes an app::UsageError with the same text, which
+/// the command registry reports as "vdfx NAME: TEXT", exit 2.
+template <class Parse>
+auto parse_request(Parse&& parse) -> decltype(parse()) {
+  try {
+    return parse();
+  } catch (const CLI::ValidationError& e) {
+    throw UsageError(e.what());
+  }
+}
+
 struct ViewSpec {
   effects::Direction direction;
   double roll_deg = 0.0;

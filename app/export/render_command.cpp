@@ -2,25 +2,62 @@
 /// @brief `vdfx render`: one view of a panorama or video frame with the sidecar's effects, on the
 /// CPU reference path or (--gpu) through the GL compositor, optionally as one HMD eye with lens
 /// pre-distortion.
+/// The command parses; app/export/view_render.h renders.
 #include <iostream>
 #include <limits>
-#include <opencv2/imgproc.hpp>
 #include <optional>
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
 #include "app/export/view_render.h"
 #include "io/excerpt.h"
-#include "io/image_write.h"
 #include "io/input_error.h"
-#include "io/output_path.h"
-#include "io/sidecar.h"
 #include "xr/blur_method.h"
 #include "xr/hmd_profile.h"
 
 namespace vdfx::app {
 
 namespace {
+
+/// The option texts that need parsing after CLI11.
+struct RenderTexts {
+  std::string input, sidecar, view, size, mode = "view", out;
+  std::string hmd, eye = "left", distort = "none", blur = "exact", bake = "1024x512";
+  double fov = 0.0;
+  bool no_lca = false;
+};
+
+void add_render_options(CLI::App& cli, RenderRequest& r, RenderTexts& t) {
+  cli.add_option("INPUT", t.input, "equirect image (PNG, JPEG, EXR, HDR) or video")->required();
+  cli.add_option("--sidecar", t.sidecar, "the effects (.vdfx.json)")->required();
+  cli.add_option("--view", t.view, "where to look: AZ,ALT[,ROLL] in degrees")->required();
+  cli.add_option("--frame", r.frame, "video frame index (0-based)")
+      ->check(whole_range(0, std::numeric_limits<std::int64_t>::max()));
+  cli.add_option("--fov", t.fov, "horizontal field of view in degrees (not with --hmd)")
+      ->check(finite_range(1.0, 179.0));
+  cli.add_option("--size", t.size, "output size WxH (with --hmd: default the eye's size)");
+  cli.add_option("--mode", t.mode,
+                 "view: parameters interpolated once at the view centre (the paper's method);\n"
+                 "pixel: at each pixel's own direction (the static per-pixel baseline)")
+      ->check(CLI::IsMember({"view", "pixel"}));
+  cli.add_flag("--gpu", r.gpu, "render through the OpenGL compositor (offscreen)");
+  cli.add_option(
+         "--blur", t.blur,
+         "with --gpu: exact (full-resolution separable Gaussian, the contract's kernel) or\n"
+         "pyramid (halvings + a small residual blur; faster, small error)")
+      ->capture_default_str();
+  cli.add_option("--bake", t.bake,
+                 "with --gpu --mode pixel: the parameter grid WxH the GPU reads per pixel")
+      ->capture_default_str();
+  cli.add_option("--hmd", t.hmd, "render one eye of this headset profile (vdfx hmd list)");
+  cli.add_option("--eye", t.eye, "with --hmd: left or right")
+      ->check(CLI::IsMember({"left", "right"}));
+  cli.add_option("--distort", t.distort,
+                 "with --hmd: lens pre-distortion none, pixel (exact per pixel) or mesh:N "
+                 "(N x N vertex grid)");
+  cli.add_flag("--no-lca", t.no_lca, "with --distort: no inverse lateral chromatic aberration");
+  cli.add_option("--out", t.out, "the PNG to write")->required();
+}
 
 /// Options that would have no effect in this combination are usage errors, not silently
 /// ignored (`--eye right` without `--hmd` rendered the plain view, exit 0).
@@ -35,6 +72,64 @@ void check_option_combinations(const CLI::App& cli, const std::string& hmd_name,
                                "needs --gpu --mode pixel (the CPU's pixel mode is exact)");
 }
 
+/// The camera: a view with --fov and --size, or (with --hmd) the eye's own.
+void parse_camera(const CLI::App& cli, const RenderTexts& t, RenderRequest& r) {
+  if (!t.size.empty()) {
+    const ImageSize s = parse_size(t.size, "--size", kOutputSizeLimit);
+    r.width = s.width;
+    r.height = s.height;
+  }
+  if (t.hmd.empty()) {
+    if (t.fov <= 0.0) throw CLI::ValidationError("--fov", "required (unless --hmd is given)");
+    if (t.size.empty()) throw CLI::ValidationError("--size", "required (unless --hmd is given)");
+    if (r.distortion.method != xr::DistortionMethod::None)
+      throw CLI::ValidationError("--distort", "needs --hmd (the lens comes from the profile)");
+    r.hfov_deg = t.fov;
+  } else if (t.fov > 0.0) {
+    throw CLI::ValidationError("--fov", "the eye's field of view comes from --hmd; drop --fov");
+  }
+  check_option_combinations(cli, t.hmd, r);
+}
+
+/// The parsed options as a request (the HMD not loaded yet); throws CLI::ValidationError.
+RenderRequest render_request_of(const CLI::App& cli, RenderRequest r, const RenderTexts& t) {
+  const ViewSpec view = parse_view(t.view);
+  r.look = view.direction;
+  r.roll_deg = view.roll_deg;
+  r.mode = t.mode == "pixel" ? effects::RenderMode::Pixel : effects::RenderMode::View;
+  r.sidecar_name = t.sidecar;
+  try {
+    r.distortion = parse_distortion(t.distort);
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--distort", e.what());
+  }
+  r.distortion.correct_lca = !t.no_lca;
+  parse_camera(cli, t, r);
+  const std::optional<xr::BlurMethod> blur = xr::blur_method_from_name(t.blur);
+  if (!blur)
+    throw CLI::ValidationError("--blur",
+                               "'" + io::excerpt(t.blur, 40) + "': expected exact or pyramid");
+  r.blur = *blur;
+  if (!r.gpu && r.blur != xr::BlurMethod::Exact)
+    throw CLI::ValidationError("--blur", "the CPU reference blur is exact; pyramid needs --gpu");
+  const ImageSize bake = parse_size(t.bake, "--bake", kBakeSizeLimit);
+  r.bake_width = bake.width;
+  r.bake_height = bake.height;
+  return r;
+}
+
+/// --hmd's profile and eye; without --size the eye's own size, within the output limit.
+void load_eye(RenderRequest& r, const RenderTexts& t) {
+  r.hmd = xr::load_hmd_profile(t.hmd);
+  r.eye = t.eye == "right" ? xr::Eye::Right : xr::Eye::Left;
+  const xr::EyeProfile& ep = r.hmd->eye(r.eye);
+  if (t.size.empty() && std::int64_t{ep.width} * ep.height > kOutputSizeLimit.max_pixels)
+    throw io::InputError(r.hmd->source + ": the " + std::string(xr::eye_name(r.eye)) + " eye's " +
+                         std::to_string(ep.width) + "x" + std::to_string(ep.height) +
+                         " pixels are more than a render may have (" +
+                         std::to_string(kOutputSizeLimit.max_pixels) + "); give --size");
+}
+
 }  // namespace
 
 int cmd_render(const Args& args) {
@@ -42,116 +137,14 @@ int cmd_render(const Args& args) {
       "Renders one view of INPUT (a panorama image or a video, equirectangular) with the\n"
       "sidecar's view-dependent effects to an 8-bit sRGB PNG.",
       "vdfx render"};
-  std::string input, sidecar_path, view_text, size_text, mode_text = "view", out_path;
-  std::string hmd_name, eye_text = "left", distort_text = "none", blur_text = "exact";
-  std::string bake_text = "1024x512";
-  std::int64_t frame = 0;
-  double fov = 0.0;
-  bool gpu = false, no_lca = false;
-  cli.add_option("INPUT", input, "equirect image (PNG, JPEG, EXR, HDR) or video")->required();
-  cli.add_option("--sidecar", sidecar_path, "the effects (.vdfx.json)")->required();
-  cli.add_option("--view", view_text, "where to look: AZ,ALT[,ROLL] in degrees")->required();
-  cli.add_option("--frame", frame, "video frame index (0-based)")
-      ->check(whole_range(0, std::numeric_limits<std::int64_t>::max()));
-  cli.add_option("--fov", fov, "horizontal field of view in degrees (not with --hmd)")
-      ->check(finite_range(1.0, 179.0));
-  cli.add_option("--size", size_text, "output size WxH (with --hmd: default the eye's size)");
-  cli.add_option("--mode", mode_text,
-                 "view: parameters interpolated once at the view centre (the paper's method);\n"
-                 "pixel: at each pixel's own direction (the static per-pixel baseline)")
-      ->check(CLI::IsMember({"view", "pixel"}));
-  cli.add_flag("--gpu", gpu, "render through the OpenGL compositor (offscreen)");
-  cli.add_option(
-         "--blur", blur_text,
-         "with --gpu: exact (full-resolution separable Gaussian, the contract's kernel) or\n"
-         "pyramid (halvings + a small residual blur; faster, small error)")
-      ->capture_default_str();
-  cli.add_option("--bake", bake_text,
-                 "with --gpu --mode pixel: the parameter grid WxH the GPU reads per pixel")
-      ->capture_default_str();
-  cli.add_option("--hmd", hmd_name, "render one eye of this headset profile (vdfx hmd list)");
-  cli.add_option("--eye", eye_text, "with --hmd: left or right")
-      ->check(CLI::IsMember({"left", "right"}));
-  cli.add_option("--distort", distort_text,
-                 "with --hmd: lens pre-distortion none, pixel (exact per pixel) or mesh:N "
-                 "(N x N vertex grid)");
-  cli.add_flag("--no-lca", no_lca, "with --distort: no inverse lateral chromatic aberration");
-  cli.add_option("--out", out_path, "the PNG to write")->required();
+  RenderRequest options;
+  RenderTexts texts;
+  add_render_options(cli, options, texts);
   if (auto code = parse_cli(cli, args)) return *code;
-
-  RenderRequest request;
-  try {
-    const ViewSpec view = parse_view(view_text);
-    request.look = view.direction;
-    request.roll_deg = view.roll_deg;
-    request.mode = mode_text == "pixel" ? effects::RenderMode::Pixel : effects::RenderMode::View;
-    request.gpu = gpu;
-    request.sidecar_name = sidecar_path;
-    request.frame = frame;
-    try {
-      request.distortion = parse_distortion(distort_text);
-    } catch (const std::invalid_argument& e) {
-      throw CLI::ValidationError("--distort", e.what());
-    }
-    request.distortion.correct_lca = !no_lca;
-    if (!size_text.empty()) {
-      const ImageSize s = parse_size(size_text, "--size", kOutputSizeLimit);
-      request.width = s.width;
-      request.height = s.height;
-    }
-    if (hmd_name.empty()) {
-      if (fov <= 0.0) throw CLI::ValidationError("--fov", "required (unless --hmd is given)");
-      if (size_text.empty())
-        throw CLI::ValidationError("--size", "required (unless --hmd is given)");
-      if (request.distortion.method != xr::DistortionMethod::None)
-        throw CLI::ValidationError("--distort", "needs --hmd (the lens comes from the profile)");
-      request.hfov_deg = fov;
-    } else if (fov > 0.0) {
-      throw CLI::ValidationError("--fov", "the eye's field of view comes from --hmd; drop --fov");
-    }
-    check_option_combinations(cli, hmd_name, request);
-    const std::optional<xr::BlurMethod> blur = xr::blur_method_from_name(blur_text);
-    if (!blur)
-      throw CLI::ValidationError("--blur",
-                                 "'" + io::excerpt(blur_text, 40) + "': expected exact or pyramid");
-    request.blur = *blur;
-    if (!gpu && request.blur != xr::BlurMethod::Exact)
-      throw CLI::ValidationError("--blur", "the CPU reference blur is exact; pyramid needs --gpu");
-    const ImageSize bake = parse_size(bake_text, "--bake", kBakeSizeLimit);
-    request.bake_width = bake.width;
-    request.bake_height = bake.height;
-  } catch (const CLI::ValidationError& e) {
-    std::cerr << "vdfx render: " << e.what() << "\n";
-    return kExitUsage;
-  }
-  if (!hmd_name.empty()) {
-    request.hmd = xr::load_hmd_profile(hmd_name);
-    request.eye = eye_text == "right" ? xr::Eye::Right : xr::Eye::Left;
-    const xr::EyeProfile& ep = request.hmd->eye(request.eye);
-    if (size_text.empty() && std::int64_t{ep.width} * ep.height > kOutputSizeLimit.max_pixels)
-      throw io::InputError(request.hmd->source + ": the " + std::string(xr::eye_name(request.eye)) +
-                           " eye's " + std::to_string(ep.width) + "x" + std::to_string(ep.height) +
-                           " pixels are more than a render may have (" +
-                           std::to_string(kOutputSizeLimit.max_pixels) + "); give --size");
-  }
-  // Before any work: an --out that would destroy an input, or a device, is refused up front.
-  std::vector<io::NamedInput> inputs = {{"INPUT", input}, {"--sidecar", sidecar_path}};
-  if (request.hmd) inputs.push_back({"--hmd", request.hmd->source});
-  io::check_output_is_not_input("--out", out_path, inputs);
-  io::resolve_output_path(out_path);
-
-  const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
-  if (const auto g = first_gpu_only_grain(sidecar); g && !gpu) {
-    std::cerr << "vdfx render: " << sidecar_path << ": grain #" << *g + 1 << " ("
-              << effects::grain_style_name(sidecar.grains[*g].style)
-              << ") is volumetric and renders on the GPU only: add --gpu\n";
-    return kExitUsage;
-  }
-  const cv::Mat rgb8 = render_request(input, sidecar, request);
-  cv::Mat bgr;
-  cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);
-  io::write_png(out_path, bgr);
-  std::cout << out_path << ": " << rgb8.cols << "x" << rgb8.rows << "\n";
+  RenderRequest request = parse_request([&] { return render_request_of(cli, options, texts); });
+  if (!texts.hmd.empty()) load_eye(request, texts);
+  const cv::Size size = render_to_png(texts.input, texts.sidecar, request, texts.out);
+  std::cout << texts.out << ": " << size.width << "x" << size.height << "\n";
   return kExitOk;
 }
 

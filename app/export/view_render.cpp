@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
@@ -18,7 +19,9 @@
 #include "effects/view_camera.h"
 #include "io/excerpt.h"
 #include "io/frame_decoder.h"
+#include "io/image_write.h"
 #include "io/input_error.h"
+#include "io/output_path.h"
 #include "io/sidecar_sets.h"
 #include "xr/compositor.h"
 #include "xr/effect_stack_gl.h"
@@ -178,105 +181,167 @@ std::optional<std::size_t> first_gpu_only_grain(const io::Sidecar& sidecar) {
   return std::nullopt;
 }
 
-cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
-                       const RenderRequest& r) {
-  const cv::Mat equirect = load_equirect_frame(input, r.frame);
-  const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+namespace {
+
+/// What the CPU and the GPU paths share: the frame, the parameters at the view centre (and the
+/// checked evaluation per direction), the camera and the world-space layers.
+struct ViewScene {
+  cv::Mat equirect;
+  std::function<effects::StackParams(const effects::Direction&)> evaluate;
+  effects::StackParams view_params;
+  std::optional<EyeSetup> eye;
+  int w = 0, h = 0;
+  xr::RenderView view;
+  std::vector<effects::FlareLayout> flares;
+  std::vector<effects::GrainFrame> grains;
+};
+
+ViewScene view_scene(const std::filesystem::path& input, const io::Sidecar& sidecar,
+                     const effects::StackInterpolator& stack, const RenderRequest& r,
+                     cv::Mat equirect) {
+  ViewScene s;
+  s.equirect = std::move(equirect);
   // Every evaluation goes through this check: view mode once, per-pixel mode per cell or pixel.
-  const auto evaluate = [&](const effects::Direction& d) {
+  s.evaluate = [&stack, &r](const effects::Direction& d) {
     effects::StackParams p = stack.evaluate(d, r.frame);
     require_finite(p, r.sidecar_name, d, r.frame);
     return p;
   };
-  const effects::StackParams view_params = evaluate(r.look);
-
-  std::optional<EyeSetup> eye;
-  if (r.hmd) eye = eye_setup(r);
-  const int w = eye ? eye->lens.width : r.width, h = eye ? eye->lens.height : r.height;
-  xr::RenderView view =
-      eye ? eye->view : xr::RenderView::look_at(r.look, r.roll_deg, r.hfov_deg, w, h);
+  s.view_params = s.evaluate(r.look);
+  if (r.hmd) s.eye = eye_setup(r);
+  s.w = s.eye ? s.eye->lens.width : r.width;
+  s.h = s.eye ? s.eye->lens.height : r.height;
+  s.view = s.eye ? s.eye->view : xr::RenderView::look_at(r.look, r.roll_deg, r.hfov_deg, s.w, s.h);
   // The head sits at the origin looking at the view; an HMD eye is half the IPD to its side
   // (the video ignores that, flares do not: docs/flare.md, "Stereo").
   const effects::HeadPose head{Eigen::Vector3d::Zero(), xr::view_rotation(r.look, r.roll_deg)};
-  if (eye)
-    view.position = head.orientation *
-                    Eigen::Vector3d((r.eye == xr::Eye::Left ? -0.5 : 0.5) * r.hmd->ipd_m, 0.0, 0.0);
-  const std::vector<effects::FlareLayout> flares =
-      view_flares(input, sidecar, equirect, head, r.frame);
-  const std::vector<effects::GrainFrame> grains = view_grains(sidecar, head, r);
+  if (s.eye)
+    s.view.position =
+        head.orientation *
+        Eigen::Vector3d((r.eye == xr::Eye::Left ? -0.5 : 0.5) * r.hmd->ipd_m, 0.0, 0.0);
+  s.flares = view_flares(input, sidecar, s.equirect, head, r.frame);
+  s.grains = view_grains(sidecar, head, r);
+  return s;
+}
 
-  if (r.gpu) {
-    auto context = xr::GlContext::create({});
-    // Sizes beyond what this GL implementation takes are refused before any texture exists
-    // (they were GL errors, reported as internal).
-    const int max_side = context->max_image_side();
-    if (equirect.cols > max_side || equirect.rows > max_side)
-      throw io::InputError(input.string() + ": the frame is " + std::to_string(equirect.cols) +
-                           "x" + std::to_string(equirect.rows) + "; this GL implementation (" +
-                           context->renderer() + ") takes at most " + std::to_string(max_side) +
-                           " pixels per side (render without --gpu)");
-    if (r.bake_width > max_side || r.bake_height > max_side)
-      throw UsageError("--bake " + std::to_string(r.bake_width) + "x" +
-                       std::to_string(r.bake_height) + ": this GL implementation takes at most " +
-                       std::to_string(max_side) + " per side");
-    cv::Mat bgr_in;
-    cv::cvtColor(equirect, bgr_in, cv::COLOR_RGB2BGR);
-    xr::GpuViewOptions options;
-    options.distortion = r.distortion;
-    if (eye) options.lens = eye->lens.lens;
-    options.blur = r.blur;
-    xr::FlareGl flare_layer;
-    flare_layer.set_layouts(flares);
-    xr::GrainGl grain_layer;
-    grain_layer.set_layers(grains);
-    const std::array<xr::EyeLayer*, 2> layers{&flare_layer, &grain_layer};
-    options.layers = layers;
-    unsigned mask = effects::non_neutral_mask(view_params);
-    std::optional<xr::ParamGrid> grid;
-    if (r.mode == effects::RenderMode::Pixel) {
-      // Per-pixel mode: the parameters baked on an equirect grid, read along each pixel's ray;
-      // an effect neutral in every cell is not compiled in.
-      grid = xr::bake_param_grid(evaluate, r.bake_width, r.bake_height);
-      mask = 0;
-      for (const effects::StackParams& p : grid->cells) mask |= effects::non_neutral_mask(p);
-      options.param_grid = &*grid;
-    }
-    effects::StackParams widest = view_params;
-    if (grid) widest.blur_sigma_deg = grid->max_blur_sigma_deg();
-    const int margin = xr::blur_margin(widest, mask, view, w, h);
-    const std::int64_t area_w = w + 2 * margin, area_h = h + 2 * margin;
-    if (area_w > max_side || area_h > max_side || area_w * area_h > kGpuRenderLimit.max_pixels)
-      throw UsageError(
-          "--size " + std::to_string(w) + "x" + std::to_string(h) + ": with the blur's margin of " +
-          std::to_string(margin) + " pixels the GPU renders " + std::to_string(area_w) + "x" +
-          std::to_string(area_h) + "; it takes at most " + std::to_string(max_side) +
-          " per side (this GL implementation) and " + std::to_string(kGpuRenderLimit.max_pixels) +
-          " pixels (" + kGpuRenderLimit.example + ") in all");
-    const cv::Mat bgr = xr::render_view_gpu(bgr_in, view, w, h, view_params, mask, options);
-    cv::Mat rgb;
-    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-    return rgb;
+/// Sizes beyond what this GL implementation takes are refused before any texture exists (they
+/// were GL errors, reported as internal).
+void check_gpu_sizes(const std::filesystem::path& input, const cv::Mat& equirect,
+                     const xr::GlContext& context, const RenderRequest& r) {
+  const int max_side = context.max_image_side();
+  if (equirect.cols > max_side || equirect.rows > max_side)
+    throw io::InputError(input.string() + ": the frame is " + std::to_string(equirect.cols) + "x" +
+                         std::to_string(equirect.rows) + "; this GL implementation (" +
+                         context.renderer() + ") takes at most " + std::to_string(max_side) +
+                         " pixels per side (render without --gpu)");
+  if (r.bake_width > max_side || r.bake_height > max_side)
+    throw UsageError("--bake " + std::to_string(r.bake_width) + "x" +
+                     std::to_string(r.bake_height) + ": this GL implementation takes at most " +
+                     std::to_string(max_side) + " per side");
+}
+
+/// The blurred area (the view and the blur's margin) must fit the GL implementation and the
+/// GPU render limit.
+void check_gpu_area(int w, int h, int margin, int max_side) {
+  const std::int64_t area_w = w + 2 * margin, area_h = h + 2 * margin;
+  if (area_w > max_side || area_h > max_side || area_w * area_h > kGpuRenderLimit.max_pixels)
+    throw UsageError(
+        "--size " + std::to_string(w) + "x" + std::to_string(h) + ": with the blur's margin of " +
+        std::to_string(margin) + " pixels the GPU renders " + std::to_string(area_w) + "x" +
+        std::to_string(area_h) + "; it takes at most " + std::to_string(max_side) +
+        " per side (this GL implementation) and " + std::to_string(kGpuRenderLimit.max_pixels) +
+        " pixels (" + kGpuRenderLimit.example + ") in all");
+}
+
+/// Through the GL compositor (offscreen); 8-bit RGB.
+cv::Mat render_gpu(const std::filesystem::path& input, const ViewScene& s, const RenderRequest& r) {
+  auto context = xr::GlContext::create({});
+  check_gpu_sizes(input, s.equirect, *context, r);
+  cv::Mat bgr_in;
+  cv::cvtColor(s.equirect, bgr_in, cv::COLOR_RGB2BGR);
+  xr::GpuViewOptions options;
+  options.distortion = r.distortion;
+  if (s.eye) options.lens = s.eye->lens.lens;
+  options.blur = r.blur;
+  xr::FlareGl flare_layer;
+  flare_layer.set_layouts(s.flares);
+  xr::GrainGl grain_layer;
+  grain_layer.set_layers(s.grains);
+  const std::array<xr::EyeLayer*, 2> layers{&flare_layer, &grain_layer};
+  options.layers = layers;
+  unsigned mask = effects::non_neutral_mask(s.view_params);
+  std::optional<xr::ParamGrid> grid;
+  if (r.mode == effects::RenderMode::Pixel) {
+    // Per-pixel mode: the parameters baked on an equirect grid, read along each pixel's ray;
+    // an effect neutral in every cell is not compiled in.
+    grid = xr::bake_param_grid(s.evaluate, r.bake_width, r.bake_height);
+    mask = 0;
+    for (const effects::StackParams& p : grid->cells) mask |= effects::non_neutral_mask(p);
+    options.param_grid = &*grid;
   }
+  effects::StackParams widest = s.view_params;
+  if (grid) widest.blur_sigma_deg = grid->max_blur_sigma_deg();
+  check_gpu_area(s.w, s.h, xr::blur_margin(widest, mask, s.view, s.w, s.h),
+                 context->max_image_side());
+  const cv::Mat bgr = xr::render_view_gpu(bgr_in, s.view, s.w, s.h, s.view_params, mask, options);
+  cv::Mat rgb;
+  cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+  return rgb;
+}
 
-  const effects::ViewCamera camera = view.camera(w, h);
-  const effects::EquirectSampler sampler(equirect);
+/// The CPU reference: RGB float, unclamped.
+cv::Mat render_cpu(const ViewScene& s, const RenderRequest& r) {
+  const effects::ViewCamera camera = s.view.camera(s.w, s.h);
+  const effects::EquirectSampler sampler(s.equirect);
   cv::Mat rendered;
   if (r.mode == effects::RenderMode::View) {
-    rendered = effects::render_view(sampler, camera, view_params);
+    rendered = effects::render_view(sampler, camera, s.view_params);
   } else {
-    const effects::ParamsAt at = evaluate;
+    const effects::ParamsAt at = s.evaluate;
     rendered = effects::render_view(sampler, camera, at, effects::RenderMode::Pixel);
   }
-  effects::add_flares(rendered, camera, view.position, flares);
-  for (const effects::GrainFrame& g : grains) {
+  effects::add_flares(rendered, camera, s.view.position, s.flares);
+  for (const effects::GrainFrame& g : s.grains) {
     if (effects::is_volumetric(g.style))
       throw std::invalid_argument("grain style " + std::string(effects::grain_style_name(g.style)) +
                                   " renders on the GPU only (--gpu)");
-    effects::composite_shader_grain(rendered, g, view.orientation, view.position, view.tangents());
+    effects::composite_shader_grain(rendered, g, s.view.orientation, s.view.position,
+                                    s.view.tangents());
   }
-  if (eye && r.distortion.method != xr::DistortionMethod::None)
-    rendered = predistort_cpu(rendered, eye->lens, r.distortion);
-  return effects::to_rgb8(rendered);
+  if (s.eye && r.distortion.method != xr::DistortionMethod::None)
+    rendered = predistort_cpu(rendered, s.eye->lens, r.distortion);
+  return rendered;
+}
+
+}  // namespace
+
+cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
+                       const RenderRequest& r) {
+  cv::Mat equirect = load_equirect_frame(input, r.frame);
+  const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+  const ViewScene scene = view_scene(input, sidecar, stack, r, std::move(equirect));
+  if (r.gpu) return render_gpu(input, scene, r);
+  return effects::to_rgb8(render_cpu(scene, r));
+}
+
+cv::Size render_to_png(const std::filesystem::path& input,
+                       const std::filesystem::path& sidecar_path, const RenderRequest& request,
+                       const std::filesystem::path& out) {
+  // Before any work: an --out that would destroy an input, or a device, is refused up front.
+  std::vector<io::NamedInput> inputs = {{"INPUT", input}, {"--sidecar", sidecar_path}};
+  if (request.hmd) inputs.push_back({"--hmd", request.hmd->source});
+  io::check_output_is_not_input("--out", out, inputs);
+  io::resolve_output_path(out);
+  const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
+  if (const auto g = first_gpu_only_grain(sidecar); g && !request.gpu)
+    throw UsageError(sidecar_path.string() + ": grain #" + std::to_string(*g + 1) + " (" +
+                     std::string(effects::grain_style_name(sidecar.grains[*g].style)) +
+                     ") is volumetric and renders on the GPU only: add --gpu");
+  const cv::Mat rgb8 = render_request(input, sidecar, request);
+  cv::Mat bgr;
+  cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);
+  io::write_png(out, bgr);
+  return rgb8.size();
 }
 
 }  // namespace vdfx::app

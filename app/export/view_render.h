@@ -50,6 +50,13 @@ cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t fra
 cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
                        const RenderRequest& request);
 
+/// `vdfx render`'s work once its options are parsed (the HMD profile loaded): `out` checked
+/// against the inputs, the sidecar read, the view rendered and written as an 8-bit sRGB PNG.
+/// Returns the image's size. Throws io::InputError for bad input, app::UsageError for a sidecar
+/// that needs `gpu` or a size the GL implementation cannot render.
+cv::Size render_to_png(const std::filesystem::path& input, const std::filesystem::path& sidecar,
+                       const RenderRequest& request, const std::filesystem::path& out);
+
 /// CPU reference of the lens pre-distortion: panel image of one eye from its undistorted eye
 /// image (RGB float), per-channel sample positions from the exact inverse (Pixel) or an N x N
 /// mesh (Mesh); black beyond the lens's monotonic limit and outside the eye image.

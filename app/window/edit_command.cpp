@@ -75,6 +75,10 @@ std::optional<fs::path> handle_recovery(const fs::path& sidecar_path, const std:
   return std::nullopt;
 }
 
+bool is_replay(const LoopCli& loop) {
+  return loop.input.rfind("replay:", 0) == 0;
+}
+
 std::string edit_help_footer() {
   return "\nEditor controls (OpenXR actions):\n" + EditorClient::controls_text() +
          "Window keys:\n" + frame_loop_keys_text() + "Simulated controllers (--input sim):\n" +
@@ -89,6 +93,95 @@ std::string edit_help_footer() {
          "clean exit; one left by a crash is offered at the next start: --recover).\n"
          "With --input replay:REC the loop takes its times from the recording and stops at its "
          "end.\n";
+}
+
+/// The sidecar `vdfx edit` works on: which file, read from it (or its recovery copy), and the
+/// video it belongs to.
+struct EditDocument {
+  bool demo = false;    //!< the bundled demo: edited, never saved
+  bool exists = false;  //!< false: a new sidecar for the video, created once it is open
+  fs::path sidecar_path;
+  io::Sidecar sidecar;
+  fs::path video;
+};
+
+EditDocument open_document(const std::string& video, const std::string& sidecar_arg,
+                           const std::string& recover) {
+  EditDocument d;
+  d.demo = video.empty() && sidecar_arg.empty();
+  if (d.demo) {
+    d.sidecar_path = demo_sidecar();
+  } else if (!sidecar_arg.empty()) {
+    d.sidecar_path = sidecar_arg;
+  } else {
+    d.sidecar_path =
+        fs::path(video).parent_path() / (fs::path(video).stem().string() + ".vdfx.json");
+  }
+  d.exists = fs::exists(d.sidecar_path);
+  if (!d.exists && video.empty())
+    throw io::InputError(d.sidecar_path.string() +
+                         ": no such sidecar (give VIDEO to start a new one)");
+  std::optional<fs::path> load_from;
+  if (d.exists && !d.demo) load_from = handle_recovery(d.sidecar_path, recover);
+  if (d.exists) d.sidecar = io::read_sidecar(load_from ? *load_from : d.sidecar_path);
+  if (load_from) std::cerr << "vdfx edit: recovered " << load_from->string() << "\n";
+  d.video = video.empty() ? sidecar_video(d.sidecar_path, d.sidecar) : fs::path(video);
+  return d;
+}
+
+/// The editor's panel layout and saving: the sim (and replays of sessions recorded with it) get
+/// the Desktop layout in the window's view; a replay keeps the view it was recorded in, a live
+/// window's panels follow its size. Replays are exact: every solve and minimap finishes before
+/// the frame that shows it; live, the minimap is computed on a worker so that playing a large
+/// set never stalls a frame.
+EditorOptions editor_options(const LoopCli& loop, const LoopSetup& setup, const EditDocument& d) {
+  EditorOptions eo;
+  const bool desktop =
+      (loop.input == "sim" && loop.runtime == "sim") || setup.recorded_desktop.has_value();
+  eo.layout = desktop ? PanelLayout::Desktop : PanelLayout::Hands;
+  if (setup.recorded_desktop)
+    eo.viewport = {setup.recorded_desktop->width, setup.recorded_desktop->height,
+                   setup.recorded_desktop->hfov_deg};
+  else
+    eo.viewport = {setup.options.window_width, setup.options.window_height,
+                   setup.options.desktop_hfov_deg};
+  if (!d.demo) eo.autosave_path = d.sidecar_path;
+  eo.visuals.async = !is_replay(loop);
+  return eo;
+}
+
+/// Runs the editor in the frame loop until the window closes (or the replay ends), then saves.
+int edit_in_loop(EditDocument& d, const LoopCli& loop, LoopSetup& setup) {
+  const EditorOptions eo = editor_options(loop, setup, d);
+  DocumentOptions dopts;
+  if (is_replay(loop)) dopts.keyframes.async = false;
+  Editor editor(std::move(d.sidecar), dopts, eo);
+  EditorClient client(
+      editor, create_gl_panel_textures(),
+      /*follow_window=*/eo.layout == PanelLayout::Desktop && !setup.recorded_desktop);
+  if (!setup.video->properties().is_still) {
+    auto thumbs =
+        std::make_unique<ThumbnailWorker>(d.video, kTimelineThumbnails, cv::Size(192, 96));
+    // A replay must look the same every run: its thumbnails are there from the first frame.
+    if (is_replay(loop)) thumbs->wait(std::chrono::seconds(60));
+    client.set_thumbnails(std::move(thumbs));
+  }
+  FrameLoop frame_loop(setup.options, *setup.input, *setup.video, client);
+  FrameLoopResult result;
+  try {
+    result = frame_loop.run();
+  } catch (...) {
+    client.release_textures();
+    throw;
+  }
+  client.release_textures();
+  report_loop("vdfx edit", result);
+  if (!editor.finish()) {
+    std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
+    return kExitBadInput;  // the sidecar could not be written (e.g. a read-only folder)
+  }
+  if (!d.demo) std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
+  return kExitOk;
 }
 
 }  // namespace
@@ -115,82 +208,19 @@ int cmd_edit(const Args& args) {
   cli.footer(edit_help_footer());
   if (auto code = parse_cli(cli, args)) return *code;
 
-  const bool demo = video.empty() && sidecar_arg.empty();
-  fs::path sidecar_path;
-  if (demo) {
-    sidecar_path = demo_sidecar();
-  } else if (!sidecar_arg.empty()) {
-    sidecar_path = sidecar_arg;
-  } else {
-    sidecar_path = fs::path(video).parent_path() / (fs::path(video).stem().string() + ".vdfx.json");
-  }
-  const bool exists = fs::exists(sidecar_path);
-  if (!exists && video.empty())
-    throw io::InputError(sidecar_path.string() +
-                         ": no such sidecar (give VIDEO to start a new one)");
-
-  std::optional<fs::path> load_from;
-  if (exists && !demo) load_from = handle_recovery(sidecar_path, recover);
-  io::Sidecar sidecar;
-  if (exists) sidecar = io::read_sidecar(load_from ? *load_from : sidecar_path);
-  if (load_from) std::cerr << "vdfx edit: recovered " << load_from->string() << "\n";
-  const fs::path v = video.empty() ? sidecar_video(sidecar_path, sidecar) : fs::path(video);
-  LoopSetup setup = prepare_loop(loop, v, true, {{"--sidecar", sidecar_path}});
-  if (!exists) {
+  EditDocument doc = open_document(video, sidecar_arg, recover);
+  LoopSetup setup = prepare_loop(loop, doc.video, true, {{"--sidecar", doc.sidecar_path}});
+  if (!doc.exists) {
     const io::VideoProperties& p = setup.video->properties();
-    sidecar = io::new_sidecar({fs::absolute(v).string(), p.fps.value(),
-                               std::max<std::int64_t>(1, p.frames), p.width, p.height});
-    std::cerr << "vdfx edit: new sidecar " << sidecar_path.string() << " for " << v.string()
-              << "\n";
+    doc.sidecar = io::new_sidecar({fs::absolute(doc.video).string(), p.fps.value(),
+                                   std::max<std::int64_t>(1, p.frames), p.width, p.height});
+    std::cerr << "vdfx edit: new sidecar " << doc.sidecar_path.string() << " for "
+              << doc.video.string() << "\n";
   }
-  if (demo)
-    std::cerr << "vdfx edit: the bundled demo, not saved (copy " << sidecar_path.string()
+  if (doc.demo)
+    std::cerr << "vdfx edit: the bundled demo, not saved (copy " << doc.sidecar_path.string()
               << " and pass --sidecar COPY to keep edits)\n";
-
-  EditorOptions eo;
-  // The sim (and replays of sessions recorded with it): the Desktop layout in the window's view;
-  // a replay keeps the view it was recorded in, a live window's panels follow its size.
-  const bool desktop =
-      (loop.input == "sim" && loop.runtime == "sim") || setup.recorded_desktop.has_value();
-  eo.layout = desktop ? PanelLayout::Desktop : PanelLayout::Hands;
-  if (setup.recorded_desktop)
-    eo.viewport = {setup.recorded_desktop->width, setup.recorded_desktop->height,
-                   setup.recorded_desktop->hfov_deg};
-  else
-    eo.viewport = {setup.options.window_width, setup.options.window_height,
-                   setup.options.desktop_hfov_deg};
-  if (!demo) eo.autosave_path = sidecar_path;
-  DocumentOptions dopts;
-  // Replays are exact: every solve and minimap finishes before the frame that shows it. Live,
-  // the minimap is computed on a worker so that playing a large set never stalls a frame.
-  const bool replay = loop.input.rfind("replay:", 0) == 0;
-  if (replay) dopts.keyframes.async = false;
-  eo.visuals.async = !replay;
-  Editor editor(std::move(sidecar), dopts, eo);
-  EditorClient client(editor, create_gl_panel_textures(),
-                      /*follow_window=*/desktop && !setup.recorded_desktop);
-  if (!setup.video->properties().is_still) {
-    auto thumbs = std::make_unique<ThumbnailWorker>(v, kTimelineThumbnails, cv::Size(192, 96));
-    // A replay must look the same every run: its thumbnails are there from the first frame.
-    if (replay) thumbs->wait(std::chrono::seconds(60));
-    client.set_thumbnails(std::move(thumbs));
-  }
-  FrameLoop frame_loop(setup.options, *setup.input, *setup.video, client);
-  FrameLoopResult result;
-  try {
-    result = frame_loop.run();
-  } catch (...) {
-    client.release_textures();
-    throw;
-  }
-  client.release_textures();
-  report_loop("vdfx edit", result);
-  if (!editor.finish()) {
-    std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
-    return kExitBadInput;  // the sidecar could not be written (e.g. a read-only folder)
-  }
-  if (!demo) std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
-  return kExitOk;
+  return edit_in_loop(doc, loop, setup);
 }
 
 }  // namespace vdfx::app

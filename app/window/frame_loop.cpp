@@ -307,12 +307,77 @@ struct FrameLoop::Impl {
     }
   }
 
+  /// The size to render this frame: the window's framebuffer; a hidden window (tests,
+  /// screenshots) renders at the size asked for, and so does a minimised one.
+  std::pair<int, int> render_size() const {
+    int fbw = 0, fbh = 0;
+    gl->framebuffer_size(&fbw, &fbh);
+    if (!o.visible || fbw <= 0 || fbh <= 0) fbw = o.window_width, fbh = o.window_height;
+    return {fbw, fbh};
+  }
+
+  /// The frame's desktop events (polled before), the window's then the script's (a size change
+  /// first), each mouse move with its ray through what the mirror shows (re-aimed when a loop key
+  /// changes the mirror): to the input backend first (sim bindings), then to the client. Escape
+  /// sets `quit`.
+  void route_events(std::int64_t n, int fbw, int fbh, bool& quit) {
+    std::vector<xr::DesktopEvent> events = glue->drain();
+    if (o.script) {
+      auto more = o.script(n);
+      events.insert(events.end(), more.begin(), more.end());
+    }
+    bool geometry_changed = false;
+    if (fbw != geometry_w || fbh != geometry_h) {
+      events.insert(events.begin(), xr::ViewGeometryEvent{fbw, fbh, o.desktop_hfov_deg});
+      geometry_w = fbw;
+      geometry_h = fbh;
+      geometry_changed = true;
+    }
+    std::vector<xr::DesktopEvent> routed;
+    for (auto& e : events) {
+      if (auto* m = std::get_if<xr::MouseMoveEvent>(&e)) {
+        if (!m->ray) *m = cursor_event(m->x, m->y, fbw, fbh);
+        cursor = glm::dvec2(m->x, m->y);
+      }
+      routed.push_back(e);
+      if (handle_loop_key(e, quit)) geometry_changed = true;
+      if (geometry_changed && cursor) {
+        // The same cursor now points through another mirror: re-aim without moving.
+        routed.push_back(cursor_event(cursor->x, cursor->y, fbw, fbh));
+        geometry_changed = false;
+      }
+    }
+    if (geometry_changed && cursor) routed.push_back(cursor_event(cursor->x, cursor->y, fbw, fbh));
+    for (const auto& e : routed) {
+      input.push_event(e);
+      client.on_desktop_event(e);
+    }
+  }
+
+  /// The frame's content through the compositor: the desktop view at the window's size, or both
+  /// eyes from the session's views.
+  void render_content(const Content& c, xr::Session& session, int fbw, int fbh) {
+    const std::array<xr::EyeLayer*, 2> layers{flare.get(), grain.get()};
+    if (mirror == xr::MirrorMode::Desktop) {
+      const xr::RenderView view = xr::desktop_view(c.in.head, o.desktop_hfov_deg, fbw, fbh);
+      compositor->render_desktop({view, c.params, c.mask, c.per_pixel, layers}, fbw, fbh,
+                                 o.desktop_video_scale, c.quads, c.in.head);
+    } else {
+      const auto views = session.locate_views(c.in.head, xr::ReferenceSpace::Local);
+      for (int e = 0; e < 2; ++e)
+        compositor->render_eye(e,
+                               {xr::render_view(views[e]), c.params, c.mask, c.per_pixel, layers},
+                               c.quads, c.in.head);
+    }
+  }
+
   FrameLoopResult run() {
     if (o.openxr) return run_openxr();
     FrameLoopResult result;
     FrameLoopStats stats;
     const std::vector<std::int64_t> timeline = input.timeline();
     const bool replay = !timeline.empty();
+    const auto frames = static_cast<std::int64_t>(timeline.size());
     const auto wall0 = Clock::now();
     last_stats = last_title = wall0;
     const auto now_ns = [&] {
@@ -325,50 +390,12 @@ struct FrameLoop::Impl {
     video_loop = video.loop();
     bool quit = false;
     for (std::int64_t n = 0; !quit; ++n) {
-      if (o.max_frames >= 0 && n >= o.max_frames) break;
-      if (replay && n >= static_cast<std::int64_t>(timeline.size())) break;
+      if ((o.max_frames >= 0 && n >= o.max_frames) || (replay && n >= frames)) break;
       if (gl->should_close()) break;
       const auto frame_t0 = Clock::now();
-
-      // Events: window, then script; the backend first (sim bindings), then loop and client.
-      gl->poll_events();
-      std::vector<xr::DesktopEvent> events = glue->drain();
-      if (o.script) {
-        auto more = o.script(n);
-        events.insert(events.end(), more.begin(), more.end());
-      }
-      int fbw = 0, fbh = 0;
-      gl->framebuffer_size(&fbw, &fbh);
-      // A hidden window (tests, screenshots) renders at the size asked for; so does a minimised
-      // one.
-      if (!o.visible || fbw <= 0 || fbh <= 0) fbw = o.window_width, fbh = o.window_height;
-      bool geometry_changed = false;
-      if (fbw != geometry_w || fbh != geometry_h) {
-        events.insert(events.begin(), xr::ViewGeometryEvent{fbw, fbh, o.desktop_hfov_deg});
-        geometry_w = fbw;
-        geometry_h = fbh;
-        geometry_changed = true;
-      }
-      std::vector<xr::DesktopEvent> routed;  // events with cursor rays for what the mirror shows
-      for (auto& e : events) {
-        if (auto* m = std::get_if<xr::MouseMoveEvent>(&e)) {
-          if (!m->ray) *m = cursor_event(m->x, m->y, fbw, fbh);
-          cursor = glm::dvec2(m->x, m->y);
-        }
-        routed.push_back(e);
-        if (handle_loop_key(e, quit)) geometry_changed = true;
-        if (geometry_changed && cursor) {
-          // The same cursor now points through another mirror: re-aim without moving.
-          routed.push_back(cursor_event(cursor->x, cursor->y, fbw, fbh));
-          geometry_changed = false;
-        }
-      }
-      if (geometry_changed && cursor)
-        routed.push_back(cursor_event(cursor->x, cursor->y, fbw, fbh));
-      for (const auto& e : routed) {
-        input.push_event(e);
-        client.on_desktop_event(e);
-      }
+      gl->poll_events();  // first: a resize it delivers is this frame's size
+      const auto [fbw, fbh] = render_size();
+      route_events(n, fbw, fbh, quit);
 
       // Time: the recording's in replay, else the session's prediction.
       const xr::FrameState fs = session.wait_frame(replay ? timeline[n] - 1 : now_ns());
@@ -377,35 +404,19 @@ struct FrameLoop::Impl {
       session.begin_frame();
       const std::int64_t t = replay ? timeline[n] : fs.predicted_display_time_ns;
 
-      Content c = frame_content(n, t, wall0, stats, result);
+      const Content c = frame_content(n, t, wall0, stats, result);
       if (c.info.request_exit) quit = true;
-      const xr::InputState& in = c.in;
-      const FrameRecord& rec = c.rec;
-      const effects::StackParams& params = c.params;
-      const unsigned mask = c.mask;
-      const bool per_pixel = c.per_pixel;
-      const std::vector<xr::QuadLayer>& quads = c.quads;
-      const std::array<xr::EyeLayer*, 2> layers{flare.get(), grain.get()};
-      if (mirror == xr::MirrorMode::Desktop) {
-        const xr::RenderView view = xr::desktop_view(in.head, o.desktop_hfov_deg, fbw, fbh);
-        compositor->render_desktop({view, params, mask, per_pixel, layers}, fbw, fbh,
-                                   o.desktop_video_scale, quads, in.head);
-      } else {
-        const auto views = session.locate_views(in.head, xr::ReferenceSpace::Local);
-        for (int e = 0; e < 2; ++e)
-          compositor->render_eye(e, {xr::render_view(views[e]), params, mask, per_pixel, layers},
-                                 quads, in.head);
-      }
+      render_content(c, session, fbw, fbh);
       if (o.on_frame) o.on_frame(*compositor, n);
       compositor->draw_mirror(mirror, nullptr, fbw, fbh);
-      const bool last = quit || (o.max_frames >= 0 && n + 1 >= o.max_frames) ||
-                        (replay && n + 1 >= static_cast<std::int64_t>(timeline.size()));
+      const bool last =
+          quit || (o.max_frames >= 0 && n + 1 >= o.max_frames) || (replay && n + 1 >= frames);
       if (last && !o.screenshot.empty()) write_screenshot(fbw, fbh);
       gl->swap_buffers();
-      session.end_frame(fs.predicted_display_time_ns, quads);
+      session.end_frame(fs.predicted_display_time_ns, c.quads);
 
       ++result.frames;
-      if (o.keep_records) result.records.push_back(rec);
+      if (o.keep_records) result.records.push_back(c.rec);
       if (o.stats) stats.add_gpu(compositor->stage_times());
       stats.add_cpu("frame", ms_since(frame_t0));
       report_progress(n, result, stats);

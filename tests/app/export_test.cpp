@@ -46,11 +46,13 @@ using testing::run_vdfx;
 using testing::test_dir;
 using testing::write_text;
 
+using testing::decoded_rgb8;
 using testing::Fixture;
 using testing::kFrames;
 using testing::kH;
 using testing::kW;
 using testing::make_fixture;
+using testing::write_path_recording;
 
 /// What ffprobe reports, read through libavformat.
 struct Probe {
@@ -100,13 +102,6 @@ Probe probe(const fs::path& p) {
   }
   std::sort(r.video_times.begin(), r.video_times.end());
   return r;
-}
-
-cv::Mat decoded_rgb8(io::FrameDecoder& d, std::int64_t k) {
-  d.seek(k);
-  cv::Mat m;
-  EXPECT_EQ(d.read(m), io::DecodeStatus::Ok) << k;
-  return m;
 }
 
 int max_diff(const cv::Mat& a, const cv::Mat& b) {
@@ -217,22 +212,6 @@ TEST(Export, PartialRangeWithH265StartsAtZeroAndCutsTheAudio) {
   };
   EXPECT_LT(mean_diff(rgb3, 3), 3.0);  // lossy h265: a mean, not a maximum
   EXPECT_LT(mean_diff(rgb3, 3), mean_diff(rgb4, 4));
-}
-
-/// A recording: looking at (30, 10) for 0.25 s, turning to (-60, -5) by 0.6 s, then still to 1 s.
-fs::path write_path_recording(const fs::path& dir) {
-  const fs::path p = dir / "path.vdrec.jsonl";
-  io::RecordingWriter w(p, io::RecordingHeader{});
-  for (std::int64_t t = 0; t <= 1'000'000'000; t += 11'111'111) {
-    const double f = std::clamp((static_cast<double>(t) / 1e9 - 0.25) / 0.35, 0.0, 1.0);
-    const glm::dquat q = xr::look_rotation(30.0 - 90.0 * f, 10.0 - 15.0 * f);
-    io::RecordedSample s;
-    s.t_ns = 5'000'000'000 + t;
-    s.head.q = {q.w, q.x, q.y, q.z};
-    s.head.p = {0.0, 1.6, 0.0};
-    w.write(s);
-  }
-  return p;
 }
 
 TEST(Export, ViewerPathDrawsTheFlareAndGrainAsVdfxRenderDoes) {

@@ -3,10 +3,15 @@
 /// and a sidecar whose effects depend visibly on the direction.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
+#include <glm/gtc/quaternion.hpp>
 
 #include "command_test_util.h"
+#include "io/frame_decoder.h"
+#include "io/recording.h"
 #include "tests/media_clips.h"
+#include "xr/actions.h"
 
 namespace vdfx::app::testing {
 
@@ -49,6 +54,30 @@ inline Fixture make_fixture(int width = kW, int height = kH, int frames = kFrame
   f.sidecar = f.dir / "clip.vdfx.json";
   write_text(f.sidecar, kSidecar);
   return f;
+}
+
+/// Frame k of a decoder as RGB 8-bit.
+inline cv::Mat decoded_rgb8(io::FrameDecoder& d, std::int64_t k) {
+  d.seek(k);
+  cv::Mat m;
+  EXPECT_EQ(d.read(m), io::DecodeStatus::Ok) << k;
+  return m;
+}
+
+/// A recording: looking at (30, 10) for 0.25 s, turning to (-60, -5) by 0.6 s, then still to 1 s.
+inline std::filesystem::path write_path_recording(const std::filesystem::path& dir) {
+  const std::filesystem::path p = dir / "path.vdrec.jsonl";
+  io::RecordingWriter w(p, io::RecordingHeader{});
+  for (std::int64_t t = 0; t <= 1'000'000'000; t += 11'111'111) {
+    const double f = std::clamp((static_cast<double>(t) / 1e9 - 0.25) / 0.35, 0.0, 1.0);
+    const glm::dquat q = xr::look_rotation(30.0 - 90.0 * f, 10.0 - 15.0 * f);
+    io::RecordedSample s;
+    s.t_ns = 5'000'000'000 + t;
+    s.head.q = {q.w, q.x, q.y, q.z};
+    s.head.p = {0.0, 1.6, 0.0};
+    w.write(s);
+  }
+  return p;
 }
 
 }  // namespace vdfx::app::testing
