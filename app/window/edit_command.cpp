@@ -11,6 +11,7 @@
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/editor/edit_access.h"
 #include "app/window/editor_client.h"
 #include "app/window/frame_loop_cli.h"
 #include "io/input_error.h"
@@ -96,7 +97,7 @@ std::string edit_help_footer() {
 int cmd_edit(const Args& args) {
   CLI::App cli("author view-dependent effects in the simulated headset (no VIDEO: the demo)",
                "vdfx edit");
-  std::string video, sidecar_arg, recover = "ask";
+  std::string video, sidecar_arg, recover = "ask", access = "auto";
   LoopCli loop;
   // Panel text must be legible in the mirror: at the player's 0.25 the timeline's small text
   // blurs into a few eye pixels per glyph; 0.5 reads (docs/editor.md).
@@ -111,6 +112,11 @@ int cmd_edit(const Args& args) {
          "default: ask on a terminal, else no")
       ->capture_default_str()
       ->check(CLI::IsMember({"ask", "yes", "no"}));
+  cli.add_option("--access", access,
+                 "when another editor has the sidecar open: auto opens read-only (edits saved to "
+                 "a copy beside it), write exits 1, read-only never writes the sidecar")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "write", "read-only"}));
   add_loop_options(cli, loop);
   cli.footer(edit_help_footer());
   if (auto code = parse_cli(cli, args)) return *code;
@@ -129,8 +135,11 @@ int cmd_edit(const Args& args) {
     throw io::InputError(sidecar_path.string() +
                          ": no such sidecar (give VIDEO to start a new one)");
 
-  std::optional<fs::path> load_from;
-  if (exists && !demo) load_from = handle_recovery(sidecar_path, recover);
+  std::optional<EditAccess> acc;  // the sidecar's lock for the whole session
+  if (!demo) acc.emplace(open_for_editing(sidecar_path, parse_edit_access(access), std::cerr));
+  std::optional<fs::path> load_from;  // (a read-only session leaves the owner's autosave alone)
+  if (exists && !demo && acc->read_only_note.empty())
+    load_from = handle_recovery(sidecar_path, recover);
   io::Sidecar sidecar;
   if (exists) sidecar = io::read_sidecar(load_from ? *load_from : sidecar_path);
   if (load_from) std::cerr << "vdfx edit: recovered " << load_from->string() << "\n";
@@ -159,7 +168,7 @@ int cmd_edit(const Args& args) {
   else
     eo.viewport = {setup.options.window_width, setup.options.window_height,
                    setup.options.desktop_hfov_deg};
-  if (!demo) eo.autosave_path = sidecar_path;
+  if (!demo) eo.autosave_path = acc->save_to, eo.read_only_note = acc->read_only_note;
   DocumentOptions dopts;
   // Replays are exact: every solve and minimap finishes before the frame that shows it. Live,
   // the minimap is computed on a worker so that playing a large set never stalls a frame.
