@@ -27,23 +27,35 @@ std::string this_host() {
   return buf;
 }
 
-/// Field 22 of /proc/PID/stat: when the process started, in clock ticks after boot (0: unknown).
-unsigned long long process_start(long pid) {
+/// From /proc/PID/stat: the state (field 3: 'Z' a zombie, dead but not yet reaped) and when the
+/// process started (field 22, clock ticks after boot). Start 0: unknown.
+struct ProcessStat {
+  char state = '?';
+  unsigned long long start = 0;
+};
+ProcessStat process_stat(long pid) {
+  ProcessStat st;
   std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
   std::string line;
-  if (!std::getline(in, line)) return 0;
+  if (!std::getline(in, line)) return st;
   // The command name (field 2) is in parentheses and may hold spaces: count after the last ')'.
   const auto close = line.rfind(')');
-  if (close == std::string::npos) return 0;
+  if (close == std::string::npos) return st;
   std::istringstream rest(line.substr(close + 1));
   std::string field;
-  for (int i = 3; i <= 22; ++i)
-    if (!(rest >> field)) return 0;
-  try {
-    return std::stoull(field);
-  } catch (...) {
-    return 0;
+  for (int i = 3; i <= 22; ++i) {
+    if (!(rest >> field)) return st;
+    if (i == 3) st.state = field.empty() ? '?' : field[0];
   }
+  try {
+    st.start = std::stoull(field);
+  } catch (...) {
+    st.start = 0;
+  }
+  return st;
+}
+unsigned long long process_start(long pid) {
+  return process_stat(pid).start;
 }
 
 std::string utc_now() {
@@ -142,11 +154,11 @@ std::optional<LockOwner> read_lock(const fs::path& file) {
 bool owner_alive(const LockOwner& owner) {
   if (owner.pid <= 0 || owner.host != this_host()) return true;  // cannot tell: held
   if (::kill(static_cast<pid_t>(owner.pid), 0) != 0 && errno == ESRCH) return false;
-  // The id exists; it is the lock's process only if that started when the lock says.
-  if (owner.process_start != 0) {
-    const unsigned long long now = process_start(owner.pid);
-    if (now != 0 && now != owner.process_start) return false;
-  }
+  // The id exists; it is the lock's process only if that started when the lock says, and it is
+  // not a zombie (killed, its parent not yet waiting for it: a container's init may never).
+  const ProcessStat st = process_stat(owner.pid);
+  if (st.state == 'Z' || st.state == 'X') return false;
+  if (owner.process_start != 0 && st.start != 0 && st.start != owner.process_start) return false;
   return true;
 }
 

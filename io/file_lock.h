@@ -6,7 +6,8 @@
 /// The lock is advisory: vdfx's own writers look for it (io::write_file_atomic refuses to
 /// replace a file another live process holds), other programs do not. A lock whose process is
 /// gone (same host, no such process, or the id now belongs to a process started later) is stale
-/// and may be taken over; a lock from another host cannot be checked and counts as held.
+/// (or a zombie) and may be taken over; a lock from another host cannot be checked and counts as
+/// held.
 #pragma once
 
 #include <filesystem>
@@ -35,7 +36,8 @@ std::filesystem::path lock_path(const std::filesystem::path& file);
 std::optional<LockOwner> read_lock(const std::filesystem::path& file);
 
 /// Whether the owner's process still exists: false only when it is on this host and its process
-/// id is free or taken by a process started after the lock was (a reused id).
+/// id is free, a zombie (killed and not yet reaped) or taken by a process started after the lock
+/// was (a reused id).
 bool owner_alive(const LockOwner& owner);
 
 /// Throws io::InputError naming `file`, its lock and the owner when another live process holds

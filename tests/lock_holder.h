@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -51,16 +52,34 @@ class LockHolder {
   LockHolder& operator=(const LockHolder&) = delete;
   ~LockHolder() { kill(); }
   pid_t pid() const { return pid_; }
-  /// SIGKILL, as a crash: the lock file stays behind, stale.
-  void kill() {
+  /// SIGKILL, as a crash: the lock file stays behind, stale. `reap`: false leaves the child a
+  /// zombie until the destructor (a parent that has not waited for it yet).
+  void kill(bool reap = true) {
     if (pid_ <= 0) return;
-    ::kill(pid_, SIGKILL);
+    if (!killed_) ::kill(pid_, SIGKILL);
+    killed_ = true;
+    if (!reap) {
+      for (int i = 0; i < 500 && state() != 'Z'; ++i) ::usleep(2000);
+      return;
+    }
     ::waitpid(pid_, nullptr, 0);
     pid_ = -1;
+  }
+  /// The child's state letter from /proc ('Z': zombie), '?' when unknown.
+  char state() const {
+    FILE* f = std::fopen(("/proc/" + std::to_string(pid_) + "/stat").c_str(), "r");
+    if (!f) return '?';
+    char buf[512] = {};
+    const std::size_t n = std::fread(buf, 1, sizeof buf - 1, f);
+    std::fclose(f);
+    const std::string line(buf, n);
+    const auto close = line.rfind(')');
+    return close != std::string::npos && close + 2 < line.size() ? line[close + 2] : '?';
   }
 
  private:
   pid_t pid_ = -1;
+  bool killed_ = false;
 };
 
 }  // namespace vdfx::test_files

@@ -269,10 +269,9 @@ std::string sim_bindings_text(const SimConfig& config) {
   const std::string main_name = main == Hand::Left ? "left" : "right";
   std::vector<std::pair<std::string, std::string>> rows;
   std::ostringstream look;
-  look << "turn the head (/user/head/pose), " << config.look_deg_per_px
-       << " deg per pixel: drag the image as in desktop 360 players (--look drag, dragging left "
-          "turns right) or mouselook (--look mouselook, left turns left); now "
-       << look_mode_name(config.look);
+  look << "turn the head (/user/head/pose), " << config.look_deg_per_px << " deg per pixel, "
+       << (config.look == LookMode::Drag ? "drag: as 360 players (left turns right)"
+                                         : "mouselook: as games (left turns left)");
   rows.emplace_back("right mouse button drag", look.str());
   rows.emplace_back(std::string(key_name(kLookToggleKey)),
                     "switch the right-button drag between drag and mouselook");

@@ -41,7 +41,7 @@ case_() {
   rc=$?
   [ "$rc" -ge 128 ] && rc="signal $((rc - 128))"
   printf '%-4s | exit %-8s | %s | %s\n' "$id" "$rc" "$(eval "$note")" \
-    "$(grep -e '^vdfx [a-z]*: ' "$work/.out" | grep -v -e '^vdfx export: [0-9]*/' -e 'frames (' \
+    "$(grep -e '^vdfx [a-z]*: ' "$work/.out" | grep -v -e '^vdfx export: [0-9][0-9]*/' -e 'frames (' \
        -e '^vdfx [a-z]*: \(baked\|flare\|viewer\|wrote\)' | tail -2 | tr '\n' ' ' | cut -c1-260)"
 }
 intact() { cmp -s "$1" "$2" && echo "intact" || echo "CHANGED"; }
@@ -66,7 +66,11 @@ case_ 23c 'intact s.vdfx.json s.orig' \
   "$vdfx replay $place --video pano.png --sidecar-out s.vdfx.json"
 case_ 23d 'echo -' \
   "$vdfx export clip.mp4 --sidecar s.vdfx.json --baked s.vdfx.json.mp4 --frames 0-1"
-kill -KILL "${pids[@]}" 2>/dev/null; wait 2>/dev/null; pids=()
+# Killed as a crash would end it: the editor itself (its id from its lock, or its log), not
+# only the xvfb-run around it; a lock it held stays behind.
+editor_pid=$(python3 -c 'import json; print(json.load(open("s.vdfx.json.lock"))["pid"])' 2>/dev/null)
+[ -n "$editor_pid" ] && kill -KILL "$editor_pid" 2>/dev/null
+pkill -KILL -P "${pids[0]}" 2>/dev/null; kill -KILL "${pids[@]}" 2>/dev/null; wait 2>/dev/null; pids=()
 case_ 23e 'ls s.vdfx.json.lock 2>/dev/null || echo "no lock left"' \
   "xvfb-run -a $vdfx edit --sidecar s.vdfx.json --recover no --input replay:$place --hidden --frames 2 --scale 0.05 --window 64x64"
 rm -f s.vdfx.json.lock*; cp s.orig s.vdfx.json
@@ -109,8 +113,8 @@ if mount -t tmpfs -o size=512k tmpfs "$full" 2>/dev/null; then
   clear_full; fill 2
   case_ 23l 'wc -l < "$full/r.vdrec.jsonl" | sed "s/^/lines kept: /"' \
     "xvfb-run -a $vdfx play pano.png --sidecar s.vdfx.json --input replay:$root/recordings/sim_look_and_place.vdrec.jsonl --record $full/r.vdrec.jsonl --hidden --scale 0.05 --window 64x64"
-  clear_full; cp s.orig "$full/e.vdfx.json"; fill 0
-  case_ 23m 'intact "$full/e.vdfx.json" s.orig' \
+  clear_full; sed "s|\"pano.png\"|\"$work/pano.png\"|" s.orig > "$full/e.vdfx.json"; cp "$full/e.vdfx.json" e.orig; fill 0
+  case_ 23m 'intact "$full/e.vdfx.json" e.orig' \
     "xvfb-run -a $vdfx edit --sidecar $full/e.vdfx.json --input replay:$place --hidden --scale 0.05 --window 64x64"
   umount "$full"
 else

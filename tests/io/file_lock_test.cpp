@@ -88,6 +88,20 @@ TEST(FileLock, ASecondProcessHoldsItUntilItIsGoneThenItIsTakenOver) {
   EXPECT_EQ(read_lock(file)->pid, static_cast<long>(::getpid()));
 }
 
+TEST(FileLock, AKilledHolderNotYetReapedHoldsNothing) {
+  // Found by the probe: an editor killed while its parent had not waited for it yet (a zombie;
+  // a container's init may never reap it) still answered kill(pid, 0), so its lock looked held.
+  const fs::path file = temp_dir("lock_zombie") / "clip.vdfx.json";
+  LockHolder other(file);
+  other.kill(/*reap=*/false);
+  ASSERT_EQ(other.state(), 'Z');
+  EXPECT_FALSE(owner_alive(*read_lock(file)));
+  auto r = FileLock::acquire(file, "vdfx edit");
+  ASSERT_TRUE(r.lock.has_value());
+  ASSERT_TRUE(r.took_over.has_value());
+  EXPECT_EQ(r.took_over->pid, other.pid());
+}
+
 struct LockCase {
   const char* name;
   std::string text;  //!< the lock file's contents (PID and HOST replaced)

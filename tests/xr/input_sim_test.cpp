@@ -173,7 +173,11 @@ TEST(Sim, DragIsTheDefaultAndTheKeyISwitchesTheLookDirection) {
   EXPECT_EQ(parse_look_mode("mouselook"), LookMode::Mouselook);
   EXPECT_EQ(parse_look_mode("drag"), LookMode::Drag);
   EXPECT_FALSE(parse_look_mode("invert").has_value());
-  EXPECT_NE(sim_bindings_text(SimConfig{}).find("now drag"), std::string::npos);
+  EXPECT_NE(sim_bindings_text(SimConfig{}).find("drag: as 360 players (left turns right)"),
+            std::string::npos);
+  SimConfig mouselook;
+  mouselook.look = LookMode::Mouselook;
+  EXPECT_NE(sim_bindings_text(mouselook).find("mouselook: as games"), std::string::npos);
 }
 
 TEST(Sim, SpaceAimsAtTheViewCentreWhereverTheCursorRestsAClickAtTheCursor) {
