@@ -87,6 +87,14 @@ std::string utc_stamp() {
 }
 }  // namespace
 
+fs::path new_side_file_path(const fs::path& sidecar_path, const std::string& what) {
+  const std::string tag = what + "-" + utc_stamp();
+  fs::path p = side_file_path(sidecar_path, tag);
+  for (int n = 2; fs::exists(p); ++n)
+    p = side_file_path(sidecar_path, tag + "-" + std::to_string(n));
+  return p;
+}
+
 Autosave::Autosave(fs::path sidecar_path, Target target)
     : path_(std::move(sidecar_path)), target_(target), known_(fingerprint(path_)) {}
 
@@ -97,9 +105,7 @@ void Autosave::divert_if_changed_on_disk() {
   if (!now.exists || now == known_) return;
   // Another program wrote the sidecar: its version stays; this author's goes beside it.
   const fs::path original = path_;
-  fs::path side = side_file_path(original, "yours-" + utc_stamp());
-  for (int n = 2; fs::exists(side); ++n)
-    side = side_file_path(original, "yours-" + utc_stamp() + "-" + std::to_string(n));
+  const fs::path side = new_side_file_path(original, "yours");
   // The recovery copy follows the file saved to (the old one is left for the crash case).
   diverted_ = side;
   original_ = original;

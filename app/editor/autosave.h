@@ -39,6 +39,11 @@ std::optional<RecoveryOffer> find_recovery(const std::filesystem::path& sidecar_
 std::filesystem::path side_file_path(const std::filesystem::path& sidecar_path,
                                      const std::string& tag);
 
+/// A side file that does not exist yet: side_file_path with tag WHAT-YYYYMMDD-HHMMSS (UTC, now),
+/// "-2", "-3", ... added while that name is taken.
+std::filesystem::path new_side_file_path(const std::filesystem::path& sidecar_path,
+                                         const std::string& what);
+
 /// What identifies a file's contents cheaply enough to compare before every save.
 struct FileFingerprint {
   bool exists = false;

@@ -2,7 +2,6 @@
 /// @brief open_for_editing: the sidecar's lock and what a second editor does.
 #include "app/editor/edit_access.h"
 
-#include <ctime>
 #include <ostream>
 
 #include "app/editor/autosave.h"
@@ -10,24 +9,6 @@
 
 namespace vdfx::app {
 namespace fs = std::filesystem;
-
-namespace {
-std::string local_stamp() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  ::gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", &tm);
-  return buf;
-}
-
-fs::path copy_path(const fs::path& sidecar) {
-  fs::path p = side_file_path(sidecar, "copy-" + local_stamp());
-  for (int n = 2; fs::exists(p); ++n)
-    p = side_file_path(sidecar, "copy-" + local_stamp() + "-" + std::to_string(n));
-  return p;
-}
-}  // namespace
 
 EditAccessMode parse_edit_access(const std::string& value) {
   if (value == "write") return EditAccessMode::Write;
@@ -39,7 +20,7 @@ EditAccess open_for_editing(const fs::path& sidecar, EditAccessMode mode, std::o
   EditAccess a;
   a.save_to = sidecar;
   if (mode == EditAccessMode::ReadOnly) {
-    a.save_to = copy_path(sidecar);
+    a.save_to = new_side_file_path(sidecar, "copy");
     a.read_only_note =
         "opened with --access read-only; edits are saved to " + a.save_to.filename().string();
     log << "vdfx edit: " << sidecar.string() << " opened read-only; edits go to "
@@ -48,15 +29,16 @@ EditAccess open_for_editing(const fs::path& sidecar, EditAccessMode mode, std::o
   }
   const fs::path dir = sidecar.parent_path().empty() ? fs::path(".") : sidecar.parent_path();
   std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw io::InputError(sidecar.string() + ": its folder " + dir.string() + " does not exist");
+  // No folder, no file anyone can have open: the command reports what is missing (the video
+  // first) as before, and a save there fails with its own message.
+  if (!fs::is_directory(dir, ec)) return a;
   io::FileLock::Result r;
   try {
     r = io::FileLock::acquire(sidecar, "vdfx edit");
   } catch (const io::InputError& e) {
     // No lock can be made there (a read-only folder, say): nothing can be saved there either.
     if (mode == EditAccessMode::Write) throw;
-    a.save_to = copy_path(sidecar);
+    a.save_to = new_side_file_path(sidecar, "copy");
     a.read_only_note = "no lock could be made; edits are saved to " +
                        a.save_to.filename().string() + " if the folder allows";
     log << "vdfx edit: " << e.what() << ": opening it READ-ONLY\n";
@@ -75,7 +57,7 @@ EditAccess open_for_editing(const fs::path& sidecar, EditAccessMode mode, std::o
     throw io::InputError(where + " (lock " + io::lock_path(sidecar).string() +
                          "); --access write needs it to itself: close that editor, or open with "
                          "--access read-only (or remove the lock if no editor has it open)");
-  a.save_to = copy_path(sidecar);
+  a.save_to = new_side_file_path(sidecar, "copy");
   a.read_only_note =
       "open in " + owner.describe() + "; edits are saved to " + a.save_to.filename().string();
   log << "vdfx edit: " << where << ": opening it READ-ONLY; edits go to " << a.save_to.string()

@@ -77,8 +77,9 @@ std::string Editor::hud_message() const {
   if (grabbing()) return "turn or scrub to move the keyframe; release to drop it";
   if (unaltered_) return "showing the unaltered film";
   if (selected_) return "the widget edits the selected keyframe; G (hold) moves it, L deselects";
-  return "click the view or Space: keyframe at the centre   right-drag: look (I: the other way)   "
-         "arrows: step   Shift: fine";
+  // At most about 95 characters: the heads-up line's width at the default window.
+  return "click or Space: keyframe at the centre   right-drag: look (I: flip)   arrows: step   "
+         "Shift: fine";
 }
 
 }  // namespace vdfx::app
