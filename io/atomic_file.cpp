@@ -13,6 +13,7 @@
 #include <cstring>
 #include <string>
 
+#include "io/file_lock.h"
 #include "io/input_error.h"
 
 namespace vdfx::io {
@@ -97,6 +98,9 @@ void write_file_atomic(const std::filesystem::path& user_path, std::string_view 
   // Through a symbolic link to the file it names (the link stays a link); devices, pipes and
   // folders are refused rather than replaced by a regular file.
   const std::filesystem::path path = resolve_output_path(user_path, name);
+  // A file another editor has open (its lock beside it) is that author's: never replaced.
+  check_not_locked_by_another(user_path);
+  if (path != user_path) check_not_locked_by_another(path);
   const std::filesystem::path dir = path.parent_path().empty() ? "." : path.parent_path();
 
   struct stat old {};

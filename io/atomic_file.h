@@ -20,7 +20,8 @@ namespace vdfx::io {
 /// A symbolic link is written through: the file it names is replaced and the link kept. A
 /// folder, device, named pipe or socket is refused (io/output_path.h), never replaced. Temporary
 /// files of this name left by a writer that was killed (its PID no longer exists) are removed.
-/// A new file gets mode 0666 minus the umask; an existing file keeps its mode.
+/// A new file gets mode 0666 minus the umask; an existing file keeps its mode. A file whose lock
+/// (io/file_lock.h) another live process holds is refused (io::InputError naming the owner).
 /// `name` says whether the user named this file (links followed) or vdfx made the name up (links
 /// refused), io/output_path.h.
 void write_file_atomic(const std::filesystem::path& path, std::string_view bytes,

@@ -9,6 +9,7 @@
 /// is written once the video has reached its time), so the muxer never holds the whole track.
 #include "io/video_encoder.h"
 
+#include <cerrno>
 #include <cstring>
 #include <stdexcept>
 
@@ -24,6 +25,21 @@ extern "C" {
 
 namespace vdfx::io {
 namespace {
+
+/// A failure of the disk or file system under the output (full, over quota, read-only, an I/O
+/// error): the user's OUT cannot be written there, which is exit 1, not a fault of vdfx.
+bool is_storage_error(int r) {
+  for (const int e : {ENOSPC, EDQUOT, EFBIG, EIO, EROFS, EACCES, EPERM, EPIPE, ENXIO, ESTALE})
+    if (r == AVERROR(e)) return true;
+  return false;
+}
+
+/// `out` is the name the user gave (the file written may be a temporary one beside it).
+[[noreturn]] void write_failed(const std::string& out, const std::string& what, int r) {
+  if (is_storage_error(r))
+    throw InputError(out + ": cannot write the " + what + " (" + av::error_text(r) + ")");
+  throw std::runtime_error("VideoEncoder: writing " + what + " failed: " + av::error_text(r));
+}
 
 AVRational q(Rational r) {
   return {static_cast<int>(r.num), static_cast<int>(r.den)};
@@ -117,7 +133,8 @@ class AudioCopier {
   }
 
   /// Writes every audio packet whose time is at or before `until_seconds` (all: +infinity).
-  void write_until(AVFormatContext* out, double until_seconds) {
+  /// `out_name`: the output's name for messages.
+  void write_until(AVFormatContext* out, double until_seconds, const std::string& out_name) {
     while (!done_) {
       if (!pending_) {
         const int r = av_read_frame(in_.get(), packet_.get());
@@ -151,8 +168,7 @@ class AudioCopier {
       packet_->stream_index = o->index;
       packet_->pos = -1;
       const int r = av_interleaved_write_frame(out, packet_.get());
-      if (r < 0)
-        throw std::runtime_error("VideoEncoder: writing audio failed: " + av::error_text(r));
+      if (r < 0) write_failed(out_name, "audio", r);
     }
   }
 
@@ -174,10 +190,11 @@ class AudioCopier {
 
 class LibavEncoder final : public VideoEncoder {
  public:
-  LibavEncoder(const std::filesystem::path& path, const EncoderSettings& s) : settings_(s) {
+  LibavEncoder(const std::filesystem::path& path, const EncoderSettings& s)
+      : settings_(s), report_name_((s.format_from.empty() ? path : s.format_from).string()) {
     av::limit_logs();
     const std::string name = path.string();
-    const std::string format_name = (s.format_from.empty() ? path : s.format_from).string();
+    const std::string& format_name = report_name_;
     if (s.width <= 0 || s.height <= 0) throw std::invalid_argument("VideoEncoder: no picture size");
     // The format follows format_from's name, but the context is named after the file really
     // written: MP4's faststart pass reopens the context's own name.
@@ -255,13 +272,15 @@ class LibavEncoder final : public VideoEncoder {
 
     if (!(out_->oformat->flags & AVFMT_NOFILE)) {
       r = avio_open(&out_->pb, name.c_str(), AVIO_FLAG_WRITE);
-      if (r < 0) throw InputError(name + ": cannot open for writing (" + av::error_text(r) + ")");
+      if (r < 0)
+        throw InputError(report_name_ + ": cannot open for writing (" + av::error_text(r) + ")");
     }
     AVDictionary* mux = nullptr;
     if (s.faststart) av_dict_set(&mux, "movflags", "+faststart", 0);
     r = avformat_write_header(out_.get(), &mux);
     av_dict_free(&mux);
-    if (r < 0) throw InputError(name + ": cannot write the header (" + av::error_text(r) + ")");
+    if (r < 0)
+      throw InputError(report_name_ + ": cannot write the header (" + av::error_text(r) + ")");
     frame_ = av::make_frame();
     packet_ = av::make_packet();
     frame_->format = c->pix_fmt;
@@ -300,11 +319,18 @@ class LibavEncoder final : public VideoEncoder {
   void finish() override {
     if (finished_) return;
     send(nullptr);
-    if (audio_) audio_->write_until(out_.get(), 1e300);
-    const int r = av_write_trailer(out_.get());
+    if (audio_) audio_->write_until(out_.get(), 1e300, report_name_);
+    int r = av_write_trailer(out_.get());
     finished_ = true;
-    if (r < 0)
-      throw std::runtime_error("VideoEncoder: writing the trailer failed: " + av::error_text(r));
+    if (r < 0) write_failed(report_name_, "end of the video (its index)", r);
+    // The last buffered bytes reach the file only here: a full disk may first show now.
+    if (out_->pb && !(out_->oformat->flags & AVFMT_NOFILE)) {
+      avio_flush(out_->pb);
+      r = out_->pb->error;
+      const int closed = avio_closep(&out_->pb);
+      if (r >= 0) r = closed;
+      if (r < 0) write_failed(report_name_, "video", r);
+    }
   }
 
   Rational stream_time_base() const override {
@@ -320,17 +346,18 @@ class LibavEncoder final : public VideoEncoder {
       packet_->stream_index = stream_->index;
       if (audio_) {
         const std::int64_t t = packet_->dts != AV_NOPTS_VALUE ? packet_->dts : packet_->pts;
-        audio_->write_until(out_.get(), static_cast<double>(t) * av_q2d(stream_->time_base));
+        audio_->write_until(out_.get(), static_cast<double>(t) * av_q2d(stream_->time_base),
+                            report_name_);
       }
       r = av_interleaved_write_frame(out_.get(), packet_.get());
-      if (r < 0)
-        throw std::runtime_error("VideoEncoder: writing video failed: " + av::error_text(r));
+      if (r < 0) write_failed(report_name_, "video", r);
     }
     if (r != AVERROR(EAGAIN) && r != AVERROR_EOF)
       throw std::runtime_error("VideoEncoder: encoding failed: " + av::error_text(r));
   }
 
   EncoderSettings settings_;
+  std::string report_name_;  //!< the output as the user named it (format_from, else the path)
   std::unique_ptr<AVFormatContext, OutputCloser> out_;
   av::CodecPtr codec_;
   AVStream* stream_ = nullptr;

@@ -46,8 +46,8 @@ struct EncoderSettings {
   int display_rotation_deg = 0;     //!< clockwise display rotation written as the display matrix
   std::filesystem::path copy_audio_from;    //!< copy every audio stream of this file (empty: none)
   std::optional<AudioWindow> audio_window;  //!< default: every audio packet, times unchanged
-  /// Container format chosen from this name's extension (default: the written path's). Lets a
-  /// caller write a temporary file whose own name says nothing.
+  /// Container format chosen from this name's extension (default: the written path's), and the
+  /// name messages give. Lets a caller write a temporary file whose own name says nothing.
   std::filesystem::path format_from;
   bool faststart = true;  //!< MP4/MOV: index at the front (one extra pass over the file at the end)
 };
@@ -56,7 +56,10 @@ class VideoEncoder {
  public:
   /// Opens the encoder and writes the header. Throws io::InputError naming `path` (or the audio
   /// file) for what a user chose wrong (unknown container, encoder, audio that the container
-  /// cannot hold), std::runtime_error for anything else.
+  /// cannot hold), std::runtime_error for anything else. write() and finish() likewise throw
+  /// io::InputError "NAME: cannot write the video (REASON)" when the disk or file system fails
+  /// (full, over quota, read-only, an I/O error; NAME is format_from when given), and
+  /// std::runtime_error for a failure of the encoder or muxer.
   static std::unique_ptr<VideoEncoder> create(const std::filesystem::path& path,
                                               const EncoderSettings& settings);
   virtual ~VideoEncoder() = default;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,12 +48,23 @@ class InputBackend {
 };
 
 /// Desktop stand-in: mouse and keyboard drive head and hands (docs/input.md lists bindings).
+/// Which way a right-button drag turns the view.
+enum class LookMode {
+  Drag,       //!< the image follows the mouse, as in desktop 360 players (YouTube, Facebook 360):
+              //!< dragging left turns the view right, dragging down looks up
+  Mouselook,  //!< a first-person game's camera: dragging left turns left, down looks down
+};
+/// "drag" / "mouselook", and back (nullopt for another name).
+std::string_view look_mode_name(LookMode mode);
+std::optional<LookMode> parse_look_mode(std::string_view name);
+
 struct SimConfig {
   int window_width = 1280;  //!< pixels; updated by ViewGeometryEvent
   int window_height = 720;
-  double hfov_deg = 100.0;       //!< horizontal field of view of the desktop view (its default)
-  double look_deg_per_px = 0.2;  //!< head turn per pixel of right-button drag
-  bool left_handed = false;      //!< mouse and the main keys drive the left hand instead
+  double hfov_deg = 100.0;         //!< horizontal field of view of the desktop view (its default)
+  double look_deg_per_px = 0.2;    //!< head turn per pixel of right-button drag
+  LookMode look = LookMode::Drag;  //!< which way a drag turns; the key I switches it
+  bool left_handed = false;        //!< mouse and the main keys drive the left hand instead
   glm::dvec3 head_position{0.0, kDefaultEyeHeight, 0.0};
 };
 
@@ -86,7 +98,9 @@ std::unique_ptr<InputBackend> create_recording_backend(std::unique_ptr<InputBack
 /// The sim bindings as a two-column text table (for --help and docs/input.md).
 std::string sim_bindings_text(const SimConfig& config);
 /// What presses one control in the sim, as sim_bindings_text names it ("Space", "left mouse
-/// button"); empty when nothing does. For help texts that name the sim's keys.
-std::vector<std::string> sim_inputs_of(Hand hand, Control control, const SimConfig& config);
+/// button"); empty when nothing does. For help texts that name the sim's keys. `pointing`: only
+/// the inputs that press it with the aim through the cursor (not Space, aimed at the centre).
+std::vector<std::string> sim_inputs_of(Hand hand, Control control, const SimConfig& config,
+                                       bool pointing = false);
 
 }  // namespace vdfx::xr

@@ -1,13 +1,17 @@
 /// @file
 /// @brief The sim backend: a desktop stand-in for a headset and two controllers.
 ///
-/// Right-button drag turns the head; the main hand's aim ray goes through the cursor (its origin
-/// is the eye, so the ray hits exactly what is under the cursor); keys press buttons and move
-/// sticks. State is a function of the events alone: poll(t) applies the queued events and stamps t.
-/// No lost taps: a poll applies the queued events in order until one would change a control
-/// that an earlier event of the same poll already changed; that one and the rest wait for the
-/// next poll. So a key tapped between two frames is down in exactly one poll (and a double tap
-/// in two), and a recording of the polled states replays it as a tap.
+/// Right-button drag turns the head (dragging the image like a desktop 360 player, or a game's
+/// mouselook: SimConfig::look, the key I switches); the main hand's aim ray goes through the
+/// cursor (its origin is the eye, so the ray hits exactly what is under the cursor), except while
+/// Space alone holds the trigger: Space is the keyboard's "place at the centre", so the ray then
+/// points at the view's centre wherever the cursor rests (a click still presses what is under
+/// the cursor); keys press buttons and move sticks. State is a function of the events alone:
+/// poll(t) applies the queued events and stamps t. No lost taps: a poll applies the queued events
+/// in order until one would change a control that an earlier event of the same poll already
+/// changed; that one and the rest wait for the next poll. So a key tapped between two frames is
+/// down in exactly one poll (and a double tap in two), and a recording of the polled states replays
+/// it as a tap.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -26,6 +30,11 @@ using effects::kDegToRad;
 using effects::kRadToDeg;
 constexpr double kMaxPitchDeg = 89.0;
 const glm::dvec3 kOffHandOffset{0.2, -0.3, -0.3};  // head frame, mirrored in x for the left hand
+
+/// Switches SimConfig::look (no control of its own: the head pose it changes is what is recorded).
+constexpr Key kLookToggleKey = Key::I;
+/// The key that is the keyboard's "place at the centre" (the main trigger, aimed at the centre).
+constexpr Key kCentreKey = Key::Space;
 
 enum class Role { Main, Off, Left };  // Left: the control exists on the left hand only (menu)
 
@@ -119,6 +128,8 @@ class SimInputBackend final : public InputBackend {
 
  private:
   void apply(const KeyEvent& e) {
+    if (e.key == kLookToggleKey && e.pressed && !keys_.count(e.key))
+      config_.look = config_.look == LookMode::Drag ? LookMode::Mouselook : LookMode::Drag;
     if (e.pressed)
       keys_.insert(e.key);
     else
@@ -131,10 +142,12 @@ class SimInputBackend final : public InputBackend {
   }
   void apply(const MouseMoveEvent& e) {
     if (dragging_) {
-      // Look like a first-person camera: drag right turns right, drag down looks down.
-      azimuth_deg_ += (e.x - mouse_x_) * config_.look_deg_per_px;
+      // Drag: the image follows the mouse (drag right turns left, drag down looks up); mouselook:
+      // a first-person camera (drag right turns right, drag down looks down).
+      const double sign = config_.look == LookMode::Drag ? -1.0 : 1.0;
+      azimuth_deg_ += sign * (e.x - mouse_x_) * config_.look_deg_per_px;
       azimuth_deg_ = std::remainder(azimuth_deg_, 360.0);
-      altitude_deg_ = std::clamp(altitude_deg_ - (e.y - mouse_y_) * config_.look_deg_per_px,
+      altitude_deg_ = std::clamp(altitude_deg_ - sign * (e.y - mouse_y_) * config_.look_deg_per_px,
                                  -kMaxPitchDeg, kMaxPitchDeg);
     }
     mouse_x_ = e.x;
@@ -205,7 +218,11 @@ class SimInputBackend final : public InputBackend {
     fill_hand(s.left, Hand::Left);
     fill_hand(s.right, Hand::Right);
     HandState& m = s.hand(main);
-    const ViewRay ray = cursor_ray();
+    // Space without the mouse button: the trigger aimed at the view's centre, so it places a
+    // keyframe there even with the cursor resting on a panel.
+    const bool centre = keys_.count(kCentreKey) && !left_button_;
+    const ViewRay ray =
+        centre ? ViewRay{glm::dvec3(0.0), glm::dvec3(0.0, 0.0, -1.0)} : cursor_ray();
     m.aim.orientation = glm::normalize(s.head.orientation * rotation_towards(ray.direction));
     m.aim.position = s.head.position + s.head.orientation * ray.origin;
     if (left_button_) m.trigger = 1.0;
@@ -233,6 +250,16 @@ class SimInputBackend final : public InputBackend {
 
 }  // namespace
 
+std::string_view look_mode_name(LookMode mode) {
+  return mode == LookMode::Drag ? "drag" : "mouselook";
+}
+
+std::optional<LookMode> parse_look_mode(std::string_view name) {
+  if (name == "drag") return LookMode::Drag;
+  if (name == "mouselook") return LookMode::Mouselook;
+  return std::nullopt;
+}
+
 std::unique_ptr<InputBackend> create_sim_backend(const SimConfig& config) {
   return std::make_unique<SimInputBackend>(config);
 }
@@ -242,14 +269,20 @@ std::string sim_bindings_text(const SimConfig& config) {
   const std::string main_name = main == Hand::Left ? "left" : "right";
   std::vector<std::pair<std::string, std::string>> rows;
   std::ostringstream look;
-  look << "turn the head (/user/head/pose), " << config.look_deg_per_px << " deg per pixel";
+  look << "turn the head (/user/head/pose), " << config.look_deg_per_px << " deg per pixel, "
+       << (config.look == LookMode::Drag ? "drag: as 360 players (left turns right)"
+                                         : "mouselook: as games (left turns left)");
   rows.emplace_back("right mouse button drag", look.str());
+  rows.emplace_back(std::string(key_name(kLookToggleKey)),
+                    "switch the right-button drag between drag and mouselook");
   rows.emplace_back("mouse position",
                     "/user/hand/" + main_name + "/input/aim/pose (ray through the cursor)");
   rows.emplace_back("left mouse button", control_path(main, Control::Trigger));
   for (const KeyBinding& b : kKeyBindings) {
-    rows.emplace_back(std::string(key_name(b.key)),
-                      control_path(hand_of(b.role, config.left_handed), b.control));
+    rows.emplace_back(
+        std::string(key_name(b.key)),
+        control_path(hand_of(b.role, config.left_handed), b.control) +
+            (b.key == kCentreKey ? ", aimed at the view's centre (not the cursor)" : ""));
   }
   std::ostringstream out;
   for (const auto& [input, action] : rows) {
@@ -260,12 +293,14 @@ std::string sim_bindings_text(const SimConfig& config) {
   return out.str();
 }
 
-std::vector<std::string> sim_inputs_of(Hand hand, Control control, const SimConfig& config) {
+std::vector<std::string> sim_inputs_of(Hand hand, Control control, const SimConfig& config,
+                                       bool pointing) {
   std::vector<std::string> out;
   const Hand main = config.left_handed ? Hand::Left : Hand::Right;
   if (hand == main && control == Control::Trigger) out.emplace_back("left mouse button");
   for (const KeyBinding& b : kKeyBindings)
-    if (b.control == control && hand_of(b.role, config.left_handed) == hand)
+    if (b.control == control && hand_of(b.role, config.left_handed) == hand &&
+        !(pointing && b.key == kCentreKey))
       out.emplace_back(key_name(b.key));
   return out;
 }

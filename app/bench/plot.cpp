@@ -9,12 +9,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "io/atomic_file.h"
+#include "io/input_error.h"
 
 extern char** environ;
 
@@ -41,6 +44,24 @@ int run_gnuplot(const std::vector<std::string>& args, const std::filesystem::pat
   int status = 0;
   if (waitpid(pid, &status, 0) < 0) return -1;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+/// A file of gnuplot's work folder that could not be written (its disk full, say) ends the run as
+/// the user's problem (exit 1), naming the file and the system's reason; was a "gnuplot failed"
+/// internal error on an empty script.
+void check_written(const std::ofstream& f, const std::filesystem::path& p) {
+  const int err = errno;
+  if (f) return;
+  throw io::InputError("cannot write " + p.string() +
+                       " (the plot's work file): " + (err ? std::strerror(err) : "write failed"));
+}
+
+void write_work_file(const std::filesystem::path& p, const std::string& text) {
+  errno = 0;
+  std::ofstream f(p, std::ios::binary);
+  f << text;
+  f.close();
+  check_written(f, p);
 }
 
 std::string read_text(const std::filesystem::path& p) {
@@ -236,6 +257,8 @@ void write_data(const PlotData& p, const std::filesystem::path& data) {
     if (!any) d << "NaN NaN \"\"\n";
     d << "\n\n";
   }
+  d.close();
+  check_written(d, data);
 }
 
 /// The terminal, title, axes' labels and scales.
@@ -324,7 +347,7 @@ std::vector<std::filesystem::path> write_plots(const Report& report, const PlotO
       // through).
       const auto data = work / (k.id + ".dat"), script = work / (k.id + ".gp"),
                  log = work / (k.id + ".log"), drawn = work / (k.id + ".png");
-      std::ofstream(script) << script_for(k, rows, data, drawn, o);
+      write_work_file(script, script_for(k, rows, data, drawn, o));
       if (run_gnuplot({script.string()}, log) != 0 || !std::filesystem::exists(drawn)) {
         throw std::runtime_error("gnuplot failed on the plot of " + k.id + ": " + read_text(log));
       }

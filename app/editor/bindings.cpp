@@ -31,8 +31,8 @@ std::string control_name(xr::Hand hand, xr::Control c) {
 }
 
 /// "right squeeze [G]": the control and what presses it in the sim (the whole stick for a stick
-/// direction).
-std::string control_column(xr::Hand hand, xr::Control c) {
+/// direction); `pointing`: only what presses it through the cursor (a panel's pointer use).
+std::string control_column(xr::Hand hand, xr::Control c, bool pointing = false) {
   const bool stick = c == xr::Control::StickUp || c == xr::Control::StickDown ||
                      c == xr::Control::StickLeft || c == xr::Control::StickRight;
   std::vector<std::string> inputs;
@@ -40,7 +40,7 @@ std::string control_column(xr::Hand hand, xr::Control c) {
        stick ? std::vector<xr::Control>{xr::Control::StickUp, xr::Control::StickDown,
                                         xr::Control::StickLeft, xr::Control::StickRight}
              : std::vector<xr::Control>{c})
-    for (std::string& s : xr::sim_inputs_of(hand, each, xr::SimConfig{}))
+    for (std::string& s : xr::sim_inputs_of(hand, each, xr::SimConfig{}, pointing))
       inputs.push_back(std::move(s));
   std::string out = control_name(hand, c);
   for (std::size_t i = 0; i < inputs.size(); ++i) out += (i ? ", " : " [") + inputs[i];
@@ -86,7 +86,9 @@ class Table {
 std::string bindings_help_text() {
   Table t;
   for (const Binding& b : kBindings) t.row(control_column(b.hand, b.control), b.does);
-  for (const PointerUse& u : kPointerUses) t.row(control_column(u.hand, u.control), u.does);
+  for (const PointerUse& u : kPointerUses)
+    t.row(control_column(u.hand, u.control, /*pointing=*/true), u.does);
+  for (const DesktopUse& d : kDesktopUses) t.row(std::string(d.input), d.does);
   return t.str();
 }
 

@@ -93,8 +93,28 @@ inline constexpr std::array<PointerUse, 4> kPointerUses{{
     {xr::Hand::Left, xr::Control::StickUp, "the same for the left hand's pointer"},
 }};
 
-/// The editor's controls as text (`vdfx edit --help`, docs/editor.md), one row per binding and
-/// pointer use, generated from kBindings and kPointerUses, with the sim's keys in brackets.
+/// What the desktop's mouse and keyboard (the sim, docs/input.md) do beyond the controllers'
+/// actions: looking around and the keyboard's "place at the centre". Listed for the help text
+/// after kBindings and kPointerUses; `input` is named as the sim names it
+/// (EditorBindings.DesktopRowsNameTheSimsInputs checks).
+struct DesktopUse {
+  std::string_view input;
+  std::string_view does;
+};
+
+inline constexpr std::array<DesktopUse, 3> kDesktopUses{{
+    {"right mouse button drag",
+     "look around: drags the image as desktop 360 players do (drag left, the view turns right); "
+     "--look mouselook turns like a game's camera (drag left, turns left)"},
+    {"I", "switch the right-button drag between drag and mouselook"},
+    {"Space",
+     "the right trigger aimed at the view centre: previews there and places on release, wherever "
+     "the pointer rests (the left mouse button presses what is under the pointer)"},
+}};
+
+/// The editor's controls as text (`vdfx edit --help`, docs/editor.md), one row per binding,
+/// pointer use and desktop use, generated from kBindings, kPointerUses and kDesktopUses, with the
+/// sim's keys in brackets (for a pointer use only those that point through the cursor).
 std::string bindings_help_text();
 
 }  // namespace vdfx::app

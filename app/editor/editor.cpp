@@ -31,7 +31,10 @@ Editor::Editor(io::Sidecar sidecar, DocumentOptions document_options, EditorOpti
       fps_(io::fps_to_rational(doc_.video().fps)),
       input_(xr::neutral_input_state(0)) {
   if (options_.autosave_path) {
-    autosave_ = std::make_unique<Autosave>(*options_.autosave_path);
+    autosave_ = std::make_unique<Autosave>(*options_.autosave_path,
+                                           options_.read_only_note.empty()
+                                               ? Autosave::Target::Sidecar
+                                               : Autosave::Target::CopyWhenChanged);
     doc_.set_change_listener([this] { autosave_->save(doc_.sidecar()); });
   }
   select_effect(EffectType::Exposure);
@@ -56,6 +59,8 @@ double Editor::advance(std::int64_t t_ns) {
 
 void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
   const double dt = advance(t_ns);
+  // A failed save (full disk, read-only folder) is tried again while the document stays here.
+  if (autosave_ && autosave_->retry_due(t_ns)) autosave_->save(doc_.sidecar());
   input_ = input;
   if (input.head_tracked) view_ = xr::forward_direction(input.head);
   updating_ = true;

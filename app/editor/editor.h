@@ -46,6 +46,10 @@ struct EditorOptions {
   bool loop = true;                          //!< playback wraps at the end
   //! Autosave every change to this sidecar path (+ a recovery copy, removed by finish()).
   std::optional<std::filesystem::path> autosave_path;
+  //! Read-only (another editor has the sidecar open, app/editor/edit_access.h): what the heads-up
+  //! line and the status say, in front ("READ-ONLY: ..."); autosave_path is then a copy that
+  //! only a change creates. Empty: the sidecar is this session's.
+  std::string read_only_note;
 };
 
 class Editor {

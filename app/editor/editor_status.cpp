@@ -13,7 +13,9 @@ using effects::EffectType;
 
 std::string Editor::status_text() const {
   const auto& chosen = widget_values();
-  std::string s = effect_.title() + " ";
+  std::string s = options_.read_only_note.empty() ? std::string()
+                                                  : "READ-ONLY: " + options_.read_only_note + " | ";
+  s += effect_.title() + " ";
   if (effect_ == EffectType::Tint)
     s += fmt("gain %.2f", chosen[0]) + fmt(" %.2f", chosen[1]) + fmt(" %.2f", chosen[2]);
   else if (effect_ == EffectType::Vignette)
@@ -54,12 +56,12 @@ std::string Editor::hud_text() const {
   const double fps = doc_.video().fps;
   const double t = static_cast<double>(play_.frame) / fps;
   const int minutes = static_cast<int>(t / 60.0);
-  std::string s = "frame " + std::to_string(play_.frame) + " / " +
-                  std::to_string(doc_.video().frames) + "   " + std::to_string(minutes) + ":" +
-                  fmt("%05.2f", t - 60.0 * minutes) + "   az " +
-                  fmt("%.0f\u00b0", view_.azimuth_deg) + " alt " +
-                  fmt("%.0f\u00b0", view_.altitude_deg) + "   " + effect_.title() + " (" +
-                  std::to_string(doc_.keyframes(effect_).size()) + " keyframes)";
+  std::string s = options_.read_only_note.empty() ? std::string() : "READ-ONLY   ";
+  s += "frame " + std::to_string(play_.frame) + " / " + std::to_string(doc_.video().frames) +
+       "   " + std::to_string(minutes) + ":" + fmt("%05.2f", t - 60.0 * minutes) + "   az " +
+       fmt("%.0f\u00b0", view_.azimuth_deg) + " alt " + fmt("%.0f\u00b0", view_.altitude_deg) +
+       "   " + effect_.title() + " (" + std::to_string(doc_.keyframes(effect_).size()) +
+       " keyframes)";
   if (selected_) s += (grabbing() ? "   moving " : "   selected ") + std::to_string(*selected_ + 1);
   if (play_.playing) s += "   \u25b6";
   if (status_.loop_fps > 0.0) s += "   " + fmt("%.0f fps", status_.loop_fps);
@@ -67,12 +69,16 @@ std::string Editor::hud_text() const {
 }
 std::string Editor::hud_message() const {
   if (!status_.message.empty()) return status_.message;
+  // Until a save succeeds again, or a file changed under the editor: where the work is.
+  if (autosave_ && (autosave_->failing() || autosave_->diverted_to())) return autosave_->status();
+  if (!options_.read_only_note.empty()) return "READ-ONLY: " + options_.read_only_note;
   if (status_.video_loading) return "loading the video\u2026";
   if (previewing()) return "release to place the keyframe at the centre of the view";
   if (grabbing()) return "turn or scrub to move the keyframe; release to drop it";
   if (unaltered_) return "showing the unaltered film";
   if (selected_) return "the widget edits the selected keyframe; G (hold) moves it, L deselects";
-  return "click the view or Space: keyframe at the centre   right-drag: look   arrows: step   "
+  // At most about 95 characters: the heads-up line's width at the default window.
+  return "click or Space: keyframe at the centre   right-drag: look (I: flip)   arrows: step   "
          "Shift: fine";
 }
 

@@ -12,6 +12,7 @@
 #include "effects/flare_render.h"
 #include "effects/grain_render.h"
 #include "effects/view_renderer.h"
+#include "io/file_lock.h"
 #include "io/frame_decoder.h"
 #include "io/image_write.h"
 #include "io/input_error.h"
@@ -155,6 +156,9 @@ ReplayResult run_replay(const ReplayOptions& o) {
   if (o.sidecar_in) inputs.push_back({"--sidecar-in", *o.sidecar_in});
   io::check_output_is_not_input("--sidecar-out", o.sidecar_out, inputs);
   io::resolve_output_path(o.sidecar_out);
+  // Before the work: a sidecar open in an editor is its author's (written again at the end, where
+  // io::write_file_atomic checks once more).
+  io::check_not_locked_by_another(o.sidecar_out, "--sidecar-out");
   io::Recording rec = io::read_recording(o.recording);
   for (const auto& w : rec.warnings) result.messages.push_back(w);
 

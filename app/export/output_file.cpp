@@ -11,6 +11,7 @@
 #include <string>
 
 #include "io/atomic_file.h"
+#include "io/file_lock.h"
 #include "io/input_error.h"
 
 namespace vdfx::app {
@@ -44,6 +45,7 @@ PendingOutput::PendingOutput(std::filesystem::path target) : target_(std::move(t
                          " does not exist");
   if (std::filesystem::is_directory(target_, ec))
     throw io::InputError("cannot write " + target_.string() + ": it is a folder");
+  io::check_not_locked_by_another(target_);
   // An export killed by SIGKILL (or a crash) cannot remove its temporary file: the next export
   // to the same name does, once that process is gone.
   const std::string prefix = "." + target_.stem().string() + ".tmp-";

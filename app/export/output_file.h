@@ -13,7 +13,8 @@ class PendingOutput {
  public:
   /// Reserves ".NAME.tmp-PID.EXT" beside `target` (same folder: the rename is atomic; the
   /// extension kept so tools can tell the format). Throws io::InputError naming `target` when
-  /// its folder is missing or it is a folder.
+  /// its folder is missing, it is a folder, or another live process holds its lock
+  /// (io/file_lock.h).
   explicit PendingOutput(std::filesystem::path target);
   ~PendingOutput();  //!< removes the temporary file unless committed
   PendingOutput(const PendingOutput&) = delete;

@@ -11,6 +11,7 @@
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/editor/edit_access.h"
 #include "app/window/editor_client.h"
 #include "app/window/frame_loop_cli.h"
 #include "io/input_error.h"
@@ -103,10 +104,11 @@ struct EditDocument {
   fs::path sidecar_path;
   io::Sidecar sidecar;
   fs::path video;
+  std::optional<EditAccess> access;  //!< the sidecar's lock for the whole session (not the demo)
 };
 
 EditDocument open_document(const std::string& video, const std::string& sidecar_arg,
-                           const std::string& recover) {
+                           const std::string& recover, const std::string& access) {
   EditDocument d;
   d.demo = video.empty() && sidecar_arg.empty();
   if (d.demo) {
@@ -121,8 +123,11 @@ EditDocument open_document(const std::string& video, const std::string& sidecar_
   if (!d.exists && video.empty())
     throw io::InputError(d.sidecar_path.string() +
                          ": no such sidecar (give VIDEO to start a new one)");
-  std::optional<fs::path> load_from;
-  if (d.exists && !d.demo) load_from = handle_recovery(d.sidecar_path, recover);
+  if (!d.demo)
+    d.access.emplace(open_for_editing(d.sidecar_path, parse_edit_access(access), std::cerr));
+  std::optional<fs::path> load_from;  // (a read-only session leaves the owner's autosave alone)
+  if (d.exists && !d.demo && d.access->read_only_note.empty())
+    load_from = handle_recovery(d.sidecar_path, recover);
   if (d.exists) d.sidecar = io::read_sidecar(load_from ? *load_from : d.sidecar_path);
   if (load_from) std::cerr << "vdfx edit: recovered " << load_from->string() << "\n";
   d.video = video.empty() ? sidecar_video(d.sidecar_path, d.sidecar) : fs::path(video);
@@ -145,7 +150,7 @@ EditorOptions editor_options(const LoopCli& loop, const LoopSetup& setup, const 
   else
     eo.viewport = {setup.options.window_width, setup.options.window_height,
                    setup.options.desktop_hfov_deg};
-  if (!d.demo) eo.autosave_path = d.sidecar_path;
+  if (!d.demo) eo.autosave_path = d.access->save_to, eo.read_only_note = d.access->read_only_note;
   eo.visuals.async = !is_replay(loop);
   return eo;
 }
@@ -189,7 +194,7 @@ int edit_in_loop(EditDocument& d, const LoopCli& loop, LoopSetup& setup) {
 int cmd_edit(const Args& args) {
   CLI::App cli("author view-dependent effects in the simulated headset (no VIDEO: the demo)",
                "vdfx edit");
-  std::string video, sidecar_arg, recover = "ask";
+  std::string video, sidecar_arg, recover = "ask", access = "auto";
   LoopCli loop;
   // Panel text must be legible in the mirror: at the player's 0.25 the timeline's small text
   // blurs into a few eye pixels per glyph; 0.5 reads (docs/editor.md).
@@ -204,11 +209,16 @@ int cmd_edit(const Args& args) {
          "default: ask on a terminal, else no")
       ->capture_default_str()
       ->check(CLI::IsMember({"ask", "yes", "no"}));
+  cli.add_option("--access", access,
+                 "when another editor has the sidecar open: auto opens read-only (edits saved to "
+                 "a copy beside it), write exits 1, read-only never writes the sidecar")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "write", "read-only"}));
   add_loop_options(cli, loop);
   cli.footer(edit_help_footer());
   if (auto code = parse_cli(cli, args)) return *code;
 
-  EditDocument doc = open_document(video, sidecar_arg, recover);
+  EditDocument doc = open_document(video, sidecar_arg, recover, access);
   LoopSetup setup = prepare_loop(loop, doc.video, true, {{"--sidecar", doc.sidecar_path}});
   if (!doc.exists) {
     const io::VideoProperties& p = setup.video->properties();

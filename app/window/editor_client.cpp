@@ -252,7 +252,8 @@ std::string EditorClient::controls_text() {
          "previous / next keyframe, time, thumbnails and keyframes on the strip), plot and "
          "minimap\n"
          "(with toggles and lock in world), and on the desktop a heads-up line (frame, time,\n"
-         "heading, effect, selection, frame rate, the latest message).\n";
+         "heading, effect, selection, frame rate, the latest message; READ-ONLY first when\n"
+         "another editor has the sidecar open).\n";
 }
 
 }  // namespace vdfx::app

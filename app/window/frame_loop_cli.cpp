@@ -107,6 +107,13 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
           ->capture_default_str()
           ->check(CLI::IsMember({"auto", "desktop", "pre", "lens", "eye"})));
   o.sim_only.push_back(
+      cli.add_option("--look", o.look,
+                     "the right-button drag (--input sim): drag turns the image with the mouse "
+                     "as desktop 360 players do (drag left: the view turns right), mouselook as "
+                     "a game's camera (drag left: turns left); the key I switches while running")
+          ->capture_default_str()
+          ->check(CLI::IsMember({"drag", "mouselook"})));
+  o.sim_only.push_back(
       cli.add_option("--fov", o.fov, "horizontal field of view of the desktop view, degrees")
           ->capture_default_str()
           ->check(finite_range(20.0, 160.0)));
@@ -180,6 +187,7 @@ LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path
   io_opts.sim.window_width = window.width;
   io_opts.sim.window_height = window.height;
   io_opts.sim.hfov_deg = o.fov;
+  io_opts.sim.look = xr::parse_look_mode(o.look).value_or(xr::LookMode::Drag);
   try {
     s.input = xr::create_input_backend(o.input, io_opts);
   } catch (const io::InputError& e) {

@@ -35,6 +35,7 @@ struct LoopCli {
   std::string bake = "256x128";
   std::string blur = "pyramid";  //!< exact | pyramid (xr::BlurMethod)
   std::string runtime = "sim";   //!< sim | openxr (docs/openxr.md)
+  std::string look = "drag";     //!< the sim's right-button drag: drag | mouselook
   /// The --scale option once added (whether the user gave it: with a headset the default is 1).
   const CLI::Option* scale_option = nullptr;
   /// Options of the simulated headset's window that do nothing with --runtime openxr (--hmd,
@@ -44,7 +45,7 @@ struct LoopCli {
 
 /// Adds --runtime, --hmd, --input, --record, --stats, --scale, --frames (alias
 /// --exit-after-frames), --screenshot, --mirror, --fov, --window, --hidden, --no-vsync,
-/// --decode-timeout, --bake, --blur.
+/// --decode-timeout, --bake, --blur, --look.
 void add_loop_options(CLI::App& cli, LoopCli& o);
 
 struct LoopSetup {

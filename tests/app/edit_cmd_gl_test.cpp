@@ -9,8 +9,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "command_test_util.h"
+#include "io/file_lock.h"
 #include "io/sidecar.h"
 #include "tests/golden_bgr.h"
+#include "tests/lock_holder.h"
 
 namespace vdfx::app {
 namespace {
@@ -113,6 +115,51 @@ TEST(EditCmdGl, RecoveryCopyIsOfferedAndDeclinedByDefault) {
   EXPECT_EQ(io::read_sidecar(sidecar).effects.front().keyframes.size(),
             changed.effects.front().keyframes.size())
       << yes.output;
+}
+
+TEST(EditCmdGl, ASecondEditorOpensReadOnlyAndItsEditsGoToACopy) {
+  // Issue 23: two editors on one sidecar, each autosaving over the other. The first (a second,
+  // real process holding the lock) keeps the sidecar; this one is told and opens read-only.
+  const fs::path dir = testing::test_dir();
+  const fs::path sidecar = dir / "s.vdfx.json", png = dir / "readonly.png";
+  fs::copy_file(kSrc + "/app/demo/interior.vdfx.json", sidecar);
+  const std::string before = test_files::slurp(sidecar);
+  // The first editor's recovery copy, in use: a read-only session must leave it alone.
+  fs::copy_file(sidecar, fs::path(sidecar.string() + ".autosave"));
+  test_files::LockHolder first(sidecar);
+  const auto out = run_vdfx("edit --sidecar " + sidecar.string() + " --input replay:" + kRecording +
+                            " --hidden --scale 0.05 --window 320x180 --screenshot " + png.string() +
+                            " </dev/null");
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  EXPECT_NE(out.output.find(sidecar.string() + " is open in vdfx edit (process " +
+                            std::to_string(first.pid())),
+            std::string::npos)
+      << out.output;
+  EXPECT_NE(out.output.find("opening it READ-ONLY"), std::string::npos) << out.output;
+  EXPECT_EQ(test_files::slurp(sidecar), before) << "the first editor's sidecar is untouched";
+  EXPECT_TRUE(fs::exists(fs::path(sidecar.string() + ".autosave")));
+  EXPECT_FALSE(fs::exists(fs::path(sidecar.string() + ".autosave.declined")));
+  // The session's edits (the recording places two exposure keyframes) are in the copy.
+  fs::path copy;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().rfind("s-copy-", 0) == 0 &&
+        e.path().filename().string().find(".autosave") == std::string::npos)
+      copy = e.path();
+  ASSERT_FALSE(copy.empty()) << out.output;
+  EXPECT_NE(out.output.find(copy.string()), std::string::npos) << out.output;
+  const io::Sidecar edited = io::read_sidecar(copy);
+  EXPECT_NE(edited, io::read_sidecar(sidecar));
+  EXPECT_TRUE(fs::exists(png));
+
+  // The first editor is gone (killed: its lock stays behind): the next one takes it over.
+  first.kill();
+  const auto next = run_vdfx("edit --sidecar " + sidecar.string() +
+                             " --access write --recover no --input replay:" + kRecording +
+                             " --frames 2 --hidden --scale 0.05 --window 64x64 </dev/null");
+  ASSERT_EQ(next.exit_code, 0) << next.output;
+  EXPECT_NE(next.output.find("took over the lock left by vdfx edit (process"), std::string::npos)
+      << next.output;
+  EXPECT_FALSE(fs::exists(io::lock_path(sidecar))) << "released at exit";
 }
 
 }  // namespace

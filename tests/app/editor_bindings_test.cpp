@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/editor/bindings.h"
+#include "xr/input_backend.h"
 
 namespace vdfx::app {
 namespace {
@@ -26,6 +27,14 @@ TEST(EditorBindings, HelpHasEveryBindingAndPointerUse) {
     EXPECT_NE(text.find(unwrapped(std::string(b.does))), std::string::npos) << b.does;
   for (const PointerUse& u : kPointerUses)
     EXPECT_NE(text.find(unwrapped(std::string(u.does))), std::string::npos) << u.does;
+  for (const DesktopUse& d : kDesktopUses)
+    EXPECT_NE(text.find(unwrapped(std::string(d.input) + " " + std::string(d.does))),
+              std::string::npos)
+        << d.does;
+  // Issue 23: Space places at the centre; on a panel only the mouse button presses it.
+  EXPECT_NE(text.find("right trigger [left mouse button] on a panel: use it"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("drag left, the view turns right"), std::string::npos) << text;
   // The controls by their OpenXR names, with what presses them in the sim.
   for (const char* row :
        {"right squeeze [G] grab:", "right trigger [left mouse button, Space]", "right b [K]",
@@ -33,6 +42,13 @@ TEST(EditorBindings, HelpHasEveryBindingAndPointerUse) {
         "left squeeze [Q, Left Shift, Right Shift]", "right thumbstick click [L] deselect",
         "right thumbstick [Up arrow, Down arrow, Left arrow, Right arrow]"})
     EXPECT_NE(text.find(row), std::string::npos) << row << "\nin: " << text;
+}
+
+TEST(EditorBindings, DesktopRowsNameTheSimsInputs) {
+  const std::string sim = xr::sim_bindings_text(xr::SimConfig{});
+  for (const DesktopUse& d : kDesktopUses)
+    EXPECT_NE(sim.find("  " + std::string(d.input) + " "), std::string::npos) << d.input << "\n"
+                                                                              << sim;
 }
 
 TEST(EditorBindings, EveryRowIsWithinOneHundredColumns) {

@@ -86,5 +86,55 @@ TEST(DesktopLayout, HeadsUpLineAndExpiringMessages) {
   EXPECT_EQ(ed.hud_message(), "loading the video\u2026");
 }
 
+TEST(DesktopLayout, SpacePlacesAtTheCentreWhereverThePointerRestsAClickPressesThePanel) {
+  // Issue 23: the heads-up line says "click the view or Space: keyframe at the centre", but Space
+  // with the mouse resting on a panel (even its empty part) pressed the panel and placed nothing.
+  Editor ed(test::empty_sidecar(90), DocumentOptions{{.async = false}}, desktop());
+  xr::SimConfig sim;
+  sim.window_width = test::kScriptViewport.width;
+  sim.window_height = test::kScriptViewport.height;
+  sim.hfov_deg = test::kScriptViewport.hfov_deg;
+  auto in = xr::create_sim_backend(sim);
+  std::int64_t t = 0;
+  auto frames = [&](int n) {
+    for (int i = 0; i < n; ++i, t += 33'333'333) ed.update(in->poll(t), t);
+  };
+  frames(1);
+  // Over the effect panel's empty bottom part, and over its middle (the widget).
+  const ScreenRect r = ed.ui().screen_rect(kEffectPanelId);
+  for (const glm::dvec2 at : {glm::dvec2(r.x + r.w * 0.5, r.y + r.h - 6.0),
+                              glm::dvec2(r.x + r.w * 0.5, r.y + r.h * 0.5)}) {
+    const std::size_t before = ed.document().keyframes(effects::EffectType::Exposure).size();
+    in->push_event(xr::MouseMoveEvent{at.x, at.y});
+    frames(2);
+    in->push_event(xr::KeyEvent{xr::Key::Space, true});
+    frames(4);
+    EXPECT_TRUE(ed.previewing()) << "Space previews at the centre";
+    in->push_event(xr::KeyEvent{xr::Key::Space, false});
+    frames(2);
+    const auto& keys = ed.document().keyframes(effects::EffectType::Exposure);
+    ASSERT_EQ(keys.size(), before + 1) << "placed, with the pointer on the panel";
+    EXPECT_NEAR(keys.back().direction.azimuth_deg, ed.view_direction().azimuth_deg, 1e-6);
+    EXPECT_NEAR(keys.back().direction.altitude_deg, ed.view_direction().altitude_deg, 1e-6);
+    EXPECT_EQ(ed.hud_message(), "placed a keyframe");
+    // Turn a little, so that the next placement is a new keyframe, not a replacement.
+    in->push_event(xr::MouseButtonEvent{xr::MouseButton::Right, true});
+    in->push_event(xr::MouseMoveEvent{at.x + 40.0, at.y});
+    in->push_event(xr::MouseButtonEvent{xr::MouseButton::Right, false});
+    in->push_event(xr::MouseMoveEvent{at.x, at.y});
+    frames(2);
+  }
+  // The left button over the panel still presses the panel: nothing placed.
+  const std::size_t before = ed.document().keyframes(effects::EffectType::Exposure).size();
+  in->push_event(xr::MouseMoveEvent{r.x + r.w * 0.5, r.y + r.h - 6.0});
+  frames(1);
+  in->push_event(xr::MouseButtonEvent{xr::MouseButton::Left, true});
+  frames(3);
+  EXPECT_FALSE(ed.previewing());
+  in->push_event(xr::MouseButtonEvent{xr::MouseButton::Left, false});
+  frames(2);
+  EXPECT_EQ(ed.document().keyframes(effects::EffectType::Exposure).size(), before);
+}
+
 }  // namespace
 }  // namespace vdfx::app

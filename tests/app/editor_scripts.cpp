@@ -22,6 +22,7 @@ xr::SimConfig script_sim() {
   c.window_width = kScriptViewport.width;
   c.window_height = kScriptViewport.height;
   c.hfov_deg = kScriptViewport.hfov_deg;
+  c.look = xr::LookMode::Mouselook;  // the scripts' look() turns the way the mouse moves
   return c;
 }
 

@@ -73,15 +73,16 @@ TEST(InputEdges, QuickClickIsOneTriggerPress) {
 }
 
 TEST(InputEdges, EventsKeepTheirOrderAcrossTheDeferredRelease) {
-  // The cursor moves while a key is tapped: the move before the release applies at once, the
-  // one after it waits with the release, so the aim follows the events in order.
+  // The cursor moves while the button is tapped: the move before the release applies at once,
+  // the one after it waits with the release, so the aim follows the events in order. (The left
+  // button: Space aims at the view centre, not the cursor.)
   SimConfig cfg;
   auto sim = create_sim_backend(cfg);
   std::int64_t t = 0;
   sim->push_event(MouseMoveEvent{100.0, 100.0});
-  sim->push_event(KeyEvent{Key::Space, true});
+  sim->push_event(MouseButtonEvent{MouseButton::Left, true});
   sim->push_event(MouseMoveEvent{200.0, 300.0});
-  sim->push_event(KeyEvent{Key::Space, false});
+  sim->push_event(MouseButtonEvent{MouseButton::Left, false});
   sim->push_event(MouseMoveEvent{900.0, 500.0});
   const InputState a = sim->poll(t += kFrame);
   const InputState b = sim->poll(t += kFrame);

@@ -111,27 +111,107 @@ TEST(Sim, DiagonalStickStaysOnTheUnitCircle) {
   EXPECT_NEAR(s.left.thumbstick.y, std::sqrt(0.5), 1e-12);
 }
 
-TEST(Sim, RightDragTurnsTheHeadAtTheDocumentedSensitivity) {
+struct LookRow {
+  const char* name;
+  LookMode mode;
+  double dx, dy;             // the drag, pixels (y down)
+  double azimuth, altitude;  // where the head looks afterwards, degrees
+};
+// Issue 23: desktop 360 players (YouTube, Facebook 360) drag the image: dragging left turns the
+// view right and dragging down looks up. Mouselook is a game's camera, the other way round.
+const LookRow kLook[] = {
+    {"drag_right_up", LookMode::Drag, 100, -50, -20.0, -10.0},
+    {"drag_left", LookMode::Drag, -100, 0, 20.0, 0.0},
+    {"drag_down", LookMode::Drag, 0, 50, 0.0, 10.0},
+    {"mouselook_right_up", LookMode::Mouselook, 100, -50, 20.0, 10.0},
+    {"mouselook_left", LookMode::Mouselook, -100, 0, -20.0, 0.0},
+};
+void PrintTo(const LookRow& r, std::ostream* os) {
+  *os << r.name;
+}
+
+class SimLook : public ::testing::TestWithParam<LookRow> {};
+TEST_P(SimLook, RightDragTurnsTheHeadTheChosenWayAtTheDocumentedSensitivity) {
+  const LookRow& r = GetParam();
   SimConfig cfg;  // 0.2 deg per pixel
+  cfg.look = r.mode;
   auto sim = create_sim_backend(cfg);
   sim->push_event(MouseMoveEvent{640, 360});
   sim->push_event(MouseButtonEvent{MouseButton::Right, true});
-  sim->push_event(MouseMoveEvent{740, 310});  // 100 px right, 50 px up
+  sim->push_event(MouseMoveEvent{640 + r.dx, 360 + r.dy});
   InputState s = sim->poll(1);
-  EXPECT_NEAR(azimuth_deg(s.head), 20.0, 1e-9);
-  EXPECT_NEAR(altitude_deg(s.head), 10.0, 1e-9);
+  EXPECT_NEAR(azimuth_deg(s.head), r.azimuth, 1e-9);
+  EXPECT_NEAR(altitude_deg(s.head), r.altitude, 1e-9);
   sim->push_event(MouseButtonEvent{MouseButton::Right, false});
   sim->push_event(MouseMoveEvent{100, 100});  // moving without the button: no turn
   s = sim->poll(2);
-  EXPECT_NEAR(azimuth_deg(s.head), 20.0, 1e-9);
+  EXPECT_NEAR(azimuth_deg(s.head), r.azimuth, 1e-9);
   EXPECT_NEAR(s.head.position.y, kDefaultEyeHeight, 1e-12);
+}
+INSTANTIATE_TEST_SUITE_P(Rows, SimLook, ::testing::ValuesIn(kLook),
+                         [](const auto& i) { return std::string(i.param.name); });
+
+TEST(Sim, DragIsTheDefaultAndTheKeyISwitchesTheLookDirection) {
+  EXPECT_EQ(SimConfig{}.look, LookMode::Drag);
+  auto sim = create_sim_backend({});
+  auto drag_right = [&](double x0) {
+    sim->push_event(MouseMoveEvent{x0, 360});
+    sim->push_event(MouseButtonEvent{MouseButton::Right, true});
+    sim->push_event(MouseMoveEvent{x0 + 50, 360});
+    sim->push_event(MouseButtonEvent{MouseButton::Right, false});
+  };
+  drag_right(600);
+  EXPECT_NEAR(azimuth_deg(sim->poll(1).head), -10.0, 1e-9);
+  sim->push_event(KeyEvent{Key::I, true});
+  sim->push_event(KeyEvent{Key::I, false});
+  drag_right(600);
+  EXPECT_NEAR(azimuth_deg(sim->poll(2).head), 0.0, 1e-9) << "mouselook turns back";
+  sim->push_event(KeyEvent{Key::I, true});
+  sim->push_event(KeyEvent{Key::I, false});
+  drag_right(600);
+  EXPECT_NEAR(azimuth_deg(sim->poll(3).head), -10.0, 1e-9) << "and drag again";
+  EXPECT_EQ(parse_look_mode("mouselook"), LookMode::Mouselook);
+  EXPECT_EQ(parse_look_mode("drag"), LookMode::Drag);
+  EXPECT_FALSE(parse_look_mode("invert").has_value());
+  EXPECT_NE(sim_bindings_text(SimConfig{}).find("drag: as 360 players (left turns right)"),
+            std::string::npos);
+  SimConfig mouselook;
+  mouselook.look = LookMode::Mouselook;
+  EXPECT_NE(sim_bindings_text(mouselook).find("mouselook: as games"), std::string::npos);
+}
+
+TEST(Sim, SpaceAimsAtTheViewCentreWhereverTheCursorRestsAClickAtTheCursor) {
+  // Issue 23: Space with the cursor resting on a panel pressed the panel (the ray went through
+  // the cursor); Space is the keyboard's "place at the centre".
+  auto sim = create_sim_backend({});
+  sim->push_event(MouseMoveEvent{1200, 100});  // far off the centre, where a panel would be
+  InputState s = sim->poll(1);
+  EXPECT_GT(angle_deg(s.right.aim, s.head), 30.0);
+  sim->push_event(KeyEvent{Key::Space, true});
+  s = sim->poll(2);
+  EXPECT_EQ(s.right.trigger, 1.0);
+  EXPECT_NEAR(angle_deg(s.right.aim, s.head), 0.0, 1e-9) << "Space aims at the centre";
+  sim->push_event(KeyEvent{Key::Space, false});
+  s = sim->poll(3);
+  EXPECT_EQ(s.right.trigger, 0.0);
+  EXPECT_GT(angle_deg(s.right.aim, s.head), 30.0) << "back through the cursor";
+  sim->push_event(MouseButtonEvent{MouseButton::Left, true});
+  s = sim->poll(4);
+  EXPECT_EQ(s.right.trigger, 1.0);
+  EXPECT_GT(angle_deg(s.right.aim, s.head), 30.0) << "a click presses what is under the cursor";
 }
 
 TEST(Sim, PitchStopsShortOfThePoles) {
-  auto sim = create_sim_backend({});
+  SimConfig cfg;
+  cfg.look = LookMode::Mouselook;
+  auto sim = create_sim_backend(cfg);
   sim->push_event(MouseButtonEvent{MouseButton::Right, true});
   sim->push_event(MouseMoveEvent{640, -5000});
   EXPECT_NEAR(altitude_deg(sim->poll(1).head), 89.0, 1e-9);
+  auto drag = create_sim_backend({});
+  drag->push_event(MouseButtonEvent{MouseButton::Right, true});
+  drag->push_event(MouseMoveEvent{640, -5000});
+  EXPECT_NEAR(altitude_deg(drag->poll(1).head), -89.0, 1e-9);
 }
 
 struct CursorRow {
