@@ -34,6 +34,9 @@ struct VideoProperties {
   bool variable_rate = false;  //!< frame durations differ (docs/inputs.md, "Variable frame rate")
   int rotation_deg = 0;        //!< display rotation applied to every frame, clockwise: 0/90/180/270
   Rational time_base{0, 1};    //!< unit of FrameDecoder::timestamp (num/den seconds); 0: none
+  /// The stream's transfer characteristic as FFmpeg names it ("bt709", "smpte2084",
+  /// "arib-std-b67", "iec61966-2-1", ...); empty when the stream does not say (stills: "").
+  std::string transfer;
 };
 
 enum class DecodeStatus {

@@ -170,6 +170,10 @@ class LibavDecoder final : public FrameDecoder {
     props_.declared_frames = st->nb_frames;
     props_.rotation_deg = display_rotation(st);
     props_.time_base = {st->time_base.num, st->time_base.den};
+    if (st->codecpar->color_trc != AVCOL_TRC_UNSPECIFIED) {
+      if (const char* name = av_color_transfer_name(st->codecpar->color_trc))
+        props_.transfer = name;
+    }
     if (props_.frames < 1)
       throw InputError(name_ +
                        ": the video stream holds no frames (empty or cut before the first)");

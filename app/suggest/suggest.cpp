@@ -1,0 +1,309 @@
+/// @file
+/// @brief run_suggest (suggest.h): sample the target field, fit it greedily, write the sidecar.
+#include "app/suggest/suggest.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+
+#include "app/cli/command_registry.h"
+#include "io/frame_decoder.h"
+#include "io/input_error.h"
+#include "io/output_path.h"
+#include "io/sidecar.h"
+
+namespace vdfx::app::suggest {
+
+namespace fs = std::filesystem;
+using effects::EffectType;
+
+std::vector<std::int64_t> sampled_frames(std::int64_t frames, std::int64_t every,
+                                         const std::vector<std::int64_t>& extra) {
+  std::set<std::int64_t> out;
+  const std::int64_t last = std::max<std::int64_t>(0, frames - 1);
+  for (std::int64_t f = 0; f <= last; f += std::max<std::int64_t>(1, every)) out.insert(f);
+  out.insert(last);
+  for (const std::int64_t f : extra) out.insert(std::clamp<std::int64_t>(f, 0, last));
+  return {out.begin(), out.end()};
+}
+
+namespace {
+
+struct Clip {
+  std::unique_ptr<io::FrameDecoder> decoder;
+  io::Sidecar sidecar;
+  std::vector<std::int64_t> frames;
+  std::int64_t every = 1;  //!< frames between sampled frames
+};
+
+void check_request(const SuggestRequest& r) {
+  if (!(r.strength >= 0.0 && r.strength <= 1.0))
+    throw UsageError("--strength must be within [0, 1]");
+  if (r.tolerance && !(*r.tolerance > 0.0)) throw UsageError("--tolerance must be greater than 0");
+  if (r.max_keyframes < 1 || r.max_keyframes > io::kMaxKeyframesPerEffect)
+    throw UsageError("--max-keyframes must be within [1, " +
+                     std::to_string(io::kMaxKeyframesPerEffect) + "]");
+  if (r.every < 0) throw UsageError("--every must be at least 1");
+  if (r.kind == Kind::Guide && r.points.empty())
+    throw UsageError("suggest guide needs at least one --poi AZ,ALT[,FROM-TO]");
+}
+
+Clip open_clip(const SuggestRequest& r) {
+  std::vector<io::NamedInput> inputs = {{"VIDEO", r.video}};
+  if (r.sidecar_in) inputs.push_back({"--sidecar-in", *r.sidecar_in});
+  io::check_output_is_not_input("--sidecar-out", r.sidecar_out, inputs);
+  io::resolve_output_path(r.sidecar_out);
+  Clip clip;
+  io::DecoderOptions decoder_options;
+  decoder_options.format = io::PixelFormat::RgbF32;
+  clip.decoder = io::open_frame_decoder(r.video, decoder_options);
+  const auto& p = clip.decoder->properties();
+  clip.sidecar = r.sidecar_in
+                     ? io::read_sidecar(*r.sidecar_in)
+                     : io::new_sidecar({r.video.string(), p.fps.value(),
+                                        std::max<std::int64_t>(1, p.frames), p.width, p.height});
+  const double per_second = r.kind == Kind::Comfort ? 6.0 : 1.0;
+  const std::int64_t every =
+      r.every > 0 ? r.every : std::max<std::int64_t>(1, std::llround(p.fps.value() / per_second));
+  std::vector<std::int64_t> extra;
+  for (const auto& poi : r.points) {  // both sides of each range's ends (guide_segment)
+    extra.push_back(poi.first_frame - 1);
+    extra.push_back(poi.first_frame);
+    if (poi.last_frame) {
+      extra.push_back(*poi.last_frame);
+      extra.push_back(*poi.last_frame + 1);
+    }
+  }
+  clip.every = every;
+  clip.frames = sampled_frames(p.is_still ? 1 : p.frames, every, extra);
+  return clip;
+}
+
+/// The exposure target over the sampled directions and frames (metering.h's model).
+TargetField exposure_field(const SuggestRequest& r, Clip& clip, SuggestReport& report) {
+  const auto& p = clip.decoder->properties();
+  const Transfer transfer = transfer_of(p.transfer, p.is_still);
+  report.transfer = transfer_name(transfer);
+  const MeterGeometry geometry(r.metering.grid_width);
+  std::vector<LumaGrid> grids;
+  double brightest = 0.0;
+  for (const std::int64_t f : clip.frames) {
+    clip.decoder->seek(p.is_still ? 0 : f);
+    cv::Mat rgb;
+    if (clip.decoder->read(rgb) != io::DecodeStatus::Ok)
+      throw io::InputError(r.video.string() + ": frame " + std::to_string(f) +
+                           " could not be decoded");
+    grids.push_back(make_luma_grid(rgb, transfer, geometry, r.metering, f));
+    brightest = std::max(brightest, grids.back().max_luma);
+  }
+  if (brightest <= r.metering.floor)
+    throw io::InputError(r.video.string() + ": cannot be metered: every sampled frame (" +
+                         std::to_string(grids.size()) + ") is black");
+  report.reference_level = reference_level(grids, geometry);
+  TargetField field;
+  const auto directions = sphere_directions(r.directions);
+  for (const LumaGrid& g : grids)
+    for (const auto& d : directions) {
+      const double level = metered_level(g, geometry, effects::to_unit(d), r.metering);
+      const double stops = std::clamp(r.strength * (report.reference_level - level), -8.0, 8.0);
+      field.add(d, g.frame, std::span(&stops, 1));
+    }
+  return field;
+}
+
+/// The guidance targets of one effect (guide.h's falloff).
+TargetField guide_field(const SuggestRequest& r, const Clip& clip, EffectType type) {
+  TargetField field;
+  const auto directions = sphere_directions(r.directions);
+  for (const std::int64_t f : clip.frames)
+    for (const auto& d : directions) {
+      const double g = r.strength * guide_weight_at(r.points, d, f);
+      const double v = type == EffectType::Saturation ? 1.0 - kGuideSaturationDepth * g
+                                                      : -kGuideExposureStops * g;
+      field.add(d, f, std::span(&v, 1));
+    }
+  return field;
+}
+
+/// The camera's angular speed at every frame (motion.h), degrees per second.
+std::vector<double> camera_speeds(const SuggestRequest& r, Clip& clip) {
+  const auto& p = clip.decoder->properties();
+  if (p.is_still || p.frames < 2)
+    throw io::InputError(r.video.string() + ": cannot estimate the camera's motion: it has " +
+                         std::to_string(p.frames) + " frame(s)");
+  clip.decoder->seek(0);
+  std::vector<double> speed(static_cast<std::size_t>(p.frames), 0.0);
+  cv::Mat rgb, previous;
+  for (std::int64_t f = 0; f < p.frames; ++f) {
+    if (clip.decoder->read(rgb) != io::DecodeStatus::Ok) {
+      previous.release();  // a frame lost: no estimate across the gap
+      continue;
+    }
+    cv::Mat grey = motion_frame(rgb, r.motion);
+    if (!previous.empty())
+      speed[static_cast<std::size_t>(f)] =
+          estimate_rotation(previous, grey, r.motion).angle_deg * p.fps.value();
+    previous = std::move(grey);
+  }
+  speed[0] = speed[1];
+  return speed;
+}
+
+/// The comfort vignette's targets (comfort.h): the same at every direction of a frame.
+TargetField comfort_field(const SuggestRequest& r, Clip& clip, SuggestReport& report) {
+  report.speed_deg_per_s = camera_speeds(r, clip);
+  const double fps = clip.decoder->properties().fps.value();
+  const auto lead = static_cast<std::int64_t>(std::llround(kComfortLeadSeconds * fps));
+  const std::vector<double> speed = look_ahead_max(report.speed_deg_per_s, lead);
+  TargetField field;
+  field.dimension = 2;
+  const auto directions = sphere_directions(r.directions);
+  for (const std::int64_t f : clip.frames) {
+    const double v[2] = {comfort_radius_deg(speed[static_cast<std::size_t>(f)], r.strength),
+                         kComfortFalloffDeg};
+    for (const auto& d : directions) field.add(d, f, v);
+  }
+  return field;
+}
+
+effects::EffectTrack& track_of(io::Sidecar& sidecar, EffectType type, bool merge,
+                               const SuggestRequest& r) {
+  for (auto& t : sidecar.effects)
+    if (t.type == type) {
+      if (!t.keyframes.empty() && !merge)
+        throw io::InputError((r.sidecar_in ? r.sidecar_in->string() : std::string("sidecar")) +
+                             ": already has " + std::to_string(t.keyframes.size()) + " " +
+                             std::string(effects::effect_name(type)) +
+                             " keyframes; pass --merge to add the suggestion to them");
+      if (t.keyframes.size() + r.max_keyframes > io::kMaxKeyframesPerEffect)
+        throw UsageError("--max-keyframes " + std::to_string(r.max_keyframes) + " with the " +
+                         std::to_string(t.keyframes.size()) + " " +
+                         std::string(effects::effect_name(type)) +
+                         " keyframes already there is over the limit of " +
+                         std::to_string(io::kMaxKeyframesPerEffect) + " per effect");
+      return t;
+    }
+  sidecar.effects.push_back({type, std::nullopt, {}});
+  return sidecar.effects.back();
+}
+
+/// The frames [first, last] around `frame` over which the active points of interest stay the
+/// same (so the guidance field does not change).
+std::pair<std::int64_t, std::int64_t> guide_segment(const std::vector<PointOfInterest>& points,
+                                                    std::int64_t frame, std::int64_t frames) {
+  std::int64_t first = 0, last = std::max<std::int64_t>(0, frames - 1);
+  for (const auto& p : points) {
+    for (const std::int64_t b : {p.first_frame, p.last_frame ? *p.last_frame + 1 : frames}) {
+      if (b <= frame)
+        first = std::max(first, b);
+      else
+        last = std::min(last, b - 1);
+    }
+  }
+  return {first, last};
+}
+
+/// The stamp of a field that does not vary with direction: the sample's value at the six axis
+/// directions at its frame (equal values at directions spread over the sphere interpolate to
+/// that value everywhere: the RBF's constant term carries it).
+Stamp frame_stamp(const TargetField& field, std::size_t s) {
+  Stamp st;
+  const auto first = field.values.begin() + static_cast<std::ptrdiff_t>(s * field.dimension);
+  const std::vector<double> v(first, first + field.dimension);
+  for (const effects::Direction d :
+       {effects::Direction{0, 0}, {90, 0}, {180, 0}, {-90, 0}, {0, 90}, {0, -90}})
+    st.keyframes.push_back({d, field.frames[s], v});
+  st.key = "frame " + std::to_string(field.frames[s]);
+  return st;
+}
+
+/// The stamp of the guidance field: the sample's keyframe at every sampled frame of its segment
+/// (the field is the same over it).
+Stamp segment_stamp(const TargetField& field, std::size_t s,
+                    const std::vector<PointOfInterest>& points, std::int64_t frames,
+                    const std::vector<std::int64_t>& sampled) {
+  const Stamp one = single_keyframe(field, s);
+  const auto [first, last] = guide_segment(points, field.frames[s], frames);
+  Stamp st;
+  for (const std::int64_t f : sampled)
+    if (f >= first && f <= last)
+      st.keyframes.push_back({one.keyframes[0].direction, f, one.keyframes[0].params});
+  st.key = std::to_string(one.keyframes[0].direction.azimuth_deg) + "," +
+           std::to_string(one.keyframes[0].direction.altitude_deg) + "@" + std::to_string(first);
+  return st;
+}
+
+/// A suggestion that changes in time gets its own time scale on a new track: one sampled-frame
+/// step weighs like kStepDeg degrees of view (docs/suggest.md, "Time"). Under the author's default
+/// (2 degrees a second) frames a fraction of a second apart are nearly the same point, and two
+/// patterns on either side of a change blend across the sphere; at half a turn per step each
+/// sampled frame's keyframes shape their own frame.
+constexpr double kStepDeg = 180.0;
+
+void fit_into(io::Sidecar& sidecar, EffectType type, const TargetField& field,
+              const SuggestRequest& r, SuggestReport& report, StampFn stamp = {},
+              std::int64_t step_frames = 0) {
+  effects::EffectTrack& track = track_of(sidecar, type, r.merge, r);
+  if (step_frames > 0 && track.keyframes.empty() && !track.interpolation) {
+    effects::InterpolationSettings own = sidecar.interpolation;
+    own.time_scale = effects::time_scale_from_deg_per_s(kStepDeg * sidecar.video.fps /
+                                                        static_cast<double>(step_frames));
+    track.interpolation = own;
+  }
+  FitOptions o;
+  o.tolerance = r.tolerance.value_or(type == EffectType::Saturation ? kSaturationTolerance
+                                     : type == EffectType::Vignette ? kVignetteToleranceDeg
+                                                                    : kExposureToleranceStops);
+  o.max_keyframes = r.max_keyframes;
+  o.settings = track.interpolation.value_or(sidecar.interpolation);
+  o.fps = sidecar.video.fps;
+  o.neutral = effects::effect_spec(type).neutral();
+  o.stamp = std::move(stamp);
+  SuggestedEffect s{type, o.tolerance, fit_greedy(field, o, track.keyframes)};
+  track.keyframes.insert(track.keyframes.end(), s.fit.added.begin(), s.fit.added.end());
+  report.effects.push_back(std::move(s));
+}
+
+}  // namespace
+
+SuggestReport run_suggest(const SuggestRequest& r) {
+  const auto start = std::chrono::steady_clock::now();
+  check_request(r);
+  Clip clip = open_clip(r);
+  SuggestReport report;
+  report.frames = clip.frames;
+  if (r.kind == Kind::Exposure) {
+    const TargetField field = exposure_field(r, clip, report);
+    report.samples = field.size();
+    fit_into(clip.sidecar, EffectType::Exposure, field, r, report);
+  } else if (r.kind == Kind::Comfort) {
+    const TargetField field = comfort_field(r, clip, report);
+    report.samples = field.size();
+    fit_into(
+        clip.sidecar, EffectType::Vignette, field, r, report,
+        [&field](std::size_t s) { return frame_stamp(field, s); }, clip.every);
+  } else {
+    std::vector<EffectType> types;
+    if (r.guide_effect != GuideEffect::Exposure) types.push_back(EffectType::Saturation);
+    if (r.guide_effect != GuideEffect::Saturation) types.push_back(EffectType::Exposure);
+    for (const EffectType type : types) {
+      const TargetField field = guide_field(r, clip, type);
+      report.samples = field.size();
+      const std::int64_t frames = clip.sidecar.video.frames;
+      const bool moves = clip.frames.size() > 1 &&
+                         std::any_of(r.points.begin(), r.points.end(), [](const auto& p) {
+                           return p.first_frame > 0 || p.last_frame.has_value();
+                         });
+      fit_into(
+          clip.sidecar, type, field, r, report,
+          [&](std::size_t s) { return segment_stamp(field, s, r.points, frames, clip.frames); },
+          moves ? clip.every : 0);
+    }
+  }
+  io::write_sidecar(r.sidecar_out, clip.sidecar);
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace vdfx::app::suggest

@@ -1,0 +1,70 @@
+/// @file
+/// @brief `vdfx suggest`'s library entry point (docs/suggest.md): proposes keyframes from the video
+/// itself as ordinary keyframes in a sidecar. The command parses its options into a
+/// SuggestRequest and calls run_suggest; tests call it directly.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/suggest/comfort.h"
+#include "app/suggest/greedy_fit.h"
+#include "app/suggest/guide.h"
+#include "app/suggest/metering.h"
+#include "app/suggest/motion.h"
+#include "effects/effect_types.h"
+
+namespace vdfx::app::suggest {
+
+enum class Kind { Exposure, Guide, Comfort };
+enum class GuideEffect { Saturation, Exposure, Both };
+
+/// Defaults of the tolerance, in each effect's own units.
+inline constexpr double kExposureToleranceStops = 0.25;
+inline constexpr double kSaturationTolerance = 0.05;
+
+struct SuggestRequest {
+  Kind kind = Kind::Exposure;
+  std::filesystem::path video;
+  std::optional<std::filesystem::path> sidecar_in;
+  std::filesystem::path sidecar_out;
+  double strength = 1.0;   //!< 0..1
+  std::int64_t every = 0;  //!< frames between sampled frames; 0: about 1 s (comfort: 1/6 s)
+  std::optional<double> tolerance;      //!< none: the effect's default above
+  std::size_t max_keyframes = 256;      //!< per effect
+  bool merge = false;                   //!< add to keyframes the sidecar already has
+  int directions = 400;                 //!< sampled view directions (a Fibonacci lattice)
+  MeteringOptions metering;             //!< exposure
+  std::vector<PointOfInterest> points;  //!< guide
+  GuideEffect guide_effect = GuideEffect::Saturation;
+  MotionOptions motion;  //!< comfort
+};
+
+struct SuggestedEffect {
+  effects::EffectType type = effects::EffectType::Exposure;
+  double tolerance = 0.0;
+  FitResult fit;
+};
+
+struct SuggestReport {
+  std::vector<SuggestedEffect> effects;
+  std::size_t samples = 0;              //!< directions x sampled frames
+  std::vector<std::int64_t> frames;     //!< the sampled frames
+  std::string transfer;                 //!< exposure: the transfer the video was linearised with
+  double reference_level = 0.0;         //!< exposure: log2 luminance
+  std::vector<double> speed_deg_per_s;  //!< comfort: the camera's angular speed at every frame
+  double seconds = 0.0;                 //!< wall time of the whole suggestion
+};
+
+/// Runs one suggestion and writes the sidecar (atomically, never onto an input). Throws
+/// io::InputError for input that cannot be used (unreadable video, a video that cannot be
+/// metered, keyframes already there without merge) and UsageError for options out of range.
+SuggestReport run_suggest(const SuggestRequest& request);
+
+/// The frames sampled: 0, every, 2 every, ... and the last frame, plus `extra` (clamped).
+std::vector<std::int64_t> sampled_frames(std::int64_t frames, std::int64_t every,
+                                         const std::vector<std::int64_t>& extra = {});
+
+}  // namespace vdfx::app::suggest

@@ -1,0 +1,400 @@
+/// @file
+/// @brief `vdfx suggest` (docs/suggest.md): the metering model against an independent brute-force
+/// computation, the exposure and gaze-guidance suggestions' values where they matter, the fewest
+/// keyframes rule, and the command's bad input.
+#include "app/suggest/suggest.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "effects/rbf_interpolator.h"
+#include "io/sidecar.h"
+#include "tests/app/command_test_util.h"
+
+namespace vdfx::app::suggest {
+namespace {
+
+using testing::run_vdfx_headless;
+using testing::test_dir;
+
+constexpr double kWindowAz = 60.0, kWindowAlt = 10.0, kWindowRadiusDeg = 25.0;
+
+/// A 512x256 equirect (sRGB PNG): a bright window (value 250) of 25 degrees radius at (60, 10)
+/// in a dim room (value 30).
+std::filesystem::path write_window_panorama(const std::filesystem::path& dir) {
+  cv::Mat img(256, 512, CV_8UC3);
+  const Eigen::Vector3d window = effects::to_unit({kWindowAz, kWindowAlt});
+  for (int y = 0; y < img.rows; ++y)
+    for (int x = 0; x < img.cols; ++x) {
+      const auto d = effects::from_equirect_uv({(x + 0.5) / img.cols, (y + 0.5) / img.rows});
+      const double a = effects::angle_between(effects::to_unit(d), window) * effects::kRadToDeg;
+      const uchar v = a < kWindowRadiusDeg ? 250 : 30;
+      img.at<cv::Vec3b>(y, x) = {v, v, v};
+    }
+  const auto path = dir / "window.png";
+  cv::imwrite(path.string(), img);
+  return path;
+}
+
+double srgb_to_linear(double v) {
+  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+/// The metering model of docs/suggest.md computed at full resolution, pixel by pixel, without
+/// the grid: per-pixel solid angle cos(altitude), centre weight exp(-theta^2 / (2 (fov/4)^2))
+/// within fov/2.
+struct BruteMeter {
+  cv::Mat image;  // CV_8UC3
+  double level(const effects::Direction& view, double fov_deg = 90.0) const {
+    const Eigen::Vector3d v = effects::to_unit(view);
+    const double half = fov_deg / 2 * effects::kDegToRad, sigma = fov_deg / 4 * effects::kDegToRad;
+    double sum = 0, weights = 0;
+    for (int y = 0; y < image.rows; ++y)
+      for (int x = 0; x < image.cols; ++x) {
+        const auto d = effects::from_equirect_uv({(x + 0.5) / image.cols, (y + 0.5) / image.rows});
+        const double theta = effects::angle_between(effects::to_unit(d), v);
+        if (theta > half) continue;
+        const double w = std::cos(d.altitude_deg * effects::kDegToRad) *
+                         std::exp(-theta * theta / (2 * sigma * sigma));
+        const double lin = srgb_to_linear(image.at<cv::Vec3b>(y, x)[0] / 255.0);
+        sum += w * std::log2(lin);
+        weights += w;
+      }
+    return sum / weights;
+  }
+  double reference() const {
+    double sum = 0, weights = 0;
+    for (int y = 0; y < image.rows; ++y)
+      for (int x = 0; x < image.cols; ++x) {
+        const double alt = 90.0 - (y + 0.5) * 180.0 / image.rows;
+        const double w = std::cos(alt * effects::kDegToRad);
+        sum += w * std::log2(srgb_to_linear(image.at<cv::Vec3b>(y, x)[0] / 255.0));
+        weights += w;
+      }
+    return sum / weights;
+  }
+};
+
+/// The suggestion read back and evaluated as every player evaluates it.
+struct Suggested {
+  io::Sidecar sidecar;
+  std::unique_ptr<effects::RbfInterpolator> exposure, saturation;
+  double at(const effects::RbfInterpolator& f, const effects::Direction& d,
+            std::int64_t frame = 0) const {
+    return f.evaluate(d, frame)[0];
+  }
+};
+
+Suggested read_suggestion(const std::filesystem::path& path) {
+  Suggested s;
+  s.sidecar = io::read_sidecar(path);
+  for (const auto& t : s.sidecar.effects) {
+    auto f = std::make_unique<effects::RbfInterpolator>(
+        t.keyframes, 1, t.interpolation.value_or(s.sidecar.interpolation), s.sidecar.video.fps,
+        effects::effect_spec(t.type).neutral());
+    (t.type == effects::EffectType::Exposure ? s.exposure : s.saturation) = std::move(f);
+  }
+  return s;
+}
+
+TEST(SuggestMetering, GridLevelsFollowTheBruteForceModel) {
+  const auto dir = test_dir();
+  const BruteMeter brute{cv::imread(write_window_panorama(dir).string())};
+  cv::Mat rgb;
+  brute.image.convertTo(rgb, CV_32FC3, 1.0 / 255);
+  const MeteringOptions options;
+  const MeterGeometry geometry(options.grid_width);
+  const LumaGrid grid = make_luma_grid(rgb, Transfer::Srgb, geometry, options, 0);
+  EXPECT_NEAR(reference_level(std::span(&grid, 1), geometry), brute.reference(), 0.05);
+  // log2 of area means against means of log2: cells straddling the window's edge differ, so
+  // the grid's model reads up to a few tenths of a stop off there, far less elsewhere.
+  for (const effects::Direction d :
+       {effects::Direction{kWindowAz, kWindowAlt}, {-120, 0}, {0, 0}, {60, 60}, {180, -70}})
+    EXPECT_NEAR(metered_level(grid, geometry, effects::to_unit(d), options), brute.level(d), 0.3)
+        << d.azimuth_deg << "," << d.altitude_deg;
+  // The window reads brighter than the room (a 90 degree view of it still holds some room).
+  EXPECT_GT(brute.level({kWindowAz, kWindowAlt}) - brute.level({-120, 0}), 3.0);
+}
+
+TEST(SuggestExposure, DarkensTheWindowBrightensTheRoomWithinTolerance) {
+  const auto dir = test_dir();
+  const auto pano = write_window_panorama(dir);
+  SuggestRequest r;
+  r.video = pano;
+  r.sidecar_out = dir / "out.vdfx.json";
+  const SuggestReport report = run_suggest(r);
+  ASSERT_EQ(report.effects.size(), 1u);
+  EXPECT_TRUE(report.effects[0].fit.within_tolerance);
+  EXPECT_LE(report.effects[0].fit.max_error, kExposureToleranceStops);
+  EXPECT_EQ(report.transfer, "sRGB");
+  // Fewest keyframes: a field this smooth needs a handful, far below the 400 samples.
+  const std::size_t used = report.effects[0].fit.added.size();
+  EXPECT_GE(used, 2u);
+  EXPECT_LE(used, 40u);
+
+  const Suggested s = read_suggestion(r.sidecar_out);
+  ASSERT_TRUE(s.exposure);
+  const BruteMeter brute{cv::imread(pano.string())};
+  const double ref = brute.reference();
+  EXPECT_LT(s.at(*s.exposure, {kWindowAz, kWindowAlt}), -1.0);
+  EXPECT_GT(s.at(*s.exposure, {-120, 0}), 0.3);
+  // Within the tolerance of the independently computed target where it was sampled (plus the
+  // grid's own reading error, GridLevelsFollowTheBruteForceModel).
+  for (const auto& d : sphere_directions(60)) {
+    const double target = std::clamp(ref - brute.level(d), -8.0, 8.0);
+    EXPECT_NEAR(s.at(*s.exposure, d), target, kExposureToleranceStops + 0.35)
+        << d.azimuth_deg << "," << d.altitude_deg;
+  }
+}
+
+TEST(SuggestExposure, StrengthScalesAndTighterToleranceNeedsMoreKeyframes) {
+  const auto dir = test_dir();
+  const auto pano = write_window_panorama(dir);
+  SuggestRequest r;
+  r.video = pano;
+  r.sidecar_out = dir / "full.vdfx.json";
+  const std::size_t loose = run_suggest(r).effects[0].fit.added.size();
+  r.tolerance = 0.1;
+  r.sidecar_out = dir / "tight.vdfx.json";
+  const SuggestReport tight = run_suggest(r);
+  EXPECT_GT(tight.effects[0].fit.added.size(), loose);
+  EXPECT_LE(tight.effects[0].fit.max_error, 0.1);
+
+  r.tolerance.reset();
+  r.strength = 0.5;
+  r.sidecar_out = dir / "half.vdfx.json";
+  run_suggest(r);
+  const Suggested full = read_suggestion(dir / "full.vdfx.json");
+  const Suggested half = read_suggestion(dir / "half.vdfx.json");
+  const effects::Direction window{kWindowAz, kWindowAlt};
+  EXPECT_NEAR(half.at(*half.exposure, window), 0.5 * full.at(*full.exposure, window), 0.3);
+}
+
+TEST(SuggestExposure, TheBudgetStopsTheFitAndSaysSo) {
+  const auto dir = test_dir();
+  SuggestRequest r;
+  r.video = write_window_panorama(dir);
+  r.sidecar_out = dir / "out.vdfx.json";
+  r.tolerance = 0.001;
+  r.max_keyframes = 3;
+  const SuggestReport report = run_suggest(r);
+  EXPECT_EQ(report.effects[0].fit.added.size(), 3u);
+  EXPECT_FALSE(report.effects[0].fit.within_tolerance);
+  EXPECT_GT(report.effects[0].fit.max_error, 0.001);
+}
+
+TEST(SuggestExposure, OnTheSunrisePanoramaDarkensTheSunsSide) {
+  const std::filesystem::path sunrise =
+      "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
+  ASSERT_TRUE(std::filesystem::exists(sunrise)) << "blender-data is in .ci/deps.sh";
+  const auto dir = test_dir();
+  SuggestRequest r;
+  r.video = sunrise;
+  r.sidecar_out = dir / "out.vdfx.json";
+  run_suggest(r);
+  const Suggested s = read_suggestion(r.sidecar_out);
+  // The sun is at (36, 8) (recordings/README.md); the opposite side is the shadowed land.
+  EXPECT_LT(s.at(*s.exposure, {36, 8}), -0.5);
+  EXPECT_GT(s.at(*s.exposure, {-144, 0}), s.at(*s.exposure, {36, 8}) + 1.0);
+}
+
+TEST(SuggestGuide, FollowsTheDocumentedFalloffAroundThePoint) {
+  const auto dir = test_dir();
+  SuggestRequest r;
+  r.kind = Kind::Guide;
+  r.video = write_window_panorama(dir);
+  r.sidecar_out = dir / "out.vdfx.json";
+  r.points = {parse_point_of_interest("-30,0")};
+  r.guide_effect = GuideEffect::Both;
+  const SuggestReport report = run_suggest(r);
+  ASSERT_EQ(report.effects.size(), 2u);
+  const Suggested s = read_suggestion(r.sidecar_out);
+  ASSERT_TRUE(s.exposure && s.saturation);
+  EXPECT_NEAR(s.at(*s.saturation, {-30, 0}), 1.0, kSaturationTolerance);
+  EXPECT_NEAR(s.at(*s.exposure, {-30, 0}), 0.0, kExposureToleranceStops);
+  EXPECT_NEAR(s.at(*s.saturation, {150, 0}), 1.0 - kGuideSaturationDepth, kSaturationTolerance);
+  EXPECT_NEAR(s.at(*s.exposure, {150, 0}), -kGuideExposureStops, kExposureToleranceStops);
+  // Halfway through the falloff (55 degrees from the point: smoothstep(0.5) = 0.5).
+  EXPECT_NEAR(s.at(*s.saturation, {25, 0}), 1.0 - 0.5 * kGuideSaturationDepth,
+              kSaturationTolerance + 0.02);
+}
+
+TEST(SuggestGuide, AMovingPointIsFollowedOverItsFrames) {
+  const auto dir = test_dir();
+  // A 3 s, 10 fps clip made from the panorama (the suggestion reads only its properties).
+  const auto clip = dir / "clip.avi";
+  const cv::Mat img = cv::imread(write_window_panorama(dir).string());
+  cv::VideoWriter w(clip.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 10, img.size());
+  ASSERT_TRUE(w.isOpened());
+  for (int i = 0; i < 30; ++i) w << img;
+  w.release();
+  SuggestRequest r;
+  r.kind = Kind::Guide;
+  r.video = clip;
+  r.every = 5;
+  r.sidecar_out = dir / "out.vdfx.json";
+  r.points = {parse_point_of_interest("-90,0,0-14"), parse_point_of_interest("90,0,15-29")};
+  run_suggest(r);
+  const Suggested s = read_suggestion(r.sidecar_out);
+  EXPECT_NEAR(s.at(*s.saturation, {-90, 0}, 5), 1.0, kSaturationTolerance);
+  EXPECT_LT(s.at(*s.saturation, {90, 0}, 5), 0.3);
+  EXPECT_NEAR(s.at(*s.saturation, {90, 0}, 25), 1.0, kSaturationTolerance);
+  EXPECT_LT(s.at(*s.saturation, {-90, 0}, 25), 0.3);
+}
+
+/// A textured 720x360 equirect (smoothed noise, fixed seed: trackable everywhere), CV_8UC3.
+cv::Mat textured_panorama() {
+  cv::Mat noise(360, 720, CV_8UC3);
+  cv::RNG rng(7);
+  rng.fill(noise, cv::RNG::UNIFORM, 0, 255);
+  cv::Mat smooth;
+  cv::GaussianBlur(noise, smooth, cv::Size(0, 0), 2.0);
+  cv::normalize(smooth, smooth, 0, 255, cv::NORM_MINMAX);
+  return smooth;
+}
+
+/// The panorama as the camera sees it after turning by `r` (a direction d of the world appears
+/// at r d), resampled bilinearly.
+cv::Mat rotated(const cv::Mat& pano, const Eigen::Matrix3d& r) {
+  cv::Mat map_x(pano.size(), CV_32FC1), map_y(pano.size(), CV_32FC1);
+  const Eigen::Matrix3d back = r.transpose();
+  for (int y = 0; y < pano.rows; ++y)
+    for (int x = 0; x < pano.cols; ++x) {
+      const auto d = effects::from_equirect_uv({(x + 0.5) / pano.cols, (y + 0.5) / pano.rows});
+      const Eigen::Vector2d uv =
+          effects::to_equirect_uv(effects::from_unit(back * effects::to_unit(d)));
+      map_x.at<float>(y, x) = static_cast<float>(uv.x() * pano.cols - 0.5);
+      map_y.at<float>(y, x) = static_cast<float>(uv.y() * pano.rows - 0.5);
+    }
+  cv::Mat out;
+  cv::remap(pano, out, map_x, map_y, cv::INTER_LINEAR, cv::BORDER_WRAP);
+  return out;
+}
+
+Eigen::Matrix3d turn(double yaw_deg, double pitch_deg) {
+  return (Eigen::AngleAxisd(yaw_deg * effects::kDegToRad, Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(pitch_deg * effects::kDegToRad, Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
+
+TEST(SuggestMotion, RecoversAKnownRotationBetweenTwoFrames) {
+  const cv::Mat pano = textured_panorama();
+  cv::Mat a, b;
+  pano.convertTo(a, CV_32FC3, 1.0 / 255);
+  for (const auto& [yaw, pitch] : {std::pair{2.0, 0.0}, {-1.0, 1.5}, {0.0, 0.0}, {4.0, -2.0}}) {
+    const Eigen::Matrix3d truth = turn(yaw, pitch);
+    rotated(pano, truth).convertTo(b, CV_32FC3, 1.0 / 255);
+    const MotionOptions o;
+    const Rotation r = estimate_rotation(motion_frame(a, o), motion_frame(b, o), o);
+    EXPECT_GT(r.tracked, 100);
+    const double expected = Eigen::AngleAxisd(truth).angle() * effects::kRadToDeg;
+    EXPECT_NEAR(r.angle_deg, expected, 0.1) << yaw << "," << pitch;
+    // The same rotation, not only the same angle: it maps the view ahead where the truth does.
+    const Eigen::Vector3d ahead = effects::to_unit({0, 0});
+    EXPECT_LT(effects::angle_between(r.matrix * ahead, truth * ahead) * effects::kRadToDeg, 0.15)
+        << yaw << "," << pitch;
+  }
+}
+
+TEST(SuggestComfort, NarrowsTheViewWhileTheCameraTurnsFast) {
+  // 4 s at 30 fps: still for 40 frames, then turning at 30 deg/s, then at 90 deg/s.
+  const auto dir = test_dir();
+  const auto clip = dir / "turning.avi";
+  const cv::Mat pano = textured_panorama();
+  cv::VideoWriter w(clip.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 30, pano.size());
+  ASSERT_TRUE(w.isOpened());
+  double yaw = 0.0;
+  for (int f = 0; f < 120; ++f) {
+    yaw += f < 40 ? 0.0 : f < 80 ? 1.0 : 3.0;  // degrees per frame
+    w << rotated(pano, turn(yaw, 0.0));
+  }
+  w.release();
+  SuggestRequest r;
+  r.kind = Kind::Comfort;
+  r.video = clip;
+  r.sidecar_out = dir / "out.vdfx.json";
+  const SuggestReport report = run_suggest(r);
+  ASSERT_EQ(report.speed_deg_per_s.size(), 120u);
+  EXPECT_NEAR(report.speed_deg_per_s[20], 0.0, 2.0);
+  EXPECT_NEAR(report.speed_deg_per_s[60], 30.0, 2.0);
+  EXPECT_NEAR(report.speed_deg_per_s[100], 90.0, 3.0);
+  ASSERT_EQ(report.effects.size(), 1u);
+  EXPECT_TRUE(report.effects[0].fit.within_tolerance);
+
+  const io::Sidecar s = io::read_sidecar(r.sidecar_out);
+  ASSERT_EQ(s.effects.size(), 1u);
+  ASSERT_EQ(s.effects[0].type, effects::EffectType::Vignette);
+  const effects::RbfInterpolator f(
+      s.effects[0].keyframes, 2, s.effects[0].interpolation.value_or(s.interpolation), s.video.fps,
+      effects::effect_spec(effects::EffectType::Vignette).neutral());
+  // Half a second away from each change the look-ahead window sees one speed only.
+  for (const effects::Direction d : {effects::Direction{0, 0}, {120, 30}, {-90, -45}}) {
+    EXPECT_NEAR(f.evaluate(d, 20)[0], comfort_radius_deg(0.0, 1.0), kVignetteToleranceDeg + 1);
+    EXPECT_NEAR(f.evaluate(d, 60)[0], comfort_radius_deg(30.0, 1.0), kVignetteToleranceDeg + 1);
+    EXPECT_NEAR(f.evaluate(d, 100)[0], comfort_radius_deg(90.0, 1.0), kVignetteToleranceDeg + 1);
+    EXPECT_NEAR(f.evaluate(d, 100)[1], kComfortFalloffDeg, kVignetteToleranceDeg);
+  }
+  EXPECT_NEAR(comfort_radius_deg(30.0, 1.0), 78.0, 1e-9);  // the documented mapping
+  EXPECT_NEAR(comfort_radius_deg(90.0, 1.0), kComfortMinRadiusDeg, 1e-9);
+}
+
+TEST(SuggestComfort, AStillHasNoMotionToMeasure) {
+  const auto dir = test_dir();
+  const auto r = run_vdfx_headless("suggest comfort " + write_window_panorama(dir).string() +
+                                   " --sidecar-out " + (dir / "c.vdfx.json").string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("cannot estimate the camera's motion"), std::string::npos) << r.output;
+}
+
+TEST(SuggestCommand, ReportsAndWritesAValidSidecar) {
+  const auto dir = test_dir();
+  const auto pano = write_window_panorama(dir);
+  const auto out = dir / "s.vdfx.json";
+  const auto r =
+      run_vdfx_headless("suggest exposure " + pano.string() + " --sidecar-out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("metered 1 frames as sRGB"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("exposure"), std::string::npos) << r.output;
+  EXPECT_EQ(run_vdfx_headless("validate " + out.string()).exit_code, 0);
+}
+
+TEST(SuggestCommand, BadInputIsAMessageWithTheContractsExitCode) {
+  const auto dir = test_dir();
+  const auto pano = write_window_panorama(dir);
+  const auto out = dir / "s.vdfx.json";
+  const std::string base = "suggest exposure " + pano.string() + " --sidecar-out ";
+  // Keyframes already there: only with --merge.
+  ASSERT_EQ(run_vdfx_headless(base + out.string()).exit_code, 0);
+  auto r = run_vdfx_headless(base + (dir / "again.vdfx.json").string() + " --sidecar-in " +
+                             out.string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("pass --merge"), std::string::npos) << r.output;
+  r = run_vdfx_headless(base + (dir / "again.vdfx.json").string() + " --sidecar-in " +
+                        out.string() + " --merge --tolerance 0.1");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  // The output is an input.
+  r = run_vdfx_headless(base + pano.string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  // An all-black panorama cannot be metered.
+  const auto black = dir / "black.png";
+  cv::imwrite(black.string(), cv::Mat(64, 128, CV_8UC3, cv::Scalar::all(0)));
+  r = run_vdfx_headless("suggest exposure " + black.string() + " --sidecar-out " +
+                        (dir / "b.vdfx.json").string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("cannot be metered"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "b.vdfx.json"));
+  // Options out of range are usage errors.
+  EXPECT_EQ(run_vdfx_headless(base + out.string() + " --strength 2").exit_code, 2);
+  EXPECT_EQ(run_vdfx_headless("suggest guide " + pano.string() + " --sidecar-out " + out.string() +
+                              " --poi 10,100")
+                .exit_code,
+            2);
+}
+
+}  // namespace
+}  // namespace vdfx::app::suggest
