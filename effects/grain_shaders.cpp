@@ -44,6 +44,25 @@ float perlin(vec3 p) {
 }
 )";
 
+// How a grain fragment modulates the eye colour C into s floor + C (1 + s). Desktop GL: dual-source
+// blending (ONE, SRC1_COLOR), out = frag + dst * frag_scale. WebGL2 has no dual-source blending,
+// but the scale is one number for every channel: it travels in alpha and blends (ONE, SRC_ALPHA)
+// into a float target, whose blend factors are unclamped.
+constexpr const char* kGrainOutput = R"(
+uniform float u_floor;
+#ifdef GL_ES
+out vec4 frag;
+void grain_out(float s) { frag = vec4(vec3(s * u_floor), 1.0 + s); }
+#else
+layout(location = 0, index = 0) out vec4 frag;
+layout(location = 0, index = 1) out vec4 frag_scale;
+void grain_out(float s) {
+  frag = vec4(vec3(s * u_floor), 0.0);
+  frag_scale = vec4(vec3(1.0 + s), 1.0);
+}
+#endif
+)";
+
 constexpr const char* kShaderStyles = R"(
 uniform int u_style;
 uniform mat3 u_eye_to_grain;
@@ -54,10 +73,6 @@ uniform vec3 u_offset1;
 uniform vec3 u_offset2;
 uniform float u_octave2;
 uniform float u_gain;
-uniform float u_floor;
-// Dual-source blending (ONE, SRC1_COLOR): out = frag + dst * frag_scale.
-layout(location = 0, index = 0) out vec4 frag;
-layout(location = 0, index = 1) out vec4 frag_scale;
 void main() {
   // The pinhole's tangent (glsl_common.h) written out operation for operation as
   // effects/grain_render.cpp does in float, which the GL-vs-CPU tests hold it to.
@@ -90,9 +105,7 @@ void main() {
   float n1 = w1 > 0.0 ? perlin(p1) : 0.0;
   float n2 = w2 > 0.0 ? perlin(p2) : 0.0;
   float g = w1 * n1 + u_octave2 * w2 * n2;
-  float s = max(-1.0, u_gain * g);
-  frag = vec4(vec3(s * u_floor), 0.0);
-  frag_scale = vec4(vec3(1.0 + s), 1.0);
+  grain_out(max(-1.0, u_gain * g));
 }
 )";
 
@@ -168,10 +181,6 @@ flat in vec3 v_semi;
 flat in vec4 v_rotation;
 flat in vec2 v_shade;
 uniform vec3 u_eye;
-uniform float u_floor;
-// Dual-source blending (ONE, SRC1_COLOR) as the shader styles: out = frag + dst * frag_scale.
-layout(location = 0, index = 0) out vec4 frag;
-layout(location = 0, index = 1) out vec4 frag_scale;
 // Rotates by the inverse of the unit quaternion q = (x, y, z, w).
 vec3 rotate_inverse(vec4 q, vec3 v) {
   vec3 u = -q.xyz;
@@ -183,22 +192,20 @@ void main() {
   float a = dot(d, d), b = dot(o, d), c = dot(o, o) - 1.0;
   float disc = b * b - a * c;
   if (!(disc > 0.0)) discard;
-  float s = max(-1.0, v_shade.x * v_shade.y * (disc / a));
-  frag = vec4(vec3(s * u_floor), 0.0);
-  frag_scale = vec4(vec3(1.0 + s), 1.0);
+  grain_out(max(-1.0, v_shade.x * v_shade.y * (disc / a)));
 }
 )";
 
 }  // namespace
 
 std::string grain_shader_fragment_source() {
-  return std::string(glsl::kPinhole) + kNoise + kShaderStyles;
+  return std::string(glsl::kPinhole) + kNoise + kGrainOutput + kShaderStyles;
 }
 std::string grain_particle_vertex_source() {
   return kParticleVertex;
 }
 std::string grain_particle_fragment_source() {
-  return kParticleFragment;
+  return std::string(kGrainOutput) + kParticleFragment;
 }
 
 }  // namespace vdfx::effects

@@ -11,8 +11,10 @@ namespace vdfx::effects {
 /// Full-screen pass of the shader styles (headset, surface). Uniforms: u_perm (ivec4[64], the
 /// permutation packed four per element), u_style, u_eye_to_grain, u_eye, u_distance, u_inv_cell,
 /// u_offset1, u_offset2, u_octave2, u_gain, u_floor, u_tan (left, right, down, up), u_viewport
-/// (W, H). Two outputs for dual-source blending (ONE, SRC1_COLOR): frag = s floor, frag_scale =
-/// 1 + s, so the eye colour C becomes s floor + C (1 + s).
+/// (W, H). Desktop GL: two outputs for dual-source blending (ONE, SRC1_COLOR): frag = s floor,
+/// frag_scale = 1 + s, so the eye colour C becomes s floor + C (1 + s). GLSL ES (WebGL2, no
+/// dual-source blending): one output (s floor, 1 + s) for blending (ONE, SRC_ALPHA) into a float
+/// target, the same result.
 std::string grain_shader_fragment_source();
 
 /// Instanced particles (object_cloud, free_cloud): one camera-facing quad per particle (a

@@ -3,6 +3,8 @@
 #include "effects/interpolation_check.h"
 
 #include <charconv>
+#include <cstdio>
+#include <cstdlib>
 
 namespace vdfx::effects {
 
@@ -11,8 +13,18 @@ namespace {
 // Shortest round-trip form ("5", "0.1"), as the sidecar reader writes numbers in its messages.
 std::string num(double v) {
   char buf[32];
+#if defined(__EMSCRIPTEN__)
+  // The WebAssembly build's libc++ (Debian's emscripten 3.1.6) has no floating-point to_chars:
+  // the fewest %g digits that read back as v, the same digits (the closest shortest form).
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
+#else
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
+#endif
 }
 
 std::string out_of_range(const char* name, double v, const std::string& range) {

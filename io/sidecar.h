@@ -14,6 +14,10 @@
 #include "effects/grain.h"
 #include "effects/keyframe.h"
 
+namespace vdfx::effects {
+class StackInterpolator;
+}
+
 namespace vdfx::io {
 
 /// The video a sidecar belongs to, as recorded when it was authored.
@@ -78,6 +82,11 @@ nlohmann::json to_json(const Sidecar& sidecar);
 /// {"gain": [r, g, b]}, ...), in the effect spec's order.
 nlohmann::ordered_json params_to_json(effects::EffectType type, std::span<const double> values);
 
+/// The "effects" object of `vdfx eval` (and of the web player's WebAssembly module): every stack
+/// effect's parameters under its name, in the contract's order, each with "active" (it has
+/// keyframes).
+nlohmann::ordered_json stack_params_to_json(const effects::StackInterpolator& stack,
+                                            const effects::StackParams& params);
 /// One keyframe as written: azimuth_deg, altitude_deg, frame, then `params`.
 nlohmann::ordered_json keyframe_to_json(const effects::Keyframe& keyframe,
                                         nlohmann::ordered_json params);

@@ -8,8 +8,8 @@
 namespace vdfx::xr {
 
 /// A linked GL program (move-only). Sources are given without a #version line: the builder
-/// prepends "#version 430 core" and a #line directive so the driver's line numbers are the
-/// source's own.
+/// prepends the desktop prelude (effects/glsl_common.h) and a #line directive so the driver's line
+/// numbers are the source's own.
 class GlProgram {
  public:
   GlProgram() = default;
@@ -34,8 +34,7 @@ class GlProgram {
   std::string name_;
 };
 
-/// The vertex shader every full-screen pass shares: one triangle covering the viewport, no
-/// vertex buffer; `v_uv` runs 0..1 across the viewport with (0, 0) at the bottom-left.
+/// The vertex shader every full-screen pass shares (effects/glsl_common.h's kFullscreenVertex).
 std::string_view fullscreen_vertex_source();
 
 /// Turns a driver info log into lines "<shader> line N: message\n  > source line" (Mesa

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "effects/glsl_common.h"
 #include "xr/gl_context.h"
 #include "xr/gl_program.h"
 
@@ -28,7 +29,8 @@ std::vector<std::string> split_lines(std::string_view text) {
 }
 
 unsigned compile(GLenum stage, const std::string& label, std::string_view source) {
-  const std::string full = "#version 430 core\n#line 1\n" + std::string(source);
+  const std::string full =
+      std::string(effects::glsl::kDesktopPrelude) + "#line 1\n" + std::string(source);
   const GLuint s = glCreateShader(stage);
   const char* ptr = full.c_str();
   glShaderSource(s, 1, &ptr, nullptr);
@@ -125,15 +127,6 @@ int GlProgram::uniform(const char* uname) const {
 }
 
 std::string_view fullscreen_vertex_source() {
-  return R"(
-out vec2 v_uv;
-void main() {
-  // Vertices (-1,-1), (3,-1), (-1,3): one triangle that covers the viewport.
-  vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-  v_uv = p;
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+  return effects::glsl::kFullscreenVertex;
 }
-)";
-}
-
 }  // namespace vdfx::xr

@@ -52,13 +52,7 @@ int cmd_eval(const Args& args) {
     out["at"] = {{"azimuth_deg", p.direction.azimuth_deg},
                  {"altitude_deg", p.direction.altitude_deg},
                  {"frame", p.frame}};
-    nlohmann::ordered_json fx = nlohmann::ordered_json::object();
-    for (const effects::EffectSpec& spec : effects::all_effect_specs()) {
-      nlohmann::ordered_json e = io::params_to_json(spec.type, params.get(spec.type));
-      e["active"] = stack.active(spec.type);
-      fx[std::string(spec.name)] = std::move(e);
-    }
-    out["effects"] = std::move(fx);
+    out["effects"] = io::stack_params_to_json(stack, params);
     // Flares (any number, in file order): their keyframed intensity at the view.
     nlohmann::ordered_json fl = nlohmann::ordered_json::array();
     for (std::size_t k = 0; k < flares.size(); ++k)
