@@ -16,10 +16,14 @@
 #include <sstream>
 
 #include "io/input_error.h"
+#include "io/input_file.h"
 
 namespace vdfx::io {
 namespace fs = std::filesystem;
 namespace {
+
+/// Lock files hold one short JSON object; anything larger is not one of vdfx's.
+constexpr std::uintmax_t kMaxLockBytes = 64 * 1024;
 
 std::string this_host() {
   char buf[256] = {};
@@ -67,12 +71,10 @@ std::string utc_now() {
   return buf;
 }
 
+/// The whole lock file, or nothing when it cannot be read (gone, or not a regular file).
 std::optional<std::string> slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  std::string why;
+  return try_read_input_file(p, kMaxLockBytes, "a lock file", why);
 }
 
 LockOwner parse_owner(const std::string& text) {

@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "io/atomic_file.h"
+#include "io/input_file.h"
 
 namespace vdfx::app {
 
@@ -22,12 +23,10 @@ fs::path recovery_path(const fs::path& sidecar_path) {
 }
 
 namespace {
+/// The whole file (a sidecar or its recovery copy), or nothing when it cannot be read.
 std::optional<std::string> slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  std::string why;
+  return io::try_read_input_file(p, io::kMaxSidecarBytes, "a sidecar", why);
 }
 }  // namespace
 
