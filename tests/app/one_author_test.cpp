@@ -19,12 +19,14 @@ namespace fs = std::filesystem;
 using test_files::LockHolder;
 using test_files::slurp;
 
-/// vdfx whose writes to regular files fail with ENOSPC after `after` bytes.
+/// vdfx whose writes to regular files fail with ENOSPC after `after` bytes. `timeout` comes
+/// first: the injector is preloaded into vdfx only (in the sanitized build it needs the
+/// sanitizers' runtime, which `timeout` does not have).
 CommandResult run_on_full_disk(const std::string& args, long after = 0) {
-  return run_vdfx(args, "env -u DISPLAY LD_PRELOAD=" + std::string(VDFX_FAULT_SO) +
-                            " VDFX_FAULT=write_enospc VDFX_FAULT_AFTER=" + std::to_string(after) +
-                            " ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0 "
-                            "timeout 120 ");
+  return run_vdfx(args,
+                  "timeout 120 env -u DISPLAY LD_PRELOAD=" + std::string(VDFX_FAULT_SO) +
+                      " VDFX_FAULT=write_enospc VDFX_FAULT_AFTER=" + std::to_string(after) +
+                      " ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0 ");
 }
 
 std::size_t files_in(const fs::path& dir) {
