@@ -91,10 +91,9 @@ FitResult fit_greedy(const TargetField& field, const FitOptions& options,
   std::vector<Eigen::Vector3d> units;
   units.reserve(n);
   for (const auto& d : field.directions) units.push_back(effects::to_unit(d));
+  // A sample is picked at most once; one whose stamp would replace an author's keyframe is
+  // skipped when picked (below).
   std::vector<bool> placeable(n, true);
-  for (std::size_t s = 0; s < n; ++s)
-    for (const auto& k : existing)
-      if (effects::replaces(field.directions[s], field.frames[s], k)) placeable[s] = false;
 
   effects::KeyframeSetOptions set_options;
   set_options.async = false;
