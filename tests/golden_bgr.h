@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/test_paths.h"
+
 namespace vdfx::test_images {
 
 /// Compares `actual` (CV_8UC3 BGR) with tests/MODULE/golden/NAME.png; empty when it matches,

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/test_paths.h"
+
 namespace vdfx::test_files {
 
 /// Empties and returns VDFX_TEST_OUTPUT_DIR / relative (build/tests/output/...).

@@ -12,6 +12,7 @@
 
 #include "command_test_util.h"
 #include "tests/media_clips.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::app::testing {
 namespace {

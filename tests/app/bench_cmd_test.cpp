@@ -17,6 +17,7 @@
 #include "app/bench/report.h"
 #include "app/bench/timing.h"
 #include "command_test_util.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::app {
 namespace {

@@ -13,6 +13,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
+#include "tests/support/test_paths.h"
 #include "tests/test_files.h"
 
 namespace vdfx::app::testing {

@@ -13,6 +13,7 @@
 #include "io/sidecar.h"
 #include "tests/golden_bgr.h"
 #include "tests/lock_holder.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::app {
 namespace {

@@ -13,6 +13,7 @@
 #include "app/editor/autosave.h"
 #include "app/editor/editor.h"
 #include "editor_test_util.h"
+#include "tests/support/test_paths.h"
 #include "tests/test_files.h"
 
 namespace vdfx::app {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/editor/bindings.h"
+#include "tests/support/test_paths.h"
 #include "xr/input_backend.h"
 
 namespace vdfx::app {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "editor_scripts.h"
+#include "tests/support/test_paths.h"
 #include "tests/test_files.h"
 
 namespace vdfx::app {

@@ -6,6 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "export_test_util.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::app {
 namespace {

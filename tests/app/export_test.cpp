@@ -35,6 +35,7 @@ extern "C" {
 #include "io/sidecar.h"
 #include "io/ycbcr.h"
 #include "tests/media_clips.h"
+#include "tests/support/test_paths.h"
 #include "tests/test_files.h"
 #include "xr/actions.h"
 

@@ -8,6 +8,7 @@
 
 #include "command_test_util.h"
 #include "io/recording.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::app::testing {
 namespace {

@@ -12,6 +12,7 @@
 #include "io/input_error.h"
 #include "io/video_source.h"
 #include "player_test_support.h"
+#include "tests/support/test_paths.h"
 #include "xr/compositor.h"
 #include "xr/input_backend.h"
 #include "xr/video_layer.h"

@@ -11,6 +11,7 @@
 
 #include "app/cli/command_registry.h"
 #include "tests/app/command_test_util.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::app {
 namespace {

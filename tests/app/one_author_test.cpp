@@ -11,6 +11,7 @@
 #include "command_test_util.h"
 #include "export_test_util.h"
 #include "tests/lock_holder.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::app::testing {
 namespace {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "command_test_util.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::app {
 namespace {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "command_test_util.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::app {
 namespace {

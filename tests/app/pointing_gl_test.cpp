@@ -14,6 +14,7 @@
 
 #include "app/editor/editor.h"
 #include "editor_test_util.h"
+#include "tests/support/test_paths.h"
 #include "xr/compositor.h"
 #include "xr/eye_views.h"
 #include "xr/gl_context.h"

@@ -13,6 +13,7 @@
 #include "editor_scripts.h"
 #include "editor_test_util.h"
 #include "io/input_error.h"
+#include "tests/support/test_paths.h"
 #include "tests/test_files.h"
 #include "ui/colour_wheel.h"
 

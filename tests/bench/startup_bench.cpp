@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/test_paths.h"
+
 extern char** environ;
 
 namespace {

@@ -17,6 +17,7 @@
 #include "effects/glsl_common.h"
 #include "effects/grain_shaders.h"
 #include "effects/video_shaders.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::effects {
 namespace {

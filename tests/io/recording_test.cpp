@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "io/input_error.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::io {
 namespace {

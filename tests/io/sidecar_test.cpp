@@ -12,6 +12,7 @@
 
 #include "io/input_error.h"
 #include "io/sidecar_validate.h"
+#include "tests/support/test_paths.h"
 #include "tests/test_files.h"
 
 namespace vdfx::io {

@@ -14,6 +14,7 @@
 
 #include "tests/openxr/child_process.h"
 #include "tests/openxr_runtime/test_runtime_env.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::test_runtime {
 namespace {

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "tests/openxr/runtime_test_fixture.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::test_runtime {
 namespace {

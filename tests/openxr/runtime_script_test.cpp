@@ -13,6 +13,7 @@
 #include "tests/openxr_runtime/config.h"
 #include "tests/openxr_runtime/interaction_profiles.h"
 #include "tests/openxr_runtime/script.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::test_runtime {
 namespace {

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
+#include "tests/support/test_paths.h"
 #include "ui/canvas.h"
 
 namespace vdfx::ui::test {
@@ -30,10 +31,10 @@ void write_rgba_png(const std::string& path, const cv::Mat& straight_rgba) {
 }  // namespace
 
 std::string golden_dir() {
-  return VDFX_SOURCE_DIR "/tests/ui/golden";
+  return std::string(VDFX_SOURCE_DIR) + "/tests/ui/golden";
 }
 std::string output_dir() {
-  const std::string d = VDFX_TEST_OUTPUT_DIR "/ui";
+  const std::string d = std::string(VDFX_TEST_OUTPUT_DIR) + "/ui";
   std::filesystem::create_directories(d);
   return d;
 }

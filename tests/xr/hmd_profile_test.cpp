@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/input_error.h"
+#include "tests/support/test_paths.h"
 
 namespace vdfx::xr {
 namespace {

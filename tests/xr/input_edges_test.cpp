@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "io/recording.h"
+#include "tests/support/test_paths.h"
 #include "xr/input_backend.h"
 
 namespace vdfx::xr {

@@ -8,6 +8,7 @@
 #include "input_test_util.h"
 #include "io/recording.h"
 #include "recording_scripts.h"
+#include "tests/support/test_paths.h"
 #include "tests/test_files.h"
 #include "xr/input_backend.h"
 #include "xr/input_state_io.h"

@@ -11,6 +11,7 @@
 #include "hid_test_data.h"
 #include "input_test_util.h"
 #include "io/input_error.h"
+#include "tests/support/test_paths.h"
 #include "xr/input_backend.h"
 
 namespace vdfx::xr {

@@ -13,6 +13,8 @@
 #include <set>
 #include <sstream>
 
+#include "tests/support/test_paths.h"
+
 namespace vdfx::xr {
 namespace {
 
