@@ -30,12 +30,13 @@ cv::Mat media_frame(int i, int w, int h) {
   return m;
 }
 
-fs::path media_clip(const std::string& name, int w, int h, int frames) {
+fs::path media_clip(const std::string& name, int w, int h, int frames, int fps) {
   const fs::path p = fs::temp_directory_path() / name;
   if (fs::exists(p)) return p;
   io::EncoderSettings s;
   s.width = w;
   s.height = h;
+  s.frame_rate = {fps, 1};
   s.crf = 20;
   s.preset = "veryfast";
   // Written aside and renamed, so an interrupted run leaves no half clip under the final name.

@@ -23,8 +23,8 @@ namespace vdfx::app::bench {
 cv::Mat media_frame(int i, int w, int h);
 
 /// The clip of `frames` media_frame()s as w x h H.264 (libx264 veryfast, crf 20: B-frames and
-/// CABAC, as delivered files have), at temp/<name>; made on first use.
-std::filesystem::path media_clip(const std::string& name, int w, int h, int frames);
+/// CABAC, as delivered files have) at `fps`, at temp/<name>; made on first use.
+std::filesystem::path media_clip(const std::string& name, int w, int h, int frames, int fps = 30);
 
 /// The Y', Cb, Cr planes of one decoded frame (CV_8UC1, or CV_16UC1 above 8 bits), pointing
 /// into the decoder's buffer: valid only during the call that hands them over.

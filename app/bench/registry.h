@@ -64,6 +64,7 @@ void add_grain_knobs(Registry& r, bool quick);       // app/bench/grain_gl.cpp
 void add_decode_knobs(Registry& r, bool quick);      // app/bench/decode.cpp
 void add_export_knobs(Registry& r, bool quick);      // app/bench/export.cpp
 void add_openxr_knobs(Registry& r, bool quick);      // app/bench/openxr_gl.cpp
+void add_suggest_knobs(Registry& r, bool quick);     // app/bench/suggest.cpp
 
 /// Every knob with the settings of a quick or a full run, in report order.
 Registry build_registry(bool quick);

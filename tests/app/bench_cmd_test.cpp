@@ -235,6 +235,31 @@ TEST(BenchCommand, VideoRowsDecodeWhatFFmpegDecodesAndBakeWithinOneStep) {
   }
 }
 
+// The suggestion's knob (docs/suggest.md, "Measured"): each fit ends within its tolerance, a
+// tighter tolerance takes more keyframes.
+TEST(BenchCommand, SuggestRowsPlaceMoreKeyframesForATighterTolerance) {
+  const auto dir = test_dir();
+  const auto r =
+      run_vdfx("bench --quick --filter '^suggest\\.' --json " + (dir / "r.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(schema_problem(dir / "r.json"), "");
+  const auto j = nlohmann::json::parse(read_file(dir / "r.json"));
+  ASSERT_EQ(j["rows"].size(), 2u);
+  std::vector<double> keyframes, tolerance{0.5, 0.1};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& row = j["rows"][i];
+    SCOPED_TRACE(row.dump());
+    ASSERT_EQ(row["status"], "ok");
+    EXPECT_EQ(row["knob"], "suggest.exposure");
+    EXPECT_LE(row["error"]["max"].get<double>(), tolerance[i] + 1e-9);
+    EXPECT_EQ(row["extra"]["within_tolerance"].get<double>(), 1.0);
+    EXPECT_GT(row["peer"]["median_s"].get<double>(), 0.0);
+    keyframes.push_back(row["extra"]["keyframes"].get<double>());
+  }
+  EXPECT_GT(keyframes[0], 0.0);
+  EXPECT_GT(keyframes[1], keyframes[0]);
+}
+
 TEST(BenchCommand, UsageAndInputErrorsUseTheContractsExitCodes) {
   const auto dir = test_dir();
   EXPECT_EQ(run_vdfx("bench --filter '('").exit_code, 2);
