@@ -73,6 +73,7 @@ void Editor::update(const xr::InputState& input, std::int64_t t_ns) {
   if (status_.look_target && effects::angle_between_deg(*status_.look_target, view_) < 5.0)
     status_.look_target.reset();
   sync_pending();
+  poll_suggestion();
   visuals_.refresh(doc_, visualization_input());
   updating_ = false;
   show();
@@ -108,6 +109,10 @@ EditorView Editor::view() const {
   v.keyframe_count = doc_.keyframes(effect_).size();
   v.grabbing = grabbing();
   v.autosave = autosave_status();
+  if (const auto kind = suggestion_for(effect_)) v.suggest_title = suggestion_title(*kind);
+  v.suggest_available = options_.video.has_value();
+  v.suggest_strength = suggest_strength_;
+  v.suggest_progress = suggestion_progress();
   v.playing = play_.playing;
   v.frame = play_.frame;
   v.fps = doc_.video().fps;

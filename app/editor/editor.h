@@ -30,6 +30,7 @@
 #include "app/editor/editor_controls.h"
 #include "app/editor/editor_panels.h"
 #include "app/editor/editor_view.h"
+#include "app/editor/suggest_worker.h"
 #include "app/editor/visualization_cache.h"
 #include "effects/effect_types.h"
 #include "io/frame_time.h"
@@ -50,6 +51,10 @@ struct EditorOptions {
   //! line and the status say, in front ("READ-ONLY: ..."); autosave_path is then a copy that
   //! only a change creates. Empty: the sidecar is this session's.
   std::string read_only_note;
+  /// The video "Suggest" meters (docs/suggest.md, "In the editor"); none: no suggestions.
+  std::optional<std::filesystem::path> video;
+  /// Suggestions run on a worker; false: within the update that starts them (replays are exact).
+  bool async_suggestions = true;
 };
 
 class Editor {
@@ -166,6 +171,17 @@ class Editor {
   void set_selected_params(std::vector<double> params);
   bool undo();
   bool redo();
+  /// "Suggest" for the current effect (suggest_kind_for): proposes its keyframes from the video
+  /// at the strength set, off the frame thread; when done they are added as one undo step. While
+  /// a suggestion runs, the same action cancels it (the document stays as it was).
+  void suggest();
+  /// 0..1: how much of each suggestion to apply (the slider beside "Suggest").
+  void set_suggest_strength(double strength);
+  double suggest_strength() const { return suggest_strength_; }
+  /// The suggestion running: how far it is (0..1); nullopt when none runs.
+  std::optional<double> suggestion_progress() const;
+  /// Waits for the running suggestion and adds its keyframes (tests); false on timeout.
+  bool wait_for_suggestion(std::chrono::milliseconds timeout);
   /// Locks the timeline panel in the world, or back on its anchor.
   void lock_timeline(bool locked);
   /// Shows or hides the track plot / the minimap.
@@ -207,6 +223,9 @@ class Editor {
   std::optional<std::size_t> nearest_to_view() const;
   /// Keeps the pending edit's keyframe where the view, the playhead and the values put it.
   void sync_pending();
+  /// Takes a finished suggestion's keyframes into the document (one undo step) or says why not.
+  void poll_suggestion();
+  void apply_suggestion(EditTarget target, const std::string& label, const SuggestOutcome& outcome);
   /// After undo/redo: drops the selection when the keyframe count changed (indices renumbered).
   void keep_selection_if_stable(std::size_t count_before);
   void validate_selection();
@@ -255,7 +274,10 @@ class Editor {
   Thumbnails thumbnails_;
   Status status_;
   bool unaltered_ = false;
-  bool updating_ = false;  //!< inside update(): the panels are shown once, at its end
+  bool updating_ = false;
+  std::unique_ptr<SuggestWorker> suggesting_;                  //!< the suggestion running, if any
+  EditTarget suggest_target_ = effects::EffectType::Exposure;  //!< what it is for
+  double suggest_strength_ = 1.0;  //!< inside update(): the panels are shown once, at its end
 };
 
 }  // namespace vdfx::app

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
 
+#include "app/editor/suggest_worker.h"
+
 namespace vdfx::app {
 
 using effects::EffectType;
@@ -103,6 +105,9 @@ void EditorPanels::build_effect_panel(std::shared_ptr<const ui::FontSet> fonts, 
   std::vector<std::string> styles;
   for (const auto st : effects::kGrainStyles) styles.push_back(grain_style_title(st));
   grain_style_ = &p.add<MenuList>("grain_style", styles, 0, t.row_height, 2);
+  suggest_strength_ = &p.add<Slider1D>("suggest_strength", "Strength",
+                                       Axis{0.0, 100.0, 5.0, "%.0f", " %", ""}, 100.0, 0.0);
+  suggest_ = &p.add<Button>("suggest", "Suggest");
   effect_widgets_ = {blur_,     tint_,     exposure_,        saturation_,
                      contrast_, vignette_, flare_intensity_, grain_intensity_};
   const Rect row = col.next(t.row_height);
@@ -220,6 +225,8 @@ PanelControl EditorPanels::control_of(const ui::Widget* w, EditTarget target) co
       {show_tracks_, PanelControl::ShowTrackPlot},
       {show_minimap_, PanelControl::ShowMinimap},
       {lock_, PanelControl::LockTimeline},
+      {suggest_, PanelControl::Suggest},
+      {suggest_strength_, PanelControl::SuggestStrength},
   };
   for (const auto& [widget, control] : table)
     if (w == widget) return control;
@@ -246,9 +253,17 @@ void EditorPanels::show_effect(EditTarget target) {
   for (std::size_t i = 0; i < effect_widgets_.size(); ++i)
     effect_widgets_[i]->set_rect(static_cast<int>(i) == target.index() ? effect_widget_rect_
                                                                        : ui::Rect{});
-  for (ui::Widget* w : std::initializer_list<ui::Widget*>{grain_size_, flare_style_, set_light_,
-                                                          auto_light_, grain_style_})
+  for (ui::Widget* w :
+       std::initializer_list<ui::Widget*>{grain_size_, flare_style_, set_light_, auto_light_,
+                                          grain_style_, suggest_strength_, suggest_})
     w->set_rect({});
+  if (suggestion_for(target)) {  // the strength slider, "Suggest ..." beside its track
+    const ui::Rect& o = options_rect_;
+    const double slider_w = std::round(0.45 * o.w), h = 130.0;
+    suggest_strength_->set_rect({o.x, o.y, slider_w, h});
+    suggest_->set_rect(
+        {o.x + slider_w + t.gap, o.y + h - t.row_height, o.w - slider_w - t.gap, t.row_height});
+  }
   if (target.is_grain()) {
     grain_intensity_->set_rect(ui::split_rows(effect_widget_rect_, 2, 0, t.gap));
     grain_size_->set_rect(ui::split_rows(effect_widget_rect_, 2, 1, t.gap));

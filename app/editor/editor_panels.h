@@ -112,6 +112,8 @@ enum class PanelControl {
   ShowTrackPlot,
   ShowMinimap,
   LockTimeline,
+  Suggest,          //!< "Suggest ..." (or, while one runs, its cancel)
+  SuggestStrength,  //!< the strength beside it
 };
 
 class EditorPanels {
@@ -163,6 +165,8 @@ class EditorPanels {
   }
   const ui::Button& undo_button() const { return *undo_; }
   const ui::Button& deselect_button() const { return *deselect_; }
+  const ui::Button& suggest_button() const { return *suggest_; }
+  const ui::Slider1D& suggest_strength() const { return *suggest_strength_; }
   const ui::TimelineStrip& strip() const { return *strip_; }
   const ui::Plot& plot() const { return *plot_; }
   const ui::Minimap& minimap() const { return *minimap_; }
@@ -215,6 +219,9 @@ class EditorPanels {
   ui::Button* deselect_ = nullptr;  //!< leaves the selected keyframe (right thumbstick click too)
   ui::Slider1D* exponent_ = nullptr;
   ui::Slider1D* time_scale_ = nullptr;  //!< degrees of view one second of video weighs like
+  ui::Slider1D* suggest_strength_ =
+      nullptr;                     //!< 0..1, beside "Suggest" (app/editor/suggest_worker.h)
+  ui::Button* suggest_ = nullptr;  //!< "Suggest exposure" / guidance / comfort; cancel
   ui::Label* status_ = nullptr;
 
   // timeline panel

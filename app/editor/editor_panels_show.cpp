@@ -67,6 +67,10 @@ void EditorPanels::show_effect_panel(const EditorView& v) {
   delete_nearest_->set_label(v.selected ? "Delete selected" : "Delete nearest");
   deselect_->set_enabled(v.selected.has_value());
   status_->set_text(v.autosave);
+  if (!suggest_strength_->pressed()) suggest_strength_->set_value(100.0 * v.suggest_strength);
+  suggest_->set_label(v.suggest_progress ? fmt("Cancel (%.0f %%)", 100.0 * *v.suggest_progress)
+                                         : v.suggest_title);
+  suggest_->set_enabled(v.suggest_available);
 }
 
 void EditorPanels::show_timeline(const EditorView& v) {

@@ -31,6 +31,7 @@ std::string Editor::status_text() const {
   s += " | frame " + std::to_string(play_.frame) + "/" + std::to_string(doc_.video().frames);
   s += " | " + std::to_string(doc_.keyframes(effect_).size()) + " keyframes";
   if (play_.playing) s += " | playing";
+  if (const auto p = suggestion_progress()) s += fmt(" | suggesting %.0f %%", 100.0 * *p);
   if (previewing()) s += " | PREVIEW: release to place";
   if (const auto k = selected_preview()) {
     const std::string where = fmt("az %.0f", k->direction.azimuth_deg) +
@@ -69,6 +70,9 @@ std::string Editor::hud_text() const {
 }
 std::string Editor::hud_message() const {
   if (!status_.message.empty()) return status_.message;
+  if (const auto p = suggestion_progress())
+    return suggestion_title(suggesting_->request().kind) +
+           fmt(": %.0f %% done (press it again to cancel)", 100.0 * *p);
   // Until a save succeeds again, or a file changed under the editor: where the work is.
   if (autosave_ && (autosave_->failing() || autosave_->diverted_to())) return autosave_->status();
   if (!options_.read_only_note.empty()) return "READ-ONLY: " + options_.read_only_note;

@@ -33,6 +33,12 @@ struct EditorView {
   std::size_t keyframe_count = 0;       //!< the effect's keyframes
   bool grabbing = false;                //!< the selected keyframe is held
   std::string autosave;                 //!< the autosave line ("" without autosave)
+  /// "Suggest" for the effect ("" when it has none: no button), its strength, and how far a
+  /// running suggestion is (nullopt: none runs; the button then cancels it).
+  std::string suggest_title;
+  bool suggest_available = false;  //!< a video to suggest from
+  double suggest_strength = 1.0;
+  std::optional<double> suggest_progress;
   // ---- the timeline
   bool playing = false;
   std::int64_t frame = 0;

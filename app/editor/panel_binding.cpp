@@ -26,6 +26,7 @@ void clicked(Editor& ed, PanelControl control) {
   switch (control) {
     case PanelControl::SetLight: ed.set_light_here(); break;
     case PanelControl::Undo: ed.undo(); break;
+    case PanelControl::Suggest: ed.suggest(); break;
     case PanelControl::Redo: ed.redo(); break;
     case PanelControl::Delete: ed.delete_nearest(); break;
     case PanelControl::Deselect: ed.deselect(); break;
@@ -56,6 +57,7 @@ void changed(Editor& ed, PanelControl control, glm::dvec2 v) {
     case PanelControl::ShowTrackPlot: ed.show_track_plot(on); break;
     case PanelControl::ShowMinimap: ed.show_minimap(on); break;
     case PanelControl::LockTimeline: ed.lock_timeline(on); break;
+    case PanelControl::SuggestStrength: ed.set_suggest_strength(v.x / 100.0); break;
     default: break;
   }
 }

@@ -172,7 +172,10 @@ ReplayResult run_replay(const ReplayOptions& o) {
           ? io::read_sidecar(*o.sidecar_in)
           : io::new_sidecar({o.video.string(), props.fps.value(),
                              std::max<std::int64_t>(1, props.frames), props.width, props.height});
-  Editor editor(sidecar, DocumentOptions{{.async = false}}, editor_options_for(rec.header));
+  EditorOptions eo = editor_options_for(rec.header);
+  eo.video = o.video;
+  eo.async_suggestions = false;  // a suggestion lands in the update that asked for it
+  Editor editor(sidecar, DocumentOptions{{.async = false}}, eo);
 
   auto backend = xr::create_replay_backend(std::move(rec), {});
   const auto timeline = backend->timeline();

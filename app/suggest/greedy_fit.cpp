@@ -120,6 +120,7 @@ FitResult fit_greedy(const TargetField& field, const FitOptions& options,
       result.added.push_back(std::move(k));
     }
     e = measure(field, *set.solution(), units);
+    if (options.on_step) options.on_step(result.added.size());
   }
   result.max_error = e.max_error;
   result.rms_error = std::sqrt(e.sum_squares / static_cast<double>(n * field.dimension));

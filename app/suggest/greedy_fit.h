@@ -48,6 +48,9 @@ struct FitOptions {
   double fps = 30.0;
   std::vector<double> neutral;  //!< the effect's neutral values (what no keyframes evaluate to)
   StampFn stamp;                //!< none: one keyframe at the picked sample
+  /// Called after each step with the keyframes added so far (progress; it may throw to stop the
+  /// fit, which then leaves nothing behind).
+  std::function<void(std::size_t added)> on_step;
 };
 
 struct FitResult {

@@ -32,9 +32,16 @@ namespace {
 
 struct Clip {
   std::unique_ptr<io::FrameDecoder> decoder;
-  io::Sidecar sidecar;
   std::vector<std::int64_t> frames;
   std::int64_t every = 1;  //!< frames between sampled frames
+  Progress* progress = nullptr;
+
+  /// Says how far the suggestion is, and stops it (Cancelled) when asked to.
+  void tick(double fraction) const {
+    if (!progress) return;
+    if (progress->cancel.load()) throw Cancelled();
+    progress->fraction.store(std::clamp(fraction, 0.0, 1.0));
+  }
 };
 
 void check_request(const SuggestRequest& r) {
@@ -49,20 +56,16 @@ void check_request(const SuggestRequest& r) {
     throw UsageError("suggest guide needs at least one --poi AZ,ALT[,FROM-TO]");
 }
 
-Clip open_clip(const SuggestRequest& r) {
-  std::vector<io::NamedInput> inputs = {{"VIDEO", r.video}};
-  if (r.sidecar_in) inputs.push_back({"--sidecar-in", *r.sidecar_in});
-  io::check_output_is_not_input("--sidecar-out", r.sidecar_out, inputs);
-  io::resolve_output_path(r.sidecar_out);
+Clip open_clip(const SuggestRequest& r, Progress* progress) {
   Clip clip;
+  clip.progress = progress;
   io::DecoderOptions decoder_options;
   decoder_options.format = io::PixelFormat::RgbF32;
+  // The sampled frames come in order, a second or so apart: decoding on to the next one beats
+  // seeking back to its key frame (long-GOP files have one every few seconds).
+  decoder_options.max_forward_grab = 120;
   clip.decoder = io::open_frame_decoder(r.video, decoder_options);
   const auto& p = clip.decoder->properties();
-  clip.sidecar = r.sidecar_in
-                     ? io::read_sidecar(*r.sidecar_in)
-                     : io::new_sidecar({r.video.string(), p.fps.value(),
-                                        std::max<std::int64_t>(1, p.frames), p.width, p.height});
   const double per_second = r.kind == Kind::Comfort ? 6.0 : 1.0;
   const std::int64_t every =
       r.every > 0 ? r.every : std::max<std::int64_t>(1, std::llround(p.fps.value() / per_second));
@@ -96,6 +99,7 @@ TargetField exposure_field(const SuggestRequest& r, Clip& clip, SuggestReport& r
                            " could not be decoded");
     grids.push_back(make_luma_grid(rgb, transfer, geometry, r.metering, f));
     brightest = std::max(brightest, grids.back().max_luma);
+    clip.tick(0.5 * static_cast<double>(grids.size()) / static_cast<double>(clip.frames.size()));
   }
   if (brightest <= r.metering.floor)
     throw io::InputError(r.video.string() + ": cannot be metered: every sampled frame (" +
@@ -145,6 +149,7 @@ std::vector<double> camera_speeds(const SuggestRequest& r, Clip& clip) {
       speed[static_cast<std::size_t>(f)] =
           estimate_rotation(previous, grey, r.motion).angle_deg * p.fps.value();
     previous = std::move(grey);
+    clip.tick(0.5 * static_cast<double>(f + 1) / static_cast<double>(p.frames));
   }
   speed[0] = speed[1];
   return speed;
@@ -242,7 +247,7 @@ Stamp segment_stamp(const TargetField& field, std::size_t s,
 constexpr double kStepDeg = 180.0;
 
 void fit_into(io::Sidecar& sidecar, EffectType type, const TargetField& field,
-              const SuggestRequest& r, SuggestReport& report, StampFn stamp = {},
+              const SuggestRequest& r, const Clip& clip, SuggestReport& report, StampFn stamp = {},
               std::int64_t step_frames = 0) {
   effects::EffectTrack& track = track_of(sidecar, type, r.merge, r);
   if (step_frames > 0 && track.keyframes.empty() && !track.interpolation) {
@@ -260,28 +265,27 @@ void fit_into(io::Sidecar& sidecar, EffectType type, const TargetField& field,
   o.fps = sidecar.video.fps;
   o.neutral = effects::effect_spec(type).neutral();
   o.stamp = std::move(stamp);
+  o.on_step = [&](std::size_t added) {
+    clip.tick(0.5 + 0.5 * static_cast<double>(added) / static_cast<double>(o.max_keyframes));
+  };
   SuggestedEffect s{type, o.tolerance, fit_greedy(field, o, track.keyframes)};
   track.keyframes.insert(track.keyframes.end(), s.fit.added.begin(), s.fit.added.end());
   report.effects.push_back(std::move(s));
 }
 
-}  // namespace
-
-SuggestReport run_suggest(const SuggestRequest& r) {
-  const auto start = std::chrono::steady_clock::now();
-  check_request(r);
-  Clip clip = open_clip(r);
+/// One suggestion on `sidecar` (changed in place) from an opened clip.
+SuggestReport suggest_clip(const SuggestRequest& r, Clip& clip, io::Sidecar& sidecar) {
   SuggestReport report;
   report.frames = clip.frames;
   if (r.kind == Kind::Exposure) {
     const TargetField field = exposure_field(r, clip, report);
     report.samples = field.size();
-    fit_into(clip.sidecar, EffectType::Exposure, field, r, report);
+    fit_into(sidecar, EffectType::Exposure, field, r, clip, report);
   } else if (r.kind == Kind::Comfort) {
     const TargetField field = comfort_field(r, clip, report);
     report.samples = field.size();
     fit_into(
-        clip.sidecar, EffectType::Vignette, field, r, report,
+        sidecar, EffectType::Vignette, field, r, clip, report,
         [&field](std::size_t s) { return frame_stamp(field, s); }, clip.every);
   } else {
     std::vector<EffectType> types;
@@ -290,19 +294,58 @@ SuggestReport run_suggest(const SuggestRequest& r) {
     for (const EffectType type : types) {
       const TargetField field = guide_field(r, clip, type);
       report.samples = field.size();
-      const std::int64_t frames = clip.sidecar.video.frames;
+      const std::int64_t frames = sidecar.video.frames;
       const bool moves = clip.frames.size() > 1 &&
                          std::any_of(r.points.begin(), r.points.end(), [](const auto& p) {
                            return p.first_frame > 0 || p.last_frame.has_value();
                          });
       fit_into(
-          clip.sidecar, type, field, r, report,
+          sidecar, type, field, r, clip, report,
           [&](std::size_t s) { return segment_stamp(field, s, r.points, frames, clip.frames); },
           moves ? clip.every : 0);
     }
   }
-  io::write_sidecar(r.sidecar_out, clip.sidecar);
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  clip.tick(1.0);
+  return report;
+}
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+SuggestReport suggest_into(const SuggestRequest& request, io::Sidecar& sidecar,
+                           Progress* progress) {
+  const auto start = Clock::now();
+  SuggestRequest r = request;
+  r.merge = true;
+  check_request(r);
+  Clip clip = open_clip(r, progress);
+  io::Sidecar work = sidecar;  // the caller's is changed only once the whole suggestion is in
+  SuggestReport report = suggest_clip(r, clip, work);
+  sidecar = std::move(work);
+  report.seconds = seconds_since(start);
+  return report;
+}
+
+SuggestReport run_suggest(const SuggestRequest& r) {
+  const auto start = Clock::now();
+  check_request(r);
+  std::vector<io::NamedInput> inputs = {{"VIDEO", r.video}};
+  if (r.sidecar_in) inputs.push_back({"--sidecar-in", *r.sidecar_in});
+  io::check_output_is_not_input("--sidecar-out", r.sidecar_out, inputs);
+  io::resolve_output_path(r.sidecar_out);
+  Clip clip = open_clip(r, nullptr);
+  const auto& p = clip.decoder->properties();
+  io::Sidecar sidecar =
+      r.sidecar_in ? io::read_sidecar(*r.sidecar_in)
+                   : io::new_sidecar({r.video.string(), p.fps.value(),
+                                      std::max<std::int64_t>(1, p.frames), p.width, p.height});
+  SuggestReport report = suggest_clip(r, clip, sidecar);
+  io::write_sidecar(r.sidecar_out, sidecar);
+  report.seconds = seconds_since(start);
   return report;
 }
 

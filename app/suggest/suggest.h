@@ -4,8 +4,10 @@
 /// SuggestRequest and calls run_suggest; tests call it directly.
 #pragma once
 
+#include <atomic>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,7 @@
 #include "app/suggest/metering.h"
 #include "app/suggest/motion.h"
 #include "effects/effect_types.h"
+#include "io/sidecar.h"
 
 namespace vdfx::app::suggest {
 
@@ -57,6 +60,24 @@ struct SuggestReport {
   std::vector<double> speed_deg_per_s;  //!< comfort: the camera's angular speed at every frame
   double seconds = 0.0;                 //!< wall time of the whole suggestion
 };
+
+/// A suggestion running on another thread (the editor's, app/editor/suggest_worker.h): how far it
+/// is, and a request to stop.
+struct Progress {
+  std::atomic<double> fraction{0.0};  //!< 0..1: frames decoded, then keyframes placed
+  std::atomic<bool> cancel{false};    //!< set by the caller; the suggestion then throws Cancelled
+};
+
+/// Thrown by suggest_into when Progress::cancel was set: nothing was changed.
+struct Cancelled : std::runtime_error {
+  Cancelled() : std::runtime_error("the suggestion was cancelled") {}
+};
+
+/// Runs one suggestion on `sidecar` in memory (its keyframes of the effect are added to, as with
+/// request.merge; request.sidecar_in/out are not used). Reports progress and stops when asked
+/// (Cancelled); on any exception `sidecar` is left as it was.
+SuggestReport suggest_into(const SuggestRequest& request, io::Sidecar& sidecar,
+                           Progress* progress = nullptr);
 
 /// Runs one suggestion and writes the sidecar (atomically, never onto an input). Throws
 /// io::InputError for input that cannot be used (unreadable video, a video that cannot be

@@ -152,6 +152,8 @@ EditorOptions editor_options(const LoopCli& loop, const LoopSetup& setup, const 
                    setup.options.desktop_hfov_deg};
   if (!d.demo) eo.autosave_path = d.access->save_to, eo.read_only_note = d.access->read_only_note;
   eo.visuals.async = !is_replay(loop);
+  eo.video = d.video;
+  eo.async_suggestions = !is_replay(loop);
   return eo;
 }
 

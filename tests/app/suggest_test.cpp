@@ -12,7 +12,9 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "app/editor/editor.h"
 #include "effects/rbf_interpolator.h"
+#include "io/frame_decoder.h"
 #include "io/sidecar.h"
 #include "tests/app/command_test_util.h"
 
@@ -349,6 +351,132 @@ TEST(SuggestComfort, AStillHasNoMotionToMeasure) {
                                    " --sidecar-out " + (dir / "c.vdfx.json").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("cannot estimate the camera's motion"), std::string::npos) << r.output;
+}
+
+// ---- the editor's "Suggest" (docs/suggest.md, "In the editor")
+
+/// An editor on `video` with a new sidecar, suggestions on a worker.
+std::unique_ptr<Editor> editor_on(const std::filesystem::path& video, bool async = true) {
+  auto decoder = io::open_frame_decoder(video, {});
+  const auto& p = decoder->properties();
+  EditorOptions eo;
+  eo.video = video;
+  eo.async_suggestions = async;
+  eo.visuals.async = false;
+  return std::make_unique<Editor>(
+      io::new_sidecar(
+          {video.string(), p.fps.value(), std::max<std::int64_t>(1, p.frames), p.width, p.height}),
+      DocumentOptions{{.async = false}}, eo);
+}
+
+TEST(EditorSuggest, ExposureAddsTheCommandsKeyframesAsOneUndoStep) {
+  const auto dir = test_dir();
+  const auto pano = write_window_panorama(dir);
+  auto ed = editor_on(pano);
+  ed->select_effect(effects::EffectType::Exposure);
+  EXPECT_EQ(ed->ui().suggest_button().label(), "Suggest exposure");
+  ed->suggest();
+  ASSERT_TRUE(ed->wait_for_suggestion(std::chrono::seconds(120)));
+  EXPECT_FALSE(ed->suggestion_progress().has_value());
+  const auto& added = ed->document().keyframes(effects::EffectType::Exposure);
+  ASSERT_GT(added.size(), 1u);
+
+  // The same keyframes as the command's on the same video.
+  SuggestRequest r;
+  r.video = pano;
+  r.sidecar_out = dir / "cmd.vdfx.json";
+  run_suggest(r);
+  const Suggested cmd = read_suggestion(r.sidecar_out);
+  ASSERT_EQ(cmd.sidecar.effects.at(0).keyframes.size(), added.size());
+  for (std::size_t i = 0; i < added.size(); ++i) {
+    EXPECT_NEAR(added[i].direction.azimuth_deg,
+                cmd.sidecar.effects[0].keyframes[i].direction.azimuth_deg, 1e-9);
+    EXPECT_NEAR(added[i].params[0], cmd.sidecar.effects[0].keyframes[i].params[0], 1e-9);
+  }
+  const auto f = ed->interpolant(effects::EffectType::Exposure);
+  EXPECT_LT(f->evaluate(effects::Direction{kWindowAz, kWindowAlt}, 0)[0], -0.5);
+  EXPECT_GT(f->evaluate(effects::Direction{kWindowAz + 180, -kWindowAlt}, 0)[0], 0.1);
+
+  // One undo step removes them all; redo brings them back.
+  EXPECT_TRUE(ed->undo());
+  EXPECT_TRUE(ed->document().keyframes(effects::EffectType::Exposure).empty());
+  EXPECT_FALSE(ed->document().undo_stack().can_undo());
+  EXPECT_TRUE(ed->redo());
+  EXPECT_EQ(ed->document().keyframes(effects::EffectType::Exposure).size(),
+            cmd.sidecar.effects[0].keyframes.size());
+}
+
+TEST(EditorSuggest, TheStrengthSliderScalesItAndEffectsWithoutOneSaySo) {
+  const auto dir = test_dir();
+  auto ed = editor_on(write_window_panorama(dir), /*async=*/false);
+  ed->select_effect(effects::EffectType::Exposure);
+  ed->set_suggest_strength(0.0);
+  ed->suggest();
+  EXPECT_TRUE(ed->document().keyframes(effects::EffectType::Exposure).empty());
+  EXPECT_NE(ed->hud_message().find("adds nothing"), std::string::npos) << ed->hud_message();
+
+  ed->set_suggest_strength(0.5);
+  ed->suggest();
+  const auto half = ed->interpolant(effects::EffectType::Exposure);
+  ASSERT_TRUE(half);
+  ed->undo();
+  ed->set_suggest_strength(1.0);
+  ed->suggest();
+  const auto full = ed->interpolant(effects::EffectType::Exposure);
+  const double at_half = half->evaluate(effects::Direction{kWindowAz, kWindowAlt}, 0)[0];
+  const double at_full = full->evaluate(effects::Direction{kWindowAz, kWindowAlt}, 0)[0];
+  EXPECT_NEAR(at_half, 0.5 * at_full, kExposureToleranceStops * 1.5);
+  EXPECT_LT(at_full, -0.5);
+
+  // Blur has no suggestion: no button on the panel, a message, nothing changed.
+  ed->select_effect(effects::EffectType::Blur);
+  ed->update(xr::neutral_input_state(0), 1);
+  EXPECT_EQ(ed->ui().suggest_button().rect().w, 0.0);
+  ed->suggest();
+  EXPECT_FALSE(ed->suggestion_progress().has_value());
+  EXPECT_NE(ed->hud_message().find("has no suggestion"), std::string::npos) << ed->hud_message();
+  // Saturation guides toward the view centre (the view is (0, 0) here).
+  ed->select_effect(effects::EffectType::Saturation);
+  ed->suggest();
+  const auto sat = ed->interpolant(effects::EffectType::Saturation);
+  ASSERT_TRUE(sat);
+  EXPECT_GT(sat->evaluate(effects::Direction{0, 0}, 0)[0],
+            sat->evaluate(effects::Direction{180, 0}, 0)[0] + 0.3);
+}
+
+TEST(EditorSuggest, CancellingLeavesTheDocumentAsItWas) {
+  // The library: a suggestion asked to stop throws at its first step and changes nothing.
+  const auto dir = test_dir();
+  const auto pano = write_window_panorama(dir);
+  io::Sidecar sidecar = io::new_sidecar({pano.string(), 30.0, 1, 512, 256});
+  const std::string before = io::format_sidecar(sidecar);
+  Progress progress;
+  progress.cancel = true;
+  SuggestRequest r;
+  r.video = pano;
+  EXPECT_THROW(suggest_into(r, sidecar, &progress), Cancelled);
+  EXPECT_EQ(io::format_sidecar(sidecar), before);
+
+  // The editor: a comfort suggestion over a 4 s clip, cancelled right after it started.
+  const auto clip = dir / "turning.avi";
+  const cv::Mat pano_img = textured_panorama();
+  cv::VideoWriter w(clip.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 30,
+                    pano_img.size());
+  for (int f = 0; f < 120; ++f) w << rotated(pano_img, turn(2.0 * f, 0.0));
+  w.release();
+  auto ed = editor_on(clip);
+  ed->select_effect(effects::EffectType::Vignette);
+  ed->suggest();
+  ASSERT_TRUE(ed->suggestion_progress().has_value());
+  ed->update(xr::neutral_input_state(0), 1);
+  EXPECT_EQ(ed->ui().suggest_button().label().rfind("Cancel", 0), 0u)
+      << ed->ui().suggest_button().label();
+  ed->suggest();  // pressed again: cancel
+  ASSERT_TRUE(ed->wait_for_suggestion(std::chrono::seconds(120)));
+  EXPECT_TRUE(ed->document().keyframes(effects::EffectType::Vignette).empty());
+  EXPECT_FALSE(ed->document().undo_stack().can_undo());
+  EXPECT_NE(ed->hud_message().find("cancelled, nothing changed"), std::string::npos)
+      << ed->hud_message();
 }
 
 TEST(SuggestCommand, ReportsAndWritesAValidSidecar) {
