@@ -117,11 +117,16 @@ void Slider1D::draw(DrawContext& ctx) const {
   double vw = ctx.canvas.text_width(*ctx.fonts.regular, t.font_body, value_text);
   ctx.canvas.text(*ctx.fonts.regular, t.font_body, value_text, header, Align::Right, t.text);
   if (hovered() || focused()) {
-    // The step an arrow key or a stick push moves, beside the value while it is in reach.
+    // The step an arrow key or a stick push moves, beside the value while it is in reach, where
+    // the label still fits beside both (a narrow slider keeps its label whole instead).
     const std::string step = axis_.step_text();
-    const Rect left_of_value{header.x, header.y, header.w - vw - t.gap, header.h};
-    vw += t.gap + ctx.canvas.text(*ctx.fonts.regular, t.font_small, step, left_of_value,
-                                  Align::Right, t.text_muted);
+    const double label_w = ctx.canvas.text_width(*ctx.fonts.regular, t.font_body, label_);
+    const double step_w = ctx.canvas.text_width(*ctx.fonts.regular, t.font_small, step);
+    if (label_w + step_w + 2 * t.gap + vw <= header.w) {
+      const Rect left_of_value{header.x, header.y, header.w - vw - t.gap, header.h};
+      vw += t.gap + ctx.canvas.text(*ctx.fonts.regular, t.font_small, step, left_of_value,
+                                    Align::Right, t.text_muted);
+    }
   }
   ctx.canvas.text(*ctx.fonts.regular, t.font_body, label_,
                   {header.x, header.y, header.w - vw - t.gap, header.h}, Align::Left, t.text);
