@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "effects/coords.h"
+#include "effects/stereo_layout.h"
 
 namespace vdfx::effects {
 
@@ -20,10 +21,24 @@ Eigen::Vector2d direction_to_uv(const Eigen::Vector3d& dir) {
   return {0.5 + az / (2.0 * kPi), 0.5 - alt / kPi};
 }
 
+cv::Mat eye_image(const cv::Mat& frame, const StereoLayout& layout, EyeIndex eye) {
+  const PixelRect r = eye_rect(layout, eye, frame.cols, frame.rows);
+  return frame(cv::Rect(r.x, r.y, r.width, r.height));
+}
+
+SamplerOptions sampler_options_for(const StereoLayout& layout, SamplerOptions base) {
+  base.coverage_deg = layout.coverage_deg;
+  return base;
+}
+
 EquirectSampler::EquirectSampler(const cv::Mat& equirect, SamplerOptions options)
     : options_(options), width_(equirect.cols), height_(equirect.rows) {
   if (equirect.empty() || equirect.type() != CV_32FC3)
     throw std::invalid_argument("EquirectSampler: need a non-empty CV_32FC3 RGB image");
+  if (options_.coverage_deg != 360 && options_.coverage_deg != 180)
+    throw std::invalid_argument("EquirectSampler: coverage must be 360 or 180");
+  // A half sphere has no continuation across the pole inside the image.
+  if (options_.coverage_deg != 360) options_.pole_rows = PoleRows::Clamp;
   levels_.push_back({equirect});
   if (options_.filter != SampleFilter::AreaAware) return;
   while ((width_ >> (max_lx_ + 1)) >= 1) ++max_lx_;
@@ -58,9 +73,15 @@ Eigen::Vector3d EquirectSampler::row_lerp(const cv::Mat& img, int row, double x)
   const double fl = std::floor(x);
   const double t = x - fl;
   // Wrap in double before converting: x may be far outside [0, w) after the pole shift.
-  int c0 = static_cast<int>(fl - w * std::floor(fl / w));
-  if (c0 >= w) c0 -= w;
-  const int c1 = c0 + 1 == w ? 0 : c0 + 1;
+  int c0 = 0, c1 = 0;
+  if (options_.coverage_deg != 360) {  // VR180: clamp to the edge columns, never wrap
+    c0 = static_cast<int>(std::clamp(fl, 0.0, static_cast<double>(w - 1)));
+    c1 = static_cast<int>(std::clamp(fl + 1.0, 0.0, static_cast<double>(w - 1)));
+  } else {
+    c0 = static_cast<int>(fl - w * std::floor(fl / w));
+    if (c0 >= w) c0 -= w;
+    c1 = c0 + 1 == w ? 0 : c0 + 1;
+  }
   const auto* p = img.ptr<cv::Vec3f>(row);
   Eigen::Vector3d out;
   for (int k = 0; k < 3; ++k) out[k] = (1.0 - t) * p[c0][k] + t * p[c1][k];
@@ -86,15 +107,28 @@ Eigen::Vector3d EquirectSampler::sample_uv(double u, double v, int level_x, int 
   return (1.0 - t) * fetch_row(r0) + t * fetch_row(r0 + 1);
 }
 
+double EquirectSampler::image_u(double u) const {
+  return 0.5 + (u - 0.5) * (360.0 / options_.coverage_deg);
+}
+
+double EquirectSampler::weight(double u) const {
+  return coverage_weight({StereoMode::Mono, options_.coverage_deg}, (u - 0.5) * 360.0);
+}
+
 Eigen::Vector3d EquirectSampler::sample(const Eigen::Vector3d& dir) const {
   const Eigen::Vector2d uv = direction_to_uv(dir);
-  return sample_uv(uv.x(), uv.y());
+  const double w = weight(uv.x());
+  if (w <= 0.0) return Eigen::Vector3d::Zero();
+  return w * sample_uv(image_u(uv.x()), uv.y());
 }
 
 Eigen::Vector3d EquirectSampler::sample(const Eigen::Vector3d& dir,
                                         const Footprint& footprint) const {
-  const Eigen::Vector2d uv = direction_to_uv(dir);
-  if (options_.filter != SampleFilter::AreaAware) return sample_uv(uv.x(), uv.y());
+  const Eigen::Vector2d duv = direction_to_uv(dir);
+  const double w = weight(duv.x());
+  if (w <= 0.0) return Eigen::Vector3d::Zero();
+  const Eigen::Vector2d uv(image_u(duv.x()), duv.y());
+  if (options_.filter != SampleFilter::AreaAware) return w * sample_uv(uv.x(), uv.y());
   // Level l averages 2^l texels, so a footprint of n texels wants level log2(n).
   const auto lod = [](double texels, int max_level) {
     return std::clamp(std::log2(std::max(texels, 1.0)), 0.0, static_cast<double>(max_level));
@@ -107,10 +141,10 @@ Eigen::Vector3d EquirectSampler::sample(const Eigen::Vector3d& dir,
   const auto at = [&](int lx, int ly) { return sample_uv(uv.x(), uv.y(), lx, ly); };
   Eigen::Vector3d lo = at(lx0, ly0);
   if (tx > 0.0) lo = (1.0 - tx) * lo + tx * at(lx1, ly0);
-  if (ty == 0.0) return lo;
+  if (ty == 0.0) return w * lo;
   Eigen::Vector3d hi = at(lx0, ly1);
   if (tx > 0.0) hi = (1.0 - tx) * hi + tx * at(lx1, ly1);
-  return (1.0 - ty) * lo + ty * hi;
+  return w * ((1.0 - ty) * lo + ty * hi);
 }
 
 Footprint EquirectSampler::footprint(const Eigen::Vector3d& dir, const Eigen::Vector3d& dir_dx,
@@ -122,7 +156,9 @@ Footprint EquirectSampler::footprint(const Eigen::Vector3d& dir, const Eigen::Ve
     return d;
   };
   const Eigen::Vector2d a = delta(dir_dx), b = delta(dir_dy);
-  return {std::max(std::abs(a.x()), std::abs(b.x())) * width_,
+  // A 180 image has its width over half the turn: twice the texels per degree.
+  const double per_turn = width_ * (360.0 / options_.coverage_deg);
+  return {std::max(std::abs(a.x()), std::abs(b.x())) * per_turn,
           std::max(std::abs(a.y()), std::abs(b.y())) * height_};
 }
 

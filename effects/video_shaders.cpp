@@ -18,6 +18,9 @@ uniform vec2 u_chroma_scale, u_chroma_offset;  // luma (u, v) -> chroma (u, v), 
 uniform float u_code_scale;  // normalised texel -> code value (255 or 65535)
 uniform mat3 u_m;            // code values -> R'G'B' (io/ycbcr.h)
 uniform vec3 u_offset;
+// Degrees of azimuth the image spans (360, or 180 for VR180) and the fade inside a VR180 edge.
+uniform float u_coverage;
+uniform float u_edge;
 
 // (du, dv) for a change e of the (unnormalised) ray d; see video_layer.h for the formulas.
 vec2 uv_differential(vec3 d, vec3 e) {
@@ -49,11 +52,23 @@ vec3 sample_video(vec2 uv, vec2 gx, vec2 gy, bool base) {
 void main() {
   vec3 d = u_rot * pinhole_ray();
   vec2 uv = equirect_uv(d);
+  // VR180: the image's u spans azimuth -90..90 (twice the texels per degree); black outside,
+  // fading over u_edge degrees inside the edge (effects/stereo_layout.h, coverage_weight).
+  float scale = 360.0 / u_coverage;
+  float weight = 1.0;
+  if (u_coverage < 360.0) {
+    float az = (uv.x - 0.5) * 360.0;
+    weight = clamp((0.5 * u_coverage - abs(az)) / u_edge, 0.0, 1.0);
+    uv.x = 0.5 + (uv.x - 0.5) * scale;
+  }
   vec3 c;
   if (u_lod_mode == 0) {
     vec3 ex = u_rot[0] * ((u_tan.y - u_tan.x) / u_size.x);
     vec3 ey = u_rot[1] * ((u_tan.w - u_tan.z) / u_size.y);
-    c = sample_video(uv, uv_differential(d, ex), uv_differential(d, ey), false);
+    vec2 gx = uv_differential(d, ex), gy = uv_differential(d, ey);
+    gx.x *= scale;
+    gy.x *= scale;
+    c = sample_video(uv, gx, gy, false);
   } else if (u_lod_mode == 1) {
     vec2 gx = dFdx(uv), gy = dFdy(uv);
     float u2 = fract(uv.x + 0.5);  // jumps at azimuth 0 instead of at the seam
@@ -64,7 +79,7 @@ void main() {
   } else {
     c = sample_video(uv, vec2(0.0), vec2(0.0), true);
   }
-  frag = vec4(c, 1.0);
+  frag = vec4(c * weight, 1.0);
 }
 )";
 

@@ -14,6 +14,7 @@
 #include "io/frame_time.h"
 #include "io/picture.h"
 #include "io/tone_map.h"
+#include "io/video_layout.h"
 
 namespace vdfx::io {
 
@@ -37,6 +38,8 @@ struct VideoProperties {
   /// The stream's transfer characteristic as FFmpeg names it ("bt709", "smpte2084",
   /// "arib-std-b67", "iec61966-2-1", ...); empty when the stream does not say (stills: "").
   std::string transfer;
+  /// The stream's stereo and spherical tags (io/video_layout.h); stills: none.
+  StereoTags stereo_tags;
 };
 
 enum class DecodeStatus {

@@ -169,6 +169,7 @@ class LibavDecoder final : public FrameDecoder {
     props_.frames = static_cast<std::int64_t>(pts_.empty() ? packet_count_ : pts_.size());
     props_.declared_frames = st->nb_frames;
     props_.rotation_deg = display_rotation(st);
+    props_.stereo_tags = read_stereo_tags(st, name_);
     props_.time_base = {st->time_base.num, st->time_base.den};
     if (st->codecpar->color_trc != AVCOL_TRC_UNSPECIFIED) {
       if (const char* name = av_color_transfer_name(st->codecpar->color_trc))

@@ -37,6 +37,8 @@ ordered ordered_document(const Sidecar& s) {
   video["frames"] = s.video.frames;
   video["width"] = s.video.width;
   video["height"] = s.video.height;
+  if (s.video.layout) video["layout"] = std::string(effects::stereo_mode_name(*s.video.layout));
+  if (s.video.coverage_deg) video["coverage"] = *s.video.coverage_deg;
   doc["video"] = std::move(video);
   doc["interpolation"] = interpolation_json(s.interpolation);
   ordered effects_json = ordered::array();

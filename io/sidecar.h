@@ -6,13 +6,16 @@
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "effects/flare.h"
 #include "effects/grain.h"
 #include "effects/keyframe.h"
+#include "effects/stereo_layout.h"
 
 namespace vdfx::effects {
 class StackInterpolator;
@@ -22,11 +25,23 @@ namespace vdfx::io {
 
 /// The video a sidecar belongs to, as recorded when it was authored.
 struct VideoInfo {
+  VideoInfo() = default;
+  /// The five fields every sidecar has; layout and coverage not recorded.
+  VideoInfo(std::string path_, double fps_, std::int64_t frames_, int width_, int height_)
+      : path(std::move(path_)), fps(fps_), frames(frames_), width(width_), height(height_) {}
+
   std::string path;         //!< as written in the file (relative paths are relative to the sidecar)
   double fps = 30.0;        //!< > 0
   std::int64_t frames = 1;  //!< >= 1; keyframe frames lie in [0, frames)
   int width = 1;            //!< > 0
   int height = 1;           //!< > 0
+  /// "layout" and "coverage" (docs/sidecar.md); absent: not recorded, read as mono and 360.
+  std::optional<effects::StereoMode> layout;
+  std::optional<int> coverage_deg;
+  /// The layout as recorded, absent parts at their defaults.
+  effects::StereoLayout stereo() const {
+    return {layout.value_or(effects::StereoMode::Mono), coverage_deg.value_or(360)};
+  }
   bool operator==(const VideoInfo&) const = default;
 };
 

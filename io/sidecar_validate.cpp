@@ -45,10 +45,38 @@ constexpr std::int64_t kIntMax = std::numeric_limits<int>::max();
 constexpr double kDoubleMax = std::numeric_limits<double>::max();
 const Range kAnyNumber{-kDoubleMax, kDoubleMax, false, false};  // finite: Checker::number
 
+/// "layout" and "coverage" (optional: old files are mono 360); the layout must split the
+/// recorded frame size into two whole halves.
+void read_stereo(Checker& c, const json& obj, const std::string& ptr, VideoInfo& out) {
+  if (const json* p = c.member(obj, ptr, "layout", false)) {
+    if (auto s = c.string(*p, ptr + "/layout")) {
+      out.layout = effects::stereo_mode_from_name(*s);
+      if (!out.layout)
+        c.error(ptr + "/layout", "unknown layout \"" + excerpt(*s) +
+                                     "\" (expected: mono, top-bottom, left-right, right-left)");
+    }
+  }
+  if (const json* p = c.member(obj, ptr, "coverage", false)) {
+    if (auto i = c.integer(*p, ptr + "/coverage", std::numeric_limits<std::int64_t>::min(),
+                           std::numeric_limits<std::int64_t>::max(), "360 or 180")) {
+      if (*i == 360 || *i == 180)
+        out.coverage_deg = static_cast<int>(*i);
+      else
+        c.error(ptr + "/coverage", "coverage " + std::to_string(*i) +
+                                       (*i <= 0 ? " covers nothing" : " is not supported") +
+                                       ": expected 360 or 180 (degrees of azimuth)");
+    }
+  }
+  if (const auto problem = effects::layout_problem(
+          {out.layout.value_or(effects::StereoMode::Mono), 360}, out.width, out.height);
+      problem && out.layout)
+    c.error(ptr + "/layout", *problem + " (video.width and video.height)");
+}
+
 void read_video(Checker& c, const json& v, const std::string& ptr, VideoInfo& out) {
   const json* obj = c.object(v, ptr);
   if (!obj) return;
-  c.only_keys(*obj, ptr, {"path", "fps", "frames", "width", "height"});
+  c.only_keys(*obj, ptr, {"path", "fps", "frames", "width", "height", "layout", "coverage"});
   if (const json* p = c.member(*obj, ptr, "path")) {
     if (auto s = c.string(*p, ptr + "/path")) {
       if (s->empty()) c.error(ptr + "/path", "empty path");
@@ -69,6 +97,7 @@ void read_video(Checker& c, const json& v, const std::string& ptr, VideoInfo& ou
   if (const json* p = c.member(*obj, ptr, "height"))
     if (auto i = c.integer(*p, ptr + "/height", 1, kIntMax, int_range))
       out.height = static_cast<int>(*i);
+  read_stereo(c, *obj, ptr, out);
 }
 
 void read_interpolation(Checker& c, const json& v, const std::string& ptr,

@@ -26,6 +26,28 @@ extern "C" {
 namespace vdfx::io {
 namespace {
 
+/// Equirect projection, no yaw/pitch/roll; VR180: left and right bounds a quarter of the width
+/// each (0.32 fixed point), which libavformat writes as the equi box's bounds.
+void set_equirect(AVSphericalMapping& m, int coverage_deg) {
+  m.projection = AV_SPHERICAL_EQUIRECTANGULAR;
+  if (coverage_deg == 180) {
+    m.projection = AV_SPHERICAL_EQUIRECTANGULAR_TILE;
+    m.bound_left = m.bound_right = 0x40000000u;
+  }
+}
+
+void set_stereo_mode(AVStereo3D& st3d, effects::StereoMode mode) {
+  switch (mode) {
+    case effects::StereoMode::Mono: st3d.type = AV_STEREO3D_2D; break;
+    case effects::StereoMode::TopBottom: st3d.type = AV_STEREO3D_TOPBOTTOM; break;
+    case effects::StereoMode::LeftRight: st3d.type = AV_STEREO3D_SIDEBYSIDE; break;
+    case effects::StereoMode::RightLeft:
+      st3d.type = AV_STEREO3D_SIDEBYSIDE;
+      st3d.flags = AV_STEREO3D_FLAG_INVERT;
+      break;
+  }
+}
+
 /// A failure of the disk or file system under the output (full, over quota, read-only, an I/O
 /// error): the user's OUT cannot be written there, which is exit 1, not a fault of vdfx.
 bool is_storage_error(int r) {
@@ -251,10 +273,10 @@ class LibavEncoder final : public VideoEncoder {
     if (s.spherical_equirect) {
       std::size_t size = 0;
       AVSphericalMapping* m = av_spherical_alloc(&size);
-      if (m) m->projection = AV_SPHERICAL_EQUIRECTANGULAR;  // no yaw/pitch/roll, no bounds
+      if (m) set_equirect(*m, s.stereo.coverage_deg);
       add_side_data(stream_, AV_PKT_DATA_SPHERICAL, m, size);
       AVStereo3D* st3d = av_stereo3d_alloc();
-      if (st3d) st3d->type = AV_STEREO3D_2D;  // mono
+      if (st3d) set_stereo_mode(*st3d, s.stereo.mode);
       add_side_data(stream_, AV_PKT_DATA_STEREO3D, st3d, sizeof(AVStereo3D));
     }
     if (s.display_rotation_deg % 360 != 0) {

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "effects/stereo_layout.h"
 #include "io/frame_time.h"
 #include "io/picture.h"
 
@@ -42,8 +43,11 @@ struct EncoderSettings {
   int max_b_frames = -1;  //!< -1: encoder default
   int threads = 0;        //!< 0: the encoder picks (x264/x265: all cores)
   std::map<std::string, std::string> codec_options;  //!< further AVOptions of the encoder
-  bool spherical_equirect = false;  //!< Spherical Video V2 equirectangular + mono stereo mode
-  int display_rotation_deg = 0;     //!< clockwise display rotation written as the display matrix
+  bool spherical_equirect = false;  //!< Spherical Video V2 equirectangular + `stereo`'s mode
+  /// With spherical_equirect: the st3d stereo mode (mono, top-bottom, left-right, right-left as
+  /// side-by-side inverted) and, for coverage 180, the equi bounds of a centred half turn.
+  effects::StereoLayout stereo;
+  int display_rotation_deg = 0;  //!< clockwise display rotation written as the display matrix
   std::filesystem::path copy_audio_from;    //!< copy every audio stream of this file (empty: none)
   std::optional<AudioWindow> audio_window;  //!< default: every audio packet, times unchanged
   /// Container format chosen from this name's extension (default: the written path's), and the

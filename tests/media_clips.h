@@ -107,6 +107,7 @@ struct ClipSpec {
   int gop = 0, max_b_frames = 3;
   int rotation_deg = 0;
   bool spherical = false;
+  effects::StereoLayout stereo;  //!< with spherical: the st3d mode and equi bounds written
   fs::path audio_from;
   std::function<cv::Mat(int)> frame;  //!< RGB 8-bit frame i; default coded_frame
 };
@@ -125,6 +126,7 @@ inline fs::path write_clip(const fs::path& path, const ClipSpec& c) {
   s.max_b_frames = c.codec.starts_with("libx26") || c.codec == "mpeg4" ? c.max_b_frames : -1;
   s.display_rotation_deg = c.rotation_deg;
   s.spherical_equirect = c.spherical;
+  s.stereo = c.stereo;
   s.copy_audio_from = c.audio_from;
   if (c.codec == "libx265") s.codec_options.emplace("x265-params", "log-level=error");
   auto enc = io::VideoEncoder::create(path, s);

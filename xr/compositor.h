@@ -57,6 +57,10 @@ class Compositor {
   explicit Compositor(CompositorConfig config);
   ~Compositor();
 
+  /// The video's stereo layout and coverage (VideoLayerGl::set_layout); drops the frame.
+  void set_video_layout(const effects::StereoLayout& layout);
+  /// Which eye's image of stereo video the desktop view shows (0 left, 1 right).
+  void set_desktop_eye(int eye);
   void set_video_frame(const cv::Mat& equirect);
   /// A decoded frame as it is (Y'CbCr converted on the GPU: VideoLayerGl::set_frame).
   void set_video_frame(const io::Picture& picture);
@@ -110,6 +114,10 @@ struct GpuViewOptions {
   const ParamGrid* param_grid = nullptr;
   /// World-space layers (flare, grain) drawn after the effects, as EyeInput::layers.
   std::span<EyeLayer* const> layers = {};
+  /// The frame's stereo layout and coverage, and the eye whose image the view shows (0 left,
+  /// 1 right; mono: either shows the frame).
+  effects::StereoLayout layout;
+  int eye = 0;
 };
 
 /// One offscreen view for `vdfx render --gpu` (and tests): video layer -> effects ->

@@ -50,6 +50,7 @@ struct Compositor::Impl {
   GlTarget desktop;  //!< the desktop view at window size: scaled-up effects, then the quads
   std::array<RenderView, 3> views;
   std::array<int, 3> margin{0, 0, 0};  //!< pixels of video rendered around each slot's view
+  int desktop_eye = 0;                 //!< the stereo video's eye the desktop view shows
   GpuTimer timer;
   Impl(TexFormat f, BlurMethod b, double level_ratio) : stack(f, b) {
     stack.set_level_ratio(level_ratio);
@@ -85,7 +86,8 @@ void Compositor::Impl::video_and_effects(int slot, const EyeInput& in, int w, in
   if (video_out[slot].width() != w + 2 * m || video_out[slot].height() != h + 2 * m)
     video_out[slot] = GlTarget(w + 2 * m, h + 2 * m, c.eye_format);
   if (t) timer.start(tag + "video");
-  video.render(video_out[slot], with_margin(in.view, w, h, m), c.lod);
+  video.render(video_out[slot], with_margin(in.view, w, h, m), c.lod,
+               slot == kDesktopSlot ? desktop_eye : slot);
   if (t) timer.stop();
   if (t) timer.start(tag + "effects");
   if (in.per_pixel)
@@ -147,6 +149,15 @@ Compositor::Compositor(CompositorConfig config)
 
 Compositor::~Compositor() {
   if (impl_ && impl_->vao) glDeleteVertexArrays(1, &impl_->vao);
+}
+
+void Compositor::set_video_layout(const effects::StereoLayout& layout) {
+  impl_->video.set_layout(layout);
+}
+
+void Compositor::set_desktop_eye(int eye) {
+  if (eye < 0 || eye > 1) throw GlError("Compositor::set_desktop_eye: eye must be 0 or 1");
+  impl_->desktop_eye = eye;
 }
 
 void Compositor::set_video_frame(const cv::Mat& equirect) {
@@ -274,10 +285,12 @@ cv::Mat render_view_gpu(const cv::Mat& equirect, const RenderView& view, int wid
   c.blur = o.blur;
   c.blur_level_ratio = o.blur_level_ratio;
   Compositor comp(c);
+  comp.set_video_layout(o.layout);
   comp.set_video_frame(equirect);
   if (o.param_grid) comp.set_param_grid(*o.param_grid);
-  comp.render_eye(0, {view, params, active_effects, o.param_grid != nullptr, o.layers});
-  return to_bgr8(comp.read_display(0));
+  const int eye = o.eye == 1 ? 1 : 0;
+  comp.render_eye(eye, {view, params, active_effects, o.param_grid != nullptr, o.layers});
+  return to_bgr8(comp.read_display(eye));
 }
 
 }  // namespace vdfx::xr

@@ -31,6 +31,7 @@
 #include <memory>
 #include <opencv2/core.hpp>
 
+#include "effects/stereo_layout.h"
 #include "io/picture.h"
 #include "xr/gl_texture.h"
 #include "xr/render_view.h"
@@ -43,6 +44,13 @@ class VideoLayerGl {
  public:
   VideoLayerGl();
   ~VideoLayerGl();
+  /// How frames hold the eyes and what they cover (docs/stereo.md); default mono 360. A stereo
+  /// frame is uploaded as two images, one per eye, each with its own mip chain, so no filter
+  /// reads across the halves' boundary; a VR180 image's columns are clamped, not wrapped, and
+  /// the shader shows black outside its half turn (a kCoverageEdgeDeg fade inside the edge).
+  /// Drops the current frame.
+  void set_layout(const effects::StereoLayout& layout);
+  const effects::StereoLayout& layout() const;
   /// Uploads an equirect frame (CV_8UC3/4 or CV_32FC3/4, BGR) and rebuilds the mip chain;
   /// reallocates when the size or depth changes. 8-bit frames are stored RGBA8, float RGBA32F.
   void set_frame(const cv::Mat& equirect);
@@ -53,8 +61,11 @@ class VideoLayerGl {
   /// uniform dark grey (kNoFrameGrey).
   static constexpr float kNoFrameGrey = 0.08f;
   bool has_frame() const;
-  void render(const GlTarget& target, const RenderView& view, LodMode lod = LodMode::Analytic);
-  /// The RGB texture (frames given as cv::Mat or RGB pictures; empty for Y'CbCr pictures).
+  /// `eye` (0 left, 1 right) picks the eye's image of stereo video; mono ignores it.
+  void render(const GlTarget& target, const RenderView& view, LodMode lod = LodMode::Analytic,
+              int eye = 0);
+  /// The (left eye's) RGB texture (frames given as cv::Mat or RGB pictures; empty for Y'CbCr
+  /// pictures).
   const GlTexture& texture() const;
 
  private:

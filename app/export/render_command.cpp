@@ -9,6 +9,7 @@
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/cli/layout_options.h"
 #include "app/export/view_render.h"
 #include "io/excerpt.h"
 #include "io/input_error.h"
@@ -50,8 +51,10 @@ void add_render_options(CLI::App& cli, RenderRequest& r, RenderTexts& t) {
                  "with --gpu --mode pixel: the parameter grid WxH the GPU reads per pixel")
       ->capture_default_str();
   cli.add_option("--hmd", t.hmd, "render one eye of this headset profile (vdfx hmd list)");
-  cli.add_option("--eye", t.eye, "with --hmd: left or right")
+  cli.add_option("--eye", t.eye,
+                 "left or right: the headset's eye (with --hmd) and the stereo video's half")
       ->check(CLI::IsMember({"left", "right"}));
+  add_layout_options(cli, r.layout);
   cli.add_option("--distort", t.distort,
                  "with --hmd: lens pre-distortion none, pixel (exact per pixel) or mesh:N "
                  "(N x N vertex grid)");
@@ -61,10 +64,8 @@ void add_render_options(CLI::App& cli, RenderRequest& r, RenderTexts& t) {
 
 /// Options that would have no effect in this combination are usage errors, not silently
 /// ignored (`--eye right` without `--hmd` rendered the plain view, exit 0).
-void check_option_combinations(const CLI::App& cli, const std::string& hmd_name,
-                               const RenderRequest& r) {
-  if (cli.count("--eye") > 0 && hmd_name.empty())
-    throw CLI::ValidationError("--eye", "needs --hmd (the eye is one of the headset's)");
+/// (--eye without --hmd is checked once the video's layout is known: it needs stereo video.)
+void check_option_combinations(const CLI::App& cli, const RenderRequest& r) {
   if (cli.count("--no-lca") > 0 && r.distortion.method == xr::DistortionMethod::None)
     throw CLI::ValidationError("--no-lca", "needs --distort pixel or mesh:N");
   if (cli.count("--bake") > 0 && !(r.gpu && r.mode == effects::RenderMode::Pixel))
@@ -88,7 +89,7 @@ void parse_camera(const CLI::App& cli, const RenderTexts& t, RenderRequest& r) {
   } else if (t.fov > 0.0) {
     throw CLI::ValidationError("--fov", "the eye's field of view comes from --hmd; drop --fov");
   }
-  check_option_combinations(cli, t.hmd, r);
+  check_option_combinations(cli, r);
 }
 
 /// The parsed options as a request (the HMD not loaded yet); throws CLI::ValidationError.
@@ -98,6 +99,8 @@ RenderRequest render_request_of(const CLI::App& cli, RenderRequest r, const Rend
   r.roll_deg = view.roll_deg;
   r.mode = t.mode == "pixel" ? effects::RenderMode::Pixel : effects::RenderMode::View;
   r.sidecar_name = t.sidecar;
+  r.eye_given = cli.count("--eye") > 0;
+  r.eye = t.eye == "right" ? xr::Eye::Right : xr::Eye::Left;
   try {
     r.distortion = parse_distortion(t.distort);
   } catch (const std::invalid_argument& e) {
@@ -121,7 +124,6 @@ RenderRequest render_request_of(const CLI::App& cli, RenderRequest r, const Rend
 /// --hmd's profile and eye; without --size the eye's own size, within the output limit.
 void load_eye(RenderRequest& r, const RenderTexts& t) {
   r.hmd = xr::load_hmd_profile(t.hmd);
-  r.eye = t.eye == "right" ? xr::Eye::Right : xr::Eye::Left;
   const xr::EyeProfile& ep = r.hmd->eye(r.eye);
   if (t.size.empty() && std::int64_t{ep.width} * ep.height > kOutputSizeLimit.max_pixels)
     throw io::InputError(r.hmd->source + ": the " + std::string(xr::eye_name(r.eye)) + " eye's " +

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iostream>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
@@ -34,10 +35,12 @@
 
 namespace vdfx::app {
 
-cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame) {
+cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame,
+                            io::VideoProperties* properties) {
   io::DecoderOptions options;
   options.format = io::PixelFormat::RgbF32;
   auto decoder = io::open_frame_decoder(input, options);
+  if (properties) *properties = decoder->properties();
   const std::int64_t frames = decoder->properties().frames;
   if (frame < 0 || frame >= frames)
     throw io::InputError(input.string() + ": frame " + std::to_string(frame) +
@@ -144,18 +147,25 @@ EyeSetup eye_setup(const RenderRequest& r) {
   return {view, lens};
 }
 
+/// Which part of each frame the view samples (docs/stereo.md).
+struct EyeImage {
+  effects::StereoLayout layout;
+  effects::EyeIndex index = effects::EyeIndex::Left;
+};
+
 /// The sidecar's flares for a head pose at `frame` (docs/flare.md). An auto light is measured in
 /// `equirect` and in the frames before it that its fit uses, so a lone frame gets the light
 /// playback shows.
 std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input,
                                               const io::Sidecar& sidecar, const cv::Mat& equirect,
-                                              const effects::HeadPose& head, std::int64_t frame) {
+                                              const effects::HeadPose& head, std::int64_t frame,
+                                              const EyeImage& eye) {
   if (sidecar.flares.empty()) return {};
   effects::FlareSet flares = io::flare_set_of(sidecar);
   if (flares.uses_auto_light()) {
     for (std::int64_t f = std::max<std::int64_t>(0, frame - flares.auto_light_window()); f < frame;
          ++f)
-      flares.observe(f, load_equirect_frame(input, f));
+      flares.observe(f, effects::eye_image(load_equirect_frame(input, f), eye.layout, eye.index));
     flares.observe(frame, equirect);
   }
   return flares.layouts(head, frame);
@@ -186,7 +196,9 @@ namespace {
 /// What the CPU and the GPU paths share: the frame, the parameters at the view centre (and the
 /// checked evaluation per direction), the camera and the world-space layers.
 struct ViewScene {
-  cv::Mat equirect;
+  cv::Mat frame;     //!< the whole frame (both eyes of stereo video)
+  cv::Mat equirect;  //!< the eye's image (the whole frame for mono video)
+  EyeImage eye_image;
   std::function<effects::StackParams(const effects::Direction&)> evaluate;
   effects::StackParams view_params;
   std::optional<EyeSetup> eye;
@@ -198,9 +210,10 @@ struct ViewScene {
 
 ViewScene view_scene(const std::filesystem::path& input, const io::Sidecar& sidecar,
                      const effects::StackInterpolator& stack, const RenderRequest& r,
-                     cv::Mat equirect) {
+                     cv::Mat equirect, const EyeImage& eye) {
   ViewScene s;
   s.equirect = std::move(equirect);
+  s.eye_image = eye;
   // Every evaluation goes through this check: view mode once, per-pixel mode per cell or pixel.
   s.evaluate = [&stack, &r](const effects::Direction& d) {
     effects::StackParams p = stack.evaluate(d, r.frame);
@@ -219,7 +232,7 @@ ViewScene view_scene(const std::filesystem::path& input, const io::Sidecar& side
     s.view.position =
         head.orientation *
         Eigen::Vector3d((r.eye == xr::Eye::Left ? -0.5 : 0.5) * r.hmd->ipd_m, 0.0, 0.0);
-  s.flares = view_flares(input, sidecar, s.equirect, head, r.frame);
+  s.flares = view_flares(input, sidecar, s.equirect, head, r.frame, eye);
   s.grains = view_grains(sidecar, head, r);
   return s;
 }
@@ -256,10 +269,13 @@ void check_gpu_area(int w, int h, int margin, int max_side) {
 /// Through the GL compositor (offscreen); 8-bit RGB.
 cv::Mat render_gpu(const std::filesystem::path& input, const ViewScene& s, const RenderRequest& r) {
   auto context = xr::GlContext::create({});
-  check_gpu_sizes(input, s.equirect, *context, r);
+  check_gpu_sizes(input, s.frame, *context, r);
   cv::Mat bgr_in;
-  cv::cvtColor(s.equirect, bgr_in, cv::COLOR_RGB2BGR);
+  cv::cvtColor(s.frame, bgr_in, cv::COLOR_RGB2BGR);
   xr::GpuViewOptions options;
+  options.layout = s.eye_image.layout;  // the compositor cuts the eye's image itself
+  // (Mono keeps slot 0 for either HMD eye, as before: the eye's view and lens say which eye.)
+  options.eye = s.eye_image.layout.stereo() && s.eye_image.index == effects::EyeIndex::Right;
   options.distortion = r.distortion;
   if (s.eye) options.lens = s.eye->lens.lens;
   options.blur = r.blur;
@@ -292,7 +308,8 @@ cv::Mat render_gpu(const std::filesystem::path& input, const ViewScene& s, const
 /// The CPU reference: RGB float, unclamped.
 cv::Mat render_cpu(const ViewScene& s, const RenderRequest& r) {
   const effects::ViewCamera camera = s.view.camera(s.w, s.h);
-  const effects::EquirectSampler sampler(s.equirect);
+  const effects::EquirectSampler sampler(s.equirect,
+                                         effects::sampler_options_for(s.eye_image.layout));
   cv::Mat rendered;
   if (r.mode == effects::RenderMode::View) {
     rendered = effects::render_view(sampler, camera, s.view_params);
@@ -315,11 +332,33 @@ cv::Mat render_cpu(const ViewScene& s, const RenderRequest& r) {
 
 }  // namespace
 
+namespace {
+
+/// The frame's layout (command line, stream tags, sidecar) and the eye the request shows.
+EyeImage eye_image_of(const io::VideoProperties& video, const io::Sidecar& sidecar,
+                      const RenderRequest& r) {
+  std::string hint;
+  EyeImage eye;
+  eye.layout = io::resolve_video_layout(video, r.layout, &sidecar.video, r.sidecar_name, &hint);
+  if (!hint.empty()) std::cerr << "vdfx: hint: " << video.path.string() << ": " << hint << "\n";
+  if (r.eye_given && !r.hmd && !eye.layout.stereo())
+    throw UsageError("--eye: needs --hmd or a stereo video (" + video.path.string() +
+                     " is mono; --layout says otherwise)");
+  eye.index = r.eye == xr::Eye::Right ? effects::EyeIndex::Right : effects::EyeIndex::Left;
+  return eye;
+}
+
+}  // namespace
+
 cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
                        const RenderRequest& r) {
-  cv::Mat equirect = load_equirect_frame(input, r.frame);
+  io::VideoProperties video;
+  const cv::Mat frame = load_equirect_frame(input, r.frame, &video);
+  const EyeImage eye = eye_image_of(video, sidecar, r);
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
-  const ViewScene scene = view_scene(input, sidecar, stack, r, std::move(equirect));
+  ViewScene scene =
+      view_scene(input, sidecar, stack, r, effects::eye_image(frame, eye.layout, eye.index), eye);
+  scene.frame = frame;
   if (r.gpu) return render_gpu(input, scene, r);
   return effects::to_rgb8(render_cpu(scene, r));
 }

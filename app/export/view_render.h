@@ -12,6 +12,7 @@
 #include "effects/lens_model.h"
 #include "effects/view_renderer.h"
 #include "io/sidecar.h"
+#include "io/video_layout.h"
 #include "xr/blur_method.h"
 #include "xr/distortion_gl.h"
 #include "xr/hmd_profile.h"
@@ -30,7 +31,9 @@ struct RenderRequest {
   xr::BlurMethod blur = xr::BlurMethod::Exact;  //!< --gpu only (the CPU blur is the exact gather)
   int bake_width = 1024, bake_height = 512;     //!< --gpu --mode pixel: the parameter grid
   std::optional<xr::HmdProfile> hmd;
-  xr::Eye eye = xr::Eye::Left;
+  xr::Eye eye = xr::Eye::Left;  //!< the HMD's eye, and the stereo video's half (docs/stereo.md)
+  bool eye_given = false;       //!< --eye was given (without --hmd it needs a stereo video)
+  io::LayoutOverride layout;    //!< --layout / --coverage
   xr::DistortionSettings distortion{xr::DistortionMethod::None};
   std::string sidecar_name;  //!< names the sidecar when its values evaluate to NaN or infinity
   /// Display time that picks the grain pattern (docs/grain.md); default the frame's start,
@@ -44,7 +47,8 @@ std::optional<std::size_t> first_gpu_only_grain(const io::Sidecar& sidecar);
 
 /// Frame `frame` of a video or still as RGB float, display-encoded. Throws io::InputError naming
 /// the file when it is missing, unreadable, or has no such frame.
-cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame);
+cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame,
+                            io::VideoProperties* properties = nullptr);
 
 /// Renders the request; returns 8-bit RGB. Throws io::InputError for bad input.
 cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
