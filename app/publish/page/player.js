@@ -1,0 +1,219 @@
+// The player page of `vdfx publish` (docs/publish.md): the video on the sphere, the effects'
+// parameters evaluated each frame at the view direction by vdfx's own interpolation compiled
+// to WebAssembly (vdfx_player.wasm), drawn by the GL compositor's GLSL (renderer.js).
+//
+// Test hooks (URL query): view=AZ,ALT  frame=N  fov=DEG  size=WxH  paused=1. With size= the
+// canvas is exactly W x H CSS pixels at device pixel ratio 1, nothing drawn over it; with
+// frame= or paused=1 the page shows that one frame paused and sets document.title to
+// "vdfx-ready" once it is drawn. Any error sets document.title to "vdfx-error: MESSAGE".
+import { Renderer } from './renderer.js';
+import { attachControls } from './controls.js';
+import { startXr } from './xr.js';
+
+const $ = (id) => document.getElementById(id);
+
+function fail(message) {
+  const box = $('message');
+  box.textContent = message;
+  box.style.display = 'block';
+  document.title = `vdfx-error: ${message}`;
+  console.error(message);
+}
+
+// The query's hooks, each checked (a malformed one is an error on the page, not ignored).
+export function parseHooks(search) {
+  const q = new URLSearchParams(search);
+  const numbers = (name, n) => {
+    const text = q.get(name);
+    if (text === null) return null;
+    const parts = text.split(name === 'size' ? 'x' : ',').map(Number);
+    if (parts.length !== n || parts.some((x) => !Number.isFinite(x)))
+      throw new Error(`the URL's ${name}=${text} is not ${name === 'size' ? 'WxH' : `${n} numbers`}`);
+    return parts;
+  };
+  const view = numbers('view', 2), fov = numbers('fov', 1), frame = numbers('frame', 1);
+  const size = numbers('size', 2);
+  if (size && !(size[0] >= 1 && size[1] >= 1 && size.every(Number.isInteger)))
+    throw new Error(`the URL's size=${q.get('size')} must be whole pixels`);
+  if (frame && !(Number.isInteger(frame[0]) && frame[0] >= 0))
+    throw new Error(`the URL's frame=${q.get('frame')} must be a frame index`);
+  if (fov && !(fov[0] >= 1 && fov[0] <= 179)) throw new Error('the URL\'s fov= must be in 1..179');
+  return {
+    view: view ? { az: view[0], alt: view[1] } : null, fov: fov ? fov[0] : null,
+    frame: frame ? frame[0] : null, size, paused: q.get('paused') === '1',
+  };
+}
+
+async function fetchText(url) {
+  const r = await fetch(url);
+  if (!r.ok) throw new Error(`${url}: ${r.status} ${r.statusText}`);
+  return r.text();
+}
+
+// The module with its calls (app/publish/wasm/player_api.cpp).
+async function loadModule() {
+  if (typeof createVdfxPlayer !== 'function') throw new Error('vdfx_player.js did not load');
+  const m = await createVdfxPlayer(); // eslint-disable-line no-undef
+  const out = m._malloc(9 * 8);
+  return {
+    load: m.cwrap('vdfx_load', 'number', ['string', 'string']),
+    message: m.cwrap('vdfx_message', 'string', []),
+    evalRaw: m.cwrap('vdfx_eval', 'number', ['number', 'number', 'number', 'number']),
+    // The 9 stack parameters at a view and frame; null for a frame outside the video.
+    eval(az, alt, frame) {
+      if (this.evalRaw(az, alt, frame, out) < 0) return null;
+      return new Float64Array(m.HEAPF64.buffer, out, 9).slice();
+    },
+  };
+}
+
+async function loadShaders() {
+  const names = { vert: 'fullscreen.vert', video: 'video.frag', blur: 'blur_1d.frag',
+                  stack: 'stack.frag', stackBlur: 'stack_blur.frag' };
+  const out = {};
+  for (const [key, file] of Object.entries(names)) out[key] = await fetchText(`shaders/${file}`);
+  return out;
+}
+
+// Resolves once the <video> can show a frame; rejects, naming the codec, when it cannot decode.
+function openVideo(video, config) {
+  return new Promise((resolve, reject) => {
+    video.addEventListener('loadeddata', () => resolve(), { once: true });
+    video.addEventListener('error', () => {
+      const codec = config.video.codec;
+      reject(new Error(`this browser cannot play ${config.video.file} (codec ${codec}` +
+        `${video.error ? `, ${video.error.message || `media error ${video.error.code}`}` : ''}); ` +
+        'publish it again with --transcode h264 (or vp9)'));
+    }, { once: true });
+    video.src = config.video.file;
+    video.load();
+  });
+}
+
+// Seeks to frame n and waits until that frame can be drawn.
+async function seekFrame(video, n, fps) {
+  await new Promise((resolve) => {
+    video.addEventListener('seeked', resolve, { once: true });
+    video.currentTime = (n + 0.5) / fps;
+  });
+  if (video.requestVideoFrameCallback)
+    await new Promise((resolve) => {
+      video.requestVideoFrameCallback(resolve);
+      setTimeout(resolve, 500);
+    });
+}
+
+class Player {
+  constructor(config, module, renderer, hooks) {
+    Object.assign(this, { config, module, renderer, hooks });
+    this.canvas = $('view');
+    this.video = document.createElement('video');
+    this.video.muted = true;
+    this.video.playsInline = true;
+    this.video.loop = true;
+    this.view = { az: hooks.view?.az ?? 0, alt: hooks.view?.alt ?? 0, fov: hooks.fov ?? 90 };
+    this.frame = hooks.frame ?? 0;
+    this.stats = { evalMs: [], drawMs: [] };
+    window.vdfxStats = this.stats;
+  }
+
+  fps() { return this.config.video.fps; }
+
+  // Canvas size in device pixels (exactly the hook's W x H at device pixel ratio 1).
+  resize() {
+    const dpr = this.hooks.size ? 1 : window.devicePixelRatio || 1;
+    const w = this.hooks.size ? this.hooks.size[0] : Math.round(this.canvas.clientWidth * dpr);
+    const h = this.hooks.size ? this.hooks.size[1] : Math.round(this.canvas.clientHeight * dpr);
+    if (this.canvas.width !== w || this.canvas.height !== h) {
+      this.canvas.width = w;
+      this.canvas.height = h;
+    }
+  }
+
+  // Evaluates the effects at the view and draws the current video frame.
+  draw() {
+    this.resize();
+    const t0 = performance.now();
+    const p = this.module.eval(this.view.az, this.view.alt, this.frame);
+    const t1 = performance.now();
+    if (!p) return;
+    this.renderer.upload(this.video);
+    this.renderer.draw(this.view, this.canvas.width, this.canvas.height, p);
+    const t2 = performance.now();
+    this.#record(this.stats.evalMs, t1 - t0);
+    this.#record(this.stats.drawMs, t2 - t1);
+  }
+
+  #record(list, ms) {
+    list.push(ms);
+    if (list.length > 240) list.shift();
+  }
+
+  // The frame on screen: from the presented frame's media time when the browser says it.
+  #trackFrames() {
+    if (!this.video.requestVideoFrameCallback) return;
+    const onFrame = (now, meta) => {
+      this.frame = Math.min(this.config.video.frames - 1, Math.round(meta.mediaTime * this.fps()));
+      this.dirty = true;
+      this.video.requestVideoFrameCallback(onFrame);
+    };
+    this.video.requestVideoFrameCallback(onFrame);
+  }
+
+  async stillFrame() {
+    await seekFrame(this.video, this.frame, this.fps());
+    this.draw();
+    // Title after the frame reached the screen (the next animation frame).
+    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    document.title = 'vdfx-ready';
+  }
+
+  run() {
+    this.#trackFrames();
+    this.dirty = true;
+    const loop = () => {
+      if (!this.video.requestVideoFrameCallback && !this.video.paused) {
+        this.frame = Math.min(this.config.video.frames - 1,
+                              Math.floor(this.video.currentTime * this.fps()));
+        this.dirty = true;
+      }
+      if (this.dirty && !this.xrSession) {
+        this.dirty = false;
+        this.draw();
+      }
+      requestAnimationFrame(loop);
+    };
+    requestAnimationFrame(loop);
+  }
+}
+
+async function start() {
+  const hooks = parseHooks(window.location.search);
+  if (hooks.size) {
+    document.body.classList.add('still');
+    const c = $('view');
+    c.style.width = `${hooks.size[0]}px`;
+    c.style.height = `${hooks.size[1]}px`;
+  }
+  const config = JSON.parse(await fetchText('player.json'));
+  const module = await loadModule();
+  // A sidecar that fails validation: the validator's own lines (vdfx validate's), nothing played.
+  if (!module.load(config.sidecar, await fetchText(config.sidecar)))
+    throw new Error(module.message().replace(/\n+$/, ''));
+  const gl = $('view').getContext('webgl2', { antialias: false, alpha: false });
+  if (!gl) throw new Error('this browser has no WebGL2');
+  const renderer = new Renderer(gl, await loadShaders());
+  const player = new Player(config, module, renderer, hooks);
+  await openVideo(player.video, config);
+  if (config.left_out.length)
+    $('left-out').textContent = `not drawn here: ${config.left_out.join(', ')}`;
+  if (hooks.frame !== null || hooks.paused) {
+    await player.stillFrame();
+    return;
+  }
+  attachControls(player);
+  startXr(player);
+  player.run();
+}
+
+start().catch((e) => fail(e && e.message ? e.message : String(e)));
