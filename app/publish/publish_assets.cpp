@@ -15,6 +15,7 @@
 #include "effects/grain.h"
 #include "effects/video_shaders.h"
 #include "io/input_error.h"
+#include "io/ycbcr.h"
 
 namespace vdfx::app {
 namespace {
@@ -69,6 +70,21 @@ void write_shaders(const fs::path& dir, unsigned mask) {
   write_text_file(dir / "stack_blur.frag", es + effects::stack_fragment_source(v));
 }
 
+/// What the page needs to convert the decoded planes itself, as the GL path does (the video
+/// layer's u_ycbcr path): the subsampling, the chroma siting and the affine map from code values
+/// to R'G'B' (io::ycbcr_to_rgb_map, row-major). The page converts only 8-bit 4:2:0 (I420).
+nlohmann::ordered_json ycbcr_json(const io::YcbcrInfo& y) {
+  const io::AffineMap3 a = io::ycbcr_to_rgb_map(y);
+  nlohmann::ordered_json j;
+  j["bit_depth"] = y.bit_depth;
+  j["log2_chroma"] = {y.log2_chroma_w, y.log2_chroma_h};
+  j["chroma_siting"] = {y.chroma_x, y.chroma_y};
+  j["full_range"] = y.full_range;
+  j["m"] = a.m;
+  j["offset"] = a.offset;
+  return j;
+}
+
 }  // namespace
 
 PageAssets find_page_assets() {
@@ -93,6 +109,7 @@ PageSettings page_settings(const PublishRequest& r, const io::Sidecar& sidecar,
   m["title"] = s.title;
   m["video"] = {{"file", video.file},     {"codec", codec},       {"fps", video.fps},
                 {"frames", video.frames}, {"width", video.width}, {"height", video.height}};
+  if (video.ycbcr) m["video"]["ycbcr"] = ycbcr_json(*video.ycbcr);
   m["sidecar"] = r.sidecar.filename().string();
   m["stack_mask"] = keyed_mask(sidecar);
   m["left_out"] = left_out_of(sidecar);

@@ -52,7 +52,11 @@ PublishedVideo publish_video(const PublishRequest& r, const io::Sidecar& sidecar
     v.file = r.video.stem().string() + ".mp4";
     transcode(r, sidecar, dir, dir / v.file);
   }
-  const io::VideoProperties p = io::open_frame_decoder(dir / v.file, {})->properties();
+  const auto decoder = io::open_frame_decoder(dir / v.file, {});
+  const io::VideoProperties p = decoder->properties();
+  io::Picture first;
+  if (decoder->read_picture(first) == io::DecodeStatus::Ok && first.is_ycbcr())
+    v.ycbcr = first.ycbcr;
   v.codec = p.codec;
   v.fps = p.fps.value();
   v.frames = p.frames;

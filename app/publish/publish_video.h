@@ -5,9 +5,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "app/publish/publish_request.h"
+#include "io/picture.h"
 #include "io/sidecar.h"
 
 namespace vdfx::app {
@@ -18,6 +20,9 @@ struct PublishedVideo {
   double fps = 0.0;
   std::int64_t frames = 0;
   int width = 0, height = 0;
+  /// How its first frame's Y'CbCr code values are read (the stream's tags, io/ycbcr.h); none
+  /// for an RGB codec.
+  std::optional<io::YcbcrInfo> ycbcr;
 };
 
 /// Copies `request.video` into `dir` under its own name, or with a transcode writes

@@ -103,6 +103,25 @@ async function seekFrame(video, n, fps) {
     });
 }
 
+// A VideoFrame's Y', Cb, Cr planes ({ data, stride }, rows top first): I420 as it comes, NV12's
+// interleaved chroma split in two; null for any other layout.
+async function decodedPlanes(frame) {
+  if (frame.format !== 'I420' && frame.format !== 'NV12') return null;
+  const bytes = new Uint8Array(frame.allocationSize());
+  const layout = await frame.copyTo(bytes);
+  const plane = (i) => ({ data: bytes.subarray(layout[i].offset), stride: layout[i].stride });
+  if (frame.format === 'I420') return [plane(0), plane(1), plane(2)];
+  const cw = Math.ceil(frame.visibleRect.width / 2), ch = Math.ceil(frame.visibleRect.height / 2);
+  const cb = new Uint8Array(cw * ch), cr = new Uint8Array(cw * ch);
+  const { offset, stride } = layout[1];
+  for (let y = 0; y < ch; ++y)
+    for (let x = 0, src = offset + y * stride, dst = y * cw; x < cw; ++x, src += 2, ++dst) {
+      cb[dst] = bytes[src];
+      cr[dst] = bytes[src + 1];
+    }
+  return [plane(0), { data: cb, stride: cw }, { data: cr, stride: cw }];
+}
+
 class Player {
   constructor(config, module, renderer, hooks) {
     Object.assign(this, { config, module, renderer, hooks });
@@ -113,7 +132,7 @@ class Player {
     this.video.loop = true;
     this.view = { az: hooks.view?.az ?? 0, alt: hooks.view?.alt ?? 0, fov: hooks.fov ?? 90 };
     this.frame = hooks.frame ?? 0;
-    this.stats = { evalMs: [], drawMs: [] };
+    this.stats = { evalMs: [], drawMs: [], conversion: null };
     window.vdfxStats = this.stats;
   }
 
@@ -137,11 +156,37 @@ class Player {
     const p = this.module.eval(this.view.az, this.view.alt, this.frame);
     const t1 = performance.now();
     if (!p) return;
-    this.renderer.upload(this.video);
     this.renderer.draw(this.view, this.canvas.width, this.canvas.height, p);
     const t2 = performance.now();
     this.#record(this.stats.evalMs, t1 - t0);
     this.#record(this.stats.drawMs, t2 - t1);
+  }
+
+  // The video's current frame into the renderer. An 8-bit 4:2:0 frame goes in as its decoded
+  // planes (WebCodecs), converted to R'G'B' by the shared shader with the stream's own matrix,
+  // range and chroma siting (player.json, from io/ycbcr.h), as vdfx converts it; otherwise (no
+  // WebCodecs, another layout) the browser's own conversion (texImage2D of the <video>).
+  async uploadFrame() {
+    const info = this.config.video.ycbcr;
+    if (info && info.bit_depth === 8 && typeof VideoFrame === 'function') {
+      let frame = null;
+      try {
+        frame = new VideoFrame(this.video);
+        const planes = await decodedPlanes(frame);
+        if (planes) {
+          const r = frame.visibleRect;
+          this.renderer.uploadPlanes(planes, r.width, r.height, info);
+          this.stats.conversion = 'vdfx';
+          return;
+        }
+      } catch (e) {
+        console.warn(`decoded planes not available (${e.message}); the browser converts`);
+      } finally {
+        if (frame) frame.close();
+      }
+    }
+    this.renderer.upload(this.video);
+    this.stats.conversion = 'browser';
   }
 
   #record(list, ms) {
@@ -154,7 +199,7 @@ class Player {
     if (!this.video.requestVideoFrameCallback) return;
     const onFrame = (now, meta) => {
       this.frame = Math.min(this.config.video.frames - 1, Math.round(meta.mediaTime * this.fps()));
-      this.dirty = true;
+      this.uploadFrame().then(() => { this.dirty = true; });
       this.video.requestVideoFrameCallback(onFrame);
     };
     this.video.requestVideoFrameCallback(onFrame);
@@ -162,6 +207,7 @@ class Player {
 
   async stillFrame() {
     await seekFrame(this.video, this.frame, this.fps());
+    await this.uploadFrame();
     this.draw();
     // Title after the frame reached the screen (the next animation frame).
     await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
@@ -175,6 +221,7 @@ class Player {
       if (!this.video.requestVideoFrameCallback && !this.video.paused) {
         this.frame = Math.min(this.config.video.frames - 1,
                               Math.floor(this.video.currentTime * this.fps()));
+        this.renderer.upload(this.video);
         this.dirty = true;
       }
       if (this.dirty && !this.xrSession) {

@@ -123,6 +123,8 @@ export class Renderer {
     this.stackBlur = program(gl, shaders.vert, shaders.stackBlur, 'stack_blur.frag');
     this.vao = gl.createVertexArray();
     this.frameTex = this.#videoTexture();
+    this.planeTex = [this.#videoTexture(), this.#videoTexture(), this.#videoTexture()];
+    this.ycbcr = null; // set by uploadPlanes: the frame is three planes converted per sample
     this.taps = [this.#tapTexture(), this.#tapTexture()];
     this.targets = null;
   }
@@ -160,6 +162,35 @@ export class Renderer {
     gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, source);
     gl.generateMipmap(gl.TEXTURE_2D);
     gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
+    this.ycbcr = null;
+  }
+
+  // A decoded 8-bit frame as its three planes (each { data, stride }, rows top first),
+  // converted per sample by the video layer as the GL path converts (u_ycbcr = 1; `info` is
+  // player.json's video.ycbcr, written by publish from io/ycbcr.h). Chroma (u, v) from luma
+  // (u, v) as xr/video_layer_gl.cpp maps it (set_frame).
+  uploadPlanes(planes, width, height, info) {
+    const gl = this.gl;
+    const cw = Math.ceil(width / 2 ** info.log2_chroma[0]);
+    const ch = Math.ceil(height / 2 ** info.log2_chroma[1]);
+    const sizes = [[width, height], [cw, ch], [cw, ch]];
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    for (let i = 0; i < 3; ++i) {
+      gl.bindTexture(gl.TEXTURE_2D, this.planeTex[i]);
+      gl.pixelStorei(gl.UNPACK_ROW_LENGTH, planes[i].stride);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.R8, sizes[i][0], sizes[i][1], 0, gl.RED,
+                    gl.UNSIGNED_BYTE, planes[i].data);
+      gl.generateMipmap(gl.TEXTURE_2D);
+    }
+    gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 0);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+    const scale = [], offset = [];
+    for (let a = 0; a < 2; ++a) {
+      const step = 2 ** info.log2_chroma[a], chroma = sizes[1][a];
+      scale.push(sizes[0][a] / (step * chroma));
+      offset.push((0.5 - (0.5 + info.chroma_siting[a]) / step) / chroma);
+    }
+    this.ycbcr = { m: info.m, offset: info.offset, scale, chromaOffset: offset };
   }
 
   #targetsFor(width, height, margin) {
@@ -197,10 +228,26 @@ export class Renderer {
     gl.uniform1i(v.u('u_equirect'), 0);
     gl.uniformMatrix3fv(v.u('u_rot'), false, columnMajor(rot));
     gl.uniform1i(v.u('u_lod_mode'), 0);
-    gl.uniform1i(v.u('u_ycbcr'), 0);
+    gl.uniform1i(v.u('u_ycbcr'), this.ycbcr ? 1 : 0);
+    if (this.ycbcr) this.#setYcbcr(v);
     gl.uniform4f(v.u('u_tan'), tan[0] - dx, tan[1] + dx, tan[2] - dy, tan[3] + dy);
     gl.uniform2f(v.u('u_size'), dst.width, dst.height);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+
+  #setYcbcr(v) {
+    const gl = this.gl, y = this.ycbcr;
+    for (let i = 0; i < 3; ++i) {
+      gl.activeTexture(gl.TEXTURE1 + i);
+      gl.bindTexture(gl.TEXTURE_2D, this.planeTex[i]);
+      gl.uniform1i(v.u(`u_plane${i}`), 1 + i);
+    }
+    gl.activeTexture(gl.TEXTURE0);
+    gl.uniformMatrix3fv(v.u('u_m'), true, new Float32Array(y.m)); // row-major
+    gl.uniform3fv(v.u('u_offset'), new Float32Array(y.offset));
+    gl.uniform1f(v.u('u_code_scale'), 255);
+    gl.uniform2f(v.u('u_chroma_scale'), y.scale[0], y.scale[1]);
+    gl.uniform2f(v.u('u_chroma_offset'), y.chromaOffset[0], y.chromaOffset[1]);
   }
 
   #blurPass(src, dst, blur) {

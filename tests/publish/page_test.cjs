@@ -1,0 +1,184 @@
+// The page of `vdfx publish` in a real browser (CTest: publish.page; docs/publish.md):
+//   node page_test.cjs VDFX_BINARY SOURCE_DIR OUTPUT_DIR
+// Debian's chromium, headless, WebGL2 through SwiftShader, driven over the DevTools protocol
+// (browser.cjs). Checks:
+//  1. for each of the six stack effects (keyed in space and time) and for the demo's sidecar, at
+//     three views, frames and fields of view: the page's canvas (its still-frame hooks) matches
+//     `vdfx render --mode view` of the same view, frame, FOV and size within 3/255, mean 1/255;
+//  2. a broken sidecar in the folder: the page shows the lines `vdfx validate` prints;
+//  3. a video the browser cannot decode: the page names the codec and --transcode.
+// The clip is smooth H.264 written here with ffmpeg; the page and vdfx render decode the same
+// file, so only the Y'CbCr -> RGB conversion and the renderers differ.
+'use strict';
+const fs = require('fs');
+const path = require('path');
+const { execFileSync, spawnSync } = require('child_process');
+const { serve, Browser, decodePng, diff } = require('./browser.cjs');
+
+const [vdfx, sourceDir, outDir] = process.argv.slice(2).map((p) => p && path.resolve(p));
+if (!vdfx || !sourceDir || !outDir) {
+  console.error('usage: node page_test.cjs VDFX_BINARY SOURCE_DIR OUTPUT_DIR');
+  process.exit(2);
+}
+fs.rmSync(outDir, { recursive: true, force: true });
+fs.mkdirSync(outDir, { recursive: true });
+const W = 320, H = 180, MAX = 3, MEAN = 1;
+let failures = 0;
+function check(ok, what) {
+  if (!ok) {
+    failures++;
+    console.error(`FAIL: ${what}`);
+  }
+}
+
+// 512 x 256, 8 frames at 24 fps: smooth colours that wrap at the seam and move with the frame.
+function writeClip(file) {
+  const geq = "geq=r='128+90*sin(2*PI*X/W+0.4*N)':g='128+80*cos(2*PI*Y/H+0.3*N)':" +
+              "b='128+70*sin(2*PI*(X/W+Y/H))'";
+  execFileSync('ffmpeg', ['-v', 'error', '-y', '-f', 'lavfi', '-i',
+    `nullsrc=s=512x256:r=24,format=rgb24,${geq}`, '-frames:v', '8',
+    '-vf', 'scale=out_color_matrix=bt709:out_range=tv', '-pix_fmt', 'yuv420p',
+    '-colorspace', 'bt709', '-color_primaries', 'bt709', '-color_trc', 'bt709',
+    '-color_range', 'tv', '-c:v', 'libx264', '-preset', 'fast', '-qp', '8', file]);
+}
+
+// Each effect keyed at three places and frames, so views between them interpolate in space
+// and time.
+const EFFECTS = {
+  blur: [{ sigma_deg: 0.6 }, { sigma_deg: 2.0 }, { sigma_deg: 0.0 }],
+  tint: [{ gain: [1.5, 1.0, 0.6] }, { gain: [0.7, 1.0, 1.4] }, { gain: [1, 1, 1] }],
+  exposure: [{ stops: 0.8 }, { stops: -1.2 }, { stops: 0.2 }],
+  saturation: [{ amount: 1.8 }, { amount: 0.3 }, { amount: 1.0 }],
+  contrast: [{ amount: 1.6 }, { amount: 0.6 }, { amount: 1.1 }],
+  vignette: [{ radius_deg: 20, falloff_deg: 30 }, { radius_deg: 40, falloff_deg: 10 },
+             { radius_deg: 60, falloff_deg: 60 }],
+};
+const PLACES = [[0, 0, 0], [120, 20, 7], [-120, -30, 3]];
+// View (azimuth, altitude), frame, horizontal FOV: the centre, across the seam looking up, and
+// low on the far side.
+const VIEWS = [[0, 0, 0, 90], [170, 40, 3, 70], [-100, -25, 7, 100]];
+
+function sidecarOf(type) {
+  const keyframes = EFFECTS[type].map((params, i) => ({
+    azimuth_deg: PLACES[i][0], altitude_deg: PLACES[i][1], frame: PLACES[i][2], params }));
+  return { format: 'vdfx.sidecar', version: 1,
+           video: { path: 'clip.mp4', fps: 24, frames: 8, width: 512, height: 256 },
+           interpolation: { exponent: 1.0, time_scale: 1.0 },
+           effects: [{ type, keyframes }] };
+}
+
+function run(args, options = {}) {
+  const r = spawnSync(vdfx, args, { encoding: 'utf8', ...options });
+  if (r.status !== 0 && !options.allowFail)
+    throw new Error(`vdfx ${args.join(' ')}: exit ${r.status}\n${r.stderr}${r.stdout}`);
+  return r;
+}
+
+// The folders the browser loads: one per effect, the demo, and two broken ones.
+function publishSites() {
+  const clip = path.join(outDir, 'clip.mp4');
+  writeClip(clip);
+  const sites = [];
+  for (const type of Object.keys(EFFECTS)) {
+    const sidecar = path.join(outDir, `${type}.vdfx.json`);
+    fs.writeFileSync(sidecar, JSON.stringify(sidecarOf(type), null, 1));
+    run(['publish', clip, '--sidecar', sidecar, '--out', path.join(outDir, type)]);
+    sites.push({ name: type, video: path.join(outDir, type, 'clip.mp4'), sidecar, views: VIEWS });
+  }
+  // The demo's sidecar (tint, exposure, saturation, vignette together) on the same clip.
+  const demo = JSON.parse(fs.readFileSync(path.join(sourceDir, 'app/demo/interior.vdfx.json')));
+  demo.video = sidecarOf('blur').video;
+  const demoSidecar = path.join(outDir, 'demo.vdfx.json');
+  fs.writeFileSync(demoSidecar, JSON.stringify(demo, null, 1));
+  run(['publish', clip, '--sidecar', demoSidecar, '--out', path.join(outDir, 'demo')]);
+  sites.push({ name: 'demo', video: path.join(outDir, 'demo', 'clip.mp4'), sidecar: demoSidecar,
+               views: [[31, 5, 0, 90], [-75, -10, 5, 80], [-150, 0, 2, 100]] });
+  return sites;
+}
+
+function pageUrl(port, site, [az, alt, frame, fov]) {
+  return `http://127.0.0.1:${port}/${site}/index.html?view=${az},${alt}&frame=${frame}` +
+         `&fov=${fov}&size=${W}x${H}&paused=1`;
+}
+
+async function comparePixels(browser, port, sites) {
+  const rows = [];
+  for (const site of sites) {
+    for (const v of site.views) {
+      const label = `${site.name} view ${v[0]},${v[1]} frame ${v[2]} fov ${v[3]}`;
+      const title = await browser.open(pageUrl(port, site.name, v), W, H);
+      if (!title.startsWith('vdfx-ready')) {
+        check(false, `${label}: ${title}`);
+        continue;
+      }
+      // The page converts the decoded planes itself (the shared shader, the stream's tags);
+      // the browser's own conversion differs from vdfx's in the chroma siting.
+      const conversion = await browser.evaluate('window.vdfxStats.conversion');
+      check(conversion === 'vdfx', `${label}: the page's colour conversion is ${conversion}`);
+      const shot = await browser.screenshot(W, H);
+      const ref = path.join(outDir, `${site.name}_${v.join('_')}_render.png`);
+      run(['render', site.video, '--sidecar', site.sidecar, '--view', `${v[0]},${v[1]}`,
+           '--frame', String(v[2]), '--fov', String(v[3]), '--size', `${W}x${H}`,
+           '--mode', 'view', '--out', ref]);
+      const d = diff(decodePng(shot), decodePng(fs.readFileSync(ref)));
+      rows.push(`${label.padEnd(48)} max ${d.max}/255  mean ${d.mean.toFixed(3)}/255`);
+      const ok = d.max <= MAX && d.mean <= MEAN;
+      if (!ok || v === site.views[0])
+        fs.writeFileSync(path.join(outDir, `${site.name}_${v.join('_')}_page.png`), shot);
+      check(ok, `${label}: max ${d.max} mean ${d.mean.toFixed(3)} (allowed ${MAX}, ${MEAN})`);
+    }
+  }
+  console.log(rows.join('\n'));
+}
+
+// A copy of a published folder with `file` replaced by `bytes`.
+function brokenSite(from, name, file, bytes) {
+  const dir = path.join(outDir, name);
+  fs.cpSync(path.join(outDir, from), dir, { recursive: true });
+  fs.writeFileSync(path.join(dir, file), bytes);
+  return dir;
+}
+
+async function checkErrors(browser, port) {
+  const text = '{"format": "vdfx.sidecar", "version": 1,\n "video": {"path": "clip.mp4", ' +
+    '"fps": 0, "frames": 8, "width": 512, "height": 256},\n "effects": [{"type": "glow"}]}\n';
+  const dir = brokenSite('exposure', 'broken_sidecar', 'exposure.vdfx.json', text);
+  const v = run(['validate', 'exposure.vdfx.json'], { cwd: dir, allowFail: true });
+  const lines = v.stderr.trim().split('\n').filter((l) => !/: \d+ problems?$/.test(l));
+  check(v.status === 1 && lines.length >= 2, `vdfx validate on the broken sidecar: ${v.stderr}`);
+  const title = await browser.open(`http://127.0.0.1:${port}/broken_sidecar/index.html`, W, H);
+  const shown = await browser.evaluate("document.getElementById('message').textContent");
+  check(title.startsWith('vdfx-error: '), `broken sidecar: title ${title}`);
+  check(shown === lines.join('\n'), `broken sidecar: the page shows\n${shown}\n` +
+        `and vdfx validate prints\n${lines.join('\n')}`);
+
+  brokenSite('exposure', 'broken_video', 'clip.mp4', Buffer.alloc(4096, 7));
+  const t2 = await browser.open(`http://127.0.0.1:${port}/broken_video/index.html`, W, H);
+  check(t2.startsWith('vdfx-error: ') && t2.includes('codec h264') &&
+        t2.includes('--transcode'), `undecodable video: title ${t2}`);
+}
+
+(async () => {
+  const t0 = Date.now();
+  const sites = publishSites();
+  const t1 = Date.now();
+  const server = await serve(outDir);
+  const browser = await Browser.launch(path.join(outDir, 'chromium-profile'), W, H);
+  try {
+    await comparePixels(browser, server.address().port, sites);
+    await checkErrors(browser, server.address().port);
+  } finally {
+    browser.close();
+    server.close();
+  }
+  console.log(`publish ${((t1 - t0) / 1000).toFixed(1)} s, browser ` +
+              `${((Date.now() - t1) / 1000).toFixed(1)} s`);
+  if (failures) {
+    console.error(`${failures} failure(s); images in ${outDir}`);
+    process.exit(1);
+  }
+  console.log('publish.page: all checks passed');
+})().catch((e) => {
+  console.error(e.stack || String(e));
+  process.exit(1);
+});
