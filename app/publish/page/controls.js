@@ -1,6 +1,6 @@
 // Desktop and phone controls of the player page: drag to look, wheel to zoom the field of
-// view, keys (space play/pause, arrows seek 5 s, comma/period one frame), the bar's buttons,
-// and device orientation on phones.
+// view, keys (space play/pause, arrows seek 5 s, comma/period one frame), the bar's buttons
+// (play, sound, the seek slider), and device orientation on phones.
 const clamp = (x, lo, hi) => Math.min(hi, Math.max(lo, x));
 const wrapAz = (az) => ((((az + 180) % 360) + 360) % 360) - 180;
 
@@ -66,6 +66,11 @@ function attachBar(player) {
   const v = player.video, play = document.getElementById('play');
   const seek = document.getElementById('seek'), time = document.getElementById('time');
   play.addEventListener('click', () => togglePlay(player));
+  const sound = document.getElementById('sound');
+  sound.addEventListener('click', () => {
+    v.muted = !v.muted;
+    sound.textContent = v.muted ? 'Sound on' : 'Sound off';
+  });
   v.addEventListener('play', () => { play.textContent = 'Pause'; });
   v.addEventListener('pause', () => { play.textContent = 'Play'; });
   v.addEventListener('timeupdate', () => {

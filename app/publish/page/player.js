@@ -132,7 +132,7 @@ class Player {
     this.video.loop = true;
     this.view = { az: hooks.view?.az ?? 0, alt: hooks.view?.alt ?? 0, fov: hooks.fov ?? 90 };
     this.frame = hooks.frame ?? 0;
-    this.stats = { evalMs: [], drawMs: [], conversion: null };
+    this.stats = { evalMs: [], drawMs: [], conversion: null, view: this.view };
     window.vdfxStats = this.stats;
   }
 
@@ -194,15 +194,19 @@ class Player {
     if (list.length > 240) list.shift();
   }
 
-  // The frame on screen: from the presented frame's media time when the browser says it.
-  #trackFrames() {
-    if (!this.video.requestVideoFrameCallback) return;
-    const onFrame = (now, meta) => {
-      this.frame = Math.min(this.config.video.frames - 1, Math.round(meta.mediaTime * this.fps()));
-      this.uploadFrame().then(() => { this.dirty = true; });
-      this.video.requestVideoFrameCallback(onFrame);
-    };
-    this.video.requestVideoFrameCallback(onFrame);
+  // A new frame of the playing (or seeked) video: uploaded, then drawn. Polled once per
+  // animation frame: requestVideoFrameCallback does not fire for a <video> that is not on the
+  // page (this one is only a texture source).
+  #pollFrame() {
+    const t = this.video.currentTime;
+    if (this.uploading || t === this.shownTime) return;
+    this.uploading = true;
+    this.shownTime = t;
+    this.uploadFrame().then(() => {
+      this.frame = Math.min(this.config.video.frames - 1, Math.floor(t * this.fps() + 1e-6));
+      this.uploading = false;
+      this.dirty = true;
+    });
   }
 
   async stillFrame() {
@@ -214,16 +218,16 @@ class Player {
     document.title = 'vdfx-ready';
   }
 
-  run() {
-    this.#trackFrames();
+  // Plays from the first frame, muted (browsers allow that without a gesture; the bar's Sound
+  // button unmutes), drawing whenever a new frame arrives or the view changes.
+  async run() {
+    await seekFrame(this.video, 0, this.fps());
+    await this.uploadFrame();
+    this.shownTime = this.video.currentTime;
     this.dirty = true;
+    this.video.play().catch(() => {});
     const loop = () => {
-      if (!this.video.requestVideoFrameCallback && !this.video.paused) {
-        this.frame = Math.min(this.config.video.frames - 1,
-                              Math.floor(this.video.currentTime * this.fps()));
-        this.renderer.upload(this.video);
-        this.dirty = true;
-      }
+      this.#pollFrame();
       if (this.dirty && !this.xrSession) {
         this.dirty = false;
         this.draw();
@@ -251,6 +255,7 @@ async function start() {
   if (!gl) throw new Error('this browser has no WebGL2');
   const renderer = new Renderer(gl, await loadShaders());
   const player = new Player(config, module, renderer, hooks);
+  window.vdfxPlayer = player; // for benchmarks and debugging (docs/publish.md)
   await openVideo(player.video, config);
   if (config.left_out.length)
     $('left-out').textContent = `not drawn here: ${config.left_out.join(', ')}`;
@@ -260,7 +265,7 @@ async function start() {
   }
   attachControls(player);
   startXr(player);
-  player.run();
+  await player.run();
 }
 
 start().catch((e) => fail(e && e.message ? e.message : String(e)));
