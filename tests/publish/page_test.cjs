@@ -158,6 +158,113 @@ async function checkErrors(browser, port) {
         t2.includes('--transcode'), `undecodable video: title ${t2}`);
 }
 
+// A fake XRSystem, injected before the page's scripts: immersive-vr offered, a session whose
+// three animation frames hand the page a viewer pose and two views with known orientations and
+// projections; the layer draws into the canvas, the left eye in its left half, the right eye in
+// its right half.
+function fakeXr(config) {
+  return `(() => {
+    const cfg = ${JSON.stringify(config)};
+    const pose = { transform: { orientation: cfg.head }, views: cfg.views.map((v) => ({
+      eye: v.eye, transform: { orientation: v.q }, projectionMatrix: new Float32Array(v.P) })) };
+    const frame = { getViewerPose: () => pose };
+    window.XRWebGLLayer = class {
+      constructor(session, gl) { this.gl = gl; this.framebuffer = null; }
+      getViewport(view) {
+        const c = this.gl.canvas, w = c.width / 2;
+        return { x: view.eye === 'left' ? 0 : w, y: 0, width: w, height: c.height };
+      }
+    };
+    WebGL2RenderingContext.prototype.makeXRCompatible = () => Promise.resolve();
+    let frames = 0;
+    const session = {
+      renderState: {},
+      updateRenderState(s) { this.renderState = { ...this.renderState, ...s }; },
+      requestReferenceSpace: async () => ({}),
+      requestAnimationFrame(cb) {
+        if (frames++ < 3) setTimeout(() => cb(performance.now(), frame), 16);
+        return frames;
+      },
+      addEventListener() {},
+      end() {},
+    };
+    Object.defineProperty(navigator, 'xr', { configurable: true, value: {
+      isSessionSupported: async (mode) => mode === 'immersive-vr',
+      requestSession: async () => session } });
+  })();`;
+}
+
+// Quaternion {x, y, z, w} of a view at (azimuth, altitude): yaw -azimuth about y, then pitch.
+function viewQuaternion(az, alt) {
+  const a = (-az * Math.PI) / 360, b = (alt * Math.PI) / 360;
+  // (0, sin a, 0, cos a) * (sin b, 0, 0, cos b)
+  return { x: Math.cos(a) * Math.sin(b), y: Math.sin(a) * Math.cos(b),
+           z: -Math.sin(a) * Math.sin(b), w: Math.cos(a) * Math.cos(b) };
+}
+
+// A symmetric perspective (column-major) with this horizontal FOV for a w x h viewport.
+function projection(fovDeg, w, h) {
+  const tx = Math.tan((fovDeg * Math.PI) / 360), ty = (tx * h) / w;
+  const P = new Array(16).fill(0);
+  P[0] = 1 / tx;
+  P[5] = 1 / ty;
+  P[10] = -1.0002;
+  P[11] = -1;
+  P[14] = -0.020002;
+  return P;
+}
+
+// A sidecar whose every active effect is constant at its value at `at` (one keyframe each).
+function constantSidecar(sidecar, at, file) {
+  const r = run(['eval', sidecar, '--at', at]);
+  const effects = Object.entries(JSON.parse(r.stdout).effects)
+    .filter(([, v]) => v.active)
+    .map(([type, v]) => {
+      const params = { ...v };
+      delete params.active;
+      return { type, keyframes: [{ azimuth_deg: 0, altitude_deg: 0, frame: 0, params }] };
+    });
+  fs.writeFileSync(file, JSON.stringify({ ...sidecarOf('blur'), effects }, null, 1));
+  return file;
+}
+
+// WebXR: the head at (40, 10), the eyes turned to azimuth 25 and 55 with FOVs 80 and 70. Each
+// half of the canvas must be vdfx render of that eye's view with the parameters of the head's
+// view (rendered from a sidecar holding them constant).
+async function checkXr(browser, port) {
+  const head = [40, 10], frame = 3, w = W / 2;
+  const eyes = [{ eye: 'left', az: 25, fov: 80 }, { eye: 'right', az: 55, fov: 70 }];
+  const config = { head: viewQuaternion(...head), views: eyes.map((e) => ({
+    eye: e.eye, q: viewQuaternion(e.az, head[1]), P: projection(e.fov, w, H) })) };
+  const script = await browser.send('Page.addScriptToEvaluateOnNewDocument',
+                                    { source: fakeXr(config) });
+  const title = await browser.open(`http://127.0.0.1:${port}/demo/index.html?frame=${frame}` +
+                                   `&size=${W}x${H}&xr=1`, W, H);
+  await browser.send('Page.removeScriptToEvaluateOnNewDocument', script);
+  if (!title.startsWith('vdfx-ready')) return check(false, `WebXR: ${title}`);
+  const xr = await browser.evaluate('window.vdfxStats.xr');
+  check(Math.abs(xr.head.az - head[0]) < 1e-6 && Math.abs(xr.head.alt - head[1]) < 1e-6,
+        `WebXR: the head's direction read back as ${JSON.stringify(xr.head)}`);
+  const shot = decodePng(await browser.screenshot(W, H));
+  fs.writeFileSync(path.join(outDir, 'xr_page.png'), await browser.screenshot(W, H));
+  const headSidecar = constantSidecar(path.join(outDir, 'demo.vdfx.json'),
+                                      `${head[0]},${head[1]},${frame}`,
+                                      path.join(outDir, 'xr_head.vdfx.json'));
+  for (const [i, e] of eyes.entries()) {
+    const ref = path.join(outDir, `xr_${e.eye}_render.png`);
+    run(['render', path.join(outDir, 'demo', 'clip.mp4'), '--sidecar', headSidecar, '--view',
+         `${e.az},${head[1]}`, '--frame', String(frame), '--fov', String(e.fov), '--size',
+         `${w}x${H}`, '--mode', 'view', '--out', ref]);
+    const half = { width: w, height: H, rgb: Buffer.alloc(w * H * 3) };
+    for (let y = 0; y < H; ++y)
+      shot.rgb.copy(half.rgb, y * w * 3, (y * W + i * w) * 3, (y * W + i * w + w) * 3);
+    const d = diff(half, decodePng(fs.readFileSync(ref)));
+    console.log(`${`WebXR ${e.eye} eye az ${e.az} fov ${e.fov}, head 40,10`.padEnd(48)} ` +
+                `max ${d.max}/255  mean ${d.mean.toFixed(3)}/255`);
+    check(d.max <= MAX && d.mean <= MEAN, `WebXR ${e.eye} eye: max ${d.max} mean ${d.mean}`);
+  }
+}
+
 (async () => {
   const t0 = Date.now();
   const sites = publishSites();
@@ -167,6 +274,7 @@ async function checkErrors(browser, port) {
   try {
     await comparePixels(browser, server.address().port, sites);
     await checkErrors(browser, server.address().port);
+    await checkXr(browser, server.address().port);
   } finally {
     browser.close();
     server.close();

@@ -5,10 +5,11 @@
 // Test hooks (URL query): view=AZ,ALT  frame=N  fov=DEG  size=WxH  paused=1. With size= the
 // canvas is exactly W x H CSS pixels at device pixel ratio 1, nothing drawn over it; with
 // frame= or paused=1 the page shows that one frame paused and sets document.title to
-// "vdfx-ready" once it is drawn. Any error sets document.title to "vdfx-error: MESSAGE".
+// "vdfx-ready" once it is drawn; xr=1 draws that frame in an immersive session entered at once
+// (for a test's injected XRSystem). Any error sets document.title to "vdfx-error: MESSAGE".
 import { Renderer } from './renderer.js';
 import { attachControls } from './controls.js';
-import { startXr } from './xr.js';
+import { enterVr, startXr } from './xr.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -40,7 +41,7 @@ export function parseHooks(search) {
   if (fov && !(fov[0] >= 1 && fov[0] <= 179)) throw new Error('the URL\'s fov= must be in 1..179');
   return {
     view: view ? { az: view[0], alt: view[1] } : null, fov: fov ? fov[0] : null,
-    frame: frame ? frame[0] : null, size, paused: q.get('paused') === '1',
+    frame: frame ? frame[0] : null, size, paused: q.get('paused') === '1', xr: q.get('xr') === '1',
   };
 }
 
@@ -209,6 +210,21 @@ class Player {
     });
   }
 
+  // The xr=1 hook: the still frame in an immersive session entered at once (no button press:
+  // a test's injected XRSystem asks for none), "vdfx-ready" after its first XR frame is drawn.
+  async xrStill(button) {
+    if (!button) throw new Error('xr=1: this browser offers no immersive-vr session');
+    this.resize();
+    await seekFrame(this.video, this.frame, this.fps());
+    await this.uploadFrame();
+    const drawn = new Promise((resolve) => { this.onXrFrame = resolve; });
+    await enterVr(this, button);
+    await drawn;
+    this.onXrFrame = null;
+    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    document.title = 'vdfx-ready';
+  }
+
   async stillFrame() {
     await seekFrame(this.video, this.frame, this.fps());
     await this.uploadFrame();
@@ -259,12 +275,16 @@ async function start() {
   await openVideo(player.video, config);
   if (config.left_out.length)
     $('left-out').textContent = `not drawn here: ${config.left_out.join(', ')}`;
+  if (hooks.xr) {
+    await player.xrStill(await startXr(player, fail));
+    return;
+  }
   if (hooks.frame !== null || hooks.paused) {
     await player.stillFrame();
     return;
   }
   attachControls(player);
-  startXr(player);
+  await startXr(player, fail);
   await player.run();
 }
 

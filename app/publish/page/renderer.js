@@ -265,9 +265,9 @@ export class Renderer {
 
   // p: the 9 stack parameters of vdfx_eval (blur sigma_deg, tint r g b, stops, saturation,
   // contrast, vignette radius_deg, falloff_deg).
-  #stackPass(src, prog, p, tan, width, height, margin, blur) {
+  #stackPass(src, prog, p, tan, width, height, margin, blur, dst) {
     const gl = this.gl;
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, dst ? dst.fb : null);
     gl.viewport(0, 0, width, height);
     gl.useProgram(prog.p);
     gl.activeTexture(gl.TEXTURE0);
@@ -286,19 +286,46 @@ export class Renderer {
     gl.drawArrays(gl.TRIANGLES, 0, 3);
   }
 
-  // One view into the canvas (width x height device pixels) with the parameters p.
-  draw(view, width, height, p) {
+  // An 8-bit target of one eye's size: the stack pass draws an XR eye here, then it is copied
+  // into the eye's viewport (the shaders' pinhole reads gl_FragCoord from the target's corner).
+  #outputFor(width, height) {
+    const o = this.output;
+    if (o && o.width === width && o.height === height) return o;
+    const gl = this.gl;
+    if (o) { gl.deleteTexture(o.tex); gl.deleteFramebuffer(o.fb); }
+    const tex = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, tex);
+    gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, width, height);
+    const fb = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, 0);
+    this.output = { tex, fb, width, height };
+    return this.output;
+  }
+
+  // One view (width x height device pixels) with the parameters p: into the canvas, or with
+  // `out` ({ fb, x, y }: an XR layer's framebuffer and the eye's viewport corner) into that.
+  // view: { az, alt, fov } for the desktop, or { rot, tan } (an XR eye's own rotation and
+  // projection tangents).
+  draw(view, width, height, p, out = null) {
     const gl = this.gl;
     gl.bindVertexArray(this.vao);
     gl.disable(gl.BLEND);
-    const tan = viewTangents(view.fov, width, height);
-    const rot = viewRotation(view.az, view.alt);
+    const tan = view.tan ?? viewTangents(view.fov, width, height);
+    const rot = view.rot ?? viewRotation(view.az, view.alt);
     const blur = p[0] > 0 ? blurPixels(p[0], tan, width, height) : null;
     const margin = blur ? Math.max(blur.rx, blur.ry) : 0;
     const t = this.#targetsFor(width, height, margin);
     this.#videoPass(t.a, rot, tan, width, height, margin);
     if (blur) this.#blurPass(t.a, t.b, blur);
+    const dst = out ? this.#outputFor(width, height) : null;
     this.#stackPass(blur ? t.b : t.a, blur ? this.stackBlur : this.stack, p, tan, width, height,
-                    margin, blur);
+                    margin, blur, dst);
+    if (!out) return;
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, dst.fb);
+    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, out.fb);
+    gl.blitFramebuffer(0, 0, width, height, out.x, out.y, out.x + width, out.y + height,
+                       gl.COLOR_BUFFER_BIT, gl.NEAREST);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
   }
 }
