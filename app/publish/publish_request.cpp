@@ -3,6 +3,7 @@
 #include "app/publish/publish_request.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
@@ -93,6 +94,21 @@ std::string checked_codec(const PublishRequest& r) {
   return codec;
 }
 
+/// Removes `.NAME.publish-PID` folders in `parent` whose process no longer exists (a publish
+/// that was killed or interrupted); a live publish's folder is never touched.
+void remove_stale_staging(const fs::path& parent, const std::string& name) {
+  const std::string prefix = "." + name + ".publish-";
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(parent, ec)) {
+    const std::string n = e.path().filename().string();
+    if (!n.starts_with(prefix) || n.size() == prefix.size()) continue;
+    const std::string digits = n.substr(prefix.size());
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(e.path(), ec);
+  }
+}
+
 /// A temporary sibling of OUT, removed again unless it was put in place.
 class StagedFolder {
  public:
@@ -103,6 +119,7 @@ class StagedFolder {
         abs.has_filename() ? abs.parent_path() : abs.parent_path().parent_path();
     path_ = parent / ("." + name.string() + ".publish-" + std::to_string(::getpid()));
     target_ = parent / name;
+    remove_stale_staging(parent, name.string());
     std::error_code ec;
     fs::remove_all(path_, ec);
     if (!fs::create_directory(path_, ec))
