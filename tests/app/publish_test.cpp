@@ -43,9 +43,7 @@ bool module_built() {
   return fs::exists(fs::path(VDFX_BINARY).parent_path() / "wasm" / "vdfx_player.wasm");
 }
 
-#define SKIP_WITHOUT_MODULE()                                                   \
-  if (!module_built()) GTEST_SKIP() << "built without the web player's module " \
-                                       "(VDFX_BUILD_WASM=OFF)"
+constexpr const char* kNoModule = "built without the web player's module (VDFX_BUILD_WASM=OFF)";
 
 std::string publish_args(const Fixture& f, const fs::path& out, const std::string& extra = "") {
   return "publish " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --out " +
@@ -53,7 +51,7 @@ std::string publish_args(const Fixture& f, const fs::path& out, const std::strin
 }
 
 TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
-  SKIP_WITHOUT_MODULE();
+  if (!module_built()) GTEST_SKIP() << kNoModule;
   const Fixture f = make_fixture();
   const fs::path out = f.dir / "site";
   const CommandResult r = run_vdfx_headless(publish_args(f, out, "--title 'Dawn & <dusk>'"));
@@ -129,7 +127,7 @@ fs::path write_mpeg4_clip(const fs::path& dir) {
 }
 
 TEST(Publish, ACodecBrowsersDoNotPlayIsRefusedNamingItAndTheOptionThenTranscoded) {
-  SKIP_WITHOUT_MODULE();
+  if (!module_built()) GTEST_SKIP() << kNoModule;
   Fixture f = make_fixture();
   f.clip = write_mpeg4_clip(f.dir / "mpeg4");
   const fs::path out = f.dir / "site";
@@ -150,7 +148,7 @@ TEST(Publish, ACodecBrowsersDoNotPlayIsRefusedNamingItAndTheOptionThenTranscoded
 }
 
 TEST(Publish, TranscodesToVp9) {
-  SKIP_WITHOUT_MODULE();
+  if (!module_built()) GTEST_SKIP() << kNoModule;
   Fixture f = make_fixture();
   f.clip = write_mpeg4_clip(f.dir / "mpeg4");
   const fs::path out = f.dir / "site";
@@ -200,7 +198,7 @@ TEST(Publish, UsageErrorsAreExit2) {
 }
 
 TEST(Publish, AnExistingFolderIsReplacedWholeAndKeptWholeWhenPublishFails) {
-  SKIP_WITHOUT_MODULE();
+  if (!module_built()) GTEST_SKIP() << kNoModule;
   const Fixture f = make_fixture();
   const fs::path out = f.dir / "site";
   ASSERT_EQ(run_vdfx_headless(publish_args(f, out, "--title First")).exit_code, 0);
