@@ -94,6 +94,24 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
   EXPECT_TRUE(leftovers(out).empty());
 }
 
+TEST(Publish, NamesTheGrainAndFlaresThePageDoesNotDraw) {
+  if (!module_built()) GTEST_SKIP() << kNoModule;
+  const Fixture f = make_fixture();
+  write_text(f.sidecar, R"({"format": "vdfx.sidecar", "version": 1,
+    "video": {"path": "clip.mp4", "fps": 24.0, "frames": 12, "width": 128, "height": 64},
+    "interpolation": {"exponent": 1.0, "time_scale": 1.0},
+    "effects": [{"type": "grain", "style": "headset", "seed": 7, "settings": {"refresh_ms": 40.0},
+      "keyframes": [{"azimuth_deg": 20.0, "altitude_deg": 10.0, "frame": 5,
+                     "params": {"intensity": 0.5, "size": 1.0}}]}]})");
+  const fs::path out = f.dir / "site";
+  const CommandResult r = run_vdfx_headless(publish_args(f, out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("does not draw grain #1 (headset) yet"), std::string::npos) << r.output;
+  const auto manifest = nlohmann::json::parse(slurp(out / "player.json"));
+  EXPECT_EQ(manifest["left_out"], nlohmann::json::array({"grain #1 (headset)"}));
+  EXPECT_EQ(manifest["stack_mask"], 0);
+}
+
 TEST(Publish, ABrokenSidecarIsExit1WithValidatesOwnMessageAndWritesNothing) {
   const Fixture f = make_fixture();
   write_text(f.sidecar, R"({"format": "vdfx.sidecar", "version": 1,
