@@ -13,7 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   fonts-dejavu-core blender-data ffmpeg
   gnuplot-nox python3-jsonschema
-  glslang-tools emscripten
+  glslang-tools emscripten chromium
   xvfb xauth libgl1-mesa-dri mesa-utils
   libopenxr-dev libopenxr-loader1 openxr-layer-corevalidation libopenxr-utils
   clang-14 libclang-rt-14-dev llvm-14 clang-format-14

@@ -83,6 +83,10 @@ io::EncoderSettings codec_settings(const ExportRequest& req, const Inputs& in) {
   es.crf = req.crf >= 0 ? req.crf : (req.h265 ? 20 : 18);
   es.preset = req.preset;
   if (req.h265) es.codec_options["x265-params"] = "log-level=error";
+  if (!req.encoder.empty()) {
+    es.codec = req.encoder;
+    es.codec_options = req.encoder_options;
+  }
   es.width = req.baked() ? in.props.width : req.width;
   es.height = req.baked() ? in.props.height : req.height;
   if (req.chroma_444) {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -23,7 +24,11 @@ struct ExportRequest {
   std::filesystem::path path_recording;  //!< a recorded session: export the viewer's view
   std::filesystem::path path_out;        //!< with path_recording: the flat video to write
   bool h265 = false;                     //!< libx265, else libx264
-  int crf = -1;                          //!< -1: 18 (h264) or 20 (h265)
+  /// A libavcodec encoder that replaces libx264/libx265 (`vdfx publish --transcode vp9`:
+  /// libvpx-vp9), with its own options; empty: h265 decides.
+  std::string encoder;
+  std::map<std::string, std::string> encoder_options;
+  int crf = -1;  //!< -1: 18 (h264) or 20 (h265)
   std::string preset = "medium";
   bool chroma_444 = false;  //!< else 4:2:0 (even sizes only)
   /// Only these frames; none: the whole video (a path export: up to the recording's end).

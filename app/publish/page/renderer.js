@@ -1,0 +1,331 @@
+// The page's WebGL2 renderer: the passes of vdfx's GL compositor for one view, compiled from the
+// same GLSL (shaders/, written by `vdfx publish` from effects/' sources with the GLSL ES 3.00
+// prelude). Per frame:
+//   1. video layer: each pixel's ray into the equirect frame (shaders/video.frag), into a float
+//      target larger than the view by the blur's margin, so the blur sees real image beyond
+//      the border (effects/view_renderer.h);
+//   2. with a blur: the horizontal Gaussian (shaders/blur_1d.frag);
+//   3. the stack (shaders/stack*.frag): the vertical Gaussian fused in, tint, exposure,
+//      saturation, contrast, vignette, into the canvas.
+
+const DEG = Math.PI / 180;
+
+// Eye -> world rotation of a view at (azimuth, altitude, roll) in degrees, row-major: yaw
+// -azimuth about y, then altitude about x, then roll about z (effects/view_camera.cpp,
+// pose_rotation).
+export function viewRotation(azDeg, altDeg, rollDeg = 0) {
+  const rot = (axis, a) => {
+    const c = Math.cos(a), s = Math.sin(a);
+    if (axis === 'x') return [1, 0, 0, 0, c, -s, 0, s, c];
+    if (axis === 'y') return [c, 0, s, 0, 1, 0, -s, 0, c];
+    return [c, -s, 0, s, c, 0, 0, 0, 1];
+  };
+  const mul = (a, b) => {
+    const m = new Array(9).fill(0);
+    for (let i = 0; i < 3; ++i)
+      for (let j = 0; j < 3; ++j)
+        for (let k = 0; k < 3; ++k) m[3 * i + j] += a[3 * i + k] * b[3 * k + j];
+    return m;
+  };
+  return mul(mul(rot('y', -azDeg * DEG), rot('x', altDeg * DEG)), rot('z', rollDeg * DEG));
+}
+
+// A symmetric view: its tangent rectangle (left, right, down, up) for a horizontal FOV.
+export function viewTangents(hfovDeg, width, height) {
+  const tx = Math.tan(0.5 * hfovDeg * DEG), ty = (tx * height) / width;
+  return [-tx, tx, -ty, ty];
+}
+
+// Column-major for uniformMatrix3fv.
+function columnMajor(m) {
+  return new Float32Array([m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]]);
+}
+
+// The Gaussian's tap table as xr/blur_pyramid_gl.cpp builds it: the contract's weights
+// exp(-i^2 / (2 sigma^2)) normalised over -radius..radius, texel k the pair (2k+1, 2k+2) read
+// with one bilinear fetch at its weighted mean offset.
+export function gaussianTaps(sigma, radius) {
+  const w = [];
+  let sum = 0;
+  for (let i = 0; i <= radius; ++i) {
+    w.push(Math.exp((-i * i) / (2 * sigma * sigma)));
+    sum += (i === 0 ? 1 : 2) * w[i];
+  }
+  for (let i = 0; i <= radius; ++i) w[i] /= sum;
+  const taps = [];
+  for (let i = 1; i <= radius; i += 2) {
+    const a = w[i], b = i + 1 <= radius ? w[i + 1] : 0;
+    taps.push(i + b / (a + b), a + b);
+  }
+  return { centre: w[0], taps: new Float32Array(taps) };
+}
+
+// Blur sigma in pixels and the kernel radii of a centred view (xr/effect_stack_gl.cpp,
+// blur_pixels, with the optical centre at the image centre).
+export function blurPixels(sigmaDeg, tan, width, height) {
+  const s = sigmaDeg * DEG;
+  const sx = (s * width) / (tan[1] - tan[0]), sy = (s * height) / (tan[3] - tan[2]);
+  return { sx, sy, rx: Math.ceil(3 * sx), ry: Math.ceil(3 * sy) };
+}
+
+function compile(gl, type, source, name) {
+  const s = gl.createShader(type);
+  gl.shaderSource(s, source);
+  gl.compileShader(s);
+  if (!gl.getShaderParameter(s, gl.COMPILE_STATUS))
+    throw new Error(`shader ${name} does not compile: ${gl.getShaderInfoLog(s)}`);
+  return s;
+}
+
+function program(gl, vertex, fragment, name) {
+  const p = gl.createProgram();
+  gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, vertex, 'fullscreen.vert'));
+  gl.attachShader(p, compile(gl, gl.FRAGMENT_SHADER, fragment, name));
+  gl.linkProgram(p);
+  if (!gl.getProgramParameter(p, gl.LINK_STATUS))
+    throw new Error(`program ${name} does not link: ${gl.getProgramInfoLog(p)}`);
+  const uniforms = new Map();
+  const n = gl.getProgramParameter(p, gl.ACTIVE_UNIFORMS);
+  for (let i = 0; i < n; ++i) {
+    const info = gl.getActiveUniform(p, i);
+    const key = info.name.replace(/\[0\]$/, '');
+    uniforms.set(key, gl.getUniformLocation(p, info.name));
+  }
+  return { p, u: (key) => uniforms.get(key) ?? null };
+}
+
+// A float colour target (RGBA16F: filterable in WebGL2, renderable with EXT_color_buffer_float).
+function target(gl, width, height) {
+  const tex = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, tex);
+  gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA16F, width, height);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+  const fb = gl.createFramebuffer();
+  gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, 0);
+  if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE)
+    throw new Error('this browser cannot render into a half-float target');
+  return { tex, fb, width, height };
+}
+
+export class Renderer {
+  // shaders: { vert, video, blur, stack, stackBlur } source texts.
+  constructor(gl, shaders) {
+    if (!gl.getExtension('EXT_color_buffer_float'))
+      throw new Error('this browser\'s WebGL2 has no EXT_color_buffer_float (float targets)');
+    this.gl = gl;
+    this.video = program(gl, shaders.vert, shaders.video, 'video.frag');
+    this.blur = program(gl, shaders.vert, shaders.blur, 'blur_1d.frag');
+    this.stack = program(gl, shaders.vert, shaders.stack, 'stack.frag');
+    this.stackBlur = program(gl, shaders.vert, shaders.stackBlur, 'stack_blur.frag');
+    this.vao = gl.createVertexArray();
+    this.frameTex = this.#videoTexture();
+    this.planeTex = [this.#videoTexture(), this.#videoTexture(), this.#videoTexture()];
+    this.ycbcr = null; // set by uploadPlanes: the frame is three planes converted per sample
+    this.taps = [this.#tapTexture(), this.#tapTexture()];
+    this.targets = null;
+  }
+
+  #videoTexture() {
+    const gl = this.gl;
+    const tex = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, tex);
+    // Columns wrap at the seam, rows clamp at the poles (effects/equirect_sampler.h); mipmaps
+    // for the level of detail the video layer picks from each pixel's footprint.
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    return tex;
+  }
+
+  #tapTexture() {
+    const gl = this.gl;
+    const tex = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, tex);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    return tex;
+  }
+
+  // The current frame of a <video> (or any image source), as the video layer samples it: the
+  // bottom row first (t = 1 - v, effects/glsl_common.h), values as encoded (no colour space
+  // conversion by the browser beyond Y'CbCr -> R'G'B').
+  upload(source) {
+    const gl = this.gl;
+    gl.bindTexture(gl.TEXTURE_2D, this.frameTex);
+    gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, true);
+    gl.pixelStorei(gl.UNPACK_COLORSPACE_CONVERSION_WEBGL, gl.NONE);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, source);
+    gl.generateMipmap(gl.TEXTURE_2D);
+    gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
+    this.ycbcr = null;
+  }
+
+  // A decoded 8-bit frame as its three planes (each { data, stride }, rows top first),
+  // converted per sample by the video layer as the GL path converts (u_ycbcr = 1; `info` is
+  // player.json's video.ycbcr, written by publish from io/ycbcr.h). Chroma (u, v) from luma
+  // (u, v) as xr/video_layer_gl.cpp maps it (set_frame).
+  uploadPlanes(planes, width, height, info) {
+    const gl = this.gl;
+    const cw = Math.ceil(width / 2 ** info.log2_chroma[0]);
+    const ch = Math.ceil(height / 2 ** info.log2_chroma[1]);
+    const sizes = [[width, height], [cw, ch], [cw, ch]];
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    for (let i = 0; i < 3; ++i) {
+      gl.bindTexture(gl.TEXTURE_2D, this.planeTex[i]);
+      gl.pixelStorei(gl.UNPACK_ROW_LENGTH, planes[i].stride);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.R8, sizes[i][0], sizes[i][1], 0, gl.RED,
+                    gl.UNSIGNED_BYTE, planes[i].data);
+      gl.generateMipmap(gl.TEXTURE_2D);
+    }
+    gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 0);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+    const scale = [], offset = [];
+    for (let a = 0; a < 2; ++a) {
+      const step = 2 ** info.log2_chroma[a], chroma = sizes[1][a];
+      scale.push(sizes[0][a] / (step * chroma));
+      offset.push((0.5 - (0.5 + info.chroma_siting[a]) / step) / chroma);
+    }
+    this.ycbcr = { m: info.m, offset: info.offset, scale, chromaOffset: offset };
+  }
+
+  #targetsFor(width, height, margin) {
+    const w = width + 2 * margin, h = height + 2 * margin;
+    const t = this.targets;
+    if (t && t.a.width === w && t.a.height === h) return t;
+    const gl = this.gl;
+    if (t) for (const x of [t.a, t.b]) { gl.deleteTexture(x.tex); gl.deleteFramebuffer(x.fb); }
+    this.targets = { a: target(gl, w, h), b: target(gl, w, h) };
+    return this.targets;
+  }
+
+  #setTaps(prog, unit, index, sigma, radius) {
+    const gl = this.gl;
+    const { centre, taps } = gaussianTaps(sigma, radius);
+    gl.activeTexture(gl.TEXTURE0 + unit);
+    gl.bindTexture(gl.TEXTURE_2D, this.taps[index]);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RG32F, Math.max(1, taps.length / 2), 1, 0, gl.RG, gl.FLOAT,
+                  taps.length ? taps : new Float32Array(2));
+    gl.uniform1i(prog.u('u_taps'), unit);
+    gl.uniform1i(prog.u('u_tap_count'), taps.length / 2);
+    gl.uniform1f(prog.u('u_centre_weight'), centre);
+    gl.activeTexture(gl.TEXTURE0);
+  }
+
+  // The video layer into `dst` (the view widened by `margin` pixels on every side).
+  #videoPass(dst, rot, tan, width, height, margin) {
+    const gl = this.gl, v = this.video;
+    const dx = (margin * (tan[1] - tan[0])) / width, dy = (margin * (tan[3] - tan[2])) / height;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, dst.fb);
+    gl.viewport(0, 0, dst.width, dst.height);
+    gl.useProgram(v.p);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, this.frameTex);
+    gl.uniform1i(v.u('u_equirect'), 0);
+    gl.uniformMatrix3fv(v.u('u_rot'), false, columnMajor(rot));
+    gl.uniform1i(v.u('u_lod_mode'), 0);
+    gl.uniform1i(v.u('u_ycbcr'), this.ycbcr ? 1 : 0);
+    if (this.ycbcr) this.#setYcbcr(v);
+    gl.uniform4f(v.u('u_tan'), tan[0] - dx, tan[1] + dx, tan[2] - dy, tan[3] + dy);
+    gl.uniform2f(v.u('u_size'), dst.width, dst.height);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+
+  #setYcbcr(v) {
+    const gl = this.gl, y = this.ycbcr;
+    for (let i = 0; i < 3; ++i) {
+      gl.activeTexture(gl.TEXTURE1 + i);
+      gl.bindTexture(gl.TEXTURE_2D, this.planeTex[i]);
+      gl.uniform1i(v.u(`u_plane${i}`), 1 + i);
+    }
+    gl.activeTexture(gl.TEXTURE0);
+    gl.uniformMatrix3fv(v.u('u_m'), true, new Float32Array(y.m)); // row-major
+    gl.uniform3fv(v.u('u_offset'), new Float32Array(y.offset));
+    gl.uniform1f(v.u('u_code_scale'), 255);
+    gl.uniform2f(v.u('u_chroma_scale'), y.scale[0], y.scale[1]);
+    gl.uniform2f(v.u('u_chroma_offset'), y.chromaOffset[0], y.chromaOffset[1]);
+  }
+
+  #blurPass(src, dst, blur) {
+    const gl = this.gl, b = this.blur;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, dst.fb);
+    gl.viewport(0, 0, dst.width, dst.height);
+    gl.useProgram(b.p);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, src.tex);
+    gl.uniform1i(b.u('u_src'), 0);
+    gl.uniform2f(b.u('u_dir'), 1, 0);
+    this.#setTaps(b, 1, 0, blur.sx, blur.rx);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+
+  // p: the 9 stack parameters of vdfx_eval (blur sigma_deg, tint r g b, stops, saturation,
+  // contrast, vignette radius_deg, falloff_deg).
+  #stackPass(src, prog, p, tan, width, height, margin, blur, dst) {
+    const gl = this.gl;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, dst ? dst.fb : null);
+    gl.viewport(0, 0, width, height);
+    gl.useProgram(prog.p);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, src.tex);
+    gl.uniform1i(prog.u('u_src'), 0);
+    gl.uniform1i(prog.u('u_margin'), margin);
+    gl.uniform4f(prog.u('u_tan'), tan[0], tan[1], tan[2], tan[3]);
+    gl.uniform2f(prog.u('u_size'), width, height);
+    gl.uniform2f(prog.u('u_centre_tan'), 0, 0);
+    if (blur) this.#setTaps(prog, 1, 1, blur.sy, blur.ry);
+    gl.uniform3f(prog.u('u_tint'), p[1], p[2], p[3]);
+    gl.uniform1f(prog.u('u_exposure_gain'), Math.pow(2, p[4]));
+    gl.uniform1f(prog.u('u_saturation'), p[5]);
+    gl.uniform1f(prog.u('u_contrast'), p[6]);
+    gl.uniform2f(prog.u('u_vignette'), p[7] * DEG, p[8] * DEG);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+
+  // An 8-bit target of one eye's size: the stack pass draws an XR eye here, then it is copied
+  // into the eye's viewport (the shaders' pinhole reads gl_FragCoord from the target's corner).
+  #outputFor(width, height) {
+    const o = this.output;
+    if (o && o.width === width && o.height === height) return o;
+    const gl = this.gl;
+    if (o) { gl.deleteTexture(o.tex); gl.deleteFramebuffer(o.fb); }
+    const tex = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, tex);
+    gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, width, height);
+    const fb = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, 0);
+    this.output = { tex, fb, width, height };
+    return this.output;
+  }
+
+  // One view (width x height device pixels) with the parameters p: into the canvas, or with
+  // `out` ({ fb, x, y }: an XR layer's framebuffer and the eye's viewport corner) into that.
+  // view: { az, alt, fov } for the desktop, or { rot, tan } (an XR eye's own rotation and
+  // projection tangents).
+  draw(view, width, height, p, out = null) {
+    const gl = this.gl;
+    gl.bindVertexArray(this.vao);
+    gl.disable(gl.BLEND);
+    const tan = view.tan ?? viewTangents(view.fov, width, height);
+    const rot = view.rot ?? viewRotation(view.az, view.alt);
+    const blur = p[0] > 0 ? blurPixels(p[0], tan, width, height) : null;
+    const margin = blur ? Math.max(blur.rx, blur.ry) : 0;
+    const t = this.#targetsFor(width, height, margin);
+    this.#videoPass(t.a, rot, tan, width, height, margin);
+    if (blur) this.#blurPass(t.a, t.b, blur);
+    const dst = out ? this.#outputFor(width, height) : null;
+    this.#stackPass(blur ? t.b : t.a, blur ? this.stackBlur : this.stack, p, tan, width, height,
+                    margin, blur, dst);
+    if (!out) return;
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, dst.fb);
+    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, out.fb);
+    gl.blitFramebuffer(0, 0, width, height, out.x, out.y, out.x + width, out.y + height,
+                       gl.COLOR_BUFFER_BIT, gl.NEAREST);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+  }
+}

@@ -1,0 +1,33 @@
+/// @file
+/// @brief The published folder's video: the source copied, or re-encoded with no effects
+/// through the export pipeline (`--transcode`).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "app/publish/publish_request.h"
+#include "io/picture.h"
+#include "io/sidecar.h"
+
+namespace vdfx::app {
+
+struct PublishedVideo {
+  std::string file;   //!< its name inside the folder
+  std::string codec;  //!< "h264", "vp9", ... (the source's when copied)
+  double fps = 0.0;
+  std::int64_t frames = 0;
+  int width = 0, height = 0;
+  /// How its first frame's Y'CbCr code values are read (the stream's tags, io/ycbcr.h); none
+  /// for an RGB codec.
+  std::optional<io::YcbcrInfo> ycbcr;
+};
+
+/// Copies `request.video` into `dir` under its own name, or with a transcode writes
+/// STEM.mp4 through run_export (baked, no effects: a sidecar of the same video with none).
+PublishedVideo publish_video(const PublishRequest& request, const io::Sidecar& sidecar,
+                             const std::filesystem::path& dir);
+
+}  // namespace vdfx::app

@@ -1,0 +1,248 @@
+/// @file
+/// @brief `vdfx publish` (docs/publish.md): the folder it writes, what it refuses and with which
+/// exit code, and that an existing folder is replaced only whole. The page itself is tested in a
+/// real browser (tests/publish/page_test.cjs).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "export_test_util.h"
+
+namespace vdfx::app::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::set<std::string> listing(const fs::path& dir) {
+  std::set<std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files.insert(e.path().lexically_relative(dir).generic_string());
+  return files;
+}
+
+/// Names in `dir`'s parent that a publish may leave behind by mistake (its staging folder).
+std::vector<std::string> leftovers(const fs::path& dir) {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(dir.parent_path()))
+    if (e.path().filename().string().find(".publish-") != std::string::npos)
+      out.push_back(e.path().filename().string());
+  return out;
+}
+
+/// The web player's module is built beside the executable unless -DVDFX_BUILD_WASM=OFF (the
+/// sanitizer build): without it publish is an internal error naming it, and the tests that need
+/// a published folder are skipped.
+bool module_built() {
+  return fs::exists(fs::path(VDFX_BINARY).parent_path() / "wasm" / "vdfx_player.wasm");
+}
+
+constexpr const char* kNoModule = "built without the web player's module (VDFX_BUILD_WASM=OFF)";
+
+std::string publish_args(const Fixture& f, const fs::path& out, const std::string& extra = "") {
+  return "publish " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --out " +
+         out.string() + " " + extra;
+}
+
+TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
+  if (!module_built()) GTEST_SKIP() << kNoModule;
+  const Fixture f = make_fixture();
+  const fs::path out = f.dir / "site";
+  const CommandResult r = run_vdfx_headless(publish_args(f, out, "--title 'Dawn & <dusk>'"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::set<std::string> expected = {"index.html",
+                                          "player.js",
+                                          "renderer.js",
+                                          "controls.js",
+                                          "xr.js",
+                                          "vdfx_player.js",
+                                          "vdfx_player.wasm",
+                                          "player.json",
+                                          "clip.mp4",
+                                          "clip.vdfx.json",
+                                          "shaders/fullscreen.vert",
+                                          "shaders/video.frag",
+                                          "shaders/blur_1d.frag",
+                                          "shaders/stack.frag",
+                                          "shaders/stack_blur.frag"};
+  EXPECT_EQ(listing(out), expected);
+  // The video and the sidecar are copied byte for byte.
+  EXPECT_EQ(slurp(out / "clip.mp4"), slurp(f.clip));
+  EXPECT_EQ(slurp(out / "clip.vdfx.json"), slurp(f.sidecar));
+  EXPECT_NE(slurp(out / "index.html").find("<title>Dawn &amp; &lt;dusk&gt;</title>"),
+            std::string::npos);
+  const auto manifest = nlohmann::json::parse(slurp(out / "player.json"));
+  EXPECT_EQ(manifest["format"], "vdfx.publish");
+  EXPECT_EQ(manifest["sidecar"], "clip.vdfx.json");
+  EXPECT_EQ(manifest["video"]["file"], "clip.mp4");
+  EXPECT_EQ(manifest["video"]["codec"], "h264");
+  EXPECT_EQ(manifest["video"]["frames"], kFrames);
+  // Blur (bit 0), exposure (2) and saturation (3) have keyframes.
+  EXPECT_EQ(manifest["stack_mask"], 1 + 4 + 8);
+  // GLSL ES 3.00 with highp, the effects of the sidecar compiled in.
+  const std::string stack = slurp(out / "shaders/stack_blur.frag");
+  EXPECT_TRUE(stack.starts_with("#version 300 es\nprecision highp float;")) << stack.substr(0, 80);
+  EXPECT_NE(stack.find("#define HAS_EXPOSURE 1"), std::string::npos);
+  EXPECT_NE(stack.find("#define HAS_TINT 0"), std::string::npos);
+  EXPECT_NE(stack.find("#define BLUR_MODE 1"), std::string::npos);
+  EXPECT_TRUE(leftovers(out).empty());
+}
+
+TEST(Publish, NamesTheGrainAndFlaresThePageDoesNotDraw) {
+  if (!module_built()) GTEST_SKIP() << kNoModule;
+  const Fixture f = make_fixture();
+  write_text(f.sidecar, R"({"format": "vdfx.sidecar", "version": 1,
+    "video": {"path": "clip.mp4", "fps": 24.0, "frames": 12, "width": 128, "height": 64},
+    "interpolation": {"exponent": 1.0, "time_scale": 1.0},
+    "effects": [{"type": "grain", "style": "headset", "seed": 7, "settings": {"refresh_ms": 40.0},
+      "keyframes": [{"azimuth_deg": 20.0, "altitude_deg": 10.0, "frame": 5,
+                     "params": {"intensity": 0.5, "size": 1.0}}]}]})");
+  const fs::path out = f.dir / "site";
+  const CommandResult r = run_vdfx_headless(publish_args(f, out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("does not draw grain #1 (headset) yet"), std::string::npos) << r.output;
+  const auto manifest = nlohmann::json::parse(slurp(out / "player.json"));
+  EXPECT_EQ(manifest["left_out"], nlohmann::json::array({"grain #1 (headset)"}));
+  EXPECT_EQ(manifest["stack_mask"], 0);
+}
+
+TEST(Publish, ABrokenSidecarIsExit1WithValidatesOwnMessageAndWritesNothing) {
+  const Fixture f = make_fixture();
+  write_text(f.sidecar, R"({"format": "vdfx.sidecar", "version": 1,
+    "video": {"path": "clip.mp4", "fps": -24.0, "frames": 12, "width": 128, "height": 64},
+    "effects": [{"type": "glow", "keyframes": []}]})");
+  const fs::path out = f.dir / "site";
+  const CommandResult r = run_vdfx_headless(publish_args(f, out));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  const CommandResult v = run_vdfx_headless("validate " + f.sidecar.string());
+  ASSERT_EQ(v.exit_code, 1);
+  // Every line validate prints, in publish's message.
+  std::istringstream lines(v.output);
+  for (std::string line; std::getline(lines, line);)
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n---\n" << r.output;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(leftovers(out).empty());
+}
+
+/// A clip in a codec no browser plays (MPEG-4 Part 2: the case of ProRes and DNxHR).
+fs::path write_mpeg4_clip(const fs::path& dir) {
+  fs::create_directories(dir);
+  test_media::ClipSpec c;
+  c.width = kW;
+  c.height = kH;
+  c.frames = 6;
+  c.codec = "mpeg4";
+  c.options.clear();
+  c.max_b_frames = 0;
+  c.frame = [](int i) { return test_media::smooth_frame(i, kW, kH); };
+  return test_media::write_clip(dir / "clip.mp4", c);
+}
+
+TEST(Publish, ACodecBrowsersDoNotPlayIsRefusedNamingItAndTheOptionThenTranscoded) {
+  if (!module_built()) GTEST_SKIP() << kNoModule;
+  Fixture f = make_fixture();
+  f.clip = write_mpeg4_clip(f.dir / "mpeg4");
+  const fs::path out = f.dir / "site";
+  const CommandResult r = run_vdfx_headless(publish_args(f, out));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("codec mpeg4"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--transcode h264"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+
+  const CommandResult t = run_vdfx_headless(publish_args(f, out, "--transcode h264"));
+  ASSERT_EQ(t.exit_code, 0) << t.output;
+  const auto manifest = nlohmann::json::parse(slurp(out / "player.json"));
+  EXPECT_EQ(manifest["video"]["codec"], "h264");
+  EXPECT_EQ(manifest["video"]["frames"], 6);
+  auto decoder = io::open_frame_decoder(out / "clip.mp4", {});
+  EXPECT_EQ(decoder->properties().codec, "h264");
+  EXPECT_TRUE(leftovers(out).empty());
+}
+
+TEST(Publish, TranscodesToVp9) {
+  if (!module_built()) GTEST_SKIP() << kNoModule;
+  Fixture f = make_fixture();
+  f.clip = write_mpeg4_clip(f.dir / "mpeg4");
+  const fs::path out = f.dir / "site";
+  const CommandResult t = run_vdfx_headless(publish_args(f, out, "--transcode vp9"));
+  ASSERT_EQ(t.exit_code, 0) << t.output;
+  EXPECT_EQ(io::open_frame_decoder(out / "clip.mp4", {})->properties().codec, "vp9");
+}
+
+TEST(Publish, RefusesAnOutThatIsAnInputAFileOrAFolderItDidNotWrite) {
+  const Fixture f = make_fixture();
+  const std::string before = slurp(f.clip);
+  CommandResult r = run_vdfx_headless(publish_args(f, f.clip));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(slurp(f.clip), before);
+
+  const fs::path file = f.dir / "notes.txt";
+  write_text(file, "mine");
+  r = run_vdfx_headless(publish_args(f, file));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("this is a file"), std::string::npos) << r.output;
+
+  const fs::path mine = f.dir / "photos";
+  fs::create_directory(mine);
+  write_text(mine / "a.jpg", "x");
+  r = run_vdfx_headless(publish_args(f, mine));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("not one vdfx publish wrote"), std::string::npos) << r.output;
+  EXPECT_EQ(listing(mine), std::set<std::string>{"a.jpg"});
+  EXPECT_EQ(slurp(file), "mine");
+}
+
+TEST(Publish, WithoutTheModuleItIsAnInternalErrorNamingIt) {
+  if (module_built()) GTEST_SKIP() << "the module is built";
+  const Fixture f = make_fixture();
+  const CommandResult r = run_vdfx_headless(publish_args(f, f.dir / "site"));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("vdfx_player.wasm"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(f.dir / "site"));
+}
+
+TEST(Publish, UsageErrorsAreExit2) {
+  const Fixture f = make_fixture();
+  EXPECT_EQ(run_vdfx_headless("publish " + f.clip.string() + " --sidecar " + f.sidecar.string())
+                .exit_code,
+            2);
+  EXPECT_EQ(run_vdfx_headless(publish_args(f, f.dir / "site", "--transcode av1")).exit_code, 2);
+}
+
+TEST(Publish, AnExistingFolderIsReplacedWholeAndKeptWholeWhenPublishFails) {
+  if (!module_built()) GTEST_SKIP() << kNoModule;
+  const Fixture f = make_fixture();
+  const fs::path out = f.dir / "site";
+  ASSERT_EQ(run_vdfx_headless(publish_args(f, out, "--title First")).exit_code, 0);
+  write_text(out / "stray.txt", "from before");
+  const std::set<std::string> first = listing(out);
+
+  // A failing publish (the sidecar broken since) leaves the old folder exactly as it was.
+  const std::string good = slurp(f.sidecar);
+  write_text(f.sidecar, "{");
+  EXPECT_EQ(run_vdfx_headless(publish_args(f, out, "--title Second")).exit_code, 1);
+  EXPECT_EQ(listing(out), first);
+  EXPECT_NE(slurp(out / "index.html").find("<title>First</title>"), std::string::npos);
+
+  // A folder a killed publish left beside OUT (its process is gone) is removed by the next.
+  const fs::path stale = out.parent_path() / ".site.publish-999999999";
+  fs::create_directory(stale);
+  write_text(stale / "index.html", "half");
+
+  // A successful one replaces it whole: the new title, and nothing of the old folder left.
+  write_text(f.sidecar, good);
+  const CommandResult r = run_vdfx_headless(publish_args(f, out, "--title Second"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(slurp(out / "index.html").find("<title>Second</title>"), std::string::npos);
+  EXPECT_FALSE(fs::exists(out / "stray.txt"));
+  EXPECT_TRUE(leftovers(out).empty());
+}
+
+}  // namespace
+}  // namespace vdfx::app::testing

@@ -1,0 +1,99 @@
+// The page's per-frame cost in Chromium (docs/publish.md, "Measured"), by hand:
+//   node page_bench.cjs VDFX_BINARY OUTPUT_DIR
+// Publishes a smooth 512 x 256 clip (ffmpeg) with a sidecar whose six stack effects are keyed
+// 1000 times each, plays the page in headless Chromium (SwiftShader) at 1280 x 720 for a few
+// seconds, and prints the medians of window.vdfxStats: the module's evaluation (vdfx_eval, once
+// per drawn frame) and the draw (the GL calls; SwiftShader renders on the CPU), the load and
+// solve time, and the folder's size (what a viewer downloads, the video included).
+'use strict';
+const fs = require('fs');
+const path = require('path');
+const { execFileSync } = require('child_process');
+const { serve, Browser } = require('./browser.cjs');
+
+const [vdfx, outDir] = process.argv.slice(2).map((p) => p && path.resolve(p));
+if (!vdfx || !outDir) {
+  console.error('usage: node page_bench.cjs VDFX_BINARY OUTPUT_DIR');
+  process.exit(2);
+}
+fs.rmSync(outDir, { recursive: true, force: true });
+fs.mkdirSync(outDir, { recursive: true });
+let seed = 11;
+const rand = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+const uniform = (lo, hi) => lo + (hi - lo) * rand();
+const frames = 48;
+const kf = (params) => Array.from({ length: 1000 }, () => ({
+  azimuth_deg: uniform(-179, 180), altitude_deg: uniform(-85, 85),
+  frame: Math.floor(uniform(0, frames)), params: params() }));
+const sidecar = {
+  format: 'vdfx.sidecar', version: 1,
+  video: { path: 'clip.mp4', fps: 24, frames, width: 512, height: 256 },
+  interpolation: { exponent: 1.0, time_scale: 1.0 },
+  effects: [
+    { type: 'blur', keyframes: kf(() => ({ sigma_deg: uniform(0, 1) })) },
+    { type: 'tint', keyframes: kf(() => ({ gain: [uniform(0.5, 2), uniform(0.5, 2), uniform(0.5, 2)] })) },
+    { type: 'exposure', keyframes: kf(() => ({ stops: uniform(-2, 2) })) },
+    { type: 'saturation', keyframes: kf(() => ({ amount: uniform(0.2, 2) })) },
+    { type: 'contrast', keyframes: kf(() => ({ amount: uniform(0.5, 1.5) })) },
+    { type: 'vignette', keyframes: kf(() => ({ radius_deg: uniform(20, 90), falloff_deg: uniform(5, 60) })) },
+  ],
+};
+const clip = path.join(outDir, 'clip.mp4'), file = path.join(outDir, 'bench.vdfx.json');
+execFileSync('ffmpeg', ['-v', 'error', '-y', '-f', 'lavfi', '-i',
+  "nullsrc=s=512x256:r=24,format=rgb24,geq=r='128+90*sin(2*PI*X/W+0.1*N)':g='128':b='100'",
+  '-frames:v', String(frames), '-pix_fmt', 'yuv420p', '-c:v', 'libx264', clip]);
+fs.writeFileSync(file, JSON.stringify(sidecar));
+const site = path.join(outDir, 'site');
+execFileSync(vdfx, ['publish', clip, '--sidecar', file, '--out', site]);
+const bytes = fs.readdirSync(site, { recursive: true })
+  .map((f) => path.join(site, f)).filter((f) => fs.statSync(f).isFile())
+  .reduce((n, f) => n + fs.statSync(f).size, 0);
+const median = (a) => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
+
+(async () => {
+  const server = await serve(outDir);
+  const W = 1280, H = 720;
+  const browser = await Browser.launch(path.join(outDir, 'profile'), W, H);
+  try {
+    await browser.send('Emulation.setDeviceMetricsOverride',
+                       { width: W, height: H, deviceScaleFactor: 1, mobile: false });
+    const t0 = Date.now();
+    await browser.send('Page.navigate',
+                       { url: `http://127.0.0.1:${server.address().port}/site/index.html` });
+    while (!(await browser.evaluate('(window.vdfxStats?.evalMs.length ?? 0) > 0')))
+      await new Promise((r) => setTimeout(r, 20));
+    const firstMs = Date.now() - t0;
+    await new Promise((r) => setTimeout(r, 6000));
+    const s = await browser.evaluate('window.vdfxStats');
+    // performance.now() ticks in 100 us steps on a page that is not cross-origin isolated, so
+    // one call is timed as 2000 calls (the page's own module.eval: cwrap, the heap copy) at
+    // random views and frames, 21 times.
+    const perCall = await browser.evaluate(`(() => {
+      const m = window.vdfxPlayer.module, runs = [];
+      let seed = 3;
+      const r = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+      const views = Array.from({ length: 2000 }, () => [360 * r() - 179, 180 * r() - 90,
+                                                         Math.floor(${frames} * r())]);
+      for (let k = 0; k < 21; ++k) {
+        const t = performance.now();
+        for (const v of views) m.eval(v[0], v[1], v[2]);
+        runs.push((performance.now() - t) / views.length);
+      }
+      return runs.sort((a, b) => a - b)[10];
+    })()`);
+    console.log(`first frame after ${firstMs} ms (module, sidecar load and solve of 6 x 1000 ` +
+                `keyframes, shaders, video)`);
+    console.log(`one evaluation of the 6 effects (the page's per-frame call), median of 21 ` +
+                `runs of 2000: ${(perCall * 1000).toFixed(1)} us`);
+    console.log(`${s.evalMs.length} frames drawn: evaluation median ${(median(s.evalMs) * 1000).toFixed(0)} us, ` +
+                `draw median ${median(s.drawMs).toFixed(1)} ms (${W}x${H}, SwiftShader), ` +
+                `conversion ${s.conversion}`);
+    console.log(`folder ${(bytes / 1e6).toFixed(2)} MB, of which the video ${(fs.statSync(path.join(site, 'clip.mp4')).size / 1e6).toFixed(2)} MB`);
+  } finally {
+    browser.close();
+    server.close();
+  }
+})().catch((e) => {
+  console.error(e.stack || String(e));
+  process.exit(1);
+});
