@@ -6,11 +6,11 @@
 
 namespace vdfx::test_paths {
 
-const char* source_dir();         ///< the repository root
-const char* test_data_dir();      ///< tests/data
-const char* test_output_dir();    ///< the test binary's output folder in the build tree
-const char* binary();             ///< the vdfx executable
-const char* fault_so();           ///< tests/fault/fault_inject.c, built as a shared library
+const char* source_dir();            ///< the repository root
+const char* test_data_dir();         ///< tests/data
+const char* test_output_dir();       ///< the test binary's output folder in the build tree
+const char* binary();                ///< the vdfx executable
+const char* fault_so();              ///< tests/fault/fault_inject.c, built as a shared library
 const char* openxr_test_data_dir();  ///< tests/openxr/data
 const char* hello_xr();              ///< Debian's hello_xr, or "" where it is not installed
 const char* test_runtime_library();  ///< the simulated OpenXR runtime
