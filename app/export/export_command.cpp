@@ -8,6 +8,7 @@
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/cli/layout_options.h"
 #include "app/export/export_request.h"
 
 namespace vdfx::app {
@@ -31,7 +32,7 @@ FrameRange parse_frames(const std::string& text) {
 /// The option texts that need parsing after CLI11.
 struct ExportTexts {
   std::string video, sidecar, baked_out, path_rec, path_out, codec = "h264", chroma = "420";
-  std::string frames, size = "1280x720";
+  std::string frames, size = "1280x720", eye = "left";
 };
 
 void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
@@ -64,6 +65,10 @@ void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
       ->check(finite_range(1.0, 179.0))
       ->capture_default_str();
   cli.add_option("--size", t.size, "--path: output size WxH")->capture_default_str();
+  cli.add_option("--eye", t.eye, "--path on stereo video: the eye whose half is shown")
+      ->check(CLI::IsMember({"left", "right"}))
+      ->capture_default_str();
+  add_layout_options(cli, r.layout);
 }
 
 /// The parsed options as a request; a usage error throws (CLI::ValidationError, UsageError).
@@ -83,6 +88,9 @@ ExportRequest export_request(const CLI::App& cli, ExportRequest r, const ExportT
   if (r.baked() && (cli.count("--fov") || cli.count("--size")))
     throw CLI::ValidationError(
         "export", "--fov and --size go with --path (a baked video keeps the video's size)");
+  if (r.baked() && cli.count("--eye"))
+    throw CLI::ValidationError("--eye", "goes with --path (a baked video keeps both eyes)");
+  r.eye = t.eye == "right" ? effects::EyeIndex::Right : effects::EyeIndex::Left;
   return r;
 }
 

@@ -43,6 +43,7 @@ struct Inputs {
   std::vector<HeadSample> head;  //!< path exports only
   std::unique_ptr<io::FrameDecoder> decoder;
   io::VideoProperties props;
+  effects::StereoLayout layout;  //!< the source's (docs/stereo.md)
   FrameRange range;
   std::int64_t last_available = 0;
 };
@@ -55,6 +56,9 @@ Inputs read_inputs(const ExportRequest& req) {
   dopts.format = io::PixelFormat::RgbF32;
   in.decoder = io::open_frame_decoder(req.video, dopts);
   in.props = in.decoder->properties();
+  std::string hint;
+  in.layout = io::resolve_video_layout(in.props, req.layout, &in.sidecar.video, req.sidecar, &hint);
+  if (!hint.empty()) std::cerr << "vdfx: hint: " << req.video.string() << ": " << hint << "\n";
   in.last_available = in.props.frames - 1;
   if (req.frames) {
     in.range = *req.frames;
@@ -95,6 +99,7 @@ io::EncoderSettings codec_settings(const ExportRequest& req, const Inputs& in) {
   }
   es.frame_rate = in.props.fps;
   es.spherical_equirect = req.baked();
+  if (req.baked()) es.stereo = in.layout;  // a stereo source stays stereo, tagged so
   es.format_from = req.output();
   return es;
 }
@@ -126,6 +131,16 @@ Encoding encoding(const ExportRequest& req, const Inputs& in) {
   return e;
 }
 
+/// ", top-bottom stereo, VR180" and the like for the announcement; "" for mono 360.
+std::string stereo_note(const ExportRequest& req, const Inputs& in) {
+  std::string s;
+  if (in.layout.stereo())
+    s += ", " + std::string(effects::stereo_mode_name(in.layout.mode)) +
+         (req.baked() ? " stereo" : " stereo source");
+  if (in.layout.coverage_deg != 360) s += ", VR180";
+  return s;
+}
+
 /// The first line on stderr: what is exported, how.
 void announce(const ExportRequest& req, const Inputs& in, const io::EncoderSettings& es) {
   const FrameRange r = in.range;
@@ -134,7 +149,12 @@ void announce(const ExportRequest& req, const Inputs& in, const io::EncoderSetti
             << " (" << r.last - r.first + 1 << ") at " << in.props.fps.num << "/"
             << in.props.fps.den << " fps, " << es.codec << " crf " << es.crf << " "
             << (req.chroma_444 ? "444" : "420")
-            << (req.baked() ? ", Spherical Video V2 equirectangular" : "") << "\n";
+            << (req.baked() ? ", Spherical Video V2 equirectangular" : "") << stereo_note(req, in)
+            << "\n";
+  if (req.baked() && in.layout.mode == effects::StereoMode::RightLeft &&
+      req.output().extension() != ".mkv")
+    std::cerr << "vdfx export: note: MP4/MOV's st3d box has no right-left mode; the stereo tag is "
+                 "left out (write .mkv to keep it)\n";
 }
 
 /// Flare and grain of a path export (none when the sidecar has neither), with the notes on what
@@ -166,12 +186,14 @@ FrameRenderer frame_renderer(const ExportRequest& req, const Inputs& in,
   if (req.baked()) {
     BakedOptions bo;
     bo.param_step = req.param_step;
-    return baked_frame_renderer(stack, bo, out);
+    return baked_frame_renderer(stack, bo, out, in.layout);
   }
   PathRenderSettings ps;
   ps.hfov_deg = req.hfov_deg;
   ps.width = req.width;
   ps.height = req.height;
+  ps.layout = in.layout;
+  ps.eye = req.eye;
   if (layers)
     ps.view_layers = [layers](cv::Mat& rgb, const cv::Mat& equirect, const xr::RenderView& view,
                               std::int64_t k) { layers->draw(rgb, equirect, view, k); };
@@ -236,6 +258,11 @@ ExportResult run_export(const ExportRequest& req) {
   Inputs in = read_inputs(req);
   const io::Sidecar& sidecar = in.sidecar;
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+  if (req.baked() && !baked_blur_supported(stack, in.layout.coverage_deg))
+    throw io::InputError(req.sidecar.string() +
+                         ": a baked export of VR180 video (coverage 180) cannot blur yet (the "
+                         "sphere blur needs a full turn): remove the blur or export the viewer's "
+                         "path");
   const Encoding enc = encoding(req, in);
   announce(req, in, enc.settings);
   int threads = req.threads;

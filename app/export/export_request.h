@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include "io/video_layout.h"
+
 namespace vdfx::app {
 
 /// Frames A-B of the source, inclusive (A <= B).
@@ -32,6 +34,8 @@ struct ExportRequest {
   int param_step = 0;              //!< baked: exact parameters every N pixels; 0: the default grid
   double hfov_deg = 90.0;          //!< path: horizontal field of view
   int width = 1280, height = 720;  //!< path: output size
+  io::LayoutOverride layout;       //!< --layout / --coverage (docs/stereo.md)
+  effects::EyeIndex eye = effects::EyeIndex::Left;  //!< path, stereo video: the eye shown
 
   bool baked() const { return !baked_out.empty(); }
   /// The output as the user named it.
