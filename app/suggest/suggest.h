@@ -15,6 +15,7 @@
 #include "app/suggest/metering.h"
 #include "app/suggest/motion.h"
 #include "effects/effect_types.h"
+#include "io/video_layout.h"
 
 namespace vdfx::app::suggest {
 
@@ -40,6 +41,9 @@ struct SuggestRequest {
   std::vector<PointOfInterest> points;  //!< guide
   GuideEffect guide_effect = GuideEffect::Saturation;
   MotionOptions motion;  //!< comfort
+  /// --layout / --coverage (docs/stereo.md): stereo video is analysed in its left eye's image;
+  /// VR180 is refused (the analyses sample the whole sphere).
+  io::LayoutOverride layout;
 };
 
 struct SuggestedEffect {

@@ -76,14 +76,6 @@ std::optional<fs::path> handle_recovery(const fs::path& sidecar_path, const std:
   return std::nullopt;
 }
 
-/// The sidecar records the layout the editor shows (so players show the same: docs/stereo.md);
-/// a mono 360 video with nothing recorded leaves the file as it was.
-void record_layout(io::VideoInfo& video, const effects::StereoLayout& layout) {
-  if (layout == effects::StereoLayout{} && !video.layout && !video.coverage_deg) return;
-  video.layout = layout.mode;
-  video.coverage_deg = layout.coverage_deg;
-}
-
 bool is_replay(const LoopCli& loop) {
   return loop.input.rfind("replay:", 0) == 0;
 }
@@ -236,7 +228,7 @@ int cmd_edit(const Args& args) {
               << doc.video.string() << "\n";
   }
   resolve_loop_layout(setup, loop, &doc.sidecar.video, doc.sidecar_path);
-  record_layout(doc.sidecar.video, setup.options.video_layout);
+  io::record_layout(doc.sidecar.video, setup.options.video_layout);
   if (doc.demo)
     std::cerr << "vdfx edit: the bundled demo, not saved (copy " << doc.sidecar_path.string()
               << " and pass --sidecar COPY to keep edits)\n";
