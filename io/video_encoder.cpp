@@ -278,6 +278,10 @@ class LibavEncoder final : public VideoEncoder {
       AVStereo3D* st3d = av_stereo3d_alloc();
       if (st3d) set_stereo_mode(*st3d, s.stereo.mode);
       add_side_data(stream_, AV_PKT_DATA_STEREO3D, st3d, sizeof(AVStereo3D));
+    } else if (s.stereo.stereo()) {  // a flat 3D video: the stereo mode alone
+      AVStereo3D* st3d = av_stereo3d_alloc();
+      if (st3d) set_stereo_mode(*st3d, s.stereo.mode);
+      add_side_data(stream_, AV_PKT_DATA_STEREO3D, st3d, sizeof(AVStereo3D));
     }
     if (s.display_rotation_deg % 360 != 0) {
       auto* m = static_cast<std::int32_t*>(av_malloc(9 * sizeof(std::int32_t)));

@@ -46,6 +46,7 @@ struct EncoderSettings {
   bool spherical_equirect = false;  //!< Spherical Video V2 equirectangular + `stereo`'s mode
   /// With spherical_equirect: the st3d stereo mode (mono, top-bottom, left-right, right-left as
   /// side-by-side inverted) and, for coverage 180, the equi bounds of a centred half turn.
+  /// Without it, a stereo mode alone is written (a flat 3D video); mono writes nothing.
   effects::StereoLayout stereo;
   int display_rotation_deg = 0;  //!< clockwise display rotation written as the display matrix
   std::filesystem::path copy_audio_from;    //!< copy every audio stream of this file (empty: none)

@@ -32,7 +32,7 @@ FrameRange parse_frames(const std::string& text) {
 /// The option texts that need parsing after CLI11.
 struct ExportTexts {
   std::string video, sidecar, baked_out, path_rec, path_out, codec = "h264", chroma = "420";
-  std::string frames, size = "1280x720", eye = "left";
+  std::string frames, size = "1280x720", eye = "left", stereo;
 };
 
 void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
@@ -68,6 +68,10 @@ void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
   cli.add_option("--eye", t.eye, "--path on stereo video: the eye whose half is shown")
       ->check(CLI::IsMember({"left", "right"}))
       ->capture_default_str();
+  cli.add_option("--stereo", t.stereo,
+                 "--path on stereo video: left-right writes both eyes side by side, tagged as a "
+                 "3D video")
+      ->check(CLI::IsMember({"left-right"}));
   add_layout_options(cli, r.layout);
 }
 
@@ -91,6 +95,11 @@ ExportRequest export_request(const CLI::App& cli, ExportRequest r, const ExportT
   if (r.baked() && cli.count("--eye"))
     throw CLI::ValidationError("--eye", "goes with --path (a baked video keeps both eyes)");
   r.eye = t.eye == "right" ? effects::EyeIndex::Right : effects::EyeIndex::Left;
+  r.stereo_side_by_side = !t.stereo.empty();
+  if (r.stereo_side_by_side && r.baked())
+    throw CLI::ValidationError("--stereo", "goes with --path (a baked video keeps its layout)");
+  if (r.stereo_side_by_side && cli.count("--eye"))
+    throw CLI::ValidationError("--stereo", "shows both eyes; drop --eye");
   return r;
 }
 

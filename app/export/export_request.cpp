@@ -87,7 +87,7 @@ io::EncoderSettings codec_settings(const ExportRequest& req, const Inputs& in) {
   es.crf = req.crf >= 0 ? req.crf : (req.h265 ? 20 : 18);
   es.preset = req.preset;
   if (req.h265) es.codec_options["x265-params"] = "log-level=error";
-  es.width = req.baked() ? in.props.width : req.width;
+  es.width = req.baked() ? in.props.width : req.width * (req.stereo_side_by_side ? 2 : 1);
   es.height = req.baked() ? in.props.height : req.height;
   if (req.chroma_444) {
     es.ycbcr.log2_chroma_w = es.ycbcr.log2_chroma_h = 0;
@@ -100,6 +100,7 @@ io::EncoderSettings codec_settings(const ExportRequest& req, const Inputs& in) {
   es.frame_rate = in.props.fps;
   es.spherical_equirect = req.baked();
   if (req.baked()) es.stereo = in.layout;  // a stereo source stays stereo, tagged so
+  if (req.stereo_side_by_side) es.stereo = {effects::StereoMode::LeftRight, 360};
   es.format_from = req.output();
   return es;
 }
@@ -199,9 +200,17 @@ FrameRenderer frame_renderer(const ExportRequest& req, const Inputs& in,
                               std::int64_t k) { layers->draw(rgb, equirect, view, k); };
   const std::vector<HeadSample>& head = in.head;
   const io::Rational fps = in.props.fps;
-  return [&stack, &head, fps, ps, out](const io::Picture& src, std::int64_t k) {
+  const bool both = req.stereo_side_by_side;
+  return [&stack, &head, fps, ps, out, both](const io::Picture& src, std::int64_t k) {
     const cv::Mat rgb = io::to_rgb(src, io::PixelFormat::RgbF32);
-    return io::rgb_to_ycbcr(render_path_frame(rgb, stack, path_view(head, k, fps), k, ps), out);
+    const PathView view = path_view(head, k, fps);
+    if (!both) return io::rgb_to_ycbcr(render_path_frame(rgb, stack, view, k, ps), out);
+    PathRenderSettings right = ps;
+    right.eye = effects::EyeIndex::Right;
+    cv::Mat pair;
+    cv::hconcat(render_path_frame(rgb, stack, view, k, ps),
+                render_path_frame(rgb, stack, view, k, right), pair);
+    return io::rgb_to_ycbcr(pair, out);
   };
 }
 
@@ -256,6 +265,10 @@ ExportResult run_export(const ExportRequest& req) {
   const fs::path target_file = io::resolve_output_path(req.output());
 
   Inputs in = read_inputs(req);
+  if (req.stereo_side_by_side && !in.layout.stereo())
+    throw io::InputError(req.video.string() +
+                         ": --stereo left-right needs a stereo video (this one is mono; --layout "
+                         "says otherwise)");
   const io::Sidecar& sidecar = in.sidecar;
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
   if (req.baked() && !baked_blur_supported(stack, in.layout.coverage_deg))

@@ -36,6 +36,9 @@ struct ExportRequest {
   int width = 1280, height = 720;  //!< path: output size
   io::LayoutOverride layout;       //!< --layout / --coverage (docs/stereo.md)
   effects::EyeIndex eye = effects::EyeIndex::Left;  //!< path, stereo video: the eye shown
+  /// Path, stereo video: both eyes side by side (left eye left, each width x height), tagged as
+  /// a left-right stereo flat video (--stereo left-right).
+  bool stereo_side_by_side = false;
 
   bool baked() const { return !baked_out.empty(); }
   /// The output as the user named it.

@@ -174,7 +174,7 @@ TEST(StereoExport, Vr180IsTaggedWithItsBoundsAndRefusesABlur) {
   EXPECT_FALSE(fs::exists(dir / "blur.mp4"));
 }
 
-TEST(StereoExport, ViewersPathShowsTheEyeAsked) {
+TEST(StereoExport, ViewersPathShowsTheEyeAskedOrBoth) {
   const fs::path dir = test_dir();
   const cv::Mat red(64, 128, CV_8UC3, cv::Scalar(230, 0, 0)),
       blue(64, 128, CV_8UC3, cv::Scalar(0, 0, 230));
@@ -197,10 +197,34 @@ TEST(StereoExport, ViewersPathShowsTheEyeAsked) {
       EXPECT_LT(m[0], 20.0);
     }
   }
-  const testing::CommandResult res =
+  testing::CommandResult res =
       run_vdfx("export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
                " --baked " + (dir / "b.mp4").string() + " --eye right");
   EXPECT_EQ(res.exit_code, 2) << res.output;
+
+  // Both eyes side by side, tagged as a flat 3D video (a stereo mode, no spherical mapping).
+  const fs::path sbs = dir / "sbs.mp4";
+  res = run_vdfx("export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+                 " --path " + rec.string() + " --out " + sbs.string() +
+                 " --size 64x48 --frames 0-1 --stereo left-right");
+  ASSERT_EQ(res.exit_code, 0) << res.output;
+  auto d = io::open_frame_decoder(sbs);
+  EXPECT_EQ(d->properties().width, 128);
+  EXPECT_EQ(d->properties().stereo_tags.mode, effects::StereoMode::LeftRight);
+  EXPECT_FALSE(d->properties().stereo_tags.coverage_deg);
+  const cv::Mat pair = testing::decoded_rgb8(*d, 0);
+  EXPECT_GT(cv::mean(pair.colRange(0, 64))[0], 200.0);    // left eye red
+  EXPECT_GT(cv::mean(pair.colRange(64, 128))[2], 200.0);  // right eye blue
+  const std::string probe = command_output("ffprobe -v error -show_streams '" + sbs.string() + "'");
+  EXPECT_NE(probe.find("type=side by side"), std::string::npos) << probe;
+  // A mono source has no pair to show.
+  const fs::path mono = mono_clip(dir / "mono.mp4", red);
+  res = run_vdfx("export " + mono.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+                 " --path " + rec.string() + " --out " + (dir / "m.mp4").string() +
+                 " --size 64x48 --frames 0-1 --stereo left-right");
+  EXPECT_EQ(res.exit_code, 1) << res.output;
+  EXPECT_NE(res.output.find("--stereo left-right needs a stereo video"), std::string::npos)
+      << res.output;
 }
 
 }  // namespace
