@@ -147,6 +147,18 @@ cv::Mat render_replay_frame(Editor& editor, EditorLayers& layers, const cv::Mat&
   return bgr;
 }
 
+/// The layout the editor shows (docs/stereo.md), recorded in `sidecar` as `vdfx edit` records
+/// it; a stereo-shaped untagged frame's hint joins the messages.
+effects::StereoLayout replay_layout(const io::VideoProperties& props, const ReplayOptions& o,
+                                    io::Sidecar& sidecar, ReplayResult& result) {
+  std::string hint;
+  const effects::StereoLayout layout = io::resolve_video_layout(
+      props, o.layout, &sidecar.video, o.sidecar_in.value_or(fs::path()), &hint);
+  if (!hint.empty()) result.messages.push_back(props.path.string() + ": " + hint);
+  io::record_layout(sidecar.video, layout);
+  return layout;
+}
+
 }  // namespace
 
 ReplayResult run_replay(const ReplayOptions& o) {
@@ -172,12 +184,7 @@ ReplayResult run_replay(const ReplayOptions& o) {
           ? io::read_sidecar(*o.sidecar_in)
           : io::new_sidecar({o.video.string(), props.fps.value(),
                              std::max<std::int64_t>(1, props.frames), props.width, props.height});
-  // The layout the editor shows (docs/stereo.md), recorded as `vdfx edit` records it.
-  std::string hint;
-  const effects::StereoLayout layout = io::resolve_video_layout(
-      props, o.layout, &sidecar.video, o.sidecar_in.value_or(fs::path()), &hint);
-  if (!hint.empty()) result.messages.push_back(props.path.string() + ": " + hint);
-  io::record_layout(sidecar.video, layout);
+  const effects::StereoLayout layout = replay_layout(props, o, sidecar, result);
   Editor editor(sidecar, DocumentOptions{{.async = false}}, editor_options_for(rec.header));
 
   auto backend = xr::create_replay_backend(std::move(rec), {});
