@@ -68,10 +68,15 @@ AVRational q(Rational r) {
 }
 
 AVPixelFormat pixel_format(const YcbcrInfo& y) {
-  if (y.bit_depth != 8) throw std::invalid_argument("VideoEncoder: 8-bit pictures only");
-  if (y.log2_chroma_w == 1 && y.log2_chroma_h == 1) return AV_PIX_FMT_YUV420P;
-  if (y.log2_chroma_w == 1 && y.log2_chroma_h == 0) return AV_PIX_FMT_YUV422P;
-  if (y.log2_chroma_w == 0 && y.log2_chroma_h == 0) return AV_PIX_FMT_YUV444P;
+  if (y.bit_depth != 8 && y.bit_depth != 10)
+    throw std::invalid_argument("VideoEncoder: 8- or 10-bit pictures only");
+  const bool deep = y.bit_depth == 10;
+  if (y.log2_chroma_w == 1 && y.log2_chroma_h == 1)
+    return deep ? AV_PIX_FMT_YUV420P10 : AV_PIX_FMT_YUV420P;
+  if (y.log2_chroma_w == 1 && y.log2_chroma_h == 0)
+    return deep ? AV_PIX_FMT_YUV422P10 : AV_PIX_FMT_YUV422P;
+  if (y.log2_chroma_w == 0 && y.log2_chroma_h == 0)
+    return deep ? AV_PIX_FMT_YUV444P10 : AV_PIX_FMT_YUV444P;
   throw std::invalid_argument("VideoEncoder: chroma subsampling must be 4:2:0, 4:2:2 or 4:4:4");
 }
 
@@ -318,7 +323,8 @@ class LibavEncoder final : public VideoEncoder {
     if (finished_) throw std::logic_error("VideoEncoder::write after finish");
     if (!p.is_ycbcr() || p.width() != settings_.width || p.height() != settings_.height ||
         p.ycbcr.log2_chroma_w != settings_.ycbcr.log2_chroma_w ||
-        p.ycbcr.log2_chroma_h != settings_.ycbcr.log2_chroma_h || p.planes[0].depth() != CV_8U)
+        p.ycbcr.log2_chroma_h != settings_.ycbcr.log2_chroma_h ||
+        p.planes[0].depth() != (settings_.ycbcr.bit_depth > 8 ? CV_16U : CV_8U))
       throw std::invalid_argument(
           "VideoEncoder::write: picture does not match the encoder settings");
     // The encoder may still hold the previous buffer: a fresh one per frame.
@@ -331,7 +337,7 @@ class LibavEncoder final : public VideoEncoder {
       const cv::Mat& plane = p.planes[static_cast<std::size_t>(i)];
       for (int y = 0; y < plane.rows; ++y)
         std::memcpy(frame_->data[i] + static_cast<std::ptrdiff_t>(y) * frame_->linesize[i],
-                    plane.ptr(y), static_cast<std::size_t>(plane.cols));
+                    plane.ptr(y), static_cast<std::size_t>(plane.cols) * plane.elemSize());
     }
     frame_->pts = pts;
     frame_->color_range = codec_->color_range;

@@ -34,8 +34,9 @@ struct EncoderSettings {
   int width = 0, height = 0;
   Rational frame_rate{30, 1};  //!< nominal rate (rate control, container headers)
   Rational time_base{0, 1};    //!< unit of the timestamps given to write(); 0: 1 / frame_rate
-  /// Pixel layout and colour tags: 8-bit, subsampling 4:2:0 / 4:2:2 / 4:4:4, matrix, range,
-  /// chroma siting (left or top-left for 4:2:0). Pictures given to write() must match it.
+  /// Pixel layout and colour tags: 8- or 10-bit (16-bit planes), subsampling 4:2:0 / 4:2:2 / 4:4:4,
+  /// matrix, range, chroma siting (left or top-left for 4:2:0). Pictures given to write() must
+  /// match it.
   YcbcrInfo ycbcr;
   int crf = -1;        //!< x264/x265 constant rate factor (0: lossless x264); -1: encoder default
   std::string preset;  //!< x264/x265 preset ("medium"); empty: encoder default

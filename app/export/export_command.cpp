@@ -43,9 +43,14 @@ void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
   cli.add_option("--path", t.path_rec,
                  "a recorded session (.vdrec.jsonl): export the viewer's view");
   cli.add_option("--out", t.path_out, "with --path: the flat video to write (.mp4, .mov or .mkv)");
-  cli.add_option("--codec", t.codec, "h264 (libx264) or h265 (libx265)")
-      ->check(CLI::IsMember({"h264", "h265"}))
+  cli.add_option("--codec", t.codec,
+                 "h264 (libx264), h265 (libx265) or prores (ProRes 422 HQ, 10-bit, .mov)")
+      ->check(CLI::IsMember({"h264", "h265", "prores"}))
       ->capture_default_str();
+  cli.add_option("--depth", r.depth,
+                 "bits per sample: 8, or 10 (with --codec h265: Main10; prores is 10-bit); "
+                 "--baked only")
+      ->check(CLI::IsMember({8, 10}));
   cli.add_option("--crf", r.crf,
                  "constant rate factor (0 = lossless with h264; default 18 / 20 for h265)")
       ->check(CLI::Range(0, 51));
@@ -83,6 +88,8 @@ ExportRequest export_request(const CLI::App& cli, ExportRequest r, const ExportT
   r.path_recording = t.path_rec;
   r.path_out = t.path_out;
   r.h265 = t.codec == "h265";
+  r.prores = t.codec == "prores";
+  if (r.prores && !cli.count("--depth")) r.depth = 10;
   r.chroma_444 = t.chroma == "444";
   check_export_request(r);
   if (!t.frames.empty()) r.frames = parse_frames(t.frames);

@@ -83,12 +83,20 @@ struct Encoding {
 
 io::EncoderSettings codec_settings(const ExportRequest& req, const Inputs& in) {
   io::EncoderSettings es;
-  es.codec = req.h265 ? "libx265" : "libx264";
-  es.crf = req.crf >= 0 ? req.crf : (req.h265 ? 20 : 18);
+  es.codec = req.prores ? "prores_ks" : req.h265 ? "libx265" : "libx264";
+  es.crf = req.prores ? -1 : req.crf >= 0 ? req.crf : (req.h265 ? 20 : 18);
+  es.ycbcr.bit_depth = req.depth;
   es.preset = req.preset;
   if (req.h265) es.codec_options["x265-params"] = "log-level=error";
   es.width = req.baked() ? in.props.width : req.width * (req.stereo_side_by_side ? 2 : 1);
   es.height = req.baked() ? in.props.height : req.height;
+  if (req.prores) {  // ProRes 422 HQ: 4:2:2, its own rate control (no crf, no preset)
+    es.codec_options["profile"] = "3";
+    es.preset.clear();
+    es.ycbcr.log2_chroma_w = 1;
+    es.ycbcr.log2_chroma_h = 0;
+    es.ycbcr.chroma_y = 0.0;
+  }
   if (req.chroma_444) {
     es.ycbcr.log2_chroma_w = es.ycbcr.log2_chroma_h = 0;
     es.ycbcr.chroma_x = es.ycbcr.chroma_y = 0.0;
@@ -242,6 +250,23 @@ PipelineResult encode_frames(Inputs& in, const FrameRenderer& render, const Enco
 
 }  // namespace
 
+namespace {
+
+/// --depth and --codec together (docs/export.md, "10 bits").
+void check_depth(const ExportRequest& req) {
+  if (req.depth != 8 && req.depth != 10) throw UsageError("--depth: 8 or 10");
+  if (req.prores && req.depth != 10)
+    throw UsageError("--codec prores: ProRes 422 HQ is 10-bit (drop --depth 8)");
+  if (req.prores && req.output().extension() != ".mov")
+    throw UsageError("--codec prores: write a .mov ('" + req.output().string() + "')");
+  if (req.depth == 10 && !req.h265 && !req.prores)
+    throw UsageError("--depth 10: needs --codec h265 (Main10) or --codec prores");
+  if (req.depth == 10 && !req.baked())
+    throw UsageError("--depth 10: goes with --baked (the viewer's path renders 8-bit views)");
+}
+
+}  // namespace
+
 void check_export_request(const ExportRequest& req) {
   if (req.baked() == !req.path_recording.empty())
     throw UsageError("export: give either --baked OUT or --path REC --out OUT");
@@ -252,6 +277,7 @@ void check_export_request(const ExportRequest& req) {
     throw UsageError("export: '" + req.output().string() +
                      "': the output must end .mp4, .mov or .mkv");
   if (!req.baked() && req.param_step > 0) throw UsageError("--param-step: goes with --baked");
+  check_depth(req);
 }
 
 ExportResult run_export(const ExportRequest& req) {

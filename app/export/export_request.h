@@ -25,7 +25,12 @@ struct ExportRequest {
   std::filesystem::path path_recording;  //!< a recorded session: export the viewer's view
   std::filesystem::path path_out;        //!< with path_recording: the flat video to write
   bool h265 = false;                     //!< libx265, else libx264
-  int crf = -1;                          //!< -1: 18 (h264) or 20 (h265)
+  /// ProRes 422 HQ (prores_ks profile 3, 10-bit 4:2:2, .mov only); overrides h265.
+  bool prores = false;
+  /// Bits per code value of the encoded video: 8, or 10 (--codec h265: Main10; --codec prores).
+  /// At 10 bits nothing passes through 8 bits from decode to encode (baked export only).
+  int depth = 8;
+  int crf = -1;  //!< -1: 18 (h264) or 20 (h265)
   std::string preset = "medium";
   bool chroma_444 = false;  //!< else 4:2:0 (even sizes only)
   /// Only these frames; none: the whole video (a path export: up to the recording's end).
