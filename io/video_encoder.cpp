@@ -406,4 +406,26 @@ std::unique_ptr<VideoEncoder> VideoEncoder::create(const std::filesystem::path& 
   return std::make_unique<LibavEncoder>(path, settings);
 }
 
+std::vector<std::string> audio_copy_notes(const std::filesystem::path& from) {
+  std::vector<std::string> notes;
+  std::string error;
+  const auto in = av::open_input(from.string(), error);
+  if (!in) return notes;  // the copy itself reports an unreadable file
+  for (unsigned i = 0; i < in->nb_streams; ++i) {
+    const AVCodecParameters* par = in->streams[i]->codecpar;
+    if (par->codec_type != AVMEDIA_TYPE_AUDIO) continue;
+    const bool ambisonic = par->ch_layout.order == AV_CHANNEL_ORDER_AMBISONIC;
+    if (!ambisonic && par->ch_layout.nb_channels != 4) continue;
+    notes.push_back(from.string() + ": audio stream " + std::to_string(i) + " (" +
+                    std::to_string(par->ch_layout.nb_channels) + " channels" +
+                    (ambisonic ? ", ambisonic" : "") +
+                    ") is copied with its channel layout, but this FFmpeg (libavformat " +
+                    AV_STRINGIFY(LIBAVFORMAT_VERSION_MAJOR) + "." +
+                    AV_STRINGIFY(LIBAVFORMAT_VERSION_MINOR) +
+                    ") writes no spatial audio box (SA3D): a 360 player may play it as plain "
+                    "4-channel audio");
+  }
+  return notes;
+}
+
 }  // namespace vdfx::io

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "effects/stereo_layout.h"
 #include "io/frame_time.h"
@@ -57,6 +58,12 @@ struct EncoderSettings {
   std::filesystem::path format_from;
   bool faststart = true;  //!< MP4/MOV: index at the front (one extra pass over the file at the end)
 };
+
+/// What copying `from`'s audio streams (EncoderSettings::copy_audio_from) cannot keep, one note
+/// per stream, for the user: libavformat 5.1 writes no spatial audio box (MP4/MOV `SA3D`), so a
+/// 4-channel track (first-order ambisonics, or one the demuxer marks ambisonic) is copied with
+/// its channel layout but without that box. Empty when nothing is lost or `from` has no audio.
+std::vector<std::string> audio_copy_notes(const std::filesystem::path& from);
 
 class VideoEncoder {
  public:

@@ -160,6 +160,9 @@ void announce(const ExportRequest& req, const Inputs& in, const io::EncoderSetti
             << (req.chroma_444 ? "444" : "420")
             << (req.baked() ? ", Spherical Video V2 equirectangular" : "") << stereo_note(req, in)
             << "\n";
+  if (!es.copy_audio_from.empty())
+    for (const std::string& note : io::audio_copy_notes(es.copy_audio_from))
+      std::cerr << "vdfx export: note: " << note << "\n";
   if (req.baked() && in.layout.mode == effects::StereoMode::RightLeft &&
       req.output().extension() != ".mkv")
     std::cerr << "vdfx export: note: MP4/MOV's st3d box has no right-left mode; the stereo tag is "

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <opencv2/imgproc.hpp>
 #include <string>
@@ -225,6 +226,33 @@ TEST(StereoExport, ViewersPathShowsTheEyeAskedOrBoth) {
   EXPECT_EQ(res.exit_code, 1) << res.output;
   EXPECT_NE(res.output.find("--stereo left-right needs a stereo video"), std::string::npos)
       << res.output;
+}
+
+TEST(StereoExport, FourChannelAudioIsCopiedAndTheMissingSa3dSaid) {
+  // A first-order ambisonic track is 4 channels; FFmpeg 5.1 writes no SA3D box to mark it.
+  const fs::path dir = test_dir();
+  const fs::path clip = dir / "amb.mp4";
+  const std::string make =
+      "ffmpeg -v error -y -f lavfi -i testsrc2=size=128x64:rate=24 -f lavfi -i "
+      "'sine=frequency=440:sample_rate=48000,aformat=channel_layouts=4.0' -t 0.5 -c:v libx264 "
+      "-pix_fmt yuv420p -c:a aac -shortest '" +
+      clip.string() + "'";
+  ASSERT_EQ(std::system(make.c_str()), 0) << make;
+  write_text(dir / "s.vdfx.json", sidecar_json(128, 64, ""));
+  const fs::path out = dir / "baked.mp4";
+  const testing::CommandResult r =
+      run_vdfx("export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+               " --baked " + out.string() + " --preset ultrafast");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("note: " + clip.string() +
+                          ": audio stream 1 (4 channels) is copied with its channel layout, but "
+                          "this FFmpeg"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("writes no spatial audio box (SA3D)"), std::string::npos);
+  const std::string probe = command_output("ffprobe -v error -show_streams '" + out.string() + "'");
+  EXPECT_NE(probe.find("channels=4"), std::string::npos) << probe;
+  EXPECT_NE(probe.find("channel_layout=4.0"), std::string::npos) << probe;
 }
 
 }  // namespace
