@@ -49,7 +49,7 @@ void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
       ->capture_default_str();
   cli.add_option("--depth", r.depth,
                  "bits per sample: 8, or 10 (with --codec h265: Main10; prores is 10-bit); "
-                 "--baked only")
+                 "--baked only. Default: the source's where the codec can carry it, else 8")
       ->check(CLI::IsMember({8, 10}));
   cli.add_option("--crf", r.crf,
                  "constant rate factor (0 = lossless with h264; default 18 / 20 for h265)")
@@ -89,7 +89,7 @@ ExportRequest export_request(const CLI::App& cli, ExportRequest r, const ExportT
   r.path_out = t.path_out;
   r.h265 = t.codec == "h265";
   r.prores = t.codec == "prores";
-  if (r.prores && !cli.count("--depth")) r.depth = 10;
+
   r.chroma_444 = t.chroma == "444";
   check_export_request(r);
   if (!t.frames.empty()) r.frames = parse_frames(t.frames);

@@ -81,11 +81,19 @@ struct Encoding {
   std::function<std::int64_t(std::int64_t frame)> pts_of;
 };
 
+/// --depth, or by default the source's: 10 for a source deeper than 8 bits where the export can
+/// write 10 (baked, h265 or prores), ProRes always 10, else 8.
+int export_depth(const ExportRequest& req, const io::VideoProperties& source) {
+  if (req.depth != 0) return req.depth;
+  if (req.prores) return 10;
+  return source.bit_depth > 8 && req.h265 && req.baked() ? 10 : 8;
+}
+
 io::EncoderSettings codec_settings(const ExportRequest& req, const Inputs& in) {
   io::EncoderSettings es;
   es.codec = req.prores ? "prores_ks" : req.h265 ? "libx265" : "libx264";
   es.crf = req.prores ? -1 : req.crf >= 0 ? req.crf : (req.h265 ? 20 : 18);
-  es.ycbcr.bit_depth = req.depth;
+  es.ycbcr.bit_depth = export_depth(req, in.props);
   es.preset = req.preset;
   if (req.h265) es.codec_options["x265-params"] = "log-level=error";
   es.width = req.baked() ? in.props.width : req.width * (req.stereo_side_by_side ? 2 : 1);
@@ -157,7 +165,7 @@ void announce(const ExportRequest& req, const Inputs& in, const io::EncoderSetti
             << ", " << es.width << "x" << es.height << ", frames " << r.first << "-" << r.last
             << " (" << r.last - r.first + 1 << ") at " << in.props.fps.num << "/"
             << in.props.fps.den << " fps, " << es.codec << " crf " << es.crf << " "
-            << (req.chroma_444 ? "444" : "420")
+            << (req.chroma_444 ? "444" : "420") << (es.ycbcr.bit_depth > 8 ? " 10-bit" : "")
             << (req.baked() ? ", Spherical Video V2 equirectangular" : "") << stereo_note(req, in)
             << "\n";
   if (!es.copy_audio_from.empty())
@@ -251,17 +259,15 @@ PipelineResult encode_frames(Inputs& in, const FrameRenderer& render, const Enco
   return r;
 }
 
-}  // namespace
-
-namespace {
-
 /// --depth and --codec together (docs/export.md, "10 bits").
 void check_depth(const ExportRequest& req) {
-  if (req.depth != 8 && req.depth != 10) throw UsageError("--depth: 8 or 10");
-  if (req.prores && req.depth != 10)
+  if (req.depth != 0 && req.depth != 8 && req.depth != 10) throw UsageError("--depth: 8 or 10");
+  if (req.prores && req.depth == 8)
     throw UsageError("--codec prores: ProRes 422 HQ is 10-bit (drop --depth 8)");
   if (req.prores && req.output().extension() != ".mov")
     throw UsageError("--codec prores: write a .mov ('" + req.output().string() + "')");
+  if (req.prores && !req.baked())
+    throw UsageError("--codec prores: goes with --baked (the viewer's path renders 8-bit views)");
   if (req.depth == 10 && !req.h265 && !req.prores)
     throw UsageError("--depth 10: needs --codec h265 (Main10) or --codec prores");
   if (req.depth == 10 && !req.baked())

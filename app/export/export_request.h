@@ -28,8 +28,9 @@ struct ExportRequest {
   /// ProRes 422 HQ (prores_ks profile 3, 10-bit 4:2:2, .mov only); overrides h265.
   bool prores = false;
   /// Bits per code value of the encoded video: 8, or 10 (--codec h265: Main10; --codec prores).
-  /// At 10 bits nothing passes through 8 bits from decode to encode (baked export only).
-  int depth = 8;
+  /// At 10 bits nothing passes through 8 bits from decode to encode (baked export only). 0: the
+  /// source's (10 for a deeper source when the codec and export can carry it, else 8).
+  int depth = 0;
   int crf = -1;  //!< -1: 18 (h264) or 20 (h265)
   std::string preset = "medium";
   bool chroma_444 = false;  //!< else 4:2:0 (even sizes only)

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <set>
@@ -82,6 +83,33 @@ TEST(ExportDepth, TenBitsKeepTheGradientsLevels) {
       command_output("ffprobe -v error -show_streams '" + (dir / "ten.mkv").string() + "'");
   EXPECT_NE(probe.find("profile=Main 10"), std::string::npos) << probe;
   EXPECT_NE(probe.find("pix_fmt=yuv420p10le"), std::string::npos) << probe;
+}
+
+TEST(ExportDepth, TheDefaultIsTheSourcesDepthWhereTheCodecCarriesIt) {
+  const fs::path dir = test_dir();
+  const fs::path png = gradient_png(dir);
+  const fs::path source = dir / "main10.mkv";  // a 10-bit HEVC source
+  const std::string make = "ffmpeg -v error -y -i '" + png.string() +
+                           "' -c:v libx265 -pix_fmt yuv420p10le -x265-params log-level=error '" +
+                           source.string() + "'";
+  ASSERT_EQ(std::system(make.c_str()), 0) << make;
+  EXPECT_EQ(io::open_frame_decoder(source)->properties().bit_depth, 10);
+  std::string sidecar = kPlusOneStop;
+  sidecar.replace(sidecar.find("gradient.png"), 12, "main10.mkv");
+  write_text(dir / "s.vdfx.json", sidecar);
+  const std::string base =
+      "export " + source.string() + " --sidecar " + (dir / "s.vdfx.json").string() + " --baked ";
+  testing::CommandResult r = run_vdfx(base + (dir / "h265.mkv").string() + " --codec h265");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("10-bit"), std::string::npos) << r.output;
+  EXPECT_NE(command_output("ffprobe -v error -show_streams '" + (dir / "h265.mkv").string() + "'")
+                .find("pix_fmt=yuv420p10le"),
+            std::string::npos);
+  r = run_vdfx(base + (dir / "h264.mkv").string());  // h264 here is 8-bit only
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(command_output("ffprobe -v error -show_streams '" + (dir / "h264.mkv").string() + "'")
+                .find("pix_fmt=yuv420p\n"),
+            std::string::npos);
 }
 
 TEST(ExportDepth, ProResIsProRes422Hq) {
