@@ -40,6 +40,9 @@ struct VideoProperties {
   std::string transfer;
   /// The stream's stereo and spherical tags (io/video_layout.h); stills: none.
   StereoTags stereo_tags;
+  /// Bits per code value of the decoded Y'CbCr planes (10 for HEVC Main10, ProRes); 8 for RGB
+  /// codecs and stills.
+  int bit_depth = 8;
 };
 
 enum class DecodeStatus {

@@ -185,6 +185,7 @@ class LibavDecoder final : public FrameDecoder {
       throw InputError(name_ + ": cannot decode the first frame (corrupt or unsupported " +
                        props_.codec + " stream)");
     check_frame_size(name_, first.width(), first.height());
+    if (first.is_ycbcr()) props_.bit_depth = first.ycbcr.bit_depth;
     props_.width = first.width();
     props_.height = first.height();
     held_ = std::move(first);

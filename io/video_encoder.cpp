@@ -68,10 +68,15 @@ AVRational q(Rational r) {
 }
 
 AVPixelFormat pixel_format(const YcbcrInfo& y) {
-  if (y.bit_depth != 8) throw std::invalid_argument("VideoEncoder: 8-bit pictures only");
-  if (y.log2_chroma_w == 1 && y.log2_chroma_h == 1) return AV_PIX_FMT_YUV420P;
-  if (y.log2_chroma_w == 1 && y.log2_chroma_h == 0) return AV_PIX_FMT_YUV422P;
-  if (y.log2_chroma_w == 0 && y.log2_chroma_h == 0) return AV_PIX_FMT_YUV444P;
+  if (y.bit_depth != 8 && y.bit_depth != 10)
+    throw std::invalid_argument("VideoEncoder: 8- or 10-bit pictures only");
+  const bool deep = y.bit_depth == 10;
+  if (y.log2_chroma_w == 1 && y.log2_chroma_h == 1)
+    return deep ? AV_PIX_FMT_YUV420P10 : AV_PIX_FMT_YUV420P;
+  if (y.log2_chroma_w == 1 && y.log2_chroma_h == 0)
+    return deep ? AV_PIX_FMT_YUV422P10 : AV_PIX_FMT_YUV422P;
+  if (y.log2_chroma_w == 0 && y.log2_chroma_h == 0)
+    return deep ? AV_PIX_FMT_YUV444P10 : AV_PIX_FMT_YUV444P;
   throw std::invalid_argument("VideoEncoder: chroma subsampling must be 4:2:0, 4:2:2 or 4:4:4");
 }
 
@@ -278,6 +283,10 @@ class LibavEncoder final : public VideoEncoder {
       AVStereo3D* st3d = av_stereo3d_alloc();
       if (st3d) set_stereo_mode(*st3d, s.stereo.mode);
       add_side_data(stream_, AV_PKT_DATA_STEREO3D, st3d, sizeof(AVStereo3D));
+    } else if (s.stereo.stereo()) {  // a flat 3D video: the stereo mode alone
+      AVStereo3D* st3d = av_stereo3d_alloc();
+      if (st3d) set_stereo_mode(*st3d, s.stereo.mode);
+      add_side_data(stream_, AV_PKT_DATA_STEREO3D, st3d, sizeof(AVStereo3D));
     }
     if (s.display_rotation_deg % 360 != 0) {
       auto* m = static_cast<std::int32_t*>(av_malloc(9 * sizeof(std::int32_t)));
@@ -314,7 +323,8 @@ class LibavEncoder final : public VideoEncoder {
     if (finished_) throw std::logic_error("VideoEncoder::write after finish");
     if (!p.is_ycbcr() || p.width() != settings_.width || p.height() != settings_.height ||
         p.ycbcr.log2_chroma_w != settings_.ycbcr.log2_chroma_w ||
-        p.ycbcr.log2_chroma_h != settings_.ycbcr.log2_chroma_h || p.planes[0].depth() != CV_8U)
+        p.ycbcr.log2_chroma_h != settings_.ycbcr.log2_chroma_h ||
+        p.planes[0].depth() != (settings_.ycbcr.bit_depth > 8 ? CV_16U : CV_8U))
       throw std::invalid_argument(
           "VideoEncoder::write: picture does not match the encoder settings");
     // The encoder may still hold the previous buffer: a fresh one per frame.
@@ -327,7 +337,7 @@ class LibavEncoder final : public VideoEncoder {
       const cv::Mat& plane = p.planes[static_cast<std::size_t>(i)];
       for (int y = 0; y < plane.rows; ++y)
         std::memcpy(frame_->data[i] + static_cast<std::ptrdiff_t>(y) * frame_->linesize[i],
-                    plane.ptr(y), static_cast<std::size_t>(plane.cols));
+                    plane.ptr(y), static_cast<std::size_t>(plane.cols) * plane.elemSize());
     }
     frame_->pts = pts;
     frame_->color_range = codec_->color_range;
@@ -394,6 +404,28 @@ class LibavEncoder final : public VideoEncoder {
 std::unique_ptr<VideoEncoder> VideoEncoder::create(const std::filesystem::path& path,
                                                    const EncoderSettings& settings) {
   return std::make_unique<LibavEncoder>(path, settings);
+}
+
+std::vector<std::string> audio_copy_notes(const std::filesystem::path& from) {
+  std::vector<std::string> notes;
+  std::string error;
+  const auto in = av::open_input(from.string(), error);
+  if (!in) return notes;  // the copy itself reports an unreadable file
+  for (unsigned i = 0; i < in->nb_streams; ++i) {
+    const AVCodecParameters* par = in->streams[i]->codecpar;
+    if (par->codec_type != AVMEDIA_TYPE_AUDIO) continue;
+    const bool ambisonic = par->ch_layout.order == AV_CHANNEL_ORDER_AMBISONIC;
+    if (!ambisonic && par->ch_layout.nb_channels != 4) continue;
+    notes.push_back(from.string() + ": audio stream " + std::to_string(i) + " (" +
+                    std::to_string(par->ch_layout.nb_channels) + " channels" +
+                    (ambisonic ? ", ambisonic" : "") +
+                    ") is copied with its channel layout, but this FFmpeg (libavformat " +
+                    AV_STRINGIFY(LIBAVFORMAT_VERSION_MAJOR) + "." +
+                    AV_STRINGIFY(LIBAVFORMAT_VERSION_MINOR) +
+                    ") writes no spatial audio box (SA3D): a 360 player may play it as plain "
+                    "4-channel audio");
+  }
+  return notes;
 }
 
 }  // namespace vdfx::io

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "effects/stereo_layout.h"
 #include "io/frame_time.h"
@@ -34,8 +35,9 @@ struct EncoderSettings {
   int width = 0, height = 0;
   Rational frame_rate{30, 1};  //!< nominal rate (rate control, container headers)
   Rational time_base{0, 1};    //!< unit of the timestamps given to write(); 0: 1 / frame_rate
-  /// Pixel layout and colour tags: 8-bit, subsampling 4:2:0 / 4:2:2 / 4:4:4, matrix, range,
-  /// chroma siting (left or top-left for 4:2:0). Pictures given to write() must match it.
+  /// Pixel layout and colour tags: 8- or 10-bit (16-bit planes), subsampling 4:2:0 / 4:2:2 / 4:4:4,
+  /// matrix, range, chroma siting (left or top-left for 4:2:0). Pictures given to write() must
+  /// match it.
   YcbcrInfo ycbcr;
   int crf = -1;        //!< x264/x265 constant rate factor (0: lossless x264); -1: encoder default
   std::string preset;  //!< x264/x265 preset ("medium"); empty: encoder default
@@ -46,6 +48,7 @@ struct EncoderSettings {
   bool spherical_equirect = false;  //!< Spherical Video V2 equirectangular + `stereo`'s mode
   /// With spherical_equirect: the st3d stereo mode (mono, top-bottom, left-right, right-left as
   /// side-by-side inverted) and, for coverage 180, the equi bounds of a centred half turn.
+  /// Without it, a stereo mode alone is written (a flat 3D video); mono writes nothing.
   effects::StereoLayout stereo;
   int display_rotation_deg = 0;  //!< clockwise display rotation written as the display matrix
   std::filesystem::path copy_audio_from;    //!< copy every audio stream of this file (empty: none)
@@ -55,6 +58,12 @@ struct EncoderSettings {
   std::filesystem::path format_from;
   bool faststart = true;  //!< MP4/MOV: index at the front (one extra pass over the file at the end)
 };
+
+/// What copying `from`'s audio streams (EncoderSettings::copy_audio_from) cannot keep, one note
+/// per stream, for the user: libavformat 5.1 writes no spatial audio box (MP4/MOV `SA3D`), so a
+/// 4-channel track (first-order ambisonics, or one the demuxer marks ambisonic) is copied with
+/// its channel layout but without that box. Empty when nothing is lost or `from` has no audio.
+std::vector<std::string> audio_copy_notes(const std::filesystem::path& from);
 
 class VideoEncoder {
  public:

@@ -58,4 +58,10 @@ effects::StereoLayout resolve_video_layout(const VideoProperties& video, const L
   return layout;
 }
 
+void record_layout(VideoInfo& video, const effects::StereoLayout& layout) {
+  if (layout == effects::StereoLayout{} && !video.layout && !video.coverage_deg) return;
+  video.layout = layout.mode;
+  video.coverage_deg = layout.coverage_deg;
+}
+
 }  // namespace vdfx::io

@@ -50,4 +50,9 @@ effects::StereoLayout resolve_video_layout(const VideoProperties& video, const L
                                            const std::filesystem::path& sidecar_path,
                                            std::string* hint = nullptr);
 
+/// Records `layout` in a sidecar's `video` section (what the editor shows, so that every player
+/// shows the same: docs/stereo.md); a mono 360 layout where nothing was recorded leaves the
+/// section as it was (old files stay byte for byte).
+void record_layout(VideoInfo& video, const effects::StereoLayout& layout);
+
 }  // namespace vdfx::io

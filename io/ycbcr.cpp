@@ -283,18 +283,25 @@ void to_rgb(const Picture& p, PixelFormat format, cv::Mat& out) {
 Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
   if (rgb.empty() || (rgb.type() != CV_32FC3 && rgb.type() != CV_8UC3))
     throw std::invalid_argument("rgb_to_ycbcr: CV_32FC3 or CV_8UC3 RGB expected");
-  if (info.bit_depth != 8) throw std::invalid_argument("rgb_to_ycbcr: 8-bit codes only");
+  if (info.bit_depth != 8 && info.bit_depth != 10)
+    throw std::invalid_argument("rgb_to_ycbcr: 8- or 10-bit codes only");
+  const bool deep = info.bit_depth > 8;  // 16-bit planes, codes LSB-aligned (io/picture.h)
+  const float top = static_cast<float>((1 << info.bit_depth) - 1);
   const AffineMap3 a = rgb_to_ycbcr_map(info);
   const int w = rgb.cols, h = rgb.rows;
   const int cw = (w + (1 << info.log2_chroma_w) - 1) >> info.log2_chroma_w;
   const int ch = (h + (1 << info.log2_chroma_h) - 1) >> info.log2_chroma_h;
   Picture p;
   p.ycbcr = info;
-  p.planes[0].create(h, w, CV_8UC1);
-  p.planes[1].create(ch, cw, CV_8UC1);
-  p.planes[2].create(ch, cw, CV_8UC1);
+  const int plane_type = deep ? CV_16UC1 : CV_8UC1;
+  p.planes[0].create(h, w, plane_type);
+  p.planes[1].create(ch, cw, plane_type);
+  p.planes[2].create(ch, cw, plane_type);
   // Codes are never negative here (offsets >= 0, inputs clamped): rounding is + 0.5 and a cut.
   auto code = [](float v) { return static_cast<std::uint8_t>(std::clamp(v + 0.5f, 0.0f, 255.0f)); };
+  auto code16 = [top](float v) {
+    return static_cast<std::uint16_t>(std::clamp(v + 0.5f, 0.0f, top));
+  };
   std::array<float, 9> m{};
   for (int i = 0; i < 9; ++i) m[i] = static_cast<float>(a.m[i]);
   const float o0 = static_cast<float>(a.offset[0]);
@@ -324,14 +331,19 @@ Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
         }
       }
       // Byte stores may alias anything: locals (and no vector or capture reloads) let it vectorise.
-      std::uint8_t* d = p.planes[0].ptr<std::uint8_t>(y);
       const float *pr = r.data(), *pg = g.data(), *pb = b.data();
       float *pu = u.data(), *pv = v.data();
       const std::array<float, 9> k = m;
       const float ko = o0;
       const int n = w;
+      if (deep) {
+        std::uint16_t* d = p.planes[0].ptr<std::uint16_t>(y);
+        for (int x = 0; x < n; ++x) d[x] = code16(k[0] * pr[x] + k[1] * pg[x] + k[2] * pb[x] + ko);
+      } else {
+        std::uint8_t* d = p.planes[0].ptr<std::uint8_t>(y);
+        for (int x = 0; x < n; ++x) d[x] = code(k[0] * pr[x] + k[1] * pg[x] + k[2] * pb[x] + ko);
+      }
       for (int x = 0; x < n; ++x) {
-        d[x] = code(k[0] * pr[x] + k[1] * pg[x] + k[2] * pb[x] + ko);
         pu[x] = k[3] * pr[x] + k[4] * pg[x] + k[5] * pb[x];
         pv[x] = k[6] * pr[x] + k[7] * pg[x] + k[8] * pb[x];
       }
@@ -353,10 +365,19 @@ Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
           v[j] += wgt * sv[j];
         }
       }
-      std::uint8_t* cb = p.planes[1].ptr<std::uint8_t>(i);
-      std::uint8_t* cr = p.planes[2].ptr<std::uint8_t>(i);
       const float *pu = u.data(), *pv = v.data();
       const int n = cw;
+      if (deep) {
+        std::uint16_t* cb = p.planes[1].ptr<std::uint16_t>(i);
+        std::uint16_t* cr = p.planes[2].ptr<std::uint16_t>(i);
+        for (int j = 0; j < n; ++j) {
+          cb[j] = code16(pu[j]);
+          cr[j] = code16(pv[j]);
+        }
+        continue;
+      }
+      std::uint8_t* cb = p.planes[1].ptr<std::uint8_t>(i);
+      std::uint8_t* cr = p.planes[2].ptr<std::uint8_t>(i);
       for (int j = 0; j < n; ++j) {
         cb[j] = code(pu[j]);
         cr[j] = code(pv[j]);

@@ -48,9 +48,9 @@ cv::Mat to_rgb(const Picture& picture, PixelFormat format);
 void to_rgb(const Picture& picture, PixelFormat format, cv::Mat& out);
 
 /// Encodes an RGB image (CV_32FC3 in [0, 1], clamped first, or CV_8UC3) as a Y'CbCr picture in
-/// `info`'s layout (bit_depth 8 only): luma per pixel, chroma from R'G'B' averaged over each
-/// chroma sample's footprint with a tent filter centred on its siting (half-width one
-/// subsampling step), codes rounded to nearest.
+/// `info`'s layout (bit_depth 8, or 10 in 16-bit planes): luma per pixel, chroma from R'G'B'
+/// averaged over each chroma sample's footprint with a tent filter centred on its siting
+/// (half-width one subsampling step), codes rounded to nearest.
 Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info);
 
 }  // namespace vdfx::io

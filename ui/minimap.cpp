@@ -49,6 +49,12 @@ void Minimap::set_keyframes(std::vector<effects::Direction> dirs, int highlighte
   touch();
 }
 
+void Minimap::set_coverage(int coverage_deg) {
+  if (coverage_deg == coverage_deg_) return;
+  coverage_deg_ = coverage_deg;
+  touch();
+}
+
 void Minimap::set_view(effects::Direction forward, double hfov_deg, double vfov_deg) {
   if (forward == view_ && hfov_deg == hfov_ && vfov_deg == vfov_) return;
   view_ = forward;
@@ -125,6 +131,17 @@ void Minimap::draw(DrawContext& ctx) const {
   else
     c.fill_rect(a, t.surface_pressed);
   c.push_clip(a);
+  if (coverage_deg_ < 360) {
+    // Outside the video's coverage: dimmed, with a line at each edge of the covered part.
+    const double side = a.w * (0.5 - coverage_deg_ / 720.0);
+    const Rgba shade = Rgba::hex(0x000000, 0.65f);
+    c.fill_rect({a.x, a.y, side, a.h}, shade);
+    c.fill_rect({a.x + a.w - side, a.y, side, a.h}, shade);
+    for (const double x : {a.x + side, a.x + a.w - side}) {
+      const std::vector<glm::dvec2> edge{{x, a.y}, {x, a.y + a.h}};
+      c.polyline(edge, 3.0, t.track);
+    }
+  }
   for (const auto& line : footprint()) {
     c.polyline(line, 7.0, Rgba::hex(0x000000, 0.7f));
     c.polyline(line, 3.5, t.text);

@@ -35,6 +35,10 @@ class Minimap : public Widget {
   /// The viewer's forward direction and field of view (degrees, full angles); unchanged values
   /// change nothing.
   void set_view(effects::Direction forward, double hfov_deg, double vfov_deg);
+  /// Degrees of azimuth the video covers, centred on azimuth 0 (360, or 180 for VR180): the
+  /// rest of the map is dimmed and hatched as "no picture there".
+  void set_coverage(int coverage_deg);
+  int coverage() const { return coverage_deg_; }
   bool interactive() const override { return enabled() && !keyframes_.empty(); }
   glm::dvec2 value() const override {
     return {static_cast<double>(picked_), static_cast<double>(clicks_)};
@@ -64,6 +68,7 @@ class Minimap : public Widget {
   int clicks_ = 0;
   effects::Direction view_{};
   double hfov_ = 90.0, vfov_ = 90.0;
+  int coverage_deg_ = 360;
 };
 
 }  // namespace vdfx::ui

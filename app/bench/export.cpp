@@ -36,19 +36,28 @@ void add_export_knobs(Registry& r, bool quick) {
           "the same frame baked with exact per-pixel parameters (param_step 1), before encoding",
           "the same pipeline with no effects (decode, encode: the encoder's floor)", PlotError::Max,
           false, false});
-  const int w = quick ? 960 : 1920, h = w / 2, frames = quick ? 6 : 8;
-  std::vector<bool> blurs{false};
-  if (!quick) blurs.push_back(true);
-  for (const bool blur : blurs) {
-    r.add(kKnob, blur ? "colour + blur" : "colour", [=](Row& row, const Context& ctx) {
+  const int w = quick ? 960 : 1920, frames = quick ? 6 : 8;
+  struct Case {
+    bool blur;
+    bool stereo;  //!< top-bottom: the frame w x w, each eye's half w x w/2
+  };
+  std::vector<Case> cases{{false, false}};
+  if (!quick) cases.insert(cases.end(), {{true, false}, {false, true}});
+  for (const Case c : cases) {
+    const std::string name =
+        std::string(c.blur ? "colour + blur" : "colour") + (c.stereo ? ", top-bottom stereo" : "");
+    r.add(kKnob, name, [=](Row& row, const Context& ctx) {
       namespace fs = std::filesystem;
+      const int h = c.stereo ? w : w / 2;
       const fs::path clip = media_clip("vdfx_bench_" + std::to_string(w) + "x" + std::to_string(h) +
                                            "_" + std::to_string(frames) + "_h264.mp4",
                                        w, h, frames);
-      const io::Sidecar sc = media_sidecar(blur);
+      const io::Sidecar sc = media_sidecar(c.blur);
       const effects::StackInterpolator stack(sc.effects, sc.interpolation, sc.video.fps);
       const fs::path out = fs::temp_directory_path() / "vdfx_bench_export.mp4";
-      const FrameRenderer baked = baked_renderer(stack), floor = unchanged_renderer();
+      const effects::StereoLayout layout{
+          c.stereo ? effects::StereoMode::TopBottom : effects::StereoMode::Mono, 360};
+      const FrameRenderer baked = baked_renderer(stack, layout), floor = unchanged_renderer();
       const auto t =
           measure_pair(Timed([&] { export_clip(clip, baked, out); }, frames),
                        Timed([&] { export_clip(clip, floor, out); }, frames), ctx.budget);
@@ -57,13 +66,16 @@ void add_export_knobs(Registry& r, bool quick) {
       row.time = t.subject;
       row.peer_time = t.peer;
       double mean = 0.0;
-      row.error = grid_error(stack, w, h, &mean);
+      row.error = grid_error(stack, w, w / 2, &mean);  // one eye's (or the mono) frame
       row.add("mean_error", mean);
       row.add("param_step", baked_param_step({}, w));
       row.add("frames_per_s", 1.0 / t.subject.median_s);
       row.add("peer_frames_per_s", 1.0 / t.peer.median_s);
+      // Per pixel, so that the stereo row compares with the mono one (docs/stereo.md).
+      row.add("megapixels_per_s", w * static_cast<double>(h) / 1e6 / t.subject.median_s);
       row.note = std::to_string(w) + "x" + std::to_string(h) + ", " + std::to_string(frames) +
-                 " frames; tint, exposure, saturation" + (blur ? ", blur 0..3 deg" : "") +
+                 " frames; tint, exposure, saturation" + (c.blur ? ", blur 0..3 deg" : "") +
+                 (c.stereo ? "; each eye's half baked alone" : "") +
                  "; threads: the pipeline's workers, the decoder's and x264's";
     });
   }

@@ -165,8 +165,9 @@ std::int64_t export_clip(const fs::path& clip, const FrameRenderer& render, cons
   return r.encoded;
 }
 
-FrameRenderer baked_renderer(const effects::StackInterpolator& stack) {
-  return baked_frame_renderer(stack, {}, {});
+FrameRenderer baked_renderer(const effects::StackInterpolator& stack,
+                             const effects::StereoLayout& layout) {
+  return baked_frame_renderer(stack, {}, {}, layout);
 }
 
 FrameRenderer unchanged_renderer() {

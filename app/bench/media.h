@@ -14,6 +14,7 @@
 
 #include "app/export/pipeline.h"
 #include "effects/stack_interpolator.h"
+#include "effects/stereo_layout.h"
 #include "io/sidecar.h"
 
 namespace vdfx::app::bench {
@@ -63,7 +64,9 @@ std::int64_t export_clip(const std::filesystem::path& clip, const FrameRenderer&
 
 /// The baked export's renderer of `stack` (Y'CbCr -> RGB float -> render_baked -> Y'CbCr), and
 /// the encoder's floor: every frame passed through unchanged.
-FrameRenderer baked_renderer(const effects::StackInterpolator& stack);
+/// `layout`: a stereo frame, each eye's half baked on its own (docs/stereo.md).
+FrameRenderer baked_renderer(const effects::StackInterpolator& stack,
+                             const effects::StereoLayout& layout = {});
 FrameRenderer unchanged_renderer();
 
 }  // namespace vdfx::app::bench

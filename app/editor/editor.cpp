@@ -10,6 +10,7 @@
 #include "app/editor/panel_binding.h"
 #include "app/editor/visualizations.h"
 #include "effects/direction_angle.h"
+#include "effects/stereo_layout.h"
 
 namespace vdfx::app {
 
@@ -124,6 +125,7 @@ EditorView Editor::view() const {
   v.show_track_plot = views_.track_plot;
   v.show_minimap = views_.minimap;
   v.timeline_locked = views_.timeline_locked;
+  v.coverage_deg = doc_.video().stereo().coverage_deg;
   v.visuals = &visuals_.data();
   return v;
 }
@@ -343,6 +345,13 @@ bool Editor::delete_nearest() {
 }
 
 void Editor::place_keyframe() {
+  // A VR180 video shows nothing behind the viewer: a keyframe there would tune black.
+  const effects::StereoLayout stereo = doc_.video().stereo();
+  if (effects::coverage_weight(stereo, view_.azimuth_deg) <= 0.0) {
+    say("outside the video (it covers azimuth -" + std::to_string(stereo.coverage_deg / 2) +
+        " to " + std::to_string(stereo.coverage_deg / 2) + "): no keyframe placed");
+    return;
+  }
   const auto edit = doc_.add_keyframe(effect_, {view_, play_.frame, doc_.params(effect_)});
   say(edit.replaced ? "replaced a keyframe" : "placed a keyframe");
 }

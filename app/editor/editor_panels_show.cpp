@@ -95,6 +95,7 @@ void EditorPanels::show_visualizations(const EditorView& v) {
   lock_->set_on(v.timeline_locked);
   plot_->set_rect(v.show_track_plot ? plot_rect_ : ui::Rect{});
   minimap_->set_rect(v.show_minimap ? minimap_rect_ : ui::Rect{});
+  minimap_->set_coverage(v.coverage_deg);
   const Visualizations* d = v.visuals;
   if (!d) return;
   if (d->markers_version != shown_.markers) {

@@ -52,6 +52,8 @@ struct EditorView {
   std::string hud_line, hud_message;  //!< the Desktop layout's heads-up line and message
   // ---- the views: what is shown, and where the timeline is
   bool show_track_plot = true, show_minimap = true, timeline_locked = false;
+  /// Degrees of azimuth the video covers (360, or 180 for VR180: the minimap dims the rest).
+  int coverage_deg = 360;
   /// The plot, the minimap and the strip's markers (VisualizationCache's latest); null: none
   /// yet. Lives as long as the editor.
   const Visualizations* visuals = nullptr;

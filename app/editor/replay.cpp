@@ -116,9 +116,9 @@ cv::Mat decode_frame(io::FrameDecoder& decoder, const fs::path& video, std::int6
 /// with the editor's parameters, then the flares and shader grain as the window draws them (laid
 /// out from the head, which looks along the view as the camera does), then the panels.
 cv::Mat render_replay_frame(Editor& editor, EditorLayers& layers, const cv::Mat& image,
-                            std::int64_t frame, std::int64_t t_ns, const ReplayOptions& o,
-                            ReplayResult& result) {
-  effects::EquirectSampler sampler(image);
+                            const effects::StereoLayout& layout, std::int64_t frame,
+                            std::int64_t t_ns, const ReplayOptions& o, ReplayResult& result) {
+  effects::EquirectSampler sampler(image, effects::sampler_options_for(layout));
   const auto camera = effects::ViewCamera::from_horizontal_fov({editor.view_direction(), 0.0},
                                                                o.hfov_deg, o.width, o.height);
   cv::Mat rendered = effects::render_view(sampler, camera, editor.current_params());
@@ -147,6 +147,18 @@ cv::Mat render_replay_frame(Editor& editor, EditorLayers& layers, const cv::Mat&
   return bgr;
 }
 
+/// The layout the editor shows (docs/stereo.md), recorded in `sidecar` as `vdfx edit` records
+/// it; a stereo-shaped untagged frame's hint joins the messages.
+effects::StereoLayout replay_layout(const io::VideoProperties& props, const ReplayOptions& o,
+                                    io::Sidecar& sidecar, ReplayResult& result) {
+  std::string hint;
+  const effects::StereoLayout layout = io::resolve_video_layout(
+      props, o.layout, &sidecar.video, o.sidecar_in.value_or(fs::path()), &hint);
+  if (!hint.empty()) result.messages.push_back(props.path.string() + ": " + hint);
+  io::record_layout(sidecar.video, layout);
+  return layout;
+}
+
 }  // namespace
 
 ReplayResult run_replay(const ReplayOptions& o) {
@@ -167,11 +179,12 @@ ReplayResult run_replay(const ReplayOptions& o) {
   auto decoder = io::open_frame_decoder(o.video, dec_opts);
   const auto& props = decoder->properties();
 
-  const io::Sidecar sidecar =
+  io::Sidecar sidecar =
       o.sidecar_in
           ? io::read_sidecar(*o.sidecar_in)
           : io::new_sidecar({o.video.string(), props.fps.value(),
                              std::max<std::int64_t>(1, props.frames), props.width, props.height});
+  const effects::StereoLayout layout = replay_layout(props, o, sidecar, result);
   EditorOptions eo = editor_options_for(rec.header);
   eo.video = o.video;
   eo.async_suggestions = false;  // a suggestion lands in the update that asked for it
@@ -198,8 +211,11 @@ ReplayResult run_replay(const ReplayOptions& o) {
     while (next_shot < shots.size() && shots[next_shot] == i) {
       const std::int64_t frame =
           std::clamp<std::int64_t>(editor.frame(), 0, std::max<std::int64_t>(0, props.frames - 1));
-      const cv::Mat image = decode_frame(*decoder, o.video, frame);
-      const cv::Mat bgr = render_replay_frame(editor, layers, image, frame, timeline[i], o, result);
+      // The desktop view's eye: the left one of stereo video.
+      const cv::Mat image = effects::eye_image(decode_frame(*decoder, o.video, frame), layout,
+                                               effects::EyeIndex::Left);
+      const cv::Mat bgr =
+          render_replay_frame(editor, layers, image, layout, frame, timeline[i], o, result);
       char name[64];
       std::snprintf(name, sizeof name, "replay_%03zu.png", next_shot);
       const fs::path out = *o.frames_dir / name;

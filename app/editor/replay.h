@@ -11,6 +11,7 @@
 
 #include "effects/view_camera.h"
 #include "io/sidecar.h"
+#include "io/video_layout.h"
 #include "ui/panel.h"
 #include "xr/pose.h"
 
@@ -27,6 +28,8 @@ struct ReplayOptions {
   int height = 720;
   double hfov_deg = 90.0;
   std::string log_prefix = "vdfx replay";
+  /// --layout / --coverage (docs/stereo.md); the frames show the left eye of stereo video.
+  io::LayoutOverride layout;
 };
 
 struct ReplayResult {

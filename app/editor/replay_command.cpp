@@ -4,6 +4,7 @@
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/cli/layout_options.h"
 #include "app/editor/replay.h"
 
 namespace vdfx::app {
@@ -18,6 +19,7 @@ int cmd_replay(const Args& args) {
   cli.add_option("--sidecar-in", in, "start from this sidecar (default: no effects)");
   cli.add_option("--sidecar-out", out, "write the resulting sidecar here")->required();
   cli.add_option("--frames", frames, "write a few mirror-like PNG frames to this folder");
+  add_layout_options(cli, o.layout);
   if (const auto code = parse_cli(cli, args)) return *code;
   o.recording = rec;
   o.video = video;

@@ -7,12 +7,14 @@
 #include <opencv2/imgproc.hpp>
 #include <utility>
 
+#include "io/eye_decoder.h"
 #include "io/frame_decoder.h"
 
 namespace vdfx::app {
 
-ThumbnailWorker::ThumbnailWorker(std::filesystem::path video, int count, cv::Size size)
-    : thread_([this, v = std::move(video), count, size] { run(v, count, size); }) {}
+ThumbnailWorker::ThumbnailWorker(std::filesystem::path video, int count, cv::Size size,
+                                 effects::StereoLayout layout)
+    : thread_([this, v = std::move(video), count, size, layout] { run(v, count, size, layout); }) {}
 
 ThumbnailWorker::~ThumbnailWorker() {
   stop_ = true;
@@ -27,14 +29,16 @@ std::vector<std::int64_t> ThumbnailWorker::frames_for(std::int64_t frame_count, 
   return out;
 }
 
-void ThumbnailWorker::run(std::filesystem::path video, int count, cv::Size size) {
+void ThumbnailWorker::run(std::filesystem::path video, int count, cv::Size size,
+                          effects::StereoLayout layout) {
   std::vector<cv::Mat> thumbs;
   std::string problem;
   try {
     io::DecoderOptions o;
     o.format = io::PixelFormat::Rgb8;
     o.max_forward_grab = 48;  // reading on beats a seek back to the keyframe for nearby frames
-    auto decoder = io::open_frame_decoder(video, o);
+    auto decoder =
+        io::eye_decoder(io::open_frame_decoder(video, o), layout, effects::EyeIndex::Left);
     const std::int64_t frames = std::max<std::int64_t>(1, decoder->properties().frames);
     cv::Mat rgb, small;
     for (const std::int64_t f : frames_for(frames, count)) {

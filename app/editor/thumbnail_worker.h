@@ -8,7 +8,6 @@
 /// io::FrameDecoder) or reads on when the next one is near. A video that cannot be read leaves the
 /// strip without thumbnails (the message says why) rather than failing the editor.
 #pragma once
-
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -20,11 +19,15 @@
 #include <thread>
 #include <vector>
 
+#include "effects/stereo_layout.h"
+
 namespace vdfx::app {
 
 class ThumbnailWorker {
  public:
-  ThumbnailWorker(std::filesystem::path video, int count, cv::Size size);
+  /// `layout`: stereo video's thumbnails show its left eye (docs/stereo.md).
+  ThumbnailWorker(std::filesystem::path video, int count, cv::Size size,
+                  effects::StereoLayout layout = {});
   /// Stops between frames and joins.
   ~ThumbnailWorker();
   ThumbnailWorker(const ThumbnailWorker&) = delete;
@@ -40,7 +43,7 @@ class ThumbnailWorker {
   static std::vector<std::int64_t> frames_for(std::int64_t frame_count, int count);
 
  private:
-  void run(std::filesystem::path video, int count, cv::Size size);
+  void run(std::filesystem::path video, int count, cv::Size size, effects::StereoLayout layout);
 
   mutable std::mutex mutex_;
   std::optional<std::vector<cv::Mat>> done_;

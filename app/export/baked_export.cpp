@@ -50,9 +50,10 @@ Axis axis_weights(int n, const std::vector<int>& pos, bool wrap) {
   return ax;
 }
 
-/// The direction of equirect pixel (x, y)'s centre (contract: u = 0.5 + az/360, v = 0.5 - alt/180).
-Eigen::Vector3d pixel_direction(int x, int y, int w, int h) {
-  const double az = ((x + 0.5) / w - 0.5) * 360.0, alt = (0.5 - (y + 0.5) / h) * 180.0;
+/// The direction of equirect pixel (x, y)'s centre (contract: u = 0.5 + az/360, v = 0.5 - alt/180;
+/// a VR180 image spans `coverage` = 180 degrees of azimuth: u = 0.5 + az/180).
+Eigen::Vector3d pixel_direction(int x, int y, int w, int h, int coverage) {
+  const double az = ((x + 0.5) / w - 0.5) * coverage, alt = (0.5 - (y + 0.5) / h) * 180.0;
   return effects::to_unit({az, alt});
 }
 
@@ -140,7 +141,7 @@ namespace {
 /// The parameters at the grid's pixels, computed.
 BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int64_t frame, int w,
                                int h, const std::vector<int>& gx, const std::vector<int>& gy,
-                               const Axis& ax) {
+                               const Axis& ax, int coverage) {
   const std::size_t cols = gx.size();
   auto grid = std::make_shared<BakedGrid>();
   grid->fields = kFields;
@@ -150,7 +151,8 @@ BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int
     for (int j = r.start; j < r.end; ++j) {
       const auto jj = static_cast<std::size_t>(j);
       for (std::size_t i = 0; i < cols; ++i)
-        flatten(stack.evaluate(pixel_direction(gx[i], gy[jj], w, h), frame), &exact[i * kFields]);
+        flatten(stack.evaluate(pixel_direction(gx[i], gy[jj], w, h, coverage), frame),
+                &exact[i * kFields]);
       for (int k = 0; k < kFields; ++k) {
         float* plane = grid->rows.data() + (jj * kFields + static_cast<std::size_t>(k)) * w;
         for (int x = 0; x < w; ++x) {
@@ -169,15 +171,16 @@ BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int
 /// effect evaluates at is the one it was computed for.
 BakedGridCache::Grid parameter_grid(const effects::StackInterpolator& stack, std::int64_t frame,
                                     int w, int h, int step, const std::vector<int>& gx,
-                                    const std::vector<int>& gy, const Axis& ax,
+                                    const std::vector<int>& gy, const Axis& ax, int coverage,
                                     BakedGridCache* cache) {
-  std::vector<std::int64_t> key{w, h, step};
+  std::vector<std::int64_t> key{w, h, step, coverage};
   for (int t = 0; t < effects::kEffectCount; ++t)
     if (const auto* rbf = stack.interpolator(static_cast<EffectType>(t)))
       key.push_back(rbf->effective_frame(frame));
   if (cache)
-    return cache->get_or_make(key, [&] { return make_grid(stack, frame, w, h, gx, gy, ax); });
-  return make_grid(stack, frame, w, h, gx, gy, ax);
+    return cache->get_or_make(key,
+                              [&] { return make_grid(stack, frame, w, h, gx, gy, ax, coverage); });
+  return make_grid(stack, frame, w, h, gx, gy, ax, coverage);
 }
 
 }  // namespace
@@ -190,25 +193,46 @@ cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& 
 }
 
 FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, BakedOptions options,
-                                   const io::YcbcrInfo& out) {
+                                   const io::YcbcrInfo& out, const effects::StereoLayout& layout) {
   auto cache = std::make_shared<BakedGridCache>();
   options.cache = cache.get();
-  return [&stack, options, out, cache](const io::Picture& source, std::int64_t frame) {
-    thread_local cv::Mat rgb, scratch;  // each render thread's frame buffers, reused
+  options.coverage_deg = layout.coverage_deg;
+  return [&stack, options, out, cache, layout](const io::Picture& source, std::int64_t frame) {
+    thread_local cv::Mat rgb, scratch, half;  // each render thread's frame buffers, reused
     io::to_rgb(source, io::PixelFormat::RgbF32, rgb);
-    render_baked_into(rgb, stack, frame, options, &scratch);
+    if (!layout.stereo()) {
+      render_baked_into(rgb, stack, frame, options, &scratch);
+      return io::rgb_to_ycbcr(rgb, out);
+    }
+    // Each eye's half on its own (the same per-pixel parameters: the halves are the same size
+    // and span the same sphere, so they share one grid): nothing reads across the boundary.
+    for (const effects::EyeIndex eye : {effects::EyeIndex::Left, effects::EyeIndex::Right}) {
+      const effects::PixelRect r = effects::eye_rect(layout, eye, rgb.cols, rgb.rows);
+      const cv::Rect rect(r.x, r.y, r.width, r.height);
+      rgb(rect).copyTo(half);
+      render_baked_into(half, stack, frame, options, &scratch);
+      half.copyTo(rgb(rect));
+    }
     return io::rgb_to_ycbcr(rgb, out);
   };
+}
+
+bool baked_blur_supported(const effects::StackInterpolator& stack, int coverage_deg) {
+  return coverage_deg == 360 || !stack.active(EffectType::Blur);
 }
 
 void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, std::int64_t frame,
                        const BakedOptions& options, cv::Mat* scratch) {
   const int w = rgb.cols, h = rgb.rows;
   const int step = baked_param_step(options, w);
-  const std::vector<int> gx = grid_positions(w, step, false), gy = grid_positions(h, step, true);
-  const Axis ax = axis_weights(w, gx, true), ay = axis_weights(h, gy, false);
+  // A 360 image's grid wraps across the seam; a VR180 image's ends at its last column.
+  const bool wrap = options.coverage_deg == 360;
+  if (!wrap && stack.active(EffectType::Blur))
+    throw std::invalid_argument("render_baked: the sphere blur needs a full turn (coverage 360)");
+  const std::vector<int> gx = grid_positions(w, step, !wrap), gy = grid_positions(h, step, true);
+  const Axis ax = axis_weights(w, gx, wrap), ay = axis_weights(h, gy, false);
   const BakedGridCache::Grid grid_ptr =
-      parameter_grid(stack, frame, w, h, step, gx, gy, ax, options.cache);
+      parameter_grid(stack, frame, w, h, step, gx, gy, ax, options.coverage_deg, options.cache);
   const BakedGrid& grid = *grid_ptr;
   // Bilinear, split: each grid row is blended along x once per grid (BakedGrid::rows), then
   // image row y blends the two grid rows around it.

@@ -25,6 +25,7 @@
 
 #include "app/export/pipeline.h"
 #include "effects/stack_interpolator.h"
+#include "effects/stereo_layout.h"
 #include "io/picture.h"
 
 namespace vdfx::app {
@@ -49,6 +50,9 @@ struct BakedOptions {
   int param_step = 0;  //!< 0: automatic (the grid at most 512 columns: 1 up to 512-wide video)
   /// Where the parameter grid of one frame is kept for the next (null: computed every frame).
   BakedGridCache* cache = nullptr;
+  /// Degrees of azimuth the image spans (360, or 180 for one eye of VR180: its pixels' directions
+  /// span azimuth -90..90 and its grid does not wrap). The sphere blur needs 360.
+  int coverage_deg = 360;
 };
 
 /// The last parameter grid, reused while every effect's interpolant evaluates at the same frame
@@ -118,15 +122,22 @@ cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& 
                      std::int64_t frame, const BakedOptions& options = {});
 /// The same in place: `rgb` becomes the rendered frame (its buffer is reused unless a blur needs
 /// a new one). With `scratch`, the blur writes into it and the two are swapped: a caller keeping
-/// both from frame to frame allocates nothing per frame.
+/// both from frame to frame allocates nothing per frame. Throws std::invalid_argument for a blur
+/// on coverage 180 (baked_blur_supported).
 void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, std::int64_t frame,
                        const BakedOptions& options = {}, cv::Mat* scratch = nullptr);
+
+/// Whether the baked export can render `stack` on images of `coverage_deg`: the sphere blur
+/// (effects/equirect_blur.h) wraps a full turn, so a VR180 image takes no blur yet.
+bool baked_blur_supported(const effects::StackInterpolator& stack, int coverage_deg);
 
 /// `vdfx export --baked`'s frame renderer: decoded picture -> RGB float (one buffer per render
 /// thread, reused: no fresh 4K float image, and its page faults, per frame) -> render_baked_into
 /// -> Y'CbCr in `out`'s layout, with one BakedGridCache for the whole export. `stack` must outlive
-/// the renderer.
+/// the renderer. A stereo `layout` bakes each eye's half on its own (its coverage from `layout`),
+/// the frame keeping its layout.
 FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, BakedOptions options,
-                                   const io::YcbcrInfo& out);
+                                   const io::YcbcrInfo& out,
+                                   const effects::StereoLayout& layout = {});
 
 }  // namespace vdfx::app

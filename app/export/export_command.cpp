@@ -8,6 +8,7 @@
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/cli/layout_options.h"
 #include "app/export/export_request.h"
 
 namespace vdfx::app {
@@ -31,7 +32,7 @@ FrameRange parse_frames(const std::string& text) {
 /// The option texts that need parsing after CLI11.
 struct ExportTexts {
   std::string video, sidecar, baked_out, path_rec, path_out, codec = "h264", chroma = "420";
-  std::string frames, size = "1280x720";
+  std::string frames, size = "1280x720", eye = "left", stereo;
 };
 
 void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
@@ -42,9 +43,14 @@ void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
   cli.add_option("--path", t.path_rec,
                  "a recorded session (.vdrec.jsonl): export the viewer's view");
   cli.add_option("--out", t.path_out, "with --path: the flat video to write (.mp4, .mov or .mkv)");
-  cli.add_option("--codec", t.codec, "h264 (libx264) or h265 (libx265)")
-      ->check(CLI::IsMember({"h264", "h265"}))
+  cli.add_option("--codec", t.codec,
+                 "h264 (libx264), h265 (libx265) or prores (ProRes 422 HQ, 10-bit, .mov)")
+      ->check(CLI::IsMember({"h264", "h265", "prores"}))
       ->capture_default_str();
+  cli.add_option("--depth", r.depth,
+                 "bits per sample: 8, or 10 (with --codec h265: Main10; prores is 10-bit); "
+                 "--baked only. Default: the source's where the codec can carry it, else 8")
+      ->check(CLI::IsMember({8, 10}));
   cli.add_option("--crf", r.crf,
                  "constant rate factor (0 = lossless with h264; default 18 / 20 for h265)")
       ->check(CLI::Range(0, 51));
@@ -64,6 +70,14 @@ void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
       ->check(finite_range(1.0, 179.0))
       ->capture_default_str();
   cli.add_option("--size", t.size, "--path: output size WxH")->capture_default_str();
+  cli.add_option("--eye", t.eye, "--path on stereo video: the eye whose half is shown")
+      ->check(CLI::IsMember({"left", "right"}))
+      ->capture_default_str();
+  cli.add_option("--stereo", t.stereo,
+                 "--path on stereo video: left-right writes both eyes side by side, tagged as a "
+                 "3D video")
+      ->check(CLI::IsMember({"left-right"}));
+  add_layout_options(cli, r.layout);
 }
 
 /// The parsed options as a request; a usage error throws (CLI::ValidationError, UsageError).
@@ -74,6 +88,8 @@ ExportRequest export_request(const CLI::App& cli, ExportRequest r, const ExportT
   r.path_recording = t.path_rec;
   r.path_out = t.path_out;
   r.h265 = t.codec == "h265";
+  r.prores = t.codec == "prores";
+
   r.chroma_444 = t.chroma == "444";
   check_export_request(r);
   if (!t.frames.empty()) r.frames = parse_frames(t.frames);
@@ -83,6 +99,14 @@ ExportRequest export_request(const CLI::App& cli, ExportRequest r, const ExportT
   if (r.baked() && (cli.count("--fov") || cli.count("--size")))
     throw CLI::ValidationError(
         "export", "--fov and --size go with --path (a baked video keeps the video's size)");
+  if (r.baked() && cli.count("--eye"))
+    throw CLI::ValidationError("--eye", "goes with --path (a baked video keeps both eyes)");
+  r.eye = t.eye == "right" ? effects::EyeIndex::Right : effects::EyeIndex::Left;
+  r.stereo_side_by_side = !t.stereo.empty();
+  if (r.stereo_side_by_side && r.baked())
+    throw CLI::ValidationError("--stereo", "goes with --path (a baked video keeps its layout)");
+  if (r.stereo_side_by_side && cli.count("--eye"))
+    throw CLI::ValidationError("--stereo", "shows both eyes; drop --eye");
   return r;
 }
 

@@ -43,6 +43,7 @@ struct Inputs {
   std::vector<HeadSample> head;  //!< path exports only
   std::unique_ptr<io::FrameDecoder> decoder;
   io::VideoProperties props;
+  effects::StereoLayout layout;  //!< the source's (docs/stereo.md)
   FrameRange range;
   std::int64_t last_available = 0;
 };
@@ -55,6 +56,9 @@ Inputs read_inputs(const ExportRequest& req) {
   dopts.format = io::PixelFormat::RgbF32;
   in.decoder = io::open_frame_decoder(req.video, dopts);
   in.props = in.decoder->properties();
+  std::string hint;
+  in.layout = io::resolve_video_layout(in.props, req.layout, &in.sidecar.video, req.sidecar, &hint);
+  if (!hint.empty()) std::cerr << "vdfx: hint: " << req.video.string() << ": " << hint << "\n";
   in.last_available = in.props.frames - 1;
   if (req.frames) {
     in.range = *req.frames;
@@ -77,18 +81,34 @@ struct Encoding {
   std::function<std::int64_t(std::int64_t frame)> pts_of;
 };
 
+/// --depth, or by default the source's: 10 for a source deeper than 8 bits where the export can
+/// write 10 (baked, h265 or prores), ProRes always 10, else 8.
+int export_depth(const ExportRequest& req, const io::VideoProperties& source) {
+  if (req.depth != 0) return req.depth;
+  if (req.prores) return 10;
+  return source.bit_depth > 8 && req.h265 && req.baked() ? 10 : 8;
+}
+
 io::EncoderSettings codec_settings(const ExportRequest& req, const Inputs& in) {
   io::EncoderSettings es;
-  es.codec = req.h265 ? "libx265" : "libx264";
-  es.crf = req.crf >= 0 ? req.crf : (req.h265 ? 20 : 18);
+  es.codec = req.prores ? "prores_ks" : req.h265 ? "libx265" : "libx264";
+  es.crf = req.prores ? -1 : req.crf >= 0 ? req.crf : (req.h265 ? 20 : 18);
+  es.ycbcr.bit_depth = export_depth(req, in.props);
   es.preset = req.preset;
   if (req.h265) es.codec_options["x265-params"] = "log-level=error";
   if (!req.encoder.empty()) {
     es.codec = req.encoder;
     es.codec_options = req.encoder_options;
   }
-  es.width = req.baked() ? in.props.width : req.width;
+  es.width = req.baked() ? in.props.width : req.width * (req.stereo_side_by_side ? 2 : 1);
   es.height = req.baked() ? in.props.height : req.height;
+  if (req.prores) {  // ProRes 422 HQ: 4:2:2, its own rate control (no crf, no preset)
+    es.codec_options["profile"] = "3";
+    es.preset.clear();
+    es.ycbcr.log2_chroma_w = 1;
+    es.ycbcr.log2_chroma_h = 0;
+    es.ycbcr.chroma_y = 0.0;
+  }
   if (req.chroma_444) {
     es.ycbcr.log2_chroma_w = es.ycbcr.log2_chroma_h = 0;
     es.ycbcr.chroma_x = es.ycbcr.chroma_y = 0.0;
@@ -99,6 +119,8 @@ io::EncoderSettings codec_settings(const ExportRequest& req, const Inputs& in) {
   }
   es.frame_rate = in.props.fps;
   es.spherical_equirect = req.baked();
+  if (req.baked()) es.stereo = in.layout;  // a stereo source stays stereo, tagged so
+  if (req.stereo_side_by_side) es.stereo = {effects::StereoMode::LeftRight, 360};
   es.format_from = req.output();
   return es;
 }
@@ -130,6 +152,16 @@ Encoding encoding(const ExportRequest& req, const Inputs& in) {
   return e;
 }
 
+/// ", top-bottom stereo, VR180" and the like for the announcement; "" for mono 360.
+std::string stereo_note(const ExportRequest& req, const Inputs& in) {
+  std::string s;
+  if (in.layout.stereo())
+    s += ", " + std::string(effects::stereo_mode_name(in.layout.mode)) +
+         (req.baked() ? " stereo" : " stereo source");
+  if (in.layout.coverage_deg != 360) s += ", VR180";
+  return s;
+}
+
 /// The first line on stderr: what is exported, how.
 void announce(const ExportRequest& req, const Inputs& in, const io::EncoderSettings& es) {
   const FrameRange r = in.range;
@@ -137,8 +169,16 @@ void announce(const ExportRequest& req, const Inputs& in, const io::EncoderSetti
             << ", " << es.width << "x" << es.height << ", frames " << r.first << "-" << r.last
             << " (" << r.last - r.first + 1 << ") at " << in.props.fps.num << "/"
             << in.props.fps.den << " fps, " << es.codec << " crf " << es.crf << " "
-            << (req.chroma_444 ? "444" : "420")
-            << (req.baked() ? ", Spherical Video V2 equirectangular" : "") << "\n";
+            << (req.chroma_444 ? "444" : "420") << (es.ycbcr.bit_depth > 8 ? " 10-bit" : "")
+            << (req.baked() ? ", Spherical Video V2 equirectangular" : "") << stereo_note(req, in)
+            << "\n";
+  if (!es.copy_audio_from.empty())
+    for (const std::string& note : io::audio_copy_notes(es.copy_audio_from))
+      std::cerr << "vdfx export: note: " << note << "\n";
+  if (req.baked() && in.layout.mode == effects::StereoMode::RightLeft &&
+      req.output().extension() != ".mkv")
+    std::cerr << "vdfx export: note: MP4/MOV's st3d box has no right-left mode; the stereo tag is "
+                 "left out (write .mkv to keep it)\n";
 }
 
 /// Flare and grain of a path export (none when the sidecar has neither), with the notes on what
@@ -170,20 +210,30 @@ FrameRenderer frame_renderer(const ExportRequest& req, const Inputs& in,
   if (req.baked()) {
     BakedOptions bo;
     bo.param_step = req.param_step;
-    return baked_frame_renderer(stack, bo, out);
+    return baked_frame_renderer(stack, bo, out, in.layout);
   }
   PathRenderSettings ps;
   ps.hfov_deg = req.hfov_deg;
   ps.width = req.width;
   ps.height = req.height;
+  ps.layout = in.layout;
+  ps.eye = req.eye;
   if (layers)
     ps.view_layers = [layers](cv::Mat& rgb, const cv::Mat& equirect, const xr::RenderView& view,
                               std::int64_t k) { layers->draw(rgb, equirect, view, k); };
   const std::vector<HeadSample>& head = in.head;
   const io::Rational fps = in.props.fps;
-  return [&stack, &head, fps, ps, out](const io::Picture& src, std::int64_t k) {
+  const bool both = req.stereo_side_by_side;
+  return [&stack, &head, fps, ps, out, both](const io::Picture& src, std::int64_t k) {
     const cv::Mat rgb = io::to_rgb(src, io::PixelFormat::RgbF32);
-    return io::rgb_to_ycbcr(render_path_frame(rgb, stack, path_view(head, k, fps), k, ps), out);
+    const PathView view = path_view(head, k, fps);
+    if (!both) return io::rgb_to_ycbcr(render_path_frame(rgb, stack, view, k, ps), out);
+    PathRenderSettings right = ps;
+    right.eye = effects::EyeIndex::Right;
+    cv::Mat pair;
+    cv::hconcat(render_path_frame(rgb, stack, view, k, ps),
+                render_path_frame(rgb, stack, view, k, right), pair);
+    return io::rgb_to_ycbcr(pair, out);
   };
 }
 
@@ -213,6 +263,21 @@ PipelineResult encode_frames(Inputs& in, const FrameRenderer& render, const Enco
   return r;
 }
 
+/// --depth and --codec together (docs/export.md, "10 bits").
+void check_depth(const ExportRequest& req) {
+  if (req.depth != 0 && req.depth != 8 && req.depth != 10) throw UsageError("--depth: 8 or 10");
+  if (req.prores && req.depth == 8)
+    throw UsageError("--codec prores: ProRes 422 HQ is 10-bit (drop --depth 8)");
+  if (req.prores && req.output().extension() != ".mov")
+    throw UsageError("--codec prores: write a .mov ('" + req.output().string() + "')");
+  if (req.prores && !req.baked())
+    throw UsageError("--codec prores: goes with --baked (the viewer's path renders 8-bit views)");
+  if (req.depth == 10 && !req.h265 && !req.prores)
+    throw UsageError("--depth 10: needs --codec h265 (Main10) or --codec prores");
+  if (req.depth == 10 && !req.baked())
+    throw UsageError("--depth 10: goes with --baked (the viewer's path renders 8-bit views)");
+}
+
 }  // namespace
 
 void check_export_request(const ExportRequest& req) {
@@ -225,6 +290,7 @@ void check_export_request(const ExportRequest& req) {
     throw UsageError("export: '" + req.output().string() +
                      "': the output must end .mp4, .mov or .mkv");
   if (!req.baked() && req.param_step > 0) throw UsageError("--param-step: goes with --baked");
+  check_depth(req);
 }
 
 ExportResult run_export(const ExportRequest& req) {
@@ -238,8 +304,17 @@ ExportResult run_export(const ExportRequest& req) {
   const fs::path target_file = io::resolve_output_path(req.output());
 
   Inputs in = read_inputs(req);
+  if (req.stereo_side_by_side && !in.layout.stereo())
+    throw io::InputError(req.video.string() +
+                         ": --stereo left-right needs a stereo video (this one is mono; --layout "
+                         "says otherwise)");
   const io::Sidecar& sidecar = in.sidecar;
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+  if (req.baked() && !baked_blur_supported(stack, in.layout.coverage_deg))
+    throw io::InputError(req.sidecar.string() +
+                         ": a baked export of VR180 video (coverage 180) cannot blur yet (the "
+                         "sphere blur needs a full turn): remove the blur or export the viewer's "
+                         "path");
   const Encoding enc = encoding(req, in);
   announce(req, in, enc.settings);
   int threads = req.threads;

@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "io/video_layout.h"
+
 namespace vdfx::app {
 
 /// Frames A-B of the source, inclusive (A <= B).
@@ -28,6 +30,12 @@ struct ExportRequest {
   /// libvpx-vp9), with its own options; empty: h265 decides.
   std::string encoder;
   std::map<std::string, std::string> encoder_options;
+  /// ProRes 422 HQ (prores_ks profile 3, 10-bit 4:2:2, .mov only); overrides h265.
+  bool prores = false;
+  /// Bits per code value of the encoded video: 8, or 10 (--codec h265: Main10; --codec prores).
+  /// At 10 bits nothing passes through 8 bits from decode to encode (baked export only). 0: the
+  /// source's (10 for a deeper source when the codec and export can carry it, else 8).
+  int depth = 0;
   int crf = -1;  //!< -1: 18 (h264) or 20 (h265)
   std::string preset = "medium";
   bool chroma_444 = false;  //!< else 4:2:0 (even sizes only)
@@ -37,6 +45,11 @@ struct ExportRequest {
   int param_step = 0;              //!< baked: exact parameters every N pixels; 0: the default grid
   double hfov_deg = 90.0;          //!< path: horizontal field of view
   int width = 1280, height = 720;  //!< path: output size
+  io::LayoutOverride layout;       //!< --layout / --coverage (docs/stereo.md)
+  effects::EyeIndex eye = effects::EyeIndex::Left;  //!< path, stereo video: the eye shown
+  /// Path, stereo video: both eyes side by side (left eye left, each width x height), tagged as
+  /// a left-right stereo flat video (--stereo left-right).
+  bool stereo_side_by_side = false;
 
   bool baked() const { return !baked_out.empty(); }
   /// The output as the user named it.

@@ -55,9 +55,10 @@ cv::Mat render_path_frame(const cv::Mat& equirect, const effects::StackInterpola
   const xr::RenderView rv =
       xr::RenderView::look_at(view.look, view.roll_deg, s.hfov_deg, s.width, s.height);
   const effects::ViewCamera camera = rv.camera(s.width, s.height);
-  const effects::EquirectSampler sampler(equirect);
+  const cv::Mat eye = effects::eye_image(equirect, s.layout, s.eye);
+  const effects::EquirectSampler sampler(eye, effects::sampler_options_for(s.layout));
   cv::Mat rgb = effects::render_view(sampler, camera, stack.evaluate(view.look, frame));
-  if (s.view_layers) s.view_layers(rgb, equirect, rv, frame);
+  if (s.view_layers) s.view_layers(rgb, eye, rv, frame);
   return effects::to_rgb8(rgb);
 }
 

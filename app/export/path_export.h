@@ -14,6 +14,7 @@
 
 #include "effects/coords.h"
 #include "effects/stack_interpolator.h"
+#include "effects/stereo_layout.h"
 #include "io/frame_time.h"
 #include "io/recording.h"
 #include "xr/render_view.h"
@@ -54,6 +55,9 @@ struct PathRenderSettings {
   double hfov_deg = 90.0;
   int width = 1280, height = 720;
   ViewLayersHook view_layers;  //!< empty: the six effects only
+  /// The source frame's stereo layout and coverage, and the eye whose image is shown.
+  effects::StereoLayout layout;
+  effects::EyeIndex eye = effects::EyeIndex::Left;
 };
 
 /// One frame of the viewer's-path export: 8-bit RGB, as `vdfx render --mode view` would give for

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iostream>
 #include <set>
 
 #include "app/cli/command_registry.h"
+#include "io/eye_decoder.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
 #include "io/output_path.h"
@@ -65,6 +67,23 @@ Clip open_clip(const SuggestRequest& r, Progress* progress) {
   // seeking back to its key frame (long-GOP files have one every few seconds).
   decoder_options.max_forward_grab = 120;
   clip.decoder = io::open_frame_decoder(r.video, decoder_options);
+  const io::VideoProperties whole = clip.decoder->properties();
+  clip.sidecar =
+      r.sidecar_in
+          ? io::read_sidecar(*r.sidecar_in)
+          : io::new_sidecar({r.video.string(), whole.fps.value(),
+                             std::max<std::int64_t>(1, whole.frames), whole.width, whole.height});
+  // Stereo: the left eye's image is the sphere the analyses see (docs/stereo.md).
+  std::string hint;
+  const effects::StereoLayout layout = io::resolve_video_layout(
+      whole, r.layout, &clip.sidecar.video, r.sidecar_in.value_or(fs::path()), &hint);
+  if (!hint.empty()) std::cerr << "vdfx: hint: " << r.video.string() << ": " << hint << "\n";
+  if (layout.coverage_deg != 360)
+    throw io::InputError(r.video.string() +
+                         ": suggestions over VR180 video (coverage 180) are not supported yet "
+                         "(the analyses sample the whole sphere)");
+  io::record_layout(clip.sidecar.video, layout);
+  clip.decoder = io::eye_decoder(std::move(clip.decoder), layout, effects::EyeIndex::Left);
   const auto& p = clip.decoder->properties();
   const double per_second = r.kind == Kind::Comfort ? 6.0 : 1.0;
   const std::int64_t every =

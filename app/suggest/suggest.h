@@ -18,6 +18,7 @@
 #include "app/suggest/motion.h"
 #include "effects/effect_types.h"
 #include "io/sidecar.h"
+#include "io/video_layout.h"
 
 namespace vdfx::app::suggest {
 
@@ -43,6 +44,9 @@ struct SuggestRequest {
   std::vector<PointOfInterest> points;  //!< guide
   GuideEffect guide_effect = GuideEffect::Saturation;
   MotionOptions motion;  //!< comfort
+  /// --layout / --coverage (docs/stereo.md): stereo video is analysed in its left eye's image;
+  /// VR180 is refused (the analyses sample the whole sphere).
+  io::LayoutOverride layout;
 };
 
 struct SuggestedEffect {

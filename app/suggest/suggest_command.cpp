@@ -7,6 +7,7 @@
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/cli/layout_options.h"
 #include "app/suggest/suggest.h"
 
 namespace vdfx::app {
@@ -23,6 +24,7 @@ struct CommonOptions {
 void add_common(CLI::App& sub, CommonOptions& c, suggest::SuggestRequest& r) {
   sub.add_option("video", c.video, "the video or panorama")->required();
   sub.add_option("--sidecar-in", c.in, "add to this sidecar (default: a new one)");
+  add_layout_options(sub, r.layout);
   sub.add_option("--sidecar-out", c.out, "write the sidecar with the suggestion here")->required();
   sub.add_option("--strength", r.strength, "0: neutral, 1: the whole suggestion (default 1)")
       ->check(finite_range(0.0, 1.0));

@@ -167,8 +167,8 @@ int edit_in_loop(EditDocument& d, const LoopCli& loop, LoopSetup& setup) {
       editor, create_gl_panel_textures(),
       /*follow_window=*/eo.layout == PanelLayout::Desktop && !setup.recorded_desktop);
   if (!setup.video->properties().is_still) {
-    auto thumbs =
-        std::make_unique<ThumbnailWorker>(d.video, kTimelineThumbnails, cv::Size(192, 96));
+    auto thumbs = std::make_unique<ThumbnailWorker>(d.video, kTimelineThumbnails, cv::Size(192, 96),
+                                                    setup.options.video_layout);
     // A replay must look the same every run: its thumbnails are there from the first frame.
     if (is_replay(loop)) thumbs->wait(std::chrono::seconds(60));
     client.set_thumbnails(std::move(thumbs));
@@ -229,6 +229,8 @@ int cmd_edit(const Args& args) {
     std::cerr << "vdfx edit: new sidecar " << doc.sidecar_path.string() << " for "
               << doc.video.string() << "\n";
   }
+  resolve_loop_layout(setup, loop, &doc.sidecar.video, doc.sidecar_path);
+  io::record_layout(doc.sidecar.video, setup.options.video_layout);
   if (doc.demo)
     std::cerr << "vdfx edit: the bundled demo, not saved (copy " << doc.sidecar_path.string()
               << " and pass --sidecar COPY to keep edits)\n";

@@ -51,6 +51,7 @@ std::string frame_loop_keys_text() {
          "  3                         window: headset mirror, through the lens (as the wearer sees "
          "them)\n"
          "  4                         window: headset mirror, left eye, undistorted\n"
+         "  5                         window: desktop view of stereo video, left / right eye\n"
          "  Escape                    quit (closing the window too)\n";
 }
 
@@ -78,6 +79,7 @@ struct FrameLoop::Impl {
   std::unique_ptr<xr::FlareGl> flare;  //!< the client's flares, drawn after the effects
   std::unique_ptr<xr::GrainGl> grain;  //!< the client's grain, drawn after the flares
   xr::MirrorMode mirror = xr::MirrorMode::Desktop;
+  int desktop_eye = 0;               //!< the stereo video's eye the desktop view shows (key 5)
   std::optional<glm::dvec2> cursor;  //!< the last cursor position the window reported
 
   // What is on screen: the decoded frame, and the parameter grid baked for it (per-pixel mode).
@@ -132,6 +134,7 @@ struct FrameLoop::Impl {
     cc.gpu_timing = o.stats;
     cc.blur = o.blur;
     compositor = std::make_unique<xr::Compositor>(cc);
+    compositor->set_video_layout(o.video_layout);
     flare = std::make_unique<xr::FlareGl>();
     grain = std::make_unique<xr::GrainGl>();
     mirror = o.mirror;
@@ -179,6 +182,11 @@ struct FrameLoop::Impl {
     const auto* k = std::get_if<xr::KeyEvent>(&e);
     if (!k || !k->pressed) return false;
     if (k->key == xr::Key::Escape) quit = true;
+    if (k->key == xr::Key::Num5 && o.video_layout.stereo()) {
+      desktop_eye = 1 - desktop_eye;
+      compositor->set_desktop_eye(desktop_eye);
+      return true;
+    }
     const auto m = mirror_for_key(k->key);
     if (!m || *m == mirror) return false;
     mirror = *m;

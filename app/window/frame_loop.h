@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "app/window/frame_client.h"
+#include "effects/stereo_layout.h"
 #include "xr/blur_method.h"
 #include "xr/hmd_profile.h"
 #include "xr/mirror.h"
@@ -86,6 +87,9 @@ struct FrameLoopOptions {
   /// loop's GL context; eye buffers at its recommended size x eye_scale, no lens, the panels as
   /// quad layers, the window mirrors the left eye). Null: the simulated headset.
   std::shared_ptr<xr::OpenXrRuntime> openxr;
+  /// The video's stereo layout and coverage (docs/stereo.md): each eye samples its own image;
+  /// the desktop view shows one eye, key 5 toggles which.
+  effects::StereoLayout video_layout;
 };
 
 struct FrameRecord {

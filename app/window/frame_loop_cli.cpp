@@ -7,6 +7,7 @@
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_registry.h"
+#include "app/cli/layout_options.h"
 #include "io/input_error.h"
 #include "xr/hmd_profile.h"
 #include "xr/openxr_runtime.h"
@@ -135,6 +136,16 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
                  "(full-resolution separable Gaussian, as vdfx render --gpu)")
       ->capture_default_str()
       ->check(CLI::IsMember({"exact", "pyramid"}));
+  add_layout_options(cli, o.layout);
+}
+
+void resolve_loop_layout(LoopSetup& s, const LoopCli& o, const io::VideoInfo* sidecar,
+                         const std::filesystem::path& sidecar_path) {
+  std::string hint;
+  s.options.video_layout =
+      io::resolve_video_layout(s.video->properties(), o.layout, sidecar, sidecar_path, &hint);
+  if (!hint.empty())
+    std::cerr << "vdfx: hint: " << s.video->properties().path.string() << ": " << hint << "\n";
 }
 
 LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video,

@@ -13,6 +13,8 @@
 
 #include "app/window/frame_loop.h"
 #include "io/output_path.h"
+#include "io/sidecar.h"
+#include "io/video_layout.h"
 #include "io/video_source.h"
 #include "xr/input_backend.h"
 
@@ -36,6 +38,7 @@ struct LoopCli {
   std::string blur = "pyramid";  //!< exact | pyramid (xr::BlurMethod)
   std::string runtime = "sim";   //!< sim | openxr (docs/openxr.md)
   std::string look = "drag";     //!< the sim's right-button drag: drag | mouselook
+  io::LayoutOverride layout;     //!< --layout / --coverage (docs/stereo.md)
   /// The --scale option once added (whether the user gave it: with a headset the default is 1).
   const CLI::Option* scale_option = nullptr;
   /// Options of the simulated headset's window that do nothing with --runtime openxr (--hmd,
@@ -45,7 +48,7 @@ struct LoopCli {
 
 /// Adds --runtime, --hmd, --input, --record, --stats, --scale, --frames (alias
 /// --exit-after-frames), --screenshot, --mirror, --fov, --window, --hidden, --no-vsync,
-/// --decode-timeout, --bake, --blur, --look.
+/// --decode-timeout, --bake, --blur, --look, --layout, --coverage.
 void add_loop_options(CLI::App& cli, LoopCli& o);
 
 struct LoopSetup {
@@ -65,6 +68,12 @@ struct LoopSetup {
 /// replayed recording or one of `other_inputs` (the command's sidecar).
 LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video,
                        const std::vector<io::NamedInput>& other_inputs = {});
+
+/// The video's stereo layout and coverage (io::resolve_video_layout: --layout/--coverage, the
+/// stream's tags, `sidecar`'s record (may be null), mono 360) into s.options.video_layout; a hint
+/// for a stereo-shaped untagged frame goes to stderr. Throws io::InputError.
+void resolve_loop_layout(LoopSetup& s, const LoopCli& o, const io::VideoInfo* sidecar,
+                         const std::filesystem::path& sidecar_path);
 
 /// Prints the run's summary line (frames, late frames, frames per second) to stderr.
 void report_loop(const char* command, const FrameLoopResult& r);

@@ -54,6 +54,7 @@ int cmd_play(const Args& args) {
 
   const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
   LoopSetup setup = prepare_loop(loop, video, !no_loop, {{"--sidecar", sidecar_path}});
+  resolve_loop_layout(setup, loop, &sidecar.video, sidecar_path);
   warn_mismatch(sidecar, setup.video->properties());
   PlayerOptions po;
   po.loop = !no_loop;

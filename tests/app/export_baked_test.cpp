@@ -139,7 +139,7 @@ TEST(ExportBaked, GridCacheReusesTheGridOnlyWhileTheEvaluatedFrameIsTheSame) {
   };
   // Frames 0..9 all evaluate at frame 10 (held): the cached grid of frame 0 serves frame 5.
   EXPECT_EQ(same(0), 0.0);
-  const std::vector<std::int64_t> key_held{64, 32, 1, 10};
+  const std::vector<std::int64_t> key_held{64, 32, 1, 360, 10};  // w, h, step, coverage, frame
   EXPECT_NE(cache.find(key_held), nullptr);
   EXPECT_EQ(same(5), 0.0);
   // Inside the span every frame has its own field; the cache must not hand out frame 5's.

@@ -1,0 +1,259 @@
+/// @file
+/// @brief `vdfx export` of stereo and VR180 video (docs/stereo.md, docs/export.md): the baked
+/// video keeps the source's layout, each half baked from its own eye alone (no blur across the
+/// boundary), tagged (st3d, and for VR180 the equi bounds) as ffprobe and vdfx read back; a
+/// VR180 blur is refused (exit 1); the viewer's path shows the eye --eye names.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <opencv2/imgproc.hpp>
+#include <string>
+
+#include "command_test_util.h"
+#include "export_test_util.h"
+#include "io/frame_decoder.h"
+#include "tests/media_clips.h"
+
+namespace vdfx::app {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run_vdfx;
+using testing::test_dir;
+using testing::write_text;
+
+std::string command_output(const std::string& cmd) {
+  std::string out;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return out;
+  char buf[4096];
+  while (fgets(buf, sizeof buf, pipe)) out += buf;
+  pclose(pipe);
+  return out;
+}
+
+/// x264 lossless 4:4:4: the source's halves meet without chroma subsampling mixing them.
+void lossless_444(test_media::ClipSpec& c) {
+  c.ycbcr.log2_chroma_w = c.ycbcr.log2_chroma_h = 0;
+  c.ycbcr.chroma_x = c.ycbcr.chroma_y = 0.0;
+  c.options = {{"qp", "0"}};
+}
+
+/// A mono clip of one eye, encoded as stereo_clip encodes.
+fs::path mono_clip(const fs::path& path, const cv::Mat& eye) {
+  test_media::ClipSpec c;
+  c.width = eye.cols;
+  c.height = eye.rows;
+  c.frames = 3;
+  c.frame = [eye](int) { return eye; };
+  lossless_444(c);
+  return test_media::write_clip(path, c);
+}
+
+/// A clip of two eyes side by side or stacked: the left eye `l`, the right eye `r` (RGB 8-bit).
+fs::path stereo_clip(const fs::path& path, const std::string& layout, const cv::Mat& l,
+                     const cv::Mat& r, bool tagged, int coverage = 360) {
+  cv::Mat frame;
+  if (layout == "top-bottom") cv::vconcat(l, r, frame);
+  if (layout == "left-right") cv::hconcat(l, r, frame);
+  test_media::ClipSpec c;
+  c.width = frame.cols;
+  c.height = frame.rows;
+  c.frames = 3;
+  c.frame = [frame](int) { return frame; };
+  lossless_444(c);
+  c.spherical = tagged;
+  c.stereo = {
+      layout == "top-bottom" ? effects::StereoMode::TopBottom : effects::StereoMode::LeftRight,
+      coverage};
+  return test_media::write_clip(path, c);
+}
+
+std::string sidecar_json(int w, int h, const std::string& effects) {
+  return R"({"format": "vdfx.sidecar", "version": 1,
+  "video": {"path": "c.mp4", "fps": 24.0, "frames": 3, "width": )" +
+         std::to_string(w) + R"(, "height": )" + std::to_string(h) + R"(},
+  "interpolation": {"exponent": 1.0, "time_scale": 1.0}, "effects": [)" +
+         effects + "]}";
+}
+
+const char* kBlur4 =
+    R"({"type": "blur", "keyframes": [{"azimuth_deg": 0.0, "altitude_deg": 0.0, "frame": 0,
+    "params": {"sigma_deg": 4.0}}]})";
+const char* kExposure =
+    R"({"type": "exposure", "keyframes": [
+      {"azimuth_deg": 60.0, "altitude_deg": 0.0, "frame": 0, "params": {"stops": 1.0}},
+      {"azimuth_deg": -60.0, "altitude_deg": 0.0, "frame": 0, "params": {"stops": -1.0}}]})";
+
+TEST(StereoExport, BakedTopBottomKeepsItsLayoutAndNeverBlursAcrossTheHalves) {
+  const fs::path dir = test_dir();
+  const cv::Mat red(64, 128, CV_8UC3, cv::Scalar(230, 0, 0)),
+      blue(64, 128, CV_8UC3, cv::Scalar(0, 0, 230));
+  const fs::path clip = stereo_clip(dir / "tb.mp4", "top-bottom", red, blue, true);
+  write_text(dir / "s.vdfx.json", sidecar_json(128, 128, kBlur4));
+  const fs::path out = dir / "baked.mp4";
+  const testing::CommandResult r =
+      run_vdfx("export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+               " --baked " + out.string() + " --crf 0 --chroma 444 --preset ultrafast");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("top-bottom stereo"), std::string::npos) << r.output;
+  // Tagged: vdfx's reader and ffprobe's own words.
+  auto d = io::open_frame_decoder(out);
+  EXPECT_EQ(d->properties().stereo_tags.mode, effects::StereoMode::TopBottom);
+  EXPECT_EQ(d->properties().stereo_tags.coverage_deg, 360);
+  const std::string probe = command_output("ffprobe -v error -show_streams '" + out.string() + "'");
+  EXPECT_NE(probe.find("type=top and bottom"), std::string::npos) << probe;
+  EXPECT_NE(probe.find("projection=equirectangular"), std::string::npos) << probe;
+  // The blur ran on each half alone: no blue in the upper (left eye) half, no red in the lower.
+  const cv::Mat frame = testing::decoded_rgb8(*d, 1);
+  std::vector<cv::Mat> ch;
+  cv::split(frame, ch);
+  double top_blue = 0, bottom_red = 0;
+  cv::minMaxLoc(ch[2].rowRange(0, 64), nullptr, &top_blue);
+  cv::minMaxLoc(ch[0].rowRange(64, 128), nullptr, &bottom_red);
+  EXPECT_LE(top_blue, 2.0);
+  EXPECT_LE(bottom_red, 2.0);
+}
+
+TEST(StereoExport, EachBakedHalfIsItsEyeBakedAlone) {
+  const fs::path dir = test_dir();
+  const cv::Mat l = test_media::smooth_frame(0, 128, 64), r = test_media::patch_frame(1, 128, 64);
+  const fs::path clip = stereo_clip(dir / "lr.mp4", "left-right", l, r, false);
+  write_text(dir / "s.vdfx.json", sidecar_json(256, 64, kExposure));
+  const fs::path out = dir / "baked.mkv";
+  const testing::CommandResult res = run_vdfx(
+      "export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() + " --baked " +
+      out.string() + " --layout left-right --crf 0 --chroma 444 --param-step 1 --preset ultrafast");
+  ASSERT_EQ(res.exit_code, 0) << res.output;
+  auto got = io::open_frame_decoder(out);
+  EXPECT_EQ(got->properties().stereo_tags.mode, effects::StereoMode::LeftRight);
+  const cv::Mat baked = testing::decoded_rgb8(*got, 0);
+  // Each half against the same export of that eye alone (a mono clip, the same pipeline).
+  int eye = 0;
+  for (const cv::Mat& img : {l, r}) {
+    const fs::path mono = mono_clip(dir / ("eye" + std::to_string(eye) + ".mp4"), img);
+    const fs::path mono_out = dir / ("eye" + std::to_string(eye) + "_baked.mkv");
+    write_text(dir / "m.vdfx.json", sidecar_json(128, 64, kExposure));
+    const testing::CommandResult m = run_vdfx(
+        "export " + mono.string() + " --sidecar " + (dir / "m.vdfx.json").string() + " --baked " +
+        mono_out.string() + " --crf 0 --chroma 444 --param-step 1 --preset ultrafast");
+    ASSERT_EQ(m.exit_code, 0) << m.output;
+    auto md = io::open_frame_decoder(mono_out);
+    const cv::Mat want = testing::decoded_rgb8(*md, 0);
+    EXPECT_LE(testing::max_abs_diff(baked(cv::Rect(eye * 128, 0, 128, 64)), want), 1.0)
+        << "eye " << eye;
+    ++eye;
+  }
+}
+
+TEST(StereoExport, Vr180IsTaggedWithItsBoundsAndRefusesABlur) {
+  const fs::path dir = test_dir();
+  const cv::Mat l = test_media::smooth_frame(0, 64, 64), r = test_media::patch_frame(1, 64, 64);
+  const fs::path clip = stereo_clip(dir / "vr.mp4", "left-right", l, r, true, 180);
+  write_text(dir / "s.vdfx.json", sidecar_json(128, 64, kExposure));
+  const fs::path out = dir / "baked.mp4";
+  testing::CommandResult res =
+      run_vdfx("export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+               " --baked " + out.string() + " --preset ultrafast");
+  ASSERT_EQ(res.exit_code, 0) << res.output;
+  const io::StereoTags tags = io::open_frame_decoder(out)->properties().stereo_tags;
+  EXPECT_EQ(tags.mode, effects::StereoMode::LeftRight);
+  EXPECT_EQ(tags.coverage_deg, 180);
+  const std::string probe = command_output("ffprobe -v error -show_streams '" + out.string() + "'");
+  EXPECT_NE(probe.find("projection=tiled equirectangular"), std::string::npos) << probe;
+
+  write_text(dir / "b.vdfx.json", sidecar_json(128, 64, kBlur4));
+  res = run_vdfx("export " + clip.string() + " --sidecar " + (dir / "b.vdfx.json").string() +
+                 " --baked " + (dir / "blur.mp4").string());
+  EXPECT_EQ(res.exit_code, 1) << res.output;
+  EXPECT_NE(res.output.find((dir / "b.vdfx.json").string() +
+                            ": a baked export of VR180 video (coverage 180) cannot blur yet"),
+            std::string::npos)
+      << res.output;
+  EXPECT_FALSE(fs::exists(dir / "blur.mp4"));
+}
+
+TEST(StereoExport, ViewersPathShowsTheEyeAskedOrBoth) {
+  const fs::path dir = test_dir();
+  const cv::Mat red(64, 128, CV_8UC3, cv::Scalar(230, 0, 0)),
+      blue(64, 128, CV_8UC3, cv::Scalar(0, 0, 230));
+  const fs::path clip = stereo_clip(dir / "tb.mp4", "top-bottom", red, blue, true);
+  write_text(dir / "s.vdfx.json", sidecar_json(128, 128, ""));
+  const fs::path rec = testing::write_path_recording(dir);
+  for (const std::string eye : {"left", "right"}) {
+    const fs::path out = dir / (eye + ".mp4");
+    const testing::CommandResult res = run_vdfx(
+        "export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() + " --path " +
+        rec.string() + " --out " + out.string() + " --size 64x48 --frames 0-1 --eye " + eye);
+    ASSERT_EQ(res.exit_code, 0) << res.output;
+    auto d = io::open_frame_decoder(out);
+    const cv::Scalar m = cv::mean(testing::decoded_rgb8(*d, 0));
+    if (eye == "left") {
+      EXPECT_GT(m[0], 200.0);
+      EXPECT_LT(m[2], 20.0);
+    } else {
+      EXPECT_GT(m[2], 200.0);
+      EXPECT_LT(m[0], 20.0);
+    }
+  }
+  testing::CommandResult res =
+      run_vdfx("export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+               " --baked " + (dir / "b.mp4").string() + " --eye right");
+  EXPECT_EQ(res.exit_code, 2) << res.output;
+
+  // Both eyes side by side, tagged as a flat 3D video (a stereo mode, no spherical mapping).
+  const fs::path sbs = dir / "sbs.mp4";
+  res = run_vdfx("export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+                 " --path " + rec.string() + " --out " + sbs.string() +
+                 " --size 64x48 --frames 0-1 --stereo left-right");
+  ASSERT_EQ(res.exit_code, 0) << res.output;
+  auto d = io::open_frame_decoder(sbs);
+  EXPECT_EQ(d->properties().width, 128);
+  EXPECT_EQ(d->properties().stereo_tags.mode, effects::StereoMode::LeftRight);
+  EXPECT_FALSE(d->properties().stereo_tags.coverage_deg);
+  const cv::Mat pair = testing::decoded_rgb8(*d, 0);
+  EXPECT_GT(cv::mean(pair.colRange(0, 64))[0], 200.0);    // left eye red
+  EXPECT_GT(cv::mean(pair.colRange(64, 128))[2], 200.0);  // right eye blue
+  const std::string probe = command_output("ffprobe -v error -show_streams '" + sbs.string() + "'");
+  EXPECT_NE(probe.find("type=side by side"), std::string::npos) << probe;
+  // A mono source has no pair to show.
+  const fs::path mono = mono_clip(dir / "mono.mp4", red);
+  res = run_vdfx("export " + mono.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+                 " --path " + rec.string() + " --out " + (dir / "m.mp4").string() +
+                 " --size 64x48 --frames 0-1 --stereo left-right");
+  EXPECT_EQ(res.exit_code, 1) << res.output;
+  EXPECT_NE(res.output.find("--stereo left-right needs a stereo video"), std::string::npos)
+      << res.output;
+}
+
+TEST(StereoExport, FourChannelAudioIsCopiedAndTheMissingSa3dSaid) {
+  // A first-order ambisonic track is 4 channels; FFmpeg 5.1 writes no SA3D box to mark it.
+  const fs::path dir = test_dir();
+  const fs::path clip = dir / "amb.mp4";
+  const std::string make =
+      "ffmpeg -v error -y -f lavfi -i testsrc2=size=128x64:rate=24 -f lavfi -i "
+      "'sine=frequency=440:sample_rate=48000,aformat=channel_layouts=4.0' -t 0.5 -c:v libx264 "
+      "-pix_fmt yuv420p -c:a aac -shortest '" +
+      clip.string() + "'";
+  ASSERT_EQ(std::system(make.c_str()), 0) << make;
+  write_text(dir / "s.vdfx.json", sidecar_json(128, 64, ""));
+  const fs::path out = dir / "baked.mp4";
+  const testing::CommandResult r =
+      run_vdfx("export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+               " --baked " + out.string() + " --preset ultrafast");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("note: " + clip.string() +
+                          ": audio stream 1 (4 channels) is copied with its channel layout, but "
+                          "this FFmpeg"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("writes no spatial audio box (SA3D)"), std::string::npos);
+  const std::string probe = command_output("ffprobe -v error -show_streams '" + out.string() + "'");
+  EXPECT_NE(probe.find("channels=4"), std::string::npos) << probe;
+  EXPECT_NE(probe.find("channel_layout=4.0"), std::string::npos) << probe;
+}
+
+}  // namespace
+}  // namespace vdfx::app
