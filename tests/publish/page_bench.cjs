@@ -1,6 +1,6 @@
 // The page's per-frame cost in Chromium (docs/publish.md, "Measured"), by hand:
 //   node page_bench.cjs VDFX_BINARY OUTPUT_DIR
-// Publishes a smooth 512 x 256 clip (ffmpeg) with a sidecar whose six stack effects are keyed
+// Publishes a clip (ffmpeg's testsrc2, 512 x 256 or VIDEO_WxH) with a sidecar whose six stack effects are keyed
 // 1000 times each, plays the page in headless Chromium (SwiftShader) at 1280 x 720 for a few
 // seconds, and prints the medians of window.vdfxStats: the module's evaluation (vdfx_eval, once
 // per drawn frame) and the draw (the GL calls; SwiftShader renders on the CPU), the load and
@@ -11,9 +11,10 @@ const path = require('path');
 const { execFileSync } = require('child_process');
 const { serve, Browser } = require('./browser.cjs');
 
-const [vdfx, outDir] = process.argv.slice(2).map((p) => p && path.resolve(p));
+const [vdfx, outDir] = process.argv.slice(2, 4).map((p) => p && path.resolve(p));
+const [VW, VH] = (process.argv[4] || '512x256').split('x').map(Number);
 if (!vdfx || !outDir) {
-  console.error('usage: node page_bench.cjs VDFX_BINARY OUTPUT_DIR');
+  console.error('usage: node page_bench.cjs VDFX_BINARY OUTPUT_DIR [VIDEO_WxH]');
   process.exit(2);
 }
 fs.rmSync(outDir, { recursive: true, force: true });
@@ -27,7 +28,7 @@ const kf = (params) => Array.from({ length: 1000 }, () => ({
   frame: Math.floor(uniform(0, frames)), params: params() }));
 const sidecar = {
   format: 'vdfx.sidecar', version: 1,
-  video: { path: 'clip.mp4', fps: 24, frames, width: 512, height: 256 },
+  video: { path: 'clip.mp4', fps: 24, frames, width: VW, height: VH },
   interpolation: { exponent: 1.0, time_scale: 1.0 },
   effects: [
     { type: 'blur', keyframes: kf(() => ({ sigma_deg: uniform(0, 1) })) },
@@ -40,7 +41,7 @@ const sidecar = {
 };
 const clip = path.join(outDir, 'clip.mp4'), file = path.join(outDir, 'bench.vdfx.json');
 execFileSync('ffmpeg', ['-v', 'error', '-y', '-f', 'lavfi', '-i',
-  "nullsrc=s=512x256:r=24,format=rgb24,geq=r='128+90*sin(2*PI*X/W+0.1*N)':g='128':b='100'",
+  `testsrc2=s=${VW}x${VH}:r=24`,
   '-frames:v', String(frames), '-pix_fmt', 'yuv420p', '-c:v', 'libx264', clip]);
 fs.writeFileSync(file, JSON.stringify(sidecar));
 const site = path.join(outDir, 'site');
@@ -87,7 +88,8 @@ const median = (a) => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
                 `runs of 2000: ${(perCall * 1000).toFixed(1)} us`);
     console.log(`${s.evalMs.length} frames drawn: evaluation median ${(median(s.evalMs) * 1000).toFixed(0)} us, ` +
                 `draw median ${median(s.drawMs).toFixed(1)} ms (${W}x${H}, SwiftShader), ` +
-                `conversion ${s.conversion}`);
+                `conversion ${s.conversion}, frame upload median ${median(s.uploadMs).toFixed(1)} ms ` +
+                `(${VW}x${VH}: WebCodecs copy, chroma split, three texture uploads with mipmaps)`);
     console.log(`folder ${(bytes / 1e6).toFixed(2)} MB, of which the video ${(fs.statSync(path.join(site, 'clip.mp4')).size / 1e6).toFixed(2)} MB`);
   } finally {
     browser.close();

@@ -133,7 +133,7 @@ class Player {
     this.video.loop = true;
     this.view = { az: hooks.view?.az ?? 0, alt: hooks.view?.alt ?? 0, fov: hooks.fov ?? 90 };
     this.frame = hooks.frame ?? 0;
-    this.stats = { evalMs: [], drawMs: [], conversion: null, view: this.view };
+    this.stats = { evalMs: [], drawMs: [], uploadMs: [], conversion: null, view: this.view };
     window.vdfxStats = this.stats;
   }
 
@@ -168,6 +168,12 @@ class Player {
   // range and chroma siting (player.json, from io/ycbcr.h), as vdfx converts it; otherwise (no
   // WebCodecs, another layout) the browser's own conversion (texImage2D of the <video>).
   async uploadFrame() {
+    const t0 = performance.now();
+    await this.#upload();
+    this.#record(this.stats.uploadMs, performance.now() - t0);
+  }
+
+  async #upload() {
     const info = this.config.video.ycbcr;
     if (info && info.bit_depth === 8 && typeof VideoFrame === 'function') {
       let frame = null;
