@@ -31,7 +31,7 @@ const std::array<GrainSettingSpec, kGrainSettingCount>& grain_setting_specs() {
       {GrainSetting::PlaneM, "plane_m", 0.01, 100.0, false, false, 0.05},
       {GrainSetting::SphereM, "sphere_m", 0.1, 1000.0, false, false, 10.0},
       {GrainSetting::Shell, "shell", 1.0, 4.0, true, false, 1.1},
-      {GrainSetting::Count, "count", 1.0, 1000000.0, false, true, 20000.0},
+      {GrainSetting::Count, "count", 1.0, 1000000.0, false, true, 1000000.0},
       {GrainSetting::RadiusM, "radius_m", 0.1, 100.0, false, false, 2.0},
       {GrainSetting::HeightM, "height_m", 0.1, 100.0, false, false, 3.0},
   }};
@@ -63,8 +63,18 @@ bool grain_style_has_setting(GrainStyle style, GrainSetting id) {
   return false;
 }
 
+double grain_setting_default(GrainStyle style, GrainSetting id) {
+  if (style == GrainStyle::ObjectCloud && id == GrainSetting::SphereM) return 2.0;
+  return grain_setting_spec(id).default_value;
+}
+
 GrainSettings::GrainSettings() {
   for (const GrainSettingSpec& s : grain_setting_specs()) set(s.id, s.default_value);
+}
+
+GrainSettings::GrainSettings(GrainStyle style) {
+  for (const GrainSettingSpec& s : grain_setting_specs())
+    set(s.id, grain_setting_default(style, s.id));
 }
 
 const std::vector<ParamSpec>& grain_param_specs() {

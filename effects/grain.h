@@ -46,9 +46,9 @@ struct GrainSettingSpec {
   std::string_view name;  //!< sidecar name
   double min;
   double max;
-  bool min_open;  //!< min itself is not accepted
-  bool integer;   //!< a whole number (count)
-  double default_value;
+  bool min_open;         //!< min itself is not accepted
+  bool integer;          //!< a whole number (count)
+  double default_value;  //!< for every style that reads it, unless grain_setting_default differs
 };
 
 /// All settings in sidecar order.
@@ -60,10 +60,15 @@ const GrainSettingSpec& grain_setting_spec(GrainSetting id);
 std::span<const GrainSetting> grain_style_settings(GrainStyle style);
 bool grain_style_has_setting(GrainStyle style, GrainSetting id);
 
+/// A setting's default for a style: the spec's, except object_cloud's sphere_m (2 m: the shell
+/// near enough for its particles to read as grain, docs/grain.md "Looks"; surface keeps 10 m).
+double grain_setting_default(GrainStyle style, GrainSetting id);
+
 /// The settings of one grain effect, every one at its default until set. The reader fills in
 /// what the file gives; the writer writes the style's own settings, all of them.
 struct GrainSettings {
-  GrainSettings();
+  GrainSettings();                           //!< the specs' defaults
+  explicit GrainSettings(GrainStyle style);  //!< the style's defaults (grain_setting_default)
   std::array<double, kGrainSettingCount> values{};
   double get(GrainSetting id) const { return values[static_cast<std::size_t>(id)]; }
   void set(GrainSetting id, double v) { values[static_cast<std::size_t>(id)] = v; }

@@ -1,6 +1,6 @@
 /// @file
 /// @brief GrainSet: interpolation at the head's forward direction, refresh clock, noise phase,
-/// particle cache.
+/// particle key.
 #include "effects/grain_layout.h"
 
 #include <cmath>
@@ -29,7 +29,7 @@ GrainSet::GrainSet(std::vector<GrainEffect> effects, const InterpolationSettings
   for (GrainEffect& e : effects) {
     GrainInterpolator interp(e, defaults, fps);
     auto noise = std::make_shared<const PerlinNoise>(e.seed);
-    effects_.push_back({std::move(e), std::move(interp), std::move(noise), nullptr});
+    effects_.push_back({std::move(e), std::move(interp), std::move(noise)});
   }
 }
 
@@ -56,12 +56,8 @@ std::vector<GrainFrame> GrainSet::layout(const HeadPose& head, std::int64_t disp
     f.head = head;
     f.refresh = grain_refresh_index(display_time_ns, e.settings.get(GrainSetting::RefreshMs));
     if (is_volumetric(e.style)) {
-      if (!en.cached || en.cached->refresh != f.refresh) {
-        en.cached = std::make_shared<const ParticleSet>(
-            sample_grain_particles(e.style, e.settings, e.seed, f.refresh));
-        ++samplings_;
-      }
-      f.particles = en.cached;
+      f.particle_key = grain_particle_key(e.seed, f.refresh);
+      f.settings = e.settings;
     } else {
       f.distance_m = e.settings.get(e.style == GrainStyle::Headset ? GrainSetting::PlaneM
                                                                    : GrainSetting::SphereM);

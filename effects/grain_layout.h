@@ -6,9 +6,10 @@
 /// GrainSet holds a sidecar's grain effects with their interpolators; layout() is called once per
 /// displayed frame and gives, for each effect whose interpolated intensity is above 0, what both
 /// eyes need: the anchor (head position; the head's orientation for the headset plane), the
-/// noise lattice and its phase for this refresh (shader styles) or the particles of this refresh
-/// (volumetric styles, sampled once per refresh and cached). An effect at intensity 0 yields no
-/// layer: nothing is sampled or drawn.
+/// noise lattice and its phase for this refresh (shader styles) or the key of this refresh's
+/// particles with the effect's settings (volumetric styles: the GPU generates the particles from
+/// them, effects/grain_particles.h; no CPU sampling). An effect at intensity 0 yields no layer:
+/// nothing is drawn.
 #pragma once
 
 #include <Eigen/Core>
@@ -47,8 +48,10 @@ struct GrainFrame {
   double cell_m = 0.0;      //!< lattice spacing of octave 1: kGrainCellRad * distance * size
   std::array<Eigen::Vector3d, 2> noise_offset{};  //!< per octave, lattice units, this refresh
   std::shared_ptr<const PerlinNoise> noise;       //!< the effect's permutation (from its seed)
-  // Volumetric styles.
-  std::shared_ptr<const ParticleSet> particles;  //!< this refresh's particles at size 1
+  // Volumetric styles: particle i is grain_particle(style, settings, particle_key, i), i below
+  // the settings' count.
+  std::uint32_t particle_key = 0;  //!< grain_particle_key(seed, refresh)
+  GrainSettings settings;          //!< the effect's (count, volumes)
 };
 
 class GrainSet {
@@ -70,18 +73,13 @@ class GrainSet {
   std::vector<GrainFrame> layout(const HeadPose& head, std::int64_t display_time_ns,
                                  std::int64_t video_frame);
 
-  /// Particle sets drawn so far (a zero-intensity effect draws none).
-  std::size_t samplings() const { return samplings_; }
-
  private:
   struct Entry {
     GrainEffect effect;
     GrainInterpolator interp;
     std::shared_ptr<const PerlinNoise> noise;
-    std::shared_ptr<const ParticleSet> cached;  //!< the last refresh's particles
   };
   std::vector<Entry> effects_;
-  std::size_t samplings_ = 0;
 };
 
 /// The noise offsets of one refresh (lattice units in [0, 256), one per octave).

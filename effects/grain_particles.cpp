@@ -13,36 +13,53 @@ namespace vdfx::effects {
 namespace {
 
 constexpr std::uint64_t kParticleStream = 0x7061727469636c65;  // "particle"
+/// Relative margin by which a point rounded onto the wrong side of a boundary is moved inside.
+constexpr double kClampMargin = 1e-12;
 
-Eigen::Vector3d uniform_direction(RandomStream& rng) {
-  const double z = 1.0 - 2.0 * rng.uniform();
-  const double phi = 2.0 * kPi * rng.uniform();
-  const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return {s * std::cos(phi), z, s * std::sin(phi)};
-}
+/// The draws of one particle: u(j) = unit_uniform(hash32_draw(key, i, j)).
+struct Draws {
+  std::uint32_t key, index;
+  std::uint32_t bits(std::uint32_t j) const { return hash32_draw(key, index, j); }
+  double u(std::uint32_t j) const { return unit_uniform(bits(j)); }
+};
 
 /// Shoemake, "Uniform random rotations" (Graphics Gems III, 1992): a uniform unit quaternion from
 /// three uniforms.
-Eigen::Vector4d uniform_rotation(RandomStream& rng) {
-  const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform();
+Eigen::Vector4d uniform_rotation(const Draws& d) {
+  const double u1 = d.u(kDrawRotation), u2 = d.u(kDrawRotation + 1), u3 = d.u(kDrawRotation + 2);
   const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
   return {a * std::sin(2.0 * kPi * u2), a * std::cos(2.0 * kPi * u2), b * std::sin(2.0 * kPi * u3),
           b * std::cos(2.0 * kPi * u3)};
 }
 
-/// A point of one region, by the inverse CDF of its law.
-Eigen::Vector3d sample_point(GrainStyle style, const GrainSettings& s, int region,
-                             RandomStream& rng) {
+/// Scales p (a radius of `n`) so that its radius lies in (lo, hi]: a no-op unless rounding put
+/// it on a boundary's wrong side.
+Eigen::Vector3d clamp_radius(const Eigen::Vector3d& p, double n, double lo, double hi) {
+  if (n <= lo) return p * (lo * (1.0 + kClampMargin) / n);
+  if (n > hi) return p * (hi * (1.0 - kClampMargin) / n);
+  return p;
+}
+
+/// A point of one region, by the inverse CDF of its law, clamped into the region.
+Eigen::Vector3d sample_point(GrainStyle style, const GrainSettings& s, int region, const Draws& d) {
+  const double u0 = d.u(kDrawPosition), u1 = d.u(kDrawPosition + 1), u2 = d.u(kDrawPosition + 2);
   if (style == GrainStyle::FreeCloud) {
-    const double rho = s.get(GrainSetting::RadiusM) * std::sqrt(rng.uniform());
-    const double phi = 2.0 * kPi * rng.uniform();
-    const double y = (rng.uniform() - 0.5) * s.get(GrainSetting::HeightM);
-    return {rho * std::cos(phi), y, rho * std::sin(phi)};
+    const double radius = s.get(GrainSetting::RadiusM);
+    const double rho = radius * std::sqrt(u0), phi = 2.0 * kPi * u1;
+    const double y = (u2 - 0.5) * s.get(GrainSetting::HeightM);  // u2 < 1: |y| < height / 2
+    const Eigen::Vector3d p(rho * std::cos(phi), y, rho * std::sin(phi));
+    const double n = std::hypot(p.x(), p.z());
+    return n > radius ? Eigen::Vector3d(p.x() * radius * (1.0 - kClampMargin) / n, y,
+                                        p.z() * radius * (1.0 - kClampMargin) / n)
+                      : p;
   }
   // n(r) ~ 1/r^3 makes ln r uniform on (ln r0, ln r1]; 1 - u is in (0, 1].
   const auto [r0, r1] = object_cloud_radii(s, region);
-  const double r = r0 * std::exp((1.0 - rng.uniform()) * std::log(r1 / r0));
-  return r * uniform_direction(rng);
+  const double r = r0 * std::exp((1.0 - u0) * std::log(r1 / r0));
+  const double z = 1.0 - 2.0 * u1, phi = 2.0 * kPi * u2;
+  const double sz = std::sqrt(std::max(0.0, 1.0 - z * z));
+  const Eigen::Vector3d p = r * Eigen::Vector3d(sz * std::cos(phi), z, sz * std::sin(phi));
+  return clamp_radius(p, p.norm(), r0, r1);
 }
 
 }  // namespace
@@ -67,6 +84,29 @@ int grain_region(GrainStyle style, const GrainSettings& s, const Eigen::Vector3d
   return -1;
 }
 
+std::uint32_t grain_particle_key(std::uint64_t seed, std::int64_t refresh) {
+  return fold32(random_key(seed, kParticleStream, refresh));
+}
+
+GrainParticle grain_particle(GrainStyle style, const GrainSettings& s, std::uint32_t key,
+                             std::uint32_t index, double size) {
+  if (!is_volumetric(style))
+    throw std::invalid_argument("grain_particle: " + std::string(grain_style_name(style)) +
+                                " is a shader style");
+  const Draws d{key, index};
+  GrainParticle p;
+  p.region =
+      style == GrainStyle::ObjectCloud && (d.bits(kDrawRegion) >> 8) >= kObjectShellThreshold;
+  p.centre = sample_point(style, s, p.region, d);
+  for (std::uint32_t a = 0; a < 3; ++a)
+    p.extent[a] = size * (kParticleMinExtentM +
+                          (kParticleMaxExtentM - kParticleMinExtentM) * d.u(kDrawExtent + a));
+  p.rotation = uniform_rotation(d);
+  p.brightness = d.u(kDrawBrightness);
+  p.opacity = kMinParticleOpacity + (1.0 - kMinParticleOpacity) * d.u(kDrawOpacity);
+  return p;
+}
+
 ParticleSet sample_grain_particles(GrainStyle style, const GrainSettings& s, std::uint64_t seed,
                                    std::int64_t refresh, double size) {
   if (!is_volumetric(style))
@@ -76,23 +116,13 @@ ParticleSet sample_grain_particles(GrainStyle style, const GrainSettings& s, std
   out.refresh = refresh;
   const auto count = static_cast<std::size_t>(s.get(GrainSetting::Count));
   out.particles.resize(count);
-  // Counter-based: particle i draws from its own stream, so the set is the same however the work
-  // is split between threads (and a GPU could generate it the same way).
-  const std::uint64_t key = random_key(seed, kParticleStream, refresh);
+  // Counter-based: particle i is a function of (key, i), so the set is the same however the work
+  // is split between threads, and the GPU generates it the same way.
+  const std::uint32_t key = grain_particle_key(seed, refresh);
   cv::parallel_for_(cv::Range(0, static_cast<int>(count)), [&](const cv::Range& range) {
-    for (int i = range.start; i < range.end; ++i) {
-      GrainParticle& p = out.particles[static_cast<std::size_t>(i)];
-      RandomStream rng(mix64(key ^ static_cast<std::uint64_t>(i)));
-      p.region = style == GrainStyle::ObjectCloud && rng.uniform() >= kObjectShellShare ? 1 : 0;
-      do {
-        p.centre = sample_point(style, s, p.region, rng);
-      } while (grain_region(style, s, p.centre) != p.region);
-      for (int a = 0; a < 3; ++a)
-        p.extent[a] = size * rng.uniform(kParticleMinExtentM, kParticleMaxExtentM);
-      p.rotation = uniform_rotation(rng);
-      p.brightness = rng.uniform();
-      p.opacity = rng.uniform(kMinParticleOpacity, 1.0);
-    }
+    for (int i = range.start; i < range.end; ++i)
+      out.particles[static_cast<std::size_t>(i)] =
+          grain_particle(style, s, key, static_cast<std::uint32_t>(i), size);
   });
   for (const GrainParticle& p : out.particles) ++out.region_count[p.region];
   return out;

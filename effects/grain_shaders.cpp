@@ -109,11 +109,49 @@ void main() {
 }
 )";
 
+// The particle of gl_InstanceID, generated here as effects::grain_particle defines it (draw j of
+// particle i: unit_uniform(hash32_draw(key, i, j)), the draws numbered as effects::ParticleDraw),
+// in float; the C++ clamp into the region is left out (rounding moves a point by about 1e-7 of
+// its radius). Nothing is uploaded per refresh: only the key changes.
+constexpr const char* kParticleStream = R"(
+uniform uint u_key;
+uniform int u_cloud;          // 0: object_cloud, 1: free_cloud
+uniform uint u_shell_threshold;
+uniform vec4 u_radii;         // object_cloud: shell r0, ln(r1 / r0); surrounding r0, ln(r1 / r0)
+uniform vec2 u_cylinder;      // free_cloud: radius, height
+uniform vec2 u_extent_range;  // min, max - min, metres at size 1
+uniform float u_min_opacity;
+const float TWO_PI = 6.28318530717959;
+uint hash32(uint x) {  // lowbias32, as effects::hash32
+  x ^= x >> 16u;
+  x *= 0x7feb352du;
+  x ^= x >> 15u;
+  x *= 0x846ca68bu;
+  x ^= x >> 16u;
+  return x;
+}
+uint draw_bits(uint i, uint j) { return hash32(hash32(u_key ^ i) ^ j); }
+float draw(uint i, uint j) { return float(draw_bits(i, j) >> 8u) * (1.0 / 16777216.0); }
+vec3 particle_centre(uint i) {
+  float u0 = draw(i, 1u), u1 = draw(i, 2u), u2 = draw(i, 3u);
+  if (u_cloud == 1) {
+    float rho = u_cylinder.x * sqrt(u0), phi = TWO_PI * u1;
+    return vec3(rho * cos(phi), (u2 - 0.5) * u_cylinder.y, rho * sin(phi));
+  }
+  vec2 region = (draw_bits(i, 0u) >> 8u) >= u_shell_threshold ? u_radii.zw : u_radii.xy;
+  float r = region.x * exp((1.0 - u0) * region.y);
+  float z = 1.0 - 2.0 * u1, phi = TWO_PI * u2;
+  float s = sqrt(max(0.0, 1.0 - z * z));
+  return r * vec3(s * cos(phi), z, s * sin(phi));
+}
+vec4 particle_rotation(uint i) {  // Shoemake's uniform quaternion (x, y, z, w)
+  float u1 = draw(i, 7u), u2 = TWO_PI * draw(i, 8u), u3 = TWO_PI * draw(i, 9u);
+  float a = sqrt(1.0 - u1), b = sqrt(u1);
+  return vec4(a * sin(u2), a * cos(u2), b * sin(u3), b * cos(u3));
+}
+)";
+
 constexpr const char* kParticleVertex = R"(
-layout(location = 0) in vec3 a_centre;
-layout(location = 1) in vec3 a_extent;
-layout(location = 2) in vec4 a_rotation;
-layout(location = 3) in vec2 a_shade;
 uniform mat4 u_view_proj;
 uniform vec3 u_eye;
 uniform vec3 u_eye_up;
@@ -131,6 +169,11 @@ flat out vec3 v_semi;
 flat out vec4 v_rotation;
 flat out vec2 v_shade;
 void main() {
+  uint id = uint(gl_InstanceID);
+  vec3 a_centre = particle_centre(id);
+  vec3 a_extent = u_extent_range.x + u_extent_range.y * vec3(draw(id, 4u), draw(id, 5u), draw(id, 6u));
+  vec4 a_rotation = particle_rotation(id);
+  vec2 a_shade = vec2(draw(id, 10u), u_min_opacity + (1.0 - u_min_opacity) * draw(id, 11u));
   vec3 semi = 0.5 * a_extent * u_size;
   float r = max(semi.x, max(semi.y, semi.z));
   vec3 to = a_centre - u_eye;
@@ -202,7 +245,7 @@ std::string grain_shader_fragment_source() {
   return std::string(glsl::kPinhole) + kNoise + kGrainOutput + kShaderStyles;
 }
 std::string grain_particle_vertex_source() {
-  return kParticleVertex;
+  return std::string(kParticleStream) + kParticleVertex;
 }
 std::string grain_particle_fragment_source() {
   return std::string(kGrainOutput) + kParticleFragment;

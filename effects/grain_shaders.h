@@ -18,10 +18,13 @@ namespace vdfx::effects {
 std::string grain_shader_fragment_source();
 
 /// Instanced particles (object_cloud, free_cloud): one camera-facing quad per particle (a
-/// 4-vertex triangle strip, gl_VertexID 0..3) that bounds its ellipsoid; attributes a_centre
-/// (relative to the head), a_extent (full size per axis at size 1), a_rotation (quaternion
-/// x, y, z, w), a_shade (brightness, opacity). Uniforms: u_view_proj (grain frame -> clip),
-/// u_eye (eye in the grain frame), u_eye_up, u_eye_right, u_size, u_intensity, u_px_per_tan.
+/// 4-vertex triangle strip, gl_VertexID 0..3) that bounds its ellipsoid. No attributes: the
+/// particle of gl_InstanceID is generated in the vertex stage as effects::grain_particle defines
+/// it, from u_key (grain_particle_key), u_cloud (0 object_cloud, 1 free_cloud),
+/// u_shell_threshold, u_radii (shell r0, ln(r1 / r0), surrounding r0, ln(r1 / r0)), u_cylinder
+/// (radius, height), u_extent_range (min, max - min) and u_min_opacity. Drawing uniforms:
+/// u_view_proj (grain frame -> clip), u_eye (eye in the grain frame), u_eye_up, u_eye_right,
+/// u_size, u_intensity, u_px_per_tan.
 std::string grain_particle_vertex_source();
 
 /// The particle's fragment: the eye's ray through the fragment against the ellipsoid; weight the

@@ -109,7 +109,7 @@ void read_grain(Checker& c, const json& entry, const std::string& ptr,
     if (auto i =
             c.integer(*p, ptr + "/seed", 0, std::numeric_limits<std::int64_t>::max(), "[0, 2^63)"))
       out.seed = static_cast<std::uint64_t>(*i);
-  out.settings = effects::GrainSettings();
+  out.settings = effects::GrainSettings(out.style);
   if (const json* p = c.member(entry, ptr, "settings", false))
     read_settings(c, *p, ptr + "/settings", style, out.settings);
   read_interpolation_override(c, entry, ptr, out.interpolation);

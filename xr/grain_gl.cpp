@@ -1,11 +1,11 @@
 /// @file
-/// @brief GrainLayerGl: the shader-style pass and the instanced particles.
+/// @brief GrainGl: the shader-style pass and the instanced particles generated in the vertex
+/// stage.
 #include "xr/grain_gl.h"
 
 #include <epoxy/gl.h>
 
-#include <array>
-#include <map>
+#include <cmath>
 #include <vector>
 
 #include "effects/grain_render.h"
@@ -16,21 +16,13 @@
 namespace vdfx::xr {
 namespace {
 
-constexpr int kFloatsPerParticle = 12;  // centre 3, extent 3, rotation 4, shade 2
 constexpr double kNearM = 0.01;
-
-struct Buffers {
-  unsigned vao = 0, vbo = 0;
-  std::shared_ptr<const effects::ParticleSet> uploaded;  //!< held, so its identity stays unique
-  std::int64_t count = 0;
-};
 
 }  // namespace
 
 struct GrainGl::Impl {
   GlProgram shader, particles;
   unsigned empty_vao = 0;
-  std::map<std::size_t, Buffers> buffers;  //!< per grain effect (GrainFrame::effect)
   std::vector<effects::GrainFrame> layers;
   GrainLayerStats stats;
 
@@ -57,48 +49,27 @@ struct GrainGl::Impl {
     ++stats.shader_draws;
   }
 
-  Buffers& upload(const effects::GrainFrame& f) {
-    Buffers& b = buffers[f.effect];
-    if (!b.vao) {
-      glGenVertexArrays(1, &b.vao);
-      glGenBuffers(1, &b.vbo);
-      glBindVertexArray(b.vao);
-      glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
-      const GLsizei stride = kFloatsPerParticle * sizeof(float);
-      const std::array<int, 4> sizes{3, 3, 4, 2};
-      std::size_t offset = 0;
-      for (unsigned a = 0; a < sizes.size(); ++a) {
-        glEnableVertexAttribArray(a);
-        glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
-                              reinterpret_cast<const void*>(offset * sizeof(float)));
-        glVertexAttribDivisor(a, 1);
-        offset += static_cast<std::size_t>(sizes[a]);
-      }
-    }
-    if (b.uploaded != f.particles) {
-      const auto& ps = f.particles->particles;
-      std::vector<float> data;
-      data.reserve(ps.size() * kFloatsPerParticle);
-      for (const effects::GrainParticle& p : ps) {
-        for (int a = 0; a < 3; ++a) data.push_back(static_cast<float>(p.centre[a]));
-        for (int a = 0; a < 3; ++a) data.push_back(static_cast<float>(p.extent[a]));
-        for (int a = 0; a < 4; ++a) data.push_back(static_cast<float>(p.rotation[a]));
-        data.push_back(static_cast<float>(p.brightness));
-        data.push_back(static_cast<float>(p.opacity));
-      }
-      glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
-      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)),
-                   data.data(), GL_STREAM_DRAW);
-      b.uploaded = f.particles;
-      b.count = static_cast<std::int64_t>(ps.size());
-      ++stats.particle_uploads;
-    }
-    return b;
+  /// The uniforms from which the vertex stage generates the particles (grain_particle).
+  void set_particle_stream(const effects::GrainFrame& f) {
+    const auto loc = [&](const char* n) { return particles.uniform(n); };
+    const effects::GrainSettings& s = f.settings;
+    const auto [r0, r1] = effects::object_cloud_radii(s, 0);
+    const auto [q0, q1] = effects::object_cloud_radii(s, 1);
+    glUniform1ui(loc("u_key"), f.particle_key);
+    glUniform1i(loc("u_cloud"), f.style == effects::GrainStyle::FreeCloud ? 1 : 0);
+    glUniform1ui(loc("u_shell_threshold"), effects::kObjectShellThreshold);
+    glUniform4f(loc("u_radii"), static_cast<float>(r0), static_cast<float>(std::log(r1 / r0)),
+                static_cast<float>(q0), static_cast<float>(std::log(q1 / q0)));
+    glUniform2f(loc("u_cylinder"), static_cast<float>(s.get(effects::GrainSetting::RadiusM)),
+                static_cast<float>(s.get(effects::GrainSetting::HeightM)));
+    glUniform2f(loc("u_extent_range"), static_cast<float>(effects::kParticleMinExtentM),
+                static_cast<float>(effects::kParticleMaxExtentM - effects::kParticleMinExtentM));
+    glUniform1f(loc("u_min_opacity"), static_cast<float>(effects::kMinParticleOpacity));
   }
 
   void draw_particles(const RenderView& view, int width, int height, const effects::GrainFrame& f) {
-    if (!f.particles || f.particles->particles.empty()) return;
-    Buffers& b = upload(f);
+    const auto count = static_cast<GLsizei>(f.settings.get(effects::GrainSetting::Count));
+    if (count <= 0) return;
     // Positions are relative to the head: the eye at (view.position - head) sees them, with an
     // infinite far plane (the surrounding volume reaches kilometres).
     RenderView local = view;
@@ -110,6 +81,7 @@ struct GrainGl::Impl {
     const double px_per_tan =
         std::min(width / (view.tan_right - view.tan_left), height / (view.tan_up - view.tan_down));
     particles.use();
+    set_particle_stream(f);
     const auto loc = [&](const char* n) { return particles.uniform(n); };
     glUniformMatrix4fv(loc("u_view_proj"), 1, GL_FALSE, vp.data());
     glUniform3fv(loc("u_eye"), 1, eye.data());
@@ -123,9 +95,10 @@ struct GrainGl::Impl {
     glUniform1f(loc("u_min_radius_px"), static_cast<float>(effects::kParticleMinRadiusPx));
     glUniform1f(loc("u_max_radius_rad"), static_cast<float>(effects::kParticleMaxRadiusRad));
     glUniform1f(loc("u_floor"), static_cast<float>(effects::kGrainFloor));
-    glBindVertexArray(b.vao);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(b.count));
+    glBindVertexArray(empty_vao);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
     ++stats.particle_draws;
+    stats.particles_drawn += count;
   }
 };
 
@@ -140,10 +113,6 @@ GrainGl::GrainGl() : impl_(std::make_unique<Impl>()) {
 
 GrainGl::~GrainGl() {
   if (!impl_) return;
-  for (auto& [_, b] : impl_->buffers) {
-    glDeleteBuffers(1, &b.vbo);
-    glDeleteVertexArrays(1, &b.vao);
-  }
   if (impl_->empty_vao) glDeleteVertexArrays(1, &impl_->empty_vao);
 }
 

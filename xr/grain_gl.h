@@ -7,10 +7,11 @@
 /// grain plane or sphere and evaluates the Perlin noise there (effects/grain_shaders.h; the CPU
 /// reference is effects/grain_render.h, from the same uniforms). Volumetric styles
 /// (object_cloud, free_cloud): one instanced camera-facing quad per particle, ray-cast against
-/// the particle's ellipsoid in the fragment shader; a refresh's particles are uploaded once and
-/// drawn by both eyes. Both modulate the eye colour C by their grain value s (dual-source
-/// blending ONE, SRC1_COLOR: C becomes s floor + C (1 + s)) and leave the eye buffer's alpha
-/// alone. A frame without layers (every grain at intensity 0) draws nothing.
+/// the particle's ellipsoid in the fragment shader. The vertex stage generates particle
+/// gl_InstanceID from the refresh's key as effects::grain_particle defines it: no particle is
+/// sampled on the CPU or uploaded, whatever the count. Both modulate the eye colour C by their
+/// grain value s (dual-source blending ONE, SRC1_COLOR: C becomes s floor + C (1 + s)) and leave
+/// the eye buffer's alpha alone. A frame without layers (every grain at intensity 0) draws nothing.
 #pragma once
 
 #include <cstdint>
@@ -24,9 +25,9 @@ namespace vdfx::xr {
 
 /// What the layer has done since it was created (tests and benchmarks).
 struct GrainLayerStats {
-  std::int64_t shader_draws = 0;      //!< full-screen passes
-  std::int64_t particle_draws = 0;    //!< instanced draws
-  std::int64_t particle_uploads = 0;  //!< particle sets sent to the GPU
+  std::int64_t shader_draws = 0;     //!< full-screen passes
+  std::int64_t particle_draws = 0;   //!< instanced draws
+  std::int64_t particles_drawn = 0;  //!< instances those draws generated
 };
 
 class GrainGl final : public EyeLayer {

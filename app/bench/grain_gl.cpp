@@ -9,9 +9,11 @@
 #include <epoxy/gl.h>
 
 #include <stdexcept>
+#include <string>
 
 #include "app/bench/gl_rows.h"
 #include "app/bench/grain_setup.h"
+#include "effects/grain_particles.h"
 #include "effects/grain_render.h"
 
 namespace vdfx::app::bench {
@@ -20,9 +22,14 @@ namespace {
 constexpr const char* kKnob = "grain";
 constexpr double kIntensity = 0.5;
 
-/// The style's one layer for `head`, at a fixed display time (one refresh).
-effects::GrainFrame grain_frame(effects::GrainStyle style, const effects::HeadPose& head) {
-  effects::GrainSet set = grain_set(style, kIntensity);
+constexpr const char* kRefreshKnob = "grain.refresh";
+constexpr const char* kParticlesKnob = "grain.particles";
+
+/// The style's one layer for `head`, at a fixed display time (one refresh); count 0: the style's
+/// default.
+effects::GrainFrame grain_frame(effects::GrainStyle style, const effects::HeadPose& head,
+                                int count = 0, double sphere_m = 0.0) {
+  effects::GrainSet set = grain_set(style, kIntensity, count, sphere_m);
   const auto frames = set.layout(head, 123'456'789, 0);
   if (frames.size() != 1) throw std::logic_error("the bench grain lays out no layer");
   return frames.front();
@@ -50,6 +57,95 @@ ErrorStats grain_error(const Context& ctx, effects::GrainStyle style, double* me
   return steps_error(gpu, cpu, mean);
 }
 
+std::string count_name(int count) {
+  return "N=" + std::to_string(count);
+}
+
+/// CPU time of one refresh of an object cloud of `count` particles: the layout (parameters, the
+/// refresh's key), a new refresh index every sample; beside it (peer) the CPU sampling of the same
+/// particles that each refresh did before issue 24 (effects::sample_grain_particles on the CPU
+/// threads, the definition the GPU now evaluates).
+void refresh_row(Row& row, const Context& ctx, int count) {
+  effects::GrainSet set = grain_set(effects::GrainStyle::ObjectCloud, kIntensity, count);
+  const effects::GrainEffect& e = set.effect(0);
+  const effects::HeadPose head = grain_head();
+  std::int64_t t_ns = 0, refresh = 0;
+  std::size_t layers = 0, sampled = 0;
+  const PairTimes t = measure_pair({[&] {
+                                     t_ns += 20'000'000;  // the next refresh
+                                     layers += set.layout(head, t_ns, 0).size();
+                                   }},
+                                   {[&] {
+                                     sampled += effects::sample_grain_particles(e.style, e.settings,
+                                                                                e.seed, ++refresh)
+                                                    .particles.size();
+                                   }},
+                                   ctx.budget);
+  if (layers == 0 || sampled == 0) throw std::logic_error("the bench grain lays out nothing");
+  row.time = t.subject;
+  row.peer_time = t.peer;
+  row.note = "object_cloud, default sphere; no particle is sampled on the CPU";
+}
+
+/// The layer alone (no eye image drawn) into one eye of the bench size, beside the plain copy of
+/// that eye; the time per particle as an extra.
+void particles_row(Row& row, const Context& ctx, effects::GrainStyle style, int count,
+                   double sphere_m) {
+  const BenchEye eye = bench_eye(ctx.quick);
+  xr::GrainGl layer;
+  layer.set_layers({grain_frame(style, grain_head(), count, sphere_m)});
+  xr::GlTarget target(eye.width, eye.height, xr::TexFormat::RGBA16F);
+  xr::RenderView view = eye.view;
+  const effects::HeadPose head = grain_head();
+  view.position = head.position;
+  view.orientation = head.orientation;
+  const PairTimes t = measure_pair(gl_timed([&] {
+                                     target.bind();
+                                     layer.draw(view, 0, eye.width, eye.height);
+                                   }),
+                                   copy_floor(ctx.quick), ctx.budget);
+  row.time = t.subject;
+  row.peer_time = t.peer;
+  row.add("per_particle_s", t.subject.median_s / count);
+  row.note = std::string(effects::grain_style_name(style)) +
+             (sphere_m > 0 ? ", sphere_m " + std::to_string(static_cast<int>(sphere_m)) : "") +
+             ", default settings but the count";
+}
+
+void add_cost_knobs(Registry& r, bool quick) {
+  r.knob(
+      {kRefreshKnob,
+       "volumetric grain: CPU time of one refresh against the particle count (object_cloud)",
+       "refresh", "-", "none: a time only",
+       "the CPU sampling of the same particles before issue 24 (effects::sample_grain_particles)",
+       PlotError::Max, false, true});
+  r.knob({kParticlesKnob,
+          "volumetric grain: the layer alone into one eye, its particles generated on the GPU",
+          "layer draw", "-",
+          "none: a time only (GrainGlTest checks the particles against effects::grain_particle)",
+          kCopyFloor, PlotError::Max, true, true});
+  const std::vector<int> counts =
+      quick ? std::vector<int>{10'000, 1'000'000} : std::vector<int>{10'000, 100'000, 1'000'000};
+  for (const int n : counts)
+    r.add(kRefreshKnob, count_name(n),
+          [n](Row& row, const Context& ctx) { refresh_row(row, ctx, n); });
+  // object_cloud at 10 m: the old default sphere, the one docs/grain.md's CPU-sampled figures
+  // were taken at.
+  struct Cloud {
+    effects::GrainStyle style;
+    double sphere_m;
+    const char* name;
+  };
+  for (const Cloud c : {Cloud{effects::GrainStyle::ObjectCloud, 0.0, "object_cloud"},
+                        Cloud{effects::GrainStyle::ObjectCloud, 10.0, "object_cloud 10 m"},
+                        Cloud{effects::GrainStyle::FreeCloud, 0.0, "free_cloud"}})
+    for (const int n : counts)
+      r.add(kParticlesKnob, std::string(c.name) + " " + count_name(n),
+            [c, n](Row& row, const Context& ctx) {
+              particles_row(row, ctx, c.style, n, c.sphere_m);
+            });
+}
+
 }  // namespace
 
 void add_grain_knobs(Registry& r, bool quick) {
@@ -73,7 +169,9 @@ void add_grain_knobs(Registry& r, bool quick) {
             row.peer_time = t.peer;
             if (effects::is_volumetric(style)) {
               row.reference = "none: the volumetric styles have no CPU reference";
-              row.note = "20000 particles";
+              const effects::GrainSettings d(style);
+              row.note = std::to_string(static_cast<int>(d.get(effects::GrainSetting::Count))) +
+                         " particles (the style's defaults)";
               return;
             }
             double mean = 0.0, amplitude = 0.0;
@@ -82,6 +180,7 @@ void add_grain_knobs(Registry& r, bool quick) {
             row.add("grain_rms_steps", amplitude);
           });
   }
+  add_cost_knobs(r, quick);
 }
 
 }  // namespace vdfx::app::bench

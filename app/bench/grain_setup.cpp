@@ -7,11 +7,14 @@
 
 namespace vdfx::app::bench {
 
-effects::GrainSet grain_set(effects::GrainStyle style, double intensity, int count) {
+effects::GrainSet grain_set(effects::GrainStyle style, double intensity, int count,
+                            double sphere_m) {
   effects::GrainEffect e;
   e.style = style;
   e.seed = 7;
-  e.settings.set(effects::GrainSetting::Count, count);
+  e.settings = effects::GrainSettings(style);
+  if (count > 0) e.settings.set(effects::GrainSetting::Count, count);
+  if (sphere_m > 0) e.settings.set(effects::GrainSetting::SphereM, sphere_m);
   e.keyframes = {{{0, 0}, 0, {intensity, 1.0}}};
   return effects::GrainSet({e}, {}, 30.0);
 }

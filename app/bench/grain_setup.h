@@ -8,9 +8,11 @@
 
 namespace vdfx::app::bench {
 
-/// One grain effect of `style` at `intensity` (one keyframe, size 1) with `count` particles
-/// (the volumetric styles; the default setting is 20000), at 30 fps.
-effects::GrainSet grain_set(effects::GrainStyle style, double intensity, int count = 20000);
+/// One grain effect of `style` at `intensity` (one keyframe, size 1) with the style's default
+/// settings (effects::GrainSettings(style)) but `count` particles when count > 0 and a sphere of
+/// `sphere_m` when above 0 (object_cloud), at 30 fps.
+effects::GrainSet grain_set(effects::GrainStyle style, double intensity, int count = 0,
+                            double sphere_m = 0.0);
 
 /// The head of the flare scene (head_at(kFlareLook)) as the grain layout takes it.
 effects::HeadPose grain_head();

@@ -235,6 +235,10 @@ void Document::set_grain_style(effects::GrainStyle style) {
   if (grain_ && grain_->style == style) return;
   auto before = snapshot(EditTarget::grain());
   effects::GrainEffect g = grain();
+  // A setting still at the old style's default takes the new style's (object_cloud's sphere).
+  for (const effects::GrainSetting id : effects::grain_style_settings(style))
+    if (g.settings.get(id) == effects::grain_setting_default(g.style, id))
+      g.settings.set(id, effects::grain_setting_default(style, id));
   g.style = style;
   grain_ = std::move(g);
   record("grain style", EditTarget::grain(), std::move(before));

@@ -372,4 +372,23 @@ TEST(BenchTiming, MedianP90AndInterleavedSamplesPerUnit) {
 }
 
 }  // namespace
+// The volumetric grain's cost knobs: every row runs (the layer generates a million particles on
+// the GPU), gives a time and passes the schema; the refresh rows say no particle is sampled.
+TEST(BenchCommand, GrainCostRowsRunAtEveryCount) {
+  const auto dir = test_dir();
+  const auto r = run_vdfx("bench --quick --filter '^grain[.]' --json " + (dir / "r.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(schema_problem(dir / "r.json"), "");
+  const auto j = nlohmann::json::parse(read_file(dir / "r.json"));
+  ASSERT_EQ(j["rows"].size(), 8u);  // 2 refresh counts, 3 clouds x 2 counts
+  for (const auto& row : j["rows"]) {
+    SCOPED_TRACE(row.dump());
+    ASSERT_EQ(row["status"], "ok");
+    EXPECT_GT(row["time"]["median_s"].get<double>(), 0.0);
+    if (row["knob"] == "grain.refresh") {
+      EXPECT_NE(row["note"].get<std::string>().find("no particle is sampled"), std::string::npos);
+    }
+  }
+}
+
 }  // namespace vdfx::app

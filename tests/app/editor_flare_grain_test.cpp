@@ -98,6 +98,8 @@ TEST(DocumentGrain, StyleAndKeyframesOfTheFirstGrainRoundTripThroughTheFile) {
   const io::Sidecar back = io::read_sidecar(path);
   ASSERT_EQ(back.grains.size(), 2u);
   EXPECT_EQ(back.grains[0].style, GrainStyle::ObjectCloud);
+  // The sphere was at the headset's default, so it takes object_cloud's (2 m), as a new file would.
+  EXPECT_EQ(back.grains[0].settings.get(effects::GrainSetting::SphereM), 2.0);
   EXPECT_EQ(back.grains[0].keyframes.size(), 2u);
   EXPECT_EQ(back.grains[1], before.grains[1]);
   EXPECT_EQ(back.flares, before.flares);

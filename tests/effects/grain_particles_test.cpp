@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "effects/coords.h"
+#include "effects/grain_random.h"
 
 namespace vdfx::effects {
 namespace {
@@ -183,6 +184,39 @@ TEST(GrainParticles, SameSeedAndRefreshGiveIdenticalParticlesTheNextIndexOthers)
   EXPECT_EQ(same, 0u);
   EXPECT_EQ(same_seed, 0u);
   EXPECT_THROW(sample_grain_particles(GrainStyle::Surface, s, 7, 0), std::invalid_argument);
+}
+
+TEST(GrainParticles, TheStreamIsTheDocumentedLowbias32WithExactFloatUniforms) {
+  // Values from an independent evaluation of the formula in effects/grain_random.h (x ^= x >> 16;
+  // x *= 0x7feb352d; x ^= x >> 15; x *= 0x846ca68b; x ^= x >> 16, modulo 2^32).
+  EXPECT_EQ(hash32(0u), 0u);
+  EXPECT_EQ(hash32(1u), 0x688990c0u);
+  EXPECT_EQ(hash32(2u), 0xd1132181u);
+  EXPECT_EQ(hash32(0xdeadbeefu), 0xe628c683u);
+  EXPECT_EQ(hash32_draw(0x12345678u, 7u, 3u), 0x85e5a89du);
+  // 24-bit uniforms: in [0, 1), and the same number in float as in double.
+  EXPECT_EQ(unit_uniform(0u), 0.0);
+  EXPECT_EQ(unit_uniform(0xffffffffu), 1.0 - 0x1.0p-24);
+  for (std::uint32_t h : {0x12345678u, 0x9abcdef0u, 0xffffff00u})
+    EXPECT_EQ(static_cast<double>(static_cast<float>(unit_uniform(h))), unit_uniform(h));
+  EXPECT_EQ(kObjectShellThreshold,
+            static_cast<std::uint32_t>(std::ceil(kObjectShellShare * 0x1.0p24)));
+}
+
+TEST(GrainParticles, AParticleIsAFunctionOfKeyAndIndexAloneWhateverTheCount) {
+  const GrainSettings few = object_settings(10.0, 1.1, 100),
+                      many = object_settings(10.0, 1.1, 5000);
+  const ParticleSet a = sample_grain_particles(GrainStyle::ObjectCloud, few, 7, 42);
+  const ParticleSet b = sample_grain_particles(GrainStyle::ObjectCloud, many, 7, 42);
+  const std::uint32_t key = grain_particle_key(7, 42);
+  for (std::uint32_t i = 0; i < 100; ++i) {
+    const GrainParticle p = grain_particle(GrainStyle::ObjectCloud, few, key, i);
+    ASSERT_EQ(a.particles[i].centre, p.centre) << i;
+    ASSERT_EQ(b.particles[i].centre, p.centre) << i;
+    ASSERT_EQ(b.particles[i].extent, p.extent) << i;
+    ASSERT_EQ(b.particles[i].opacity, p.opacity) << i;
+  }
+  EXPECT_THROW(grain_particle(GrainStyle::Headset, few, key, 0), std::invalid_argument);
 }
 
 }  // namespace

@@ -45,6 +45,26 @@ const char* kValid = R"({
   ]
 })";
 
+TEST(SidecarGrain, SettingsLeftOutTakeTheStylesDefaults) {
+  // object_cloud's shell defaults to 2 m (surface keeps 10 m); both clouds to a million particles.
+  const std::string text = R"({"format": "vdfx.sidecar", "version": 1,
+  "video": {"path": "clip.mp4", "fps": 30.0, "frames": 300, "width": 3840, "height": 1920},
+  "interpolation": {"exponent": 1.0, "time_scale": 1.0},
+  "effects": [
+    {"type": "grain", "style": "object_cloud", "seed": 1, "keyframes": []},
+    {"type": "grain", "style": "free_cloud", "seed": 2, "keyframes": []},
+    {"type": "grain", "style": "surface", "seed": 3, "keyframes": []}]})";
+  const SidecarReport r = validate_sidecar_text(text, "t.vdfx.json");
+  ASSERT_TRUE(r.ok()) << r.to_string();
+  const auto& g = r.sidecar->grains;
+  ASSERT_EQ(g.size(), 3u);
+  EXPECT_EQ(g[0].settings.get(GrainSetting::SphereM), 2.0);
+  EXPECT_EQ(g[0].settings.get(GrainSetting::Count), 1000000.0);
+  EXPECT_EQ(g[1].settings.get(GrainSetting::Count), 1000000.0);
+  EXPECT_EQ(g[2].settings.get(GrainSetting::SphereM), 10.0);
+  EXPECT_EQ(g[0].settings, effects::GrainSettings(effects::GrainStyle::ObjectCloud));
+}
+
 TEST(SidecarGrain, GuideExampleReadsAsWrittenAndGrainsCoexist) {
   const SidecarReport r = validate_sidecar_text(kValid, "t.vdfx.json");
   ASSERT_TRUE(r.ok()) << r.to_string();
