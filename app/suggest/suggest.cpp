@@ -58,7 +58,9 @@ void check_request(const SuggestRequest& r) {
     throw UsageError("suggest guide needs at least one --poi AZ,ALT[,FROM-TO]");
 }
 
-Clip open_clip(const SuggestRequest& r, Progress* progress) {
+/// Opens the video for a suggestion into `sidecar` (none: the --sidecar-in file, else a new
+/// sidecar for the video), which records the video's stereo layout.
+Clip open_clip(const SuggestRequest& r, Progress* progress, std::optional<io::Sidecar>& sidecar) {
   Clip clip;
   clip.progress = progress;
   io::DecoderOptions decoder_options;
@@ -68,21 +70,22 @@ Clip open_clip(const SuggestRequest& r, Progress* progress) {
   decoder_options.max_forward_grab = 120;
   clip.decoder = io::open_frame_decoder(r.video, decoder_options);
   const io::VideoProperties whole = clip.decoder->properties();
-  clip.sidecar =
-      r.sidecar_in
-          ? io::read_sidecar(*r.sidecar_in)
-          : io::new_sidecar({r.video.string(), whole.fps.value(),
-                             std::max<std::int64_t>(1, whole.frames), whole.width, whole.height});
+  if (!sidecar)
+    sidecar =
+        r.sidecar_in
+            ? io::read_sidecar(*r.sidecar_in)
+            : io::new_sidecar({r.video.string(), whole.fps.value(),
+                               std::max<std::int64_t>(1, whole.frames), whole.width, whole.height});
   // Stereo: the left eye's image is the sphere the analyses see (docs/stereo.md).
   std::string hint;
   const effects::StereoLayout layout = io::resolve_video_layout(
-      whole, r.layout, &clip.sidecar.video, r.sidecar_in.value_or(fs::path()), &hint);
+      whole, r.layout, &sidecar->video, r.sidecar_in.value_or(fs::path()), &hint);
   if (!hint.empty()) std::cerr << "vdfx: hint: " << r.video.string() << ": " << hint << "\n";
   if (layout.coverage_deg != 360)
     throw io::InputError(r.video.string() +
                          ": suggestions over VR180 video (coverage 180) are not supported yet "
                          "(the analyses sample the whole sphere)");
-  io::record_layout(clip.sidecar.video, layout);
+  io::record_layout(sidecar->video, layout);
   clip.decoder = io::eye_decoder(std::move(clip.decoder), layout, effects::EyeIndex::Left);
   const auto& p = clip.decoder->properties();
   const double per_second = r.kind == Kind::Comfort ? 6.0 : 1.0;
@@ -341,10 +344,11 @@ SuggestReport suggest_into(const SuggestRequest& request, io::Sidecar& sidecar,
   SuggestRequest r = request;
   r.merge = true;
   check_request(r);
-  Clip clip = open_clip(r, progress);
-  io::Sidecar work = sidecar;  // the caller's is changed only once the whole suggestion is in
-  SuggestReport report = suggest_clip(r, clip, work);
-  sidecar = std::move(work);
+  // The caller's sidecar is changed only once the whole suggestion is in.
+  std::optional<io::Sidecar> work = sidecar;
+  Clip clip = open_clip(r, progress, work);
+  SuggestReport report = suggest_clip(r, clip, *work);
+  sidecar = std::move(*work);
   report.seconds = seconds_since(start);
   return report;
 }
@@ -356,14 +360,10 @@ SuggestReport run_suggest(const SuggestRequest& r) {
   if (r.sidecar_in) inputs.push_back({"--sidecar-in", *r.sidecar_in});
   io::check_output_is_not_input("--sidecar-out", r.sidecar_out, inputs);
   io::resolve_output_path(r.sidecar_out);
-  Clip clip = open_clip(r, nullptr);
-  const auto& p = clip.decoder->properties();
-  io::Sidecar sidecar =
-      r.sidecar_in ? io::read_sidecar(*r.sidecar_in)
-                   : io::new_sidecar({r.video.string(), p.fps.value(),
-                                      std::max<std::int64_t>(1, p.frames), p.width, p.height});
-  SuggestReport report = suggest_clip(r, clip, sidecar);
-  io::write_sidecar(r.sidecar_out, sidecar);
+  std::optional<io::Sidecar> sidecar;
+  Clip clip = open_clip(r, nullptr, sidecar);
+  SuggestReport report = suggest_clip(r, clip, *sidecar);
+  io::write_sidecar(r.sidecar_out, *sidecar);
   report.seconds = seconds_since(start);
   return report;
 }

@@ -228,6 +228,9 @@ export class Renderer {
     gl.uniform1i(v.u('u_equirect'), 0);
     gl.uniformMatrix3fv(v.u('u_rot'), false, columnMajor(rot));
     gl.uniform1i(v.u('u_lod_mode'), 0);
+    // Mono 360 (stereo and VR180 layouts are not yet drawn here: docs/publish.md).
+    gl.uniform1f(v.u('u_coverage'), 360);
+    gl.uniform1f(v.u('u_edge'), 2);
     gl.uniform1i(v.u('u_ycbcr'), this.ycbcr ? 1 : 0);
     if (this.ycbcr) this.#setYcbcr(v);
     gl.uniform4f(v.u('u_tan'), tan[0] - dx, tan[1] + dx, tan[2] - dy, tan[3] + dy);
