@@ -21,6 +21,7 @@
 #include "io/input_error.h"
 #include "io/output_path.h"
 #include "io/sidecar_validate.h"
+#include "io/video_layout.h"
 
 namespace vdfx::app {
 namespace {
@@ -92,6 +93,21 @@ std::string checked_codec(const PublishRequest& r) {
                          " does not play in every browser (.mp4, .m4v and .webm do); "
                          "publish with --transcode h264 (or vp9)");
   return codec;
+}
+
+/// The page draws mono 360 only (docs/publish.md): a stereo or VR180 video, by its tags or its
+/// sidecar's `video` section, is refused rather than shown squeezed or stretched.
+void check_mono_360(const PublishRequest& r, const io::Sidecar& sidecar) {
+  const io::VideoProperties props = io::open_frame_decoder(r.video, {})->properties();
+  const effects::StereoLayout layout =
+      io::resolve_video_layout(props, {}, &sidecar.video, r.sidecar);
+  if (layout.stereo() || layout.coverage_deg != 360)
+    throw io::InputError(r.video.string() + ": " +
+                         (layout.stereo() ? std::string("a stereo video") : "a VR180 video") +
+                         " (layout " + std::string(effects::stereo_mode_name(layout.mode)) +
+                         ", coverage " + std::to_string(layout.coverage_deg) +
+                         "): the web page draws mono 360 only so far; export a baked "
+                         "or a mono version to share it");
 }
 
 /// Removes `.NAME.publish-PID` folders in `parent` whose process no longer exists (a publish
@@ -167,6 +183,7 @@ PublishResult run_publish(const PublishRequest& r) {
   check_out_folder(r);
   const io::Sidecar sidecar = checked_sidecar(r.sidecar);
   const std::string source_codec = checked_codec(r);
+  check_mono_360(r, sidecar);
   const PageAssets assets = find_page_assets();
   StagedFolder staged(r.out);
   PublishResult result;

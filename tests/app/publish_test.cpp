@@ -112,6 +112,25 @@ TEST(Publish, NamesTheGrainAndFlaresThePageDoesNotDraw) {
   EXPECT_EQ(manifest["stack_mask"], 0);
 }
 
+// The page draws mono 360 only: a video the sidecar says is stereo VR180 is refused, not shown
+// squeezed.
+TEST(Publish, AStereoOrVr180VideoIsRefusedNamingItsLayout) {
+  const Fixture f = make_fixture();
+  write_text(f.sidecar, R"({"format": "vdfx.sidecar", "version": 1,
+    "video": {"path": "clip.mp4", "fps": 24.0, "frames": 12, "width": 128, "height": 64,
+              "layout": "left-right", "coverage": 180},
+    "interpolation": {"exponent": 1.0, "time_scale": 1.0}, "effects": []})");
+  const fs::path out = f.dir / "site";
+  const CommandResult r = run_vdfx_headless(publish_args(f, out));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("a stereo video (layout left-right, coverage 180): the web page draws "
+                          "mono 360 only"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(leftovers(out).empty());
+}
+
 TEST(Publish, ABrokenSidecarIsExit1WithValidatesOwnMessageAndWritesNothing) {
   const Fixture f = make_fixture();
   write_text(f.sidecar, R"({"format": "vdfx.sidecar", "version": 1,
