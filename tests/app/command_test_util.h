@@ -23,9 +23,8 @@ struct CommandResult {
   std::string output;  //!< stdout and stderr together
 };
 
-/// Runs `vdfx ARGS`; `env_prefix` (e.g. "env -u DISPLAY ") goes before the executable.
-inline CommandResult run_vdfx(const std::string& args, const std::string& env_prefix = "") {
-  const std::string cmd = env_prefix + std::string(VDFX_BINARY) + " " + args + " 2>&1";
+/// Runs a shell command line; its standard output (and what the line redirects into it).
+inline CommandResult run_command(const std::string& cmd) {
   CommandResult r;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;
@@ -34,6 +33,16 @@ inline CommandResult run_vdfx(const std::string& args, const std::string& env_pr
   const int status = pclose(pipe);
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+/// Runs `vdfx ARGS`; `env_prefix` (e.g. "env -u DISPLAY ") goes before the executable.
+inline CommandResult run_vdfx(const std::string& args, const std::string& env_prefix = "") {
+  return run_command(env_prefix + std::string(VDFX_BINARY) + " " + args + " 2>&1");
+}
+
+/// Standard output of a shell command (ffprobe's, say).
+inline std::string command_output(const std::string& cmd) {
+  return run_command(cmd).output;
 }
 
 /// `vdfx ARGS` without a display (nothing may open a window) and under a time limit: a command

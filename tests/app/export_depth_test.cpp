@@ -19,19 +19,10 @@ namespace vdfx::app {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::command_output;
 using testing::run_vdfx;
 using testing::test_dir;
 using testing::write_text;
-
-std::string command_output(const std::string& cmd) {
-  std::string out;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return out;
-  char buf[4096];
-  while (fgets(buf, sizeof buf, pipe)) out += buf;
-  pclose(pipe);
-  return out;
-}
 
 /// A 16-bit PNG, 1024 x 64, grey rising linearly from 0 to 0.45 left to right: every column
 /// its own value, far more levels than 8 (or 10) bits hold.

@@ -43,6 +43,7 @@ namespace vdfx::app {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::command_output;
 using testing::run_vdfx;
 using testing::test_dir;
 using testing::write_text;
@@ -107,17 +108,6 @@ Probe probe(const fs::path& p) {
 
 int max_diff(const cv::Mat& a, const cv::Mat& b) {
   return test_media::max_abs_diff(a, b);
-}
-
-/// Standard output of a shell command (the ffprobe command line, Debian package ffmpeg).
-std::string command_output(const std::string& cmd) {
-  std::string out;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return out;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, p)) out += buf;
-  pclose(p);
-  return out;
 }
 
 TEST(Export, BakedVideoHasSphericalMetadataAudioFramesAndPerPixelEffects) {

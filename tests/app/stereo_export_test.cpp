@@ -20,19 +20,10 @@ namespace vdfx::app {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::command_output;
 using testing::run_vdfx;
 using testing::test_dir;
 using testing::write_text;
-
-std::string command_output(const std::string& cmd) {
-  std::string out;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return out;
-  char buf[4096];
-  while (fgets(buf, sizeof buf, pipe)) out += buf;
-  pclose(pipe);
-  return out;
-}
 
 /// x264 lossless 4:4:4: the source's halves meet without chroma subsampling mixing them.
 void lossless_444(test_media::ClipSpec& c) {
