@@ -12,7 +12,7 @@ packages=(
   libx11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   fonts-dejavu-core blender-data ffmpeg
-  gnuplot-nox python3-jsonschema
+  gnuplot-nox python3-jsonschema libimage-exiftool-perl
   glslang-tools emscripten chromium
   xvfb xauth libgl1-mesa-dri mesa-utils
   libopenxr-dev libopenxr-loader1 openxr-layer-corevalidation libopenxr-utils

@@ -97,6 +97,9 @@ TEST(StereoExport, BakedTopBottomKeepsItsLayoutAndNeverBlursAcrossTheHalves) {
   const std::string probe = command_output("ffprobe -v error -show_streams '" + out.string() + "'");
   EXPECT_NE(probe.find("type=top and bottom"), std::string::npos) << probe;
   EXPECT_NE(probe.find("projection=equirectangular"), std::string::npos) << probe;
+  // And ExifTool's (libimage-exiftool-perl, installed by .ci/deps.sh): the st3d box.
+  const std::string exif = command_output("exiftool -s -Stereoscopic3D '" + out.string() + "'");
+  EXPECT_NE(exif.find("Stereoscopic Top-Bottom"), std::string::npos) << exif;
   // The blur ran on each half alone: no blue in the upper (left eye) half, no red in the lower.
   const cv::Mat frame = testing::decoded_rgb8(*d, 1);
   std::vector<cv::Mat> ch;
@@ -154,6 +157,13 @@ TEST(StereoExport, Vr180IsTaggedWithItsBoundsAndRefusesABlur) {
   EXPECT_EQ(tags.coverage_deg, 180);
   const std::string probe = command_output("ffprobe -v error -show_streams '" + out.string() + "'");
   EXPECT_NE(probe.find("projection=tiled equirectangular"), std::string::npos) << probe;
+  // ExifTool reads the st3d mode and the equi bounds: a quarter turn cut from each side.
+  const std::string exif =
+      command_output("exiftool -s -Stereoscopic3D -ProjectionBoundsLeft -ProjectionBoundsRight '" +
+                     out.string() + "'");
+  EXPECT_NE(exif.find("Stereoscopic Left-Right"), std::string::npos) << exif;
+  EXPECT_NE(exif.find("ProjectionBoundsLeft            : 0.25"), std::string::npos) << exif;
+  EXPECT_NE(exif.find("ProjectionBoundsRight           : 0.25"), std::string::npos) << exif;
 
   write_text(dir / "b.vdfx.json", sidecar_json(128, 64, kBlur4));
   res = run_vdfx("export " + clip.string() + " --sidecar " + (dir / "b.vdfx.json").string() +
