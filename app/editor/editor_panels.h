@@ -166,7 +166,6 @@ class EditorPanels {
   const ui::Button& undo_button() const { return *undo_; }
   const ui::Button& deselect_button() const { return *deselect_; }
   const ui::Button& suggest_button() const { return *suggest_; }
-  const ui::Slider1D& suggest_strength() const { return *suggest_strength_; }
   const ui::TimelineStrip& strip() const { return *strip_; }
   const ui::Plot& plot() const { return *plot_; }
   const ui::Minimap& minimap() const { return *minimap_; }

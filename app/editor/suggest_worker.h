@@ -48,7 +48,6 @@ class SuggestWorker {
   double fraction() const { return progress_.fraction.load(); }
   /// Asks the suggestion to stop; it then ends cancelled (unless it had already finished).
   void cancel() { progress_.cancel.store(true); }
-  bool cancelling() const { return progress_.cancel.load(); }
   /// The outcome once the suggestion has ended (then once only); nullopt before and after.
   std::optional<SuggestOutcome> take();
   /// Blocks until the suggestion has ended (tests); false on timeout.

@@ -80,8 +80,7 @@ bool browser_container(const fs::path& video) {
 }
 
 /// The video's codec; refuses what browsers do not play unless the request transcodes.
-std::string checked_codec(const PublishRequest& r) {
-  const io::VideoProperties props = io::open_frame_decoder(r.video, {})->properties();
+std::string checked_codec(const PublishRequest& r, const io::VideoProperties& props) {
   const std::string codec = props.is_still ? "a still image" : props.codec;
   if (r.transcode != Transcode::None) return codec;
   if (!browser_plays(props.codec))
@@ -97,8 +96,8 @@ std::string checked_codec(const PublishRequest& r) {
 
 /// The page draws mono 360 only (docs/publish.md): a stereo or VR180 video, by its tags or its
 /// sidecar's `video` section, is refused rather than shown squeezed or stretched.
-void check_mono_360(const PublishRequest& r, const io::Sidecar& sidecar) {
-  const io::VideoProperties props = io::open_frame_decoder(r.video, {})->properties();
+void check_mono_360(const PublishRequest& r, const io::VideoProperties& props,
+                    const io::Sidecar& sidecar) {
   const effects::StereoLayout layout =
       io::resolve_video_layout(props, {}, &sidecar.video, r.sidecar);
   if (layout.stereo() || layout.coverage_deg != 360)
@@ -182,8 +181,9 @@ bool browser_plays(const std::string& codec) {
 PublishResult run_publish(const PublishRequest& r) {
   check_out_folder(r);
   const io::Sidecar sidecar = checked_sidecar(r.sidecar);
-  const std::string source_codec = checked_codec(r);
-  check_mono_360(r, sidecar);
+  const io::VideoProperties props = io::open_frame_decoder(r.video, {})->properties();
+  const std::string source_codec = checked_codec(r, props);
+  check_mono_360(r, props, sidecar);
   const PageAssets assets = find_page_assets();
   StagedFolder staged(r.out);
   PublishResult result;
