@@ -81,12 +81,12 @@ struct Encoding {
   std::function<std::int64_t(std::int64_t frame)> pts_of;
 };
 
-/// --depth, or by default the source's: 10 for a source deeper than 8 bits where the export can
-/// write 10 (baked, h265 or prores), ProRes always 10, else 8.
+/// --depth, or by default the source's: 10 for a source deeper than 8 bits where the codec can
+/// write 10 (h265 or prores), ProRes always 10, else 8.
 int export_depth(const ExportRequest& req, const io::VideoProperties& source) {
   if (req.depth != 0) return req.depth;
   if (req.prores) return 10;
-  return source.bit_depth > 8 && req.h265 && req.baked() ? 10 : 8;
+  return source.bit_depth > 8 && req.h265 ? 10 : 8;
 }
 
 io::EncoderSettings codec_settings(const ExportRequest& req, const Inputs& in) {
@@ -270,12 +270,8 @@ void check_depth(const ExportRequest& req) {
     throw UsageError("--codec prores: ProRes 422 HQ is 10-bit (drop --depth 8)");
   if (req.prores && req.output().extension() != ".mov")
     throw UsageError("--codec prores: write a .mov ('" + req.output().string() + "')");
-  if (req.prores && !req.baked())
-    throw UsageError("--codec prores: goes with --baked (the viewer's path renders 8-bit views)");
   if (req.depth == 10 && !req.h265 && !req.prores)
     throw UsageError("--depth 10: needs --codec h265 (Main10) or --codec prores");
-  if (req.depth == 10 && !req.baked())
-    throw UsageError("--depth 10: goes with --baked (the viewer's path renders 8-bit views)");
 }
 
 }  // namespace
