@@ -306,11 +306,6 @@ ExportResult run_export(const ExportRequest& req) {
                          "says otherwise)");
   const io::Sidecar& sidecar = in.sidecar;
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
-  if (req.baked() && !baked_blur_supported(stack, in.layout.coverage_deg))
-    throw io::InputError(req.sidecar.string() +
-                         ": a baked export of VR180 video (coverage 180) cannot blur yet (the "
-                         "sphere blur needs a full turn): remove the blur or export the viewer's "
-                         "path");
   const Encoding enc = encoding(req, in);
   announce(req, in, enc.settings);
   int threads = req.threads;
