@@ -162,14 +162,22 @@ std::string stereo_note(const ExportRequest& req, const Inputs& in) {
   return s;
 }
 
+/// "libx264 crf 18 420", "prores_ks 422 10-bit": the encoder, its rate (when it has a crf), the
+/// chroma subsampling and a depth above 8 bits.
+std::string codec_note(const io::EncoderSettings& es) {
+  const io::YcbcrInfo& y = es.ycbcr;
+  const char* chroma = y.log2_chroma_w == 0 ? "444" : y.log2_chroma_h == 0 ? "422" : "420";
+  return es.codec + (es.crf >= 0 ? " crf " + std::to_string(es.crf) : std::string()) + " " +
+         chroma + (y.bit_depth > 8 ? " " + std::to_string(y.bit_depth) + "-bit" : std::string());
+}
+
 /// The first line on stderr: what is exported, how.
 void announce(const ExportRequest& req, const Inputs& in, const io::EncoderSettings& es) {
   const FrameRange r = in.range;
   std::cerr << "vdfx export: " << (req.baked() ? "baked per-pixel 360 video" : "viewer's path")
             << ", " << es.width << "x" << es.height << ", frames " << r.first << "-" << r.last
             << " (" << r.last - r.first + 1 << ") at " << in.props.fps.num << "/"
-            << in.props.fps.den << " fps, " << es.codec << " crf " << es.crf << " "
-            << (req.chroma_444 ? "444" : "420") << (es.ycbcr.bit_depth > 8 ? " 10-bit" : "")
+            << in.props.fps.den << " fps, " << codec_note(es)
             << (req.baked() ? ", Spherical Video V2 equirectangular" : "") << stereo_note(req, in)
             << "\n";
   if (!es.copy_audio_from.empty())
