@@ -592,4 +592,36 @@ void blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat
   });
 }
 
+void blur_half_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat& out,
+                                double ratio) {
+  check_input(rgb);
+  if (sigma_deg.size() != rgb.size() || sigma_deg.type() != CV_32FC1)
+    throw std::invalid_argument(
+        "equirect blur: the sigma map must be CV_32FC1 of the image's size");
+  const int w = rgb.cols, h = rgb.rows;
+  // The canvas spans a whole turn at the image's texel size: the image in columns [0, w) (the
+  // 360 blur is the same wherever the seam falls), then the half turn it does not cover, the
+  // first half of it east of the image's right edge (its last column repeated), the rest west
+  // of its left edge (its first column). Buffers kept by each calling thread.
+  // References: the pool's threads below must fill this thread's canvas, not their own.
+  thread_local cv::Mat canvas_buffer, sigma_buffer, out_buffer;
+  cv::Mat &canvas = canvas_buffer, &canvas_sigma = sigma_buffer, &canvas_out = out_buffer;
+  canvas.create(h, 2 * w, CV_32FC3);
+  canvas_sigma.create(h, 2 * w, CV_32FC1);
+  const int east = (w + 1) / 2;
+  rgb.copyTo(canvas.colRange(0, w));
+  sigma_deg.copyTo(canvas_sigma.colRange(0, w));
+  canvas_sigma.colRange(w, 2 * w).setTo(0.0f);
+  cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& r) {
+    for (int y = r.start; y < r.end; ++y) {
+      const auto* src = rgb.ptr<cv::Vec3f>(y);
+      auto* dst = canvas.ptr<cv::Vec3f>(y);
+      std::fill(dst + w, dst + w + east, src[w - 1]);
+      std::fill(dst + w + east, dst + 2 * w, src[0]);
+    }
+  });
+  blur_equirect_varying(canvas, canvas_sigma, canvas_out, ratio);
+  canvas_out.colRange(0, w).copyTo(out);
+}
+
 }  // namespace vdfx::effects

@@ -21,6 +21,9 @@
 /// solid-angle reduction is made once per call as a chain shared by the levels: the result is
 /// the mix of whole levels, to float rounding. docs/export.md gives the measured error of the
 /// mix.
+///
+/// A VR180 image (half a turn of azimuth) is blurred by blur_half_equirect_varying: its edges are
+/// clamped, never wrapped.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -40,5 +43,14 @@ cv::Mat blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg,
 /// faults, per frame).
 void blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat& out,
                            double ratio = 1.4142135623730951);
+
+/// The varying blur of a VR180 image: `rgb` spans azimuth -90..90 (its columns 180 / width
+/// degrees wide), altitude -90..90. The sphere beyond its edges reads the edge column of the same
+/// row, the clamp the VR180 sampler makes (effects/equirect_sampler.h), so nothing wraps from one
+/// edge to the other; near a pole the kernel still reaches across it, as on the sphere. Computed
+/// as the 360 blur of a canvas twice as wide (the image, then its edge columns repeated over the
+/// uncovered half turn, sigma 0 there) cut back to the image: the same levels and mix.
+void blur_half_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat& out,
+                                double ratio = 1.4142135623730951);
 
 }  // namespace vdfx::effects

@@ -5,6 +5,11 @@
 /// generated H.264 clip, both opening the file in every sample. The error is the largest
 /// difference between the code values the two deliver, over every sample of every frame: 0 when
 /// vdfx hands on the decoder's own pictures, in order.
+///
+/// Stereo (docs/stereo.md): a generated top-bottom HEVC clip (tagged, 4096 x 4096 in a full run)
+/// against the plain loop of that file, and against vdfx's decode of the same pictures untagged
+/// (mono) timed beside it (`vs_mono`: the stereo clip's frames per second over the mono one's;
+/// the goal is at least 0.9), with the mono clip's own row against the plain loop.
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -59,12 +64,68 @@ ErrorStats decode_error(const std::filesystem::path& clip, std::int64_t frames) 
   return {max, std::sqrt(sum2 / count)};
 }
 
+/// vdfx's decode of every frame of an opened source (the timed work of a row).
+void decode_all(io::VideoSource& src, std::int64_t frames) {
+  src.seek(0);
+  for (std::int64_t k = 0; k < frames; ++k) frame_of(src, k);
+}
+
+/// vdfx's decode of `clip` against the plain loop of it: time, peer time, error, frame rates.
+void decode_row(Row& row, const Context& ctx, const std::filesystem::path& clip, int frames) {
+  auto src = open_source(clip);
+  PlainDecodeLoop plain(clip);
+  const double n = frames;
+  const auto t = measure_pair(Timed([&] { decode_all(*src, frames); }, n),
+                              Timed([&] { plain.run(); }, n), ctx.budget);
+  row.time = t.subject;
+  row.peer_time = t.peer;
+  row.error = decode_error(clip, frames);
+  row.add("frames_per_s", 1.0 / t.subject.median_s);
+  row.add("peer_frames_per_s", 1.0 / t.peer.median_s);
+}
+
+/// The stereo decode clips: the same media frames as HEVC, tagged top-bottom or not at all.
+std::filesystem::path hevc_clip(int size, int frames, bool top_bottom) {
+  ClipFormat f;
+  f.codec = "libx265";
+  if (top_bottom) f.stereo = {effects::StereoMode::TopBottom, 360};
+  return media_clip("vdfx_bench_" + std::to_string(size) + "x" + std::to_string(size) + "_" +
+                        std::to_string(frames) + (top_bottom ? "_tb" : "_mono") + "_hevc.mp4",
+                    size, size, frames, 30, f);
+}
+
+/// The HEVC rows: the top-bottom clip (and its ratio to the mono one, timed beside it), then the
+/// mono clip alone.
+void add_stereo_decode(Registry& r, bool quick) {
+  const int size = quick ? 1024 : 4096, frames = 12;
+  const std::string dims = std::to_string(size) + "x" + std::to_string(size);
+  const std::string note = std::to_string(frames) +
+                           " frames, libx265 veryfast crf 20, 4:2:0 8-bit; the decoder's own "
+                           "threads";
+  r.add(kKnob, dims + " HEVC, top-bottom stereo", [=](Row& row, const Context& ctx) {
+    const auto tb = hevc_clip(size, frames, true), mono = hevc_clip(size, frames, false);
+    decode_row(row, ctx, tb, frames);
+    auto stereo_src = open_source(tb), mono_src = open_source(mono);
+    const auto vs = measure_pair(Timed([&] { decode_all(*stereo_src, frames); }, frames),
+                                 Timed([&] { decode_all(*mono_src, frames); }, frames), ctx.budget);
+    row.add("mono_frames_per_s", 1.0 / vs.peer.median_s);
+    row.add("vs_mono", vs.peer.median_s / vs.subject.median_s);
+    row.note = note +
+               "; tagged top-bottom (st3d); vs_mono: against the same pictures untagged, "
+               "timed beside it";
+  });
+  r.add(kKnob, dims + " HEVC, mono", [=](Row& row, const Context& ctx) {
+    decode_row(row, ctx, hevc_clip(size, frames, false), frames);
+    row.note = note + "; the pictures of the top-bottom row, untagged";
+  });
+}
+
 }  // namespace
 
 void add_decode_knobs(Registry& r, bool quick) {
   r.knob({kKnob,
           "video decode: vdfx's path (io::VideoSource, frames ready for upload) on a generated "
-          "H.264 clip",
+          "H.264 clip, and a top-bottom stereo HEVC one",
           "frame", "code values",
           "FFmpeg's plain decode of the same file (every Y'CbCr sample of every frame)",
           "FFmpeg's plain decode loop of the same file (av_read_frame, send/receive)",
@@ -81,26 +142,12 @@ void add_decode_knobs(Registry& r, bool quick) {
                 media_clip("vdfx_bench_" + std::to_string(c.w) + "x" + std::to_string(c.h) + "_" +
                                std::to_string(c.frames) + "_h264.mp4",
                            c.w, c.h, c.frames);
-            const double n = c.frames;
-            auto src = open_source(clip);
-            PlainDecodeLoop plain(clip);
-            const auto t = measure_pair(Timed(
-                                            [&] {
-                                              src->seek(0);
-                                              for (std::int64_t k = 0; k < c.frames; ++k)
-                                                frame_of(*src, k);
-                                            },
-                                            n),
-                                        Timed([&] { plain.run(); }, n), ctx.budget);
-            row.time = t.subject;
-            row.peer_time = t.peer;
-            row.error = decode_error(clip, c.frames);
-            row.add("frames_per_s", 1.0 / t.subject.median_s);
-            row.add("peer_frames_per_s", 1.0 / t.peer.median_s);
+            decode_row(row, ctx, clip, c.frames);
             row.note = std::to_string(c.frames) +
                        " frames, libx264 veryfast crf 20, 4:2:0 8-bit; the decoder's own threads";
           });
   }
+  add_stereo_decode(r, quick);
 }
 
 }  // namespace vdfx::app::bench

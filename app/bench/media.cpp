@@ -30,10 +30,15 @@ cv::Mat media_frame(int i, int w, int h) {
   return m;
 }
 
-fs::path media_clip(const std::string& name, int w, int h, int frames, int fps) {
+fs::path media_clip(const std::string& name, int w, int h, int frames, int fps,
+                    const ClipFormat& format) {
   const fs::path p = fs::temp_directory_path() / name;
   if (fs::exists(p)) return p;
   io::EncoderSettings s;
+  s.codec = format.codec;
+  if (format.codec == "libx265") s.codec_options["x265-params"] = "log-level=error";
+  s.spherical_equirect = format.stereo.stereo();
+  s.stereo = format.stereo;
   s.width = w;
   s.height = h;
   s.frame_rate = {fps, 1};
@@ -146,13 +151,17 @@ io::Sidecar media_sidecar(bool blur) {
   return s;
 }
 
-std::int64_t export_clip(const fs::path& clip, const FrameRenderer& render, const fs::path& out) {
+std::int64_t export_clip(const fs::path& clip, const FrameRenderer& render, const fs::path& out,
+                         const ExportFormat& format) {
   auto decoder = io::open_frame_decoder(clip, {});
   const io::VideoProperties& props = decoder->properties();
   io::EncoderSettings es;
   es.width = props.width;
   es.height = props.height;
-  es.crf = 18;
+  es.codec = format.h265 ? "libx265" : "libx264";
+  if (format.h265) es.codec_options["x265-params"] = "log-level=error";
+  es.ycbcr.bit_depth = format.bit_depth;
+  es.crf = format.h265 ? 20 : 18;
   es.preset = "medium";  // vdfx export's defaults
   es.spherical_equirect = true;
   auto enc = io::VideoEncoder::create(out, es);
@@ -166,8 +175,10 @@ std::int64_t export_clip(const fs::path& clip, const FrameRenderer& render, cons
 }
 
 FrameRenderer baked_renderer(const effects::StackInterpolator& stack,
-                             const effects::StereoLayout& layout) {
-  return baked_frame_renderer(stack, {}, {}, layout);
+                             const effects::StereoLayout& layout, int bit_depth) {
+  io::YcbcrInfo out;
+  out.bit_depth = bit_depth;
+  return baked_frame_renderer(stack, {}, out, layout);
 }
 
 FrameRenderer unchanged_renderer() {

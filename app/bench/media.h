@@ -23,9 +23,19 @@ namespace vdfx::app::bench {
 /// and fine noise, so the encoder spends bits as on camera footage.
 cv::Mat media_frame(int i, int w, int h);
 
+/// How media_clip encodes: the encoder (libx264, or libx265 for HEVC; veryfast, crf 20 either
+/// way) and the stereo layout it tags (Spherical Video V2 equirect with that st3d mode; mono:
+/// no tags, as the H.264 clips have).
+struct ClipFormat {
+  std::string codec = "libx264";
+  effects::StereoLayout stereo;
+};
+
 /// The clip of `frames` media_frame()s as w x h H.264 (libx264 veryfast, crf 20: B-frames and
-/// CABAC, as delivered files have) at `fps`, at temp/<name>; made on first use.
-std::filesystem::path media_clip(const std::string& name, int w, int h, int frames, int fps = 30);
+/// CABAC, as delivered files have), or as `format` says, at `fps`, at temp/<name>; made on first
+/// use.
+std::filesystem::path media_clip(const std::string& name, int w, int h, int frames, int fps = 30,
+                                 const ClipFormat& format = {});
 
 /// The Y', Cb, Cr planes of one decoded frame (CV_8UC1, or CV_16UC1 above 8 bits), pointing
 /// into the decoder's buffer: valid only during the call that hands them over.
@@ -56,17 +66,24 @@ class PlainDecodeLoop {
 /// degrees towards one side).
 io::Sidecar media_sidecar(bool blur);
 
+/// The encoder of export_clip: `vdfx export`'s defaults for libx264 (crf 18) or, with h265,
+/// libx265 (crf 20), at `bit_depth` 8 or 10 (Main10; the renderer must hand 10-bit pictures).
+struct ExportFormat {
+  bool h265 = false;
+  int bit_depth = 8;
+};
+
 /// Exports every frame of `clip` to `out` through the baked export's frame-parallel pipeline
 /// (app/export/pipeline.h) with `render`, encoded with `vdfx export`'s defaults (libx264 medium,
-/// crf 18, spherical metadata). Returns the frames encoded.
+/// crf 18, spherical metadata; or as `format` says). Returns the frames encoded.
 std::int64_t export_clip(const std::filesystem::path& clip, const FrameRenderer& render,
-                         const std::filesystem::path& out);
+                         const std::filesystem::path& out, const ExportFormat& format = {});
 
-/// The baked export's renderer of `stack` (Y'CbCr -> RGB float -> render_baked -> Y'CbCr), and
-/// the encoder's floor: every frame passed through unchanged.
+/// The baked export's renderer of `stack` (Y'CbCr -> RGB float -> render_baked -> Y'CbCr at
+/// `bit_depth`), and the encoder's floor: every frame passed through unchanged.
 /// `layout`: a stereo frame, each eye's half baked on its own (docs/stereo.md).
 FrameRenderer baked_renderer(const effects::StackInterpolator& stack,
-                             const effects::StereoLayout& layout = {});
+                             const effects::StereoLayout& layout = {}, int bit_depth = 8);
 FrameRenderer unchanged_renderer();
 
 }  // namespace vdfx::app::bench

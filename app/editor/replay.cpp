@@ -159,18 +159,65 @@ effects::StereoLayout replay_layout(const io::VideoProperties& props, const Repl
   return layout;
 }
 
-}  // namespace
-
-ReplayResult run_replay(const ReplayOptions& o) {
-  ReplayResult result;
-  // Outputs that would destroy an input, or land on a device, are refused before any work.
+/// The files an output must never replace; --sidecar-out is checked against them, and against
+/// an editor holding it, before any work.
+std::vector<io::NamedInput> checked_inputs(const ReplayOptions& o) {
   std::vector<io::NamedInput> inputs = {{"recording", o.recording}, {"--video", o.video}};
   if (o.sidecar_in) inputs.push_back({"--sidecar-in", *o.sidecar_in});
   io::check_output_is_not_input("--sidecar-out", o.sidecar_out, inputs);
   io::resolve_output_path(o.sidecar_out);
-  // Before the work: a sidecar open in an editor is its author's (written again at the end, where
+  // A sidecar open in an editor is its author's (written again at the end, where
   // io::write_file_atomic checks once more).
   io::check_not_locked_by_another(o.sidecar_out, "--sidecar-out");
+  return inputs;
+}
+
+/// The timeline samples after which a --frames image is taken, evenly over the timeline (none
+/// without --frames); the folder is made.
+std::vector<std::size_t> shot_samples(const ReplayOptions& o, std::size_t samples) {
+  std::vector<std::size_t> shots;
+  if (!o.frames_dir || samples == 0) return shots;
+  std::error_code ec;
+  fs::create_directories(*o.frames_dir, ec);
+  if (ec || !fs::is_directory(*o.frames_dir))
+    throw io::InputError("--frames " + o.frames_dir->string() + ": cannot create the folder" +
+                         (ec ? " (" + ec.message() + ")" : " (a file of that name exists)"));
+  const int n = std::max(1, o.frame_images);
+  for (int k = 1; k <= n; ++k)
+    shots.push_back((samples - 1) * static_cast<std::size_t>(k) / static_cast<std::size_t>(n));
+  return shots;
+}
+
+/// What a replay renders its --frames from: the video, its layout and the files not to replace.
+struct ShotSource {
+  io::FrameDecoder& decoder;
+  effects::StereoLayout layout;
+  const std::vector<io::NamedInput>& inputs;
+};
+
+/// --frames image number `index`: the editor's frame at display time t_ns (the desktop view's
+/// eye: the left one of stereo video), written and listed in `result`.
+void write_shot(Editor& editor, EditorLayers& layers, const ShotSource& src, std::size_t index,
+                std::int64_t t_ns, const ReplayOptions& o, ReplayResult& result) {
+  const std::int64_t last = std::max<std::int64_t>(0, src.decoder.properties().frames - 1);
+  const std::int64_t frame = std::clamp<std::int64_t>(editor.frame(), 0, last);
+  const cv::Mat image = effects::eye_image(decode_frame(src.decoder, o.video, frame), src.layout,
+                                           effects::EyeIndex::Left);
+  const cv::Mat bgr =
+      render_replay_frame(editor, layers, image, src.layout, frame, t_ns, o, result);
+  char name[64];
+  std::snprintf(name, sizeof name, "replay_%03zu.png", index);
+  const fs::path out = *o.frames_dir / name;
+  io::check_output_is_not_input("--frames", out, src.inputs);
+  io::write_png(out, bgr, io::OutputName::Generated);
+  result.images.push_back(out);
+}
+
+}  // namespace
+
+ReplayResult run_replay(const ReplayOptions& o) {
+  ReplayResult result;
+  const std::vector<io::NamedInput> inputs = checked_inputs(o);
   io::Recording rec = io::read_recording(o.recording);
   for (const auto& w : rec.warnings) result.messages.push_back(w);
 
@@ -178,13 +225,12 @@ ReplayResult run_replay(const ReplayOptions& o) {
   dec_opts.format = io::PixelFormat::RgbF32;
   auto decoder = io::open_frame_decoder(o.video, dec_opts);
   const auto& props = decoder->properties();
-
   io::Sidecar sidecar =
       o.sidecar_in
           ? io::read_sidecar(*o.sidecar_in)
           : io::new_sidecar({o.video.string(), props.fps.value(),
                              std::max<std::int64_t>(1, props.frames), props.width, props.height});
-  const effects::StereoLayout layout = replay_layout(props, o, sidecar, result);
+  const ShotSource src{*decoder, replay_layout(props, o, sidecar, result), inputs};
   EditorOptions eo = editor_options_for(rec.header);
   eo.video = o.video;
   eo.async_suggestions = false;  // a suggestion lands in the update that asked for it
@@ -192,38 +238,13 @@ ReplayResult run_replay(const ReplayOptions& o) {
 
   auto backend = xr::create_replay_backend(std::move(rec), {});
   const auto timeline = backend->timeline();
-  std::vector<std::size_t> shots;
-  if (o.frames_dir && !timeline.empty()) {
-    std::error_code ec;
-    fs::create_directories(*o.frames_dir, ec);
-    if (ec || !fs::is_directory(*o.frames_dir))
-      throw io::InputError("--frames " + o.frames_dir->string() + ": cannot create the folder" +
-                           (ec ? " (" + ec.message() + ")" : " (a file of that name exists)"));
-    const int n = std::max(1, o.frame_images);
-    for (int k = 1; k <= n; ++k)
-      shots.push_back((timeline.size() - 1) * static_cast<std::size_t>(k) /
-                      static_cast<std::size_t>(n));
-  }
+  const std::vector<std::size_t> shots = shot_samples(o, timeline.size());
   std::size_t next_shot = 0;
   EditorLayers layers;  // the document's flares and grain, drawn into the frames
   for (std::size_t i = 0; i < timeline.size(); ++i) {
     editor.update(backend->poll(timeline[i]), timeline[i]);
-    while (next_shot < shots.size() && shots[next_shot] == i) {
-      const std::int64_t frame =
-          std::clamp<std::int64_t>(editor.frame(), 0, std::max<std::int64_t>(0, props.frames - 1));
-      // The desktop view's eye: the left one of stereo video.
-      const cv::Mat image = effects::eye_image(decode_frame(*decoder, o.video, frame), layout,
-                                               effects::EyeIndex::Left);
-      const cv::Mat bgr =
-          render_replay_frame(editor, layers, image, layout, frame, timeline[i], o, result);
-      char name[64];
-      std::snprintf(name, sizeof name, "replay_%03zu.png", next_shot);
-      const fs::path out = *o.frames_dir / name;
-      io::check_output_is_not_input("--frames", out, inputs);
-      io::write_png(out, bgr, io::OutputName::Generated);
-      result.images.push_back(out);
-      ++next_shot;
-    }
+    for (; next_shot < shots.size() && shots[next_shot] == i; ++next_shot)
+      write_shot(editor, layers, src, next_shot, timeline[i], o, result);
   }
   result.samples = timeline.size();
   result.sidecar = editor.document().sidecar();

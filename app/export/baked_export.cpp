@@ -217,18 +217,12 @@ FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, Bake
   };
 }
 
-bool baked_blur_supported(const effects::StackInterpolator& stack, int coverage_deg) {
-  return coverage_deg == 360 || !stack.active(EffectType::Blur);
-}
-
 void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, std::int64_t frame,
                        const BakedOptions& options, cv::Mat* scratch) {
   const int w = rgb.cols, h = rgb.rows;
   const int step = baked_param_step(options, w);
   // A 360 image's grid wraps across the seam; a VR180 image's ends at its last column.
   const bool wrap = options.coverage_deg == 360;
-  if (!wrap && stack.active(EffectType::Blur))
-    throw std::invalid_argument("render_baked: the sphere blur needs a full turn (coverage 360)");
   const std::vector<int> gx = grid_positions(w, step, !wrap), gy = grid_positions(h, step, true);
   const Axis ax = axis_weights(w, gx, wrap), ay = axis_weights(h, gy, false);
   const BakedGridCache::Grid grid_ptr =
@@ -262,12 +256,14 @@ void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, st
         for (int x = 0; x < w; ++x) s[x] = a[x] + rb.t * (b[x] - a[x]);
       }
     });
-    if (scratch) {
-      effects::blur_equirect_varying(rgb, sigma, *scratch);
-      cv::swap(rgb, *scratch);
-    } else {
-      rgb = effects::blur_equirect_varying(rgb, sigma);
-    }
+    // A VR180 image's edges are clamped, never wrapped (blur_half_equirect_varying).
+    cv::Mat fresh;
+    cv::Mat& blurred = scratch ? *scratch : fresh;
+    if (wrap)
+      effects::blur_equirect_varying(rgb, sigma, blurred);
+    else
+      effects::blur_half_equirect_varying(rgb, sigma, blurred);
+    cv::swap(rgb, blurred);
   }
   const ColourMask mask{stack.active(EffectType::Tint) || stack.active(EffectType::Exposure),
                         stack.active(EffectType::Saturation), stack.active(EffectType::Contrast)};

@@ -51,7 +51,7 @@ struct BakedOptions {
   /// Where the parameter grid of one frame is kept for the next (null: computed every frame).
   BakedGridCache* cache = nullptr;
   /// Degrees of azimuth the image spans (360, or 180 for one eye of VR180: its pixels' directions
-  /// span azimuth -90..90 and its grid does not wrap). The sphere blur needs 360.
+  /// span azimuth -90..90, its grid does not wrap and its blur clamps at its edges).
   int coverage_deg = 360;
 };
 
@@ -122,14 +122,10 @@ cv::Mat render_baked(const cv::Mat& equirect, const effects::StackInterpolator& 
                      std::int64_t frame, const BakedOptions& options = {});
 /// The same in place: `rgb` becomes the rendered frame (its buffer is reused unless a blur needs
 /// a new one). With `scratch`, the blur writes into it and the two are swapped: a caller keeping
-/// both from frame to frame allocates nothing per frame. Throws std::invalid_argument for a blur
-/// on coverage 180 (baked_blur_supported).
+/// both from frame to frame allocates nothing per frame. On coverage 180 the blur clamps at the
+/// image's edges (effects::blur_half_equirect_varying).
 void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, std::int64_t frame,
                        const BakedOptions& options = {}, cv::Mat* scratch = nullptr);
-
-/// Whether the baked export can render `stack` on images of `coverage_deg`: the sphere blur
-/// (effects/equirect_blur.h) wraps a full turn, so a VR180 image takes no blur yet.
-bool baked_blur_supported(const effects::StackInterpolator& stack, int coverage_deg);
 
 /// `vdfx export --baked`'s frame renderer: decoded picture -> RGB float (one buffer per render
 /// thread, reused: no fresh 4K float image, and its page faults, per frame) -> render_baked_into

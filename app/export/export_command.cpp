@@ -48,8 +48,8 @@ void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
       ->check(CLI::IsMember({"h264", "h265", "prores"}))
       ->capture_default_str();
   cli.add_option("--depth", r.depth,
-                 "bits per sample: 8, or 10 (with --codec h265: Main10; prores is 10-bit); "
-                 "--baked only. Default: the source's where the codec can carry it, else 8")
+                 "bits per sample: 8, or 10 (with --codec h265: Main10; prores is 10-bit). "
+                 "Default: the source's where the codec can carry it, else 8")
       ->check(CLI::IsMember({8, 10}));
   cli.add_option("--crf", r.crf,
                  "constant rate factor (0 = lossless with h264; default 18 / 20 for h265)")

@@ -81,12 +81,12 @@ struct Encoding {
   std::function<std::int64_t(std::int64_t frame)> pts_of;
 };
 
-/// --depth, or by default the source's: 10 for a source deeper than 8 bits where the export can
-/// write 10 (baked, h265 or prores), ProRes always 10, else 8.
+/// --depth, or by default the source's: 10 for a source deeper than 8 bits where the codec can
+/// write 10 (h265 or prores), ProRes always 10, else 8.
 int export_depth(const ExportRequest& req, const io::VideoProperties& source) {
   if (req.depth != 0) return req.depth;
   if (req.prores) return 10;
-  return source.bit_depth > 8 && req.h265 && req.baked() ? 10 : 8;
+  return source.bit_depth > 8 && req.h265 ? 10 : 8;
 }
 
 io::EncoderSettings codec_settings(const ExportRequest& req, const Inputs& in) {
@@ -162,14 +162,22 @@ std::string stereo_note(const ExportRequest& req, const Inputs& in) {
   return s;
 }
 
+/// "libx264 crf 18 420", "prores_ks 422 10-bit": the encoder, its rate (when it has a crf), the
+/// chroma subsampling and a depth above 8 bits.
+std::string codec_note(const io::EncoderSettings& es) {
+  const io::YcbcrInfo& y = es.ycbcr;
+  const char* chroma = y.log2_chroma_w == 0 ? "444" : y.log2_chroma_h == 0 ? "422" : "420";
+  return es.codec + (es.crf >= 0 ? " crf " + std::to_string(es.crf) : std::string()) + " " +
+         chroma + (y.bit_depth > 8 ? " " + std::to_string(y.bit_depth) + "-bit" : std::string());
+}
+
 /// The first line on stderr: what is exported, how.
 void announce(const ExportRequest& req, const Inputs& in, const io::EncoderSettings& es) {
   const FrameRange r = in.range;
   std::cerr << "vdfx export: " << (req.baked() ? "baked per-pixel 360 video" : "viewer's path")
             << ", " << es.width << "x" << es.height << ", frames " << r.first << "-" << r.last
             << " (" << r.last - r.first + 1 << ") at " << in.props.fps.num << "/"
-            << in.props.fps.den << " fps, " << es.codec << " crf " << es.crf << " "
-            << (req.chroma_444 ? "444" : "420") << (es.ycbcr.bit_depth > 8 ? " 10-bit" : "")
+            << in.props.fps.den << " fps, " << codec_note(es)
             << (req.baked() ? ", Spherical Video V2 equirectangular" : "") << stereo_note(req, in)
             << "\n";
   if (!es.copy_audio_from.empty())
@@ -270,12 +278,8 @@ void check_depth(const ExportRequest& req) {
     throw UsageError("--codec prores: ProRes 422 HQ is 10-bit (drop --depth 8)");
   if (req.prores && req.output().extension() != ".mov")
     throw UsageError("--codec prores: write a .mov ('" + req.output().string() + "')");
-  if (req.prores && !req.baked())
-    throw UsageError("--codec prores: goes with --baked (the viewer's path renders 8-bit views)");
   if (req.depth == 10 && !req.h265 && !req.prores)
     throw UsageError("--depth 10: needs --codec h265 (Main10) or --codec prores");
-  if (req.depth == 10 && !req.baked())
-    throw UsageError("--depth 10: goes with --baked (the viewer's path renders 8-bit views)");
 }
 
 }  // namespace
@@ -310,11 +314,6 @@ ExportResult run_export(const ExportRequest& req) {
                          "says otherwise)");
   const io::Sidecar& sidecar = in.sidecar;
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
-  if (req.baked() && !baked_blur_supported(stack, in.layout.coverage_deg))
-    throw io::InputError(req.sidecar.string() +
-                         ": a baked export of VR180 video (coverage 180) cannot blur yet (the "
-                         "sphere blur needs a full turn): remove the blur or export the viewer's "
-                         "path");
   const Encoding enc = encoding(req, in);
   announce(req, in, enc.settings);
   int threads = req.threads;

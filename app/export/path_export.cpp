@@ -59,7 +59,7 @@ cv::Mat render_path_frame(const cv::Mat& equirect, const effects::StackInterpola
   const effects::EquirectSampler sampler(eye, effects::sampler_options_for(s.layout));
   cv::Mat rgb = effects::render_view(sampler, camera, stack.evaluate(view.look, frame));
   if (s.view_layers) s.view_layers(rgb, eye, rv, frame);
-  return effects::to_rgb8(rgb);
+  return rgb;
 }
 
 }  // namespace vdfx::app

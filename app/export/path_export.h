@@ -60,8 +60,10 @@ struct PathRenderSettings {
   effects::EyeIndex eye = effects::EyeIndex::Left;
 };
 
-/// One frame of the viewer's-path export: 8-bit RGB, as `vdfx render --mode view` would give for
-/// (look, roll, frame, fov, size) on the CPU.
+/// One frame of the viewer's-path export: RGB float (CV_32FC3, unclamped: the encoder's
+/// conversion clamps), what `vdfx render --mode view` renders for (look, roll, frame, fov, size)
+/// on the CPU before its 8-bit output step. Never rounded to 8 bits, so a 10-bit export keeps
+/// the levels of a deeper source (docs/export.md, "10 bits").
 cv::Mat render_path_frame(const cv::Mat& equirect, const effects::StackInterpolator& stack,
                           const PathView& view, std::int64_t frame,
                           const PathRenderSettings& settings);

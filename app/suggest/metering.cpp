@@ -75,9 +75,10 @@ MeterGeometry::MeterGeometry(int grid_width)
   }
 }
 
-LumaGrid make_luma_grid(const cv::Mat& rgb, Transfer transfer, const MeterGeometry& geometry,
-                        const MeteringOptions& options, std::int64_t frame) {
-  if (rgb.type() != CV_32FC3) throw std::invalid_argument("make_luma_grid wants CV_32FC3");
+namespace {
+
+/// Linear luminance of every pixel of a CV_32FC3 image of display values.
+cv::Mat linear_luma(const cv::Mat& rgb, Transfer transfer) {
   // Linear light per pixel first (area averages of encoded values would under-read highlights),
   // through a 4096-entry table per transfer: 12 bits is finer than any 10-bit master.
   constexpr int kTable = 4096;
@@ -95,16 +96,33 @@ LumaGrid make_luma_grid(const cv::Mat& rgb, Transfer transfer, const MeterGeomet
       out[x] = 0.2126f * lin(in[x][0]) + 0.7152f * lin(in[x][1]) + 0.0722f * lin(in[x][2]);
     }
   }
+  return luma;
+}
+
+}  // namespace
+
+LumaGrid make_luma_grid(const cv::Mat& rgb, Transfer transfer, const MeterGeometry& geometry,
+                        const MeteringOptions& options, std::int64_t frame, int coverage_deg) {
+  if (rgb.type() != CV_32FC3) throw std::invalid_argument("make_luma_grid wants CV_32FC3");
+  if (coverage_deg != 360 && (coverage_deg != 180 || geometry.width() % 4 != 0))
+    throw std::invalid_argument("make_luma_grid: coverage 360, or 180 on a grid 4k cells wide");
+  // The image's cells: every column, or for VR180 the middle half (azimuth -90..90).
+  const int cols = geometry.width() * coverage_deg / 360, first = (geometry.width() - cols) / 2;
   cv::Mat small;
-  cv::resize(luma, small, cv::Size(geometry.width(), geometry.height()), 0, 0, cv::INTER_AREA);
+  cv::resize(linear_luma(rgb, transfer), small, cv::Size(cols, geometry.height()), 0, 0,
+             cv::INTER_AREA);
   LumaGrid grid;
   grid.frame = frame;
-  grid.log2_luma.resize(static_cast<Eigen::Index>(small.total()));
+  const Eigen::Index cells = geometry.width() * geometry.height();
+  grid.log2_luma = Eigen::VectorXd::Constant(cells, std::log2(options.floor));
+  if (cols != geometry.width()) grid.covered = Eigen::VectorXd::Zero(cells);
   for (int y = 0; y < small.rows; ++y)
     for (int x = 0; x < small.cols; ++x) {
       const double v = small.at<float>(y, x);
+      const Eigen::Index i = y * geometry.width() + first + x;
       grid.max_luma = std::max(grid.max_luma, v);
-      grid.log2_luma[y * small.cols + x] = std::log2(std::max(v, options.floor));
+      grid.log2_luma[i] = std::log2(std::max(v, options.floor));
+      if (grid.covered.size()) grid.covered[i] = 1.0;
     }
   return grid;
 }
@@ -119,20 +137,22 @@ double metered_level(const LumaGrid& grid, const MeterGeometry& geometry,
   for (Eigen::Index i = 0; i < dots.size(); ++i) {
     if (dots[i] < cos_half) continue;
     const double theta = std::acos(std::min(1.0, dots[i]));
-    const double w = geometry.solid_angles()[i] * std::exp(-theta * theta / (2 * sigma * sigma));
+    const double w = grid.weight(geometry, i) * std::exp(-theta * theta / (2 * sigma * sigma));
     sum += w * grid.log2_luma[i];
     weights += w;
   }
-  // The field of view always holds cells (the grid is finer than any metered field); guard anyway.
+  // The field of view always holds cells (the grid is finer than any metered field, and a view
+  // is only metered inside the image's coverage); guard anyway.
   return weights > 0.0 ? sum / weights : grid.log2_luma.mean();
 }
 
 double reference_level(std::span<const LumaGrid> grids, const MeterGeometry& geometry) {
   double sum = 0.0, weights = 0.0;
-  for (const LumaGrid& g : grids) {
-    sum += geometry.solid_angles().dot(g.log2_luma);
-    weights += geometry.solid_angles().sum();
-  }
+  for (const LumaGrid& g : grids)
+    for (Eigen::Index i = 0; i < g.log2_luma.size(); ++i) {
+      sum += g.weight(geometry, i) * g.log2_luma[i];
+      weights += g.weight(geometry, i);
+    }
   return weights > 0.0 ? sum / weights : 0.0;
 }
 

@@ -11,6 +11,9 @@
 ///     view;
 ///  3. the reference level of a clip is the solid-angle-weighted mean of log2 Y over the whole
 ///     sphere and every sampled frame: what the camera's own exposure made "middle".
+/// A VR180 image (coverage 180: azimuth -90..90) fills the middle half of the grid's columns; the
+/// cells of the other half are not covered and count nowhere: a view near the edge meters the
+/// image it shows, the reference level is the covered hemisphere's.
 #pragma once
 
 #include <Eigen/Core>
@@ -64,12 +67,19 @@ struct LumaGrid {
   std::int64_t frame = 0;
   Eigen::VectorXd log2_luma;
   double max_luma = 0.0;  //!< brightest cell's linear luminance (0: the frame is black)
+  /// Per cell 1 where the image covers it, 0 where not (VR180's back half); empty: all covered.
+  Eigen::VectorXd covered;
+  /// Cell i's weight: its solid angle where the image covers it, else 0.
+  double weight(const MeterGeometry& geometry, Eigen::Index i) const {
+    return covered.size() ? covered[i] * geometry.solid_angles()[i] : geometry.solid_angles()[i];
+  }
 };
 
 /// Step 1 for one frame: `rgb` is CV_32FC3 display values in [0, 1] (as io's decoders hand
-/// RgbF32), any size with a 2:1 equirect layout.
+/// RgbF32), any size with a 2:1 equirect layout; with `coverage_deg` 180, a VR180 image (azimuth
+/// -90..90, any size; the grid's width must then be a multiple of 4, else std::invalid_argument).
 LumaGrid make_luma_grid(const cv::Mat& rgb, Transfer transfer, const MeterGeometry& geometry,
-                        const MeteringOptions& options, std::int64_t frame);
+                        const MeteringOptions& options, std::int64_t frame, int coverage_deg = 360);
 
 /// Step 2: the level (log2 luminance) metered for the view along `view` (unit vector).
 double metered_level(const LumaGrid& grid, const MeterGeometry& geometry,

@@ -18,7 +18,8 @@ namespace vdfx::app::suggest {
 cv::Mat motion_frame(const cv::Mat& rgb, const MotionOptions& options) {
   cv::Mat grey, small;
   cv::cvtColor(rgb, grey, cv::COLOR_RGB2GRAY);
-  cv::resize(grey, small, cv::Size(options.width, options.width / 2), 0, 0, cv::INTER_AREA);
+  cv::resize(grey, small, cv::Size(options.width * options.coverage_deg / 360, options.width / 2),
+             0, 0, cv::INTER_AREA);
   small.convertTo(grey, CV_8U, 255.0);
   return grey;
 }
@@ -33,8 +34,10 @@ Eigen::Matrix3d kabsch(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) {
 
 namespace {
 
-Eigen::Vector3d unit_at(const cv::Point2f& p, const cv::Size& size) {
-  return effects::to_unit(effects::from_equirect_uv({p.x / size.width, p.y / size.height}));
+/// The direction of a point of a frame spanning `coverage` degrees of azimuth.
+Eigen::Vector3d unit_at(const cv::Point2f& p, const cv::Size& size, int coverage) {
+  const double az = (p.x / size.width - 0.5) * coverage, alt = 90.0 - 180.0 * p.y / size.height;
+  return effects::to_unit({az, alt});
 }
 
 double angle_deg_of(const Eigen::Matrix3d& r) {
@@ -54,7 +57,8 @@ Rotation estimate_rotation(const cv::Mat& grey_a, const cv::Mat& grey_b,
       static_cast<int>(options.points / std::sin(options.max_altitude_deg * effects::kDegToRad));
   for (const auto& d : sphere_directions(lattice)) {
     if (std::abs(d.altitude_deg) > options.max_altitude_deg) continue;
-    const Eigen::Vector2d uv = effects::to_equirect_uv(d);
+    const Eigen::Vector2d uv(0.5 + d.azimuth_deg / options.coverage_deg,
+                             effects::to_equirect_uv(d).y());
     if (uv.x() < margin || uv.x() > 1.0 - margin) continue;
     from.emplace_back(static_cast<float>(uv.x() * size.width),
                       static_cast<float>(uv.y() * size.height));
@@ -67,8 +71,8 @@ Rotation estimate_rotation(const cv::Mat& grey_a, const cv::Mat& grey_b,
   for (std::size_t i = 0; i < from.size(); ++i) {
     if (!status[i] || to[i].x < 0 || to[i].y < 0 || to[i].x >= size.width || to[i].y >= size.height)
       continue;
-    a.push_back(unit_at(from[i], size));
-    b.push_back(unit_at(to[i], size));
+    a.push_back(unit_at(from[i], size, options.coverage_deg));
+    b.push_back(unit_at(to[i], size, options.coverage_deg));
   }
   Rotation out;
   if (a.size() < 8) return out;

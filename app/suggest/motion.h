@@ -9,6 +9,8 @@
 ///     first set onto the second is the least-squares (Kabsch) solution; pairs whose residual is
 ///     over three times the median residual (moving objects, failed tracks) are dropped and the
 ///     rotation is solved again.
+/// A VR180 image (coverage 180) spans azimuth -90..90: its grey frame is width/2 x width/2 (the
+/// same texels per degree) and its pixels' directions follow u = 0.5 + azimuth/180.
 #pragma once
 
 #include <Eigen/Core>
@@ -20,6 +22,7 @@ struct MotionOptions {
   int width = 512;                 //!< grey equirect the flow runs on (height width / 2)
   int points = 800;                //!< tracked directions
   double max_altitude_deg = 60.0;  //!< nearer the poles the equirect is too stretched to track
+  int coverage_deg = 360;          //!< degrees of azimuth the frames span: 360, or 180 (VR180)
 };
 
 struct Rotation {

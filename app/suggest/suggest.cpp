@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iostream>
 #include <set>
+#include <sstream>
 
 #include "app/cli/command_registry.h"
 #include "io/eye_decoder.h"
@@ -34,6 +35,7 @@ namespace {
 
 struct Clip {
   std::unique_ptr<io::FrameDecoder> decoder;
+  effects::StereoLayout layout;  //!< the video's; the analyses see its left eye's image
   std::vector<std::int64_t> frames;
   std::int64_t every = 1;  //!< frames between sampled frames
   Progress* progress = nullptr;
@@ -56,6 +58,27 @@ void check_request(const SuggestRequest& r) {
   if (r.every < 0) throw UsageError("--every must be at least 1");
   if (r.kind == Kind::Guide && r.points.empty())
     throw UsageError("suggest guide needs at least one --poi AZ,ALT[,FROM-TO]");
+}
+
+/// Points of interest must lie inside a VR180 image's coverage (docs/suggest.md, "VR180").
+void check_points_covered(const SuggestRequest& r, const effects::StereoLayout& layout) {
+  for (const PointOfInterest& p : r.points)
+    if (effects::coverage_weight(layout, p.direction.azimuth_deg) <= 0.0) {
+      std::ostringstream where;
+      where << p.direction.azimuth_deg << "," << p.direction.altitude_deg;
+      throw io::InputError(r.video.string() + ": --poi " + where.str() +
+                           ": outside the video's image (VR180: azimuth -90 to 90)");
+    }
+}
+
+/// The view directions the target fields are sampled at, and so where keyframes may go: the
+/// lattice over the sphere, or the part of it inside a VR180 image (where the editor places
+/// keyframes too).
+std::vector<effects::Direction> field_directions(const SuggestRequest& r, const Clip& clip) {
+  std::vector<effects::Direction> out;
+  for (const effects::Direction& d : sphere_directions(r.directions))
+    if (effects::coverage_weight(clip.layout, d.azimuth_deg) > 0.0) out.push_back(d);
+  return out;
 }
 
 /// Opens the video for a suggestion into `sidecar` (none: the --sidecar-in file, else a new
@@ -81,11 +104,9 @@ Clip open_clip(const SuggestRequest& r, Progress* progress, std::optional<io::Si
   const effects::StereoLayout layout = io::resolve_video_layout(
       whole, r.layout, &sidecar->video, r.sidecar_in.value_or(fs::path()), &hint);
   if (!hint.empty()) std::cerr << "vdfx: hint: " << r.video.string() << ": " << hint << "\n";
-  if (layout.coverage_deg != 360)
-    throw io::InputError(r.video.string() +
-                         ": suggestions over VR180 video (coverage 180) are not supported yet "
-                         "(the analyses sample the whole sphere)");
+  check_points_covered(r, layout);
   io::record_layout(sidecar->video, layout);
+  clip.layout = layout;
   clip.decoder = io::eye_decoder(std::move(clip.decoder), layout, effects::EyeIndex::Left);
   const auto& p = clip.decoder->properties();
   const double per_second = r.kind == Kind::Comfort ? 6.0 : 1.0;
@@ -119,7 +140,8 @@ TargetField exposure_field(const SuggestRequest& r, Clip& clip, SuggestReport& r
     if (clip.decoder->read(rgb) != io::DecodeStatus::Ok)
       throw io::InputError(r.video.string() + ": frame " + std::to_string(f) +
                            " could not be decoded");
-    grids.push_back(make_luma_grid(rgb, transfer, geometry, r.metering, f));
+    grids.push_back(
+        make_luma_grid(rgb, transfer, geometry, r.metering, f, clip.layout.coverage_deg));
     brightest = std::max(brightest, grids.back().max_luma);
     clip.tick(0.5 * static_cast<double>(grids.size()) / static_cast<double>(clip.frames.size()));
   }
@@ -128,7 +150,7 @@ TargetField exposure_field(const SuggestRequest& r, Clip& clip, SuggestReport& r
                          std::to_string(grids.size()) + ") is black");
   report.reference_level = reference_level(grids, geometry);
   TargetField field;
-  const auto directions = sphere_directions(r.directions);
+  const auto directions = field_directions(r, clip);
   for (const LumaGrid& g : grids)
     for (const auto& d : directions) {
       const double level = metered_level(g, geometry, effects::to_unit(d), r.metering);
@@ -141,7 +163,7 @@ TargetField exposure_field(const SuggestRequest& r, Clip& clip, SuggestReport& r
 /// The guidance targets of one effect (guide.h's falloff).
 TargetField guide_field(const SuggestRequest& r, const Clip& clip, EffectType type) {
   TargetField field;
-  const auto directions = sphere_directions(r.directions);
+  const auto directions = field_directions(r, clip);
   for (const std::int64_t f : clip.frames)
     for (const auto& d : directions) {
       const double g = r.strength * guide_weight_at(r.points, d, f);
@@ -160,16 +182,18 @@ std::vector<double> camera_speeds(const SuggestRequest& r, Clip& clip) {
                          std::to_string(p.frames) + " frame(s)");
   clip.decoder->seek(0);
   std::vector<double> speed(static_cast<std::size_t>(p.frames), 0.0);
+  MotionOptions motion = r.motion;
+  motion.coverage_deg = clip.layout.coverage_deg;
   cv::Mat rgb, previous;
   for (std::int64_t f = 0; f < p.frames; ++f) {
     if (clip.decoder->read(rgb) != io::DecodeStatus::Ok) {
       previous.release();  // a frame lost: no estimate across the gap
       continue;
     }
-    cv::Mat grey = motion_frame(rgb, r.motion);
+    cv::Mat grey = motion_frame(rgb, motion);
     if (!previous.empty())
       speed[static_cast<std::size_t>(f)] =
-          estimate_rotation(previous, grey, r.motion).angle_deg * p.fps.value();
+          estimate_rotation(previous, grey, motion).angle_deg * p.fps.value();
     previous = std::move(grey);
     clip.tick(0.5 * static_cast<double>(f + 1) / static_cast<double>(p.frames));
   }
@@ -185,7 +209,7 @@ TargetField comfort_field(const SuggestRequest& r, Clip& clip, SuggestReport& re
   const std::vector<double> speed = look_ahead_max(report.speed_deg_per_s, lead);
   TargetField field;
   field.dimension = 2;
-  const auto directions = sphere_directions(r.directions);
+  const auto directions = field_directions(r, clip);
   for (const std::int64_t f : clip.frames) {
     const double v[2] = {comfort_radius_deg(speed[static_cast<std::size_t>(f)], r.strength),
                          kComfortFalloffDeg};
@@ -233,13 +257,16 @@ std::pair<std::int64_t, std::int64_t> guide_segment(const std::vector<PointOfInt
 
 /// The stamp of a field that does not vary with direction: the sample's value at the six axis
 /// directions at its frame (equal values at directions spread over the sphere interpolate to
-/// that value everywhere: the RBF's constant term carries it).
-Stamp frame_stamp(const TargetField& field, std::size_t s) {
+/// that value everywhere: the RBF's constant term carries it); inside a VR180 image, its centre
+/// and four directions 60 degrees from it.
+Stamp frame_stamp(const TargetField& field, std::size_t s, int coverage_deg) {
   Stamp st;
   const auto first = field.values.begin() + static_cast<std::ptrdiff_t>(s * field.dimension);
   const std::vector<double> v(first, first + field.dimension);
-  for (const effects::Direction d :
-       {effects::Direction{0, 0}, {90, 0}, {180, 0}, {-90, 0}, {0, 90}, {0, -90}})
+  const std::vector<effects::Direction> sphere = {{0, 0},   {90, 0}, {180, 0},
+                                                  {-90, 0}, {0, 90}, {0, -90}},
+                                        half = {{0, 0}, {60, 0}, {-60, 0}, {0, 60}, {0, -60}};
+  for (const effects::Direction d : coverage_deg == 360 ? sphere : half)
     st.keyframes.push_back({d, field.frames[s], v});
   st.key = "frame " + std::to_string(field.frames[s]);
   return st;
@@ -308,7 +335,8 @@ SuggestReport suggest_clip(const SuggestRequest& r, Clip& clip, io::Sidecar& sid
     report.samples = field.size();
     fit_into(
         sidecar, EffectType::Vignette, field, r, clip, report,
-        [&field](std::size_t s) { return frame_stamp(field, s); }, clip.every);
+        [&field, &clip](std::size_t s) { return frame_stamp(field, s, clip.layout.coverage_deg); },
+        clip.every);
   } else {
     std::vector<EffectType> types;
     if (r.guide_effect != GuideEffect::Exposure) types.push_back(EffectType::Saturation);

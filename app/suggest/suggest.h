@@ -45,7 +45,7 @@ struct SuggestRequest {
   GuideEffect guide_effect = GuideEffect::Saturation;
   MotionOptions motion;  //!< comfort
   /// --layout / --coverage (docs/stereo.md): stereo video is analysed in its left eye's image;
-  /// VR180 is refused (the analyses sample the whole sphere).
+  /// VR180 in its half turn only, where the keyframes go too (docs/suggest.md, "VR180").
   io::LayoutOverride layout;
 };
 

@@ -220,13 +220,17 @@ TEST(BenchCommand, VideoRowsDecodeWhatFFmpegDecodesAndBakeWithinOneStep) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(schema_problem(dir / "r.json"), "");
   const auto j = nlohmann::json::parse(read_file(dir / "r.json"));
-  ASSERT_EQ(j["rows"].size(), 2u);
+  // H.264 decode, the top-bottom and the mono HEVC decode (docs/stereo.md), the export.
+  ASSERT_EQ(j["rows"].size(), 4u);
   for (const auto& row : j["rows"]) {
     SCOPED_TRACE(row.dump());
     ASSERT_EQ(row["status"], "ok");
     EXPECT_GT(row["peer"]["median_s"].get<double>(), 0.0);
     if (row["knob"] == "video.decode") {
       EXPECT_EQ(row["error"]["max"].get<double>(), 0.0);
+      if (row["setting"].get<std::string>().find("top-bottom") != std::string::npos) {
+        EXPECT_GT(row["extra"]["vs_mono"].get<double>(), 0.0);  // timed beside the mono clip
+      }
     } else {
       EXPECT_EQ(row["knob"], "video.export");
       EXPECT_LT(row["error"]["max"].get<double>(), 1.0);

@@ -2,9 +2,11 @@
 /// @brief `vdfx export --depth 10` (docs/export.md, "10 bits"): a smooth gradient with more levels
 /// than 8 bits hold, exported with +1 stop, keeps more than 600 distinct luma codes in HEVC
 /// Main10 where the 8-bit export has at most 256; ProRes output is ProRes 422 HQ, 10-bit 4:2:2;
-/// the combinations that cannot work are usage errors.
+/// the combinations that cannot work are usage errors. The viewer's path renders its views in
+/// float and converts them straight to 10-bit codes too.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +16,8 @@
 
 #include "command_test_util.h"
 #include "io/frame_decoder.h"
+#include "io/recording.h"
+#include "xr/pose.h"
 
 namespace vdfx::app {
 namespace {
@@ -116,6 +120,83 @@ TEST(ExportDepth, ProResIsProRes422Hq) {
   EXPECT_NE(probe.find("codec_name=prores"), std::string::npos) << probe;
   EXPECT_NE(probe.find("profile=HQ"), std::string::npos) << probe;
   EXPECT_NE(probe.find("pix_fmt=yuv422p10le"), std::string::npos) << probe;
+  EXPECT_GT(luma_levels(out), 600u);
+}
+
+/// A 16-bit PNG equirect, 2048 x 1024, grey rising from 0 at azimuth -45 to 0.45 at azimuth 45
+/// (constant outside): the 90-degree view straight ahead sees the whole ramp across its width.
+fs::path view_gradient_png(const fs::path& dir) {
+  cv::Mat m(1024, 2048, CV_16UC3);
+  for (int x = 0; x < m.cols; ++x) {
+    const double u = (x + 0.5) / m.cols, t = std::clamp((u - 0.375) / 0.25, 0.0, 1.0);
+    m.col(x).setTo(cv::Scalar::all(std::lround(t * 0.45 * 65535.0)));
+  }
+  const fs::path p = dir / "view_gradient.png";
+  cv::imwrite(p.string(), m);
+  return p;
+}
+
+/// A recording whose head looks straight ahead (azimuth 0, altitude 0) for a second.
+fs::path straight_ahead(const fs::path& dir) {
+  const fs::path p = dir / "ahead.vdrec.jsonl";
+  io::RecordingWriter w(p, io::RecordingHeader{});
+  for (std::int64_t t : {0LL, 1'000'000'000LL}) {
+    const glm::dquat q = xr::look_rotation(0.0, 0.0);
+    io::RecordedSample s;
+    s.t_ns = t;
+    s.head.q = {q.w, q.x, q.y, q.z};
+    s.head.p = {0.0, 1.6, 0.0};
+    w.write(s);
+  }
+  return p;
+}
+
+TEST(ExportDepth, ThePathAtTenBitsKeepsTheGradientsLevels) {
+  const fs::path dir = test_dir();
+  const fs::path png = view_gradient_png(dir);
+  write_text(dir / "s.vdfx.json", kPlusOneStop);
+  const std::string base = "export " + png.string() + " --sidecar " +
+                           (dir / "s.vdfx.json").string() + " --path " +
+                           straight_ahead(dir).string() + " --fov 90 --size 1024x64 --out ";
+  testing::CommandResult r =
+      run_vdfx(base + (dir / "ten.mkv").string() + " --codec h265 --depth 10 --crf 0");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("10-bit"), std::string::npos) << r.output;
+  r = run_vdfx(base + (dir / "eight.mkv").string() + " --codec h265 --crf 0");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::size_t ten = luma_levels(dir / "ten.mkv"), eight = luma_levels(dir / "eight.mkv");
+  EXPECT_GT(ten, 600u);
+  EXPECT_LE(eight, 256u);
+  const std::string probe =
+      command_output("ffprobe -v error -show_streams '" + (dir / "ten.mkv").string() + "'");
+  EXPECT_NE(probe.find("profile=Main 10"), std::string::npos) << probe;
+  EXPECT_NE(probe.find("pix_fmt=yuv420p10le"), std::string::npos) << probe;
+}
+
+TEST(ExportDepth, ThePathFromATenBitSourceToProResNeverPassesThroughEightBits) {
+  const fs::path dir = test_dir();
+  const fs::path png = view_gradient_png(dir);
+  const fs::path source = dir / "main10.mkv";  // a lossless 10-bit HEVC source of the ramp
+  const std::string make = "ffmpeg -v error -y -i '" + png.string() +
+                           "' -c:v libx265 -pix_fmt yuv420p10le -preset ultrafast "
+                           "-x265-params lossless=1:log-level=error '" +
+                           source.string() + "'";
+  ASSERT_EQ(std::system(make.c_str()), 0) << make;
+  std::string sidecar = kPlusOneStop;
+  sidecar.replace(sidecar.find("gradient.png"), 12, "main10.mkv");
+  write_text(dir / "s.vdfx.json", sidecar);
+  const fs::path out = dir / "path.mov";
+  const testing::CommandResult r =
+      run_vdfx("export " + source.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+               " --path " + straight_ahead(dir).string() + " --fov 90 --size 1024x64 --out " +
+               out.string() + " --codec prores");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string probe = command_output("ffprobe -v error -show_streams '" + out.string() + "'");
+  EXPECT_NE(probe.find("profile=HQ"), std::string::npos) << probe;
+  EXPECT_NE(probe.find("pix_fmt=yuv422p10le"), std::string::npos) << probe;
+  // The source holds about 0.45 x 876 = 394 codes along the ramp, +1 stop spreads them over
+  // twice the range and the view's bilinear taps fill in between (733 codes when written; an
+  // 8-bit step after the render left 231).
   EXPECT_GT(luma_levels(out), 600u);
 }
 

@@ -49,16 +49,20 @@ double srgb_to_linear(double v) {
 
 /// The metering model of docs/suggest.md computed at full resolution, pixel by pixel, without
 /// the grid: per-pixel solid angle cos(altitude), centre weight exp(-theta^2 / (2 (fov/4)^2))
-/// within fov/2.
+/// within fov/2. A VR180 image (coverage 180) spans azimuth -90..90: only its pixels count.
 struct BruteMeter {
   cv::Mat image;  // CV_8UC3
+  int coverage = 360;
+  effects::Direction direction(int x, int y) const {
+    return {((x + 0.5) / image.cols - 0.5) * coverage, 90.0 - (y + 0.5) * 180.0 / image.rows};
+  }
   double level(const effects::Direction& view, double fov_deg = 90.0) const {
     const Eigen::Vector3d v = effects::to_unit(view);
     const double half = fov_deg / 2 * effects::kDegToRad, sigma = fov_deg / 4 * effects::kDegToRad;
     double sum = 0, weights = 0;
     for (int y = 0; y < image.rows; ++y)
       for (int x = 0; x < image.cols; ++x) {
-        const auto d = effects::from_equirect_uv({(x + 0.5) / image.cols, (y + 0.5) / image.rows});
+        const effects::Direction d = direction(x, y);
         const double theta = effects::angle_between(effects::to_unit(d), v);
         if (theta > half) continue;
         const double w = std::cos(d.altitude_deg * effects::kDegToRad) *
@@ -351,6 +355,113 @@ TEST(SuggestComfort, AStillHasNoMotionToMeasure) {
                                    " --sidecar-out " + (dir / "c.vdfx.json").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("cannot estimate the camera's motion"), std::string::npos) << r.output;
+}
+
+// ---- VR180 (docs/suggest.md, "VR180"): the left eye's half turn only
+
+/// A VR180 eye, size x size (azimuth -90..90): a bright window (250) of 25 degrees radius at
+/// (-50, 10) in a dim room (30), grey.
+cv::Mat vr180_window_eye(int size) {
+  cv::Mat img(size, size, CV_8UC3);
+  const BruteMeter geometry{img, 180};
+  const Eigen::Vector3d window = effects::to_unit({-50, 10});
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const double a = effects::angle_between(effects::to_unit(geometry.direction(x, y)), window) *
+                       effects::kRadToDeg;
+      const uchar v = a < kWindowRadiusDeg ? 250 : 30;
+      img.at<cv::Vec3b>(y, x) = {v, v, v};
+    }
+  return img;
+}
+
+TEST(SuggestVr180, MetersTheCoveredImageAndPlacesKeyframesInsideIt) {
+  const auto dir = test_dir();
+  // Left-right VR180: the left eye has the window, the right eye (never analysed) is all room.
+  const cv::Mat left = vr180_window_eye(256), right(256, 256, CV_8UC3, cv::Scalar::all(30));
+  cv::Mat frame;
+  cv::hconcat(left, right, frame);
+  const auto png = dir / "vr180.png";
+  cv::imwrite(png.string(), frame);
+  SuggestRequest r;
+  r.video = png;
+  r.sidecar_out = dir / "out.vdfx.json";
+  r.layout = {effects::StereoMode::LeftRight, 180};
+  const SuggestReport report = run_suggest(r);
+  ASSERT_EQ(report.effects.size(), 1u);
+  EXPECT_TRUE(report.effects[0].fit.within_tolerance);
+  // The reference level is the covered hemisphere's: the half turn behind counts nowhere (read
+  // as black it would pull the level down by stops, as the window's mirror it would push it up).
+  const BruteMeter brute{left, 180};
+  const double ref = brute.reference();
+  EXPECT_NEAR(report.reference_level, ref, 0.05);
+
+  const Suggested s = read_suggestion(r.sidecar_out);
+  EXPECT_EQ(s.sidecar.video.stereo(), (effects::StereoLayout{effects::StereoMode::LeftRight, 180}));
+  ASSERT_TRUE(s.exposure);
+  ASSERT_FALSE(s.sidecar.effects[0].keyframes.empty());
+  for (const auto& k : s.sidecar.effects[0].keyframes)  // where the editor places keyframes
+    EXPECT_LT(std::abs(k.direction.azimuth_deg), 90.0) << k.direction.azimuth_deg;
+  EXPECT_LT(s.at(*s.exposure, {-50, 10}), -1.0);
+  EXPECT_GT(s.at(*s.exposure, {50, 0}), 0.3);
+  // Within the tolerance of the target metered on the covered image alone, pixel by pixel (a
+  // view near the edge meters what it shows, not the black beyond).
+  for (const auto& d : sphere_directions(80)) {
+    if (std::abs(d.azimuth_deg) > 85.0) continue;
+    const double target = std::clamp(ref - brute.level(d), -8.0, 8.0);
+    EXPECT_NEAR(s.at(*s.exposure, d), target, kExposureToleranceStops + 0.35)
+        << d.azimuth_deg << "," << d.altitude_deg;
+  }
+}
+
+TEST(SuggestVr180, ComfortMeasuresTheTurnOnTheHalfTurnImage) {
+  // 40 frames at 30 fps, the left eye's half turn of a turning panorama: still for 20 frames,
+  // then 2 degrees a frame (60 deg/s). Read as a whole turn, the turn would measure double.
+  const auto dir = test_dir();
+  const auto clip = dir / "vr180_turning.avi";
+  const cv::Mat pano = textured_panorama();  // 720 x 360: the half turn is columns 180..540
+  cv::VideoWriter w(clip.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 30,
+                    cv::Size(720, 360));
+  ASSERT_TRUE(w.isOpened());
+  double yaw = 0.0;
+  for (int f = 0; f < 40; ++f) {
+    yaw += f < 20 ? 0.0 : 2.0;
+    const cv::Mat eye = rotated(pano, turn(yaw, 0.0)).colRange(180, 540);
+    cv::Mat pair;
+    cv::hconcat(eye, eye, pair);
+    w << pair;
+  }
+  w.release();
+  SuggestRequest r;
+  r.kind = Kind::Comfort;
+  r.video = clip;
+  r.sidecar_out = dir / "out.vdfx.json";
+  r.layout = {effects::StereoMode::LeftRight, 180};
+  const SuggestReport report = run_suggest(r);
+  ASSERT_EQ(report.speed_deg_per_s.size(), 40u);
+  EXPECT_NEAR(report.speed_deg_per_s[10], 0.0, 2.0);
+  EXPECT_NEAR(report.speed_deg_per_s[30], 60.0, 3.0);
+  const io::Sidecar s = io::read_sidecar(r.sidecar_out);
+  ASSERT_EQ(s.effects.size(), 1u);
+  ASSERT_FALSE(s.effects[0].keyframes.empty());
+  for (const auto& k : s.effects[0].keyframes)
+    EXPECT_LT(std::abs(k.direction.azimuth_deg), 90.0) << k.direction.azimuth_deg;
+}
+
+TEST(SuggestVr180, APointOfInterestOutsideTheImageIsAnInputError) {
+  const auto dir = test_dir();
+  cv::Mat frame;
+  cv::hconcat(vr180_window_eye(128), vr180_window_eye(128), frame);
+  const auto png = dir / "vr180.png";
+  cv::imwrite(png.string(), frame);
+  const auto r =
+      run_vdfx_headless("suggest guide " + png.string() + " --poi 120,0 --sidecar-out " +
+                        (dir / "g.vdfx.json").string() + " --layout left-right --coverage 180");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find(png.string() + ": --poi 120,0: outside the video's image"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "g.vdfx.json"));
 }
 
 // ---- the editor's "Suggest" (docs/suggest.md, "In the editor")

@@ -189,5 +189,28 @@ TEST(EquirectBlur, VaryingSigmaEqualsTheMixOfWholeLevelsAtEveryPixel) {
   EXPECT_LT(worst, 1e-5);
 }
 
+TEST(EquirectBlur, AHalfTurnIsClampedAtItsEdgesNeverWrapped) {
+  // A VR180 image (azimuth -90..90): a constant stays constant; a bright left edge spreads
+  // inwards but never reaches the right edge (a 360 blur of the same pixels wraps it there);
+  // near a pole the light crosses over, as on the sphere.
+  const int w = 128, h = 128;
+  const cv::Mat flat(h, w, CV_32FC3, cv::Scalar(0.2, 0.5, 0.8));
+  const cv::Mat sigma(h, w, CV_32FC1, cv::Scalar(4.0f));
+  cv::Mat out, d;
+  blur_half_equirect_varying(flat, sigma, out);
+  cv::absdiff(out, flat, d);
+  double mx = 0;
+  cv::minMaxLoc(d.reshape(1), nullptr, &mx);
+  EXPECT_LT(mx, 1e-5);
+  cv::Mat edge(h, w, CV_32FC3, cv::Scalar::all(0));
+  edge.colRange(0, 4).setTo(cv::Scalar::all(1));
+  blur_half_equirect_varying(edge, sigma, out);
+  const cv::Mat wrapped = blur_equirect_varying(edge, sigma);
+  EXPECT_GT(out.at<cv::Vec3f>(h / 2, 5)[1], 0.2f);           // spread inwards
+  EXPECT_LT(out.at<cv::Vec3f>(h / 2, w - 1)[1], 1e-6f);      // never across the edge
+  EXPECT_GT(wrapped.at<cv::Vec3f>(h / 2, w - 1)[1], 0.05f);  // where a whole turn wraps
+  EXPECT_GT(out.at<cv::Vec3f>(0, w - 1)[1], 0.0f);           // across the pole
+}
+
 }  // namespace
 }  // namespace vdfx::effects
