@@ -11,6 +11,7 @@
 
 #include "effects/lens_model.h"
 #include "effects/view_renderer.h"
+#include "io/picture.h"
 #include "io/sidecar.h"
 #include "io/video_layout.h"
 #include "xr/blur_method.h"
@@ -45,8 +46,13 @@ struct RenderRequest {
 /// style: object_cloud, free_cloud), which `vdfx render` draws only with --gpu.
 std::optional<std::size_t> first_gpu_only_grain(const io::Sidecar& sidecar);
 
-/// Frame `frame` of a video or still as RGB float, display-encoded. Throws io::InputError naming
-/// the file when it is missing, unreadable, or has no such frame.
+/// Frame `frame` of a video or still as the decoder hands it over (Y'CbCr planes or RGB).
+/// Throws io::InputError naming the file when it is missing, unreadable, or has no such frame.
+io::Picture load_equirect_picture(const std::filesystem::path& input, std::int64_t frame,
+                                  io::VideoProperties* properties = nullptr);
+
+/// Frame `frame` of a video or still as RGB float, display-encoded, converted as one image
+/// (io::to_rgb; a stereo frame eye by eye: io::to_rgb_by_eye). Throws as above.
 cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame,
                             io::VideoProperties* properties = nullptr);
 
