@@ -208,7 +208,7 @@ export class Renderer {
   // converted per sample by the video layer as the GL path converts (u_ycbcr = 1; `info` is
   // player.json's video.ycbcr, written by publish from io/ycbcr.h). A stereo frame's planes are
   // cut at each eye's rectangle, the chroma planes at the subsampled rectangle
-  // (xr/video_layer_gl.cpp, cut_picture). False, uploading nothing, when a half does not fall
+  // (io/eye_picture.h, cut_picture). False, uploading nothing, when a half does not fall
   // on the chroma grid (an odd half height in 4:2:0): the caller lets the browser convert.
   uploadPlanes(planes, width, height, info) {
     const [sx, sy] = info.log2_chroma;
