@@ -22,5 +22,15 @@ bool cut_picture(const Picture& picture, const effects::PixelRect& r, Picture& o
 /// one frame (the GL layer then converts on the CPU too). The layout must divide the frame.
 cv::Mat to_rgb_by_eye(const Picture& picture, const effects::StereoLayout& layout,
                       PixelFormat format);
+/// The same into `out`, whose buffer is reused when it has the size and type already.
+void to_rgb_by_eye(const Picture& picture, const effects::StereoLayout& layout, PixelFormat format,
+                   cv::Mat& out);
+
+/// The encoder's conversion (io::rgb_to_ycbcr) of a frame holding `layout`'s eyes: each eye's
+/// half encoded on its own, so no chroma sample averages R'G'B' from both sides of the boundary
+/// between the halves (the tent filter clamped at each half's edges as at the frame's). Mono,
+/// or halves off the chroma grid: rgb_to_ycbcr of the whole frame.
+Picture rgb_to_ycbcr_by_eye(const cv::Mat& rgb, const YcbcrInfo& info,
+                            const effects::StereoLayout& layout);
 
 }  // namespace vdfx::io

@@ -1,7 +1,8 @@
 /// @file
 /// @brief io/eye_picture.h: a stereo frame's eyes cut on the chroma grid and converted each from
 /// its own planes, so that chroma upsampling never mixes the eyes at the boundary between the
-/// halves (nor wraps a VR180 image's edges into each other), as the GL video layer samples them.
+/// halves (nor wraps a VR180 image's edges into each other), as the GL video layer samples them;
+/// and encoded each from its own half.
 #include "io/eye_picture.h"
 
 #include <gtest/gtest.h>
@@ -95,6 +96,31 @@ TEST(EyePicture, AHalfOffTheChromaGridIsConvertedAsOneFrame) {
   EXPECT_EQ(half.planes[0].size(), cv::Size(4, 8));
   EXPECT_EQ(half.planes[1].size(), cv::Size(2, 4));
   EXPECT_EQ(half.planes[2].at<uchar>(0, 0), p.planes[2].at<uchar>(1, 2));
+}
+
+// The encoder's side: each eye's half encoded on its own, so the chroma samples next to the
+// boundary carry only their own eye's colour (as one frame they average both sides).
+TEST(EyePicture, EachEyeIsEncodedFromItsOwnHalf) {
+  cv::Mat rgb(8, 16, CV_32FC3, cv::Scalar(0.9f, 0.1f, 0.1f));
+  rgb.colRange(8, 16).setTo(cv::Scalar(0.1f, 0.1f, 0.9f));
+  YcbcrInfo info;  // 4:2:0, left-sited, limited range
+  const Picture by_eye = rgb_to_ycbcr_by_eye(rgb, info, {StereoMode::LeftRight, 360});
+  const Picture whole = rgb_to_ycbcr(rgb, info);
+  for (int plane = 1; plane < 3; ++plane) {
+    const cv::Mat& c = by_eye.planes[static_cast<std::size_t>(plane)];
+    // Chroma sample 4 sits on luma column 8, the right eye's first: its tent reaches column 7.
+    EXPECT_EQ(c.at<uchar>(0, 4), c.at<uchar>(0, 7)) << plane;
+    EXPECT_EQ(c.at<uchar>(0, 3), c.at<uchar>(0, 0)) << plane;
+    EXPECT_NE(whole.planes[static_cast<std::size_t>(plane)].at<uchar>(0, 4), c.at<uchar>(0, 4));
+  }
+  // Decoded eye by eye, each half is its own colour again.
+  const cv::Mat back = to_rgb_by_eye(by_eye, {StereoMode::LeftRight, 360}, PixelFormat::Rgb8);
+  EXPECT_TRUE(uniform(back.colRange(0, 8)));
+  EXPECT_TRUE(uniform(back.colRange(8, 16)));
+  // Mono: the whole-frame encoder, byte for byte.
+  const Picture mono = rgb_to_ycbcr_by_eye(rgb, info, {});
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_EQ(cv::norm(mono.planes[i], whole.planes[i], cv::NORM_INF), 0.0);
 }
 
 }  // namespace
