@@ -25,7 +25,6 @@
 #include "io/input_error.h"
 #include "io/output_path.h"
 #include "io/sidecar_sets.h"
-#include "io/ycbcr.h"
 #include "xr/compositor.h"
 #include "xr/effect_stack_gl.h"
 #include "xr/eye_views.h"
@@ -62,8 +61,8 @@ io::Picture load_equirect_picture(const std::filesystem::path& input, std::int64
 }
 
 cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame,
-                            io::VideoProperties* properties) {
-  return io::to_rgb(load_equirect_picture(input, frame, properties), io::PixelFormat::RgbF32);
+                            const effects::StereoLayout& layout) {
+  return io::to_rgb_by_eye(load_equirect_picture(input, frame), layout, io::PixelFormat::RgbF32);
 }
 
 xr::DistortionSettings parse_distortion(const std::string& text) {
@@ -171,7 +170,8 @@ std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input
   if (flares.uses_auto_light()) {
     for (std::int64_t f = std::max<std::int64_t>(0, frame - flares.auto_light_window()); f < frame;
          ++f)
-      flares.observe(f, effects::eye_image(load_equirect_frame(input, f), eye.layout, eye.index));
+      flares.observe(
+          f, effects::eye_image(load_equirect_frame(input, f, eye.layout), eye.layout, eye.index));
     flares.observe(frame, equirect);
   }
   return flares.layouts(head, frame);

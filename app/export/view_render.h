@@ -51,10 +51,10 @@ std::optional<std::size_t> first_gpu_only_grain(const io::Sidecar& sidecar);
 io::Picture load_equirect_picture(const std::filesystem::path& input, std::int64_t frame,
                                   io::VideoProperties* properties = nullptr);
 
-/// Frame `frame` of a video or still as RGB float, display-encoded, converted as one image
-/// (io::to_rgb; a stereo frame eye by eye: io::to_rgb_by_eye). Throws as above.
+/// Frame `frame` of a video or still as RGB float, display-encoded, each eye of `layout`
+/// converted from its own planes (io::to_rgb_by_eye). Throws as above.
 cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame,
-                            io::VideoProperties* properties = nullptr);
+                            const effects::StereoLayout& layout);
 
 /// Renders the request; returns 8-bit RGB. Throws io::InputError for bad input.
 cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
