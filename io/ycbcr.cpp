@@ -112,10 +112,11 @@ void convert_rows(const Picture& p, const AffineMap3& map, const ChromaTaps& col
 }
 
 template <typename T>
-void convert(const Picture& p, PixelFormat format, cv::Mat& out) {
+void convert(const Picture& p, PixelFormat format, cv::Mat& out, bool wrap_columns) {
   const YcbcrInfo& info = p.ycbcr;
   const int w = p.planes[0].cols, h = p.planes[0].rows;
-  const ChromaTaps cols = chroma_taps(w, p.planes[1].cols, info.log2_chroma_w, info.chroma_x, true);
+  const ChromaTaps cols =
+      chroma_taps(w, p.planes[1].cols, info.log2_chroma_w, info.chroma_x, wrap_columns);
   const ChromaTaps rows =
       chroma_taps(h, p.planes[1].rows, info.log2_chroma_h, info.chroma_y, false);
   const AffineMap3 map = ycbcr_to_rgb_map(info);
@@ -258,7 +259,7 @@ cv::Mat to_rgb(const Picture& p, PixelFormat format) {
   return out;
 }
 
-void to_rgb(const Picture& p, PixelFormat format, cv::Mat& out) {
+void to_rgb(const Picture& p, PixelFormat format, cv::Mat& out, bool wrap_columns) {
   if (p.empty()) throw std::invalid_argument("to_rgb: empty picture");
   if (!p.is_ycbcr()) {
     const bool want8 = format == PixelFormat::Rgb8;
@@ -275,8 +276,8 @@ void to_rgb(const Picture& p, PixelFormat format, cv::Mat& out) {
     if (plane.empty() || plane.depth() != depth || plane.channels() != 1)
       throw std::invalid_argument(
           "to_rgb: Y'CbCr planes must be one-channel 8- or 16-bit, all alike");
-  if (depth == CV_8U) return convert<std::uint8_t>(p, format, out);
-  if (depth == CV_16U) return convert<std::uint16_t>(p, format, out);
+  if (depth == CV_8U) return convert<std::uint8_t>(p, format, out, wrap_columns);
+  if (depth == CV_16U) return convert<std::uint16_t>(p, format, out, wrap_columns);
   throw std::invalid_argument("to_rgb: unsupported plane depth");
 }
 

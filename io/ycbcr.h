@@ -45,7 +45,9 @@ AffineMap3 rgb_to_ycbcr_map(const YcbcrInfo& info);
 /// (8-bit: rounded to nearest). An RGB picture is only converted to `format`.
 cv::Mat to_rgb(const Picture& picture, PixelFormat format);
 /// The same into `out`, whose buffer is reused when it has the size and type already.
-void to_rgb(const Picture& picture, PixelFormat format, cv::Mat& out);
+/// `wrap_columns`: chroma is interpolated across the seam between the last and the first column
+/// (a 360 image); false clamps it at the edges (a VR180 image; io/eye_picture.h).
+void to_rgb(const Picture& picture, PixelFormat format, cv::Mat& out, bool wrap_columns = true);
 
 /// Encodes an RGB image (CV_32FC3 in [0, 1], clamped first, or CV_8UC3) as a Y'CbCr picture in
 /// `info`'s layout (bit_depth 8, or 10 in 16-bit planes): luma per pixel, chroma from R'G'B'

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "effects/video_shaders.h"
+#include "io/eye_picture.h"
 #include "io/ycbcr.h"
 #include "xr/gl_context.h"
 #include "xr/gl_program.h"
@@ -78,19 +79,6 @@ struct EyeSource {
     ycbcr = false;
   }
 };
-
-/// Picture `pic` cut to the pixel rectangle `r`: planes as views (no copy), chroma planes cut at
-/// the subsampled rectangle. False when `r` does not fall on the chroma grid.
-bool cut_picture(const io::Picture& pic, const effects::PixelRect& r, io::Picture& out) {
-  const int sx = pic.ycbcr.log2_chroma_w, sy = pic.ycbcr.log2_chroma_h;
-  const int mx = (1 << sx) - 1, my = (1 << sy) - 1;
-  if ((r.x & mx) || (r.y & my) || (r.width & mx) || (r.height & my)) return false;
-  out = pic;
-  out.planes[0] = pic.planes[0](cv::Rect(r.x, r.y, r.width, r.height));
-  for (std::size_t i = 1; i < 3; ++i)
-    out.planes[i] = pic.planes[i](cv::Rect(r.x >> sx, r.y >> sy, r.width >> sx, r.height >> sy));
-  return true;
-}
 
 }  // namespace
 
@@ -191,7 +179,7 @@ void VideoLayerGl::set_frame(const io::Picture& pic) {
   for (std::size_t i = 0; i < 2; ++i) {
     const effects::PixelRect r =
         effects::eye_rect(m.layout, static_cast<effects::EyeIndex>(i), pic.width(), pic.height());
-    if (!cut_picture(pic, r, halves[i])) {
+    if (!io::cut_picture(pic, r, halves[i])) {
       // A half off the chroma grid (an odd half height in 4:2:0): converted on the CPU instead.
       cv::Mat bgr;
       cv::cvtColor(io::to_rgb(pic, io::PixelFormat::RgbF32), bgr, cv::COLOR_RGB2BGR);

@@ -9,6 +9,7 @@
 
 #include "effects/coords.h"
 #include "effects/equirect_blur.h"
+#include "io/eye_picture.h"
 #include "io/ycbcr.h"
 
 namespace vdfx::app {
@@ -199,7 +200,9 @@ FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, Bake
   options.coverage_deg = layout.coverage_deg;
   return [&stack, options, out, cache, layout](const io::Picture& source, std::int64_t frame) {
     thread_local cv::Mat rgb, scratch, half;  // each render thread's frame buffers, reused
-    io::to_rgb(source, io::PixelFormat::RgbF32, rgb);
+    // Each eye decoded from its own planes and encoded from its own half (io/eye_picture.h): no
+    // chroma sample mixes the eyes at the boundary between the halves.
+    io::to_rgb_by_eye(source, layout, io::PixelFormat::RgbF32, rgb);
     if (!layout.stereo()) {
       render_baked_into(rgb, stack, frame, options, &scratch);
       return io::rgb_to_ycbcr(rgb, out);
@@ -213,7 +216,7 @@ FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, Bake
       render_baked_into(half, stack, frame, options, &scratch);
       half.copyTo(rgb(rect));
     }
-    return io::rgb_to_ycbcr(rgb, out);
+    return io::rgb_to_ycbcr_by_eye(rgb, out, layout);
   };
 }
 

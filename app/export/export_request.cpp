@@ -19,6 +19,7 @@
 #include "app/export/pipeline.h"
 #include "app/export/progress.h"
 #include "effects/stack_interpolator.h"
+#include "io/eye_picture.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
 #include "io/output_path.h"
@@ -233,7 +234,7 @@ FrameRenderer frame_renderer(const ExportRequest& req, const Inputs& in,
   const io::Rational fps = in.props.fps;
   const bool both = req.stereo_side_by_side;
   return [&stack, &head, fps, ps, out, both](const io::Picture& src, std::int64_t k) {
-    const cv::Mat rgb = io::to_rgb(src, io::PixelFormat::RgbF32);
+    const cv::Mat rgb = io::to_rgb_by_eye(src, ps.layout, io::PixelFormat::RgbF32);
     const PathView view = path_view(head, k, fps);
     if (!both) return io::rgb_to_ycbcr(render_path_frame(rgb, stack, view, k, ps), out);
     PathRenderSettings right = ps;
@@ -241,7 +242,8 @@ FrameRenderer frame_renderer(const ExportRequest& req, const Inputs& in,
     cv::Mat pair;
     cv::hconcat(render_path_frame(rgb, stack, view, k, ps),
                 render_path_frame(rgb, stack, view, k, right), pair);
-    return io::rgb_to_ycbcr(pair, out);
+    // Each eye's view encoded on its own (a flat side-by-side pair).
+    return io::rgb_to_ycbcr_by_eye(pair, out, {effects::StereoMode::LeftRight, 360});
   };
 }
 

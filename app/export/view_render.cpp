@@ -19,6 +19,7 @@
 #include "effects/stack_interpolator.h"
 #include "effects/view_camera.h"
 #include "io/excerpt.h"
+#include "io/eye_picture.h"
 #include "io/frame_decoder.h"
 #include "io/image_write.h"
 #include "io/input_error.h"
@@ -35,8 +36,8 @@
 
 namespace vdfx::app {
 
-cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame,
-                            io::VideoProperties* properties) {
+io::Picture load_equirect_picture(const std::filesystem::path& input, std::int64_t frame,
+                                  io::VideoProperties* properties) {
   io::DecoderOptions options;
   options.format = io::PixelFormat::RgbF32;
   auto decoder = io::open_frame_decoder(input, options);
@@ -52,12 +53,16 @@ cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t fra
     throw io::InputError(input.string() + ": cannot seek to frame " + std::to_string(frame) + ": " +
                          e.what());
   }
-  cv::Mat image;
-  if (decoder->read(image) != io::DecodeStatus::Ok || image.empty())
+  io::Picture picture;
+  if (decoder->read_picture(picture) != io::DecodeStatus::Ok || picture.empty())
     throw io::InputError(input.string() + ": frame " + std::to_string(frame) +
                          " could not be decoded");
-  if (image.type() != CV_32FC3) image.convertTo(image, CV_32FC3, 1.0 / 255.0);
-  return image;
+  return picture;
+}
+
+cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame,
+                            const effects::StereoLayout& layout) {
+  return io::to_rgb_by_eye(load_equirect_picture(input, frame), layout, io::PixelFormat::RgbF32);
 }
 
 xr::DistortionSettings parse_distortion(const std::string& text) {
@@ -165,7 +170,8 @@ std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input
   if (flares.uses_auto_light()) {
     for (std::int64_t f = std::max<std::int64_t>(0, frame - flares.auto_light_window()); f < frame;
          ++f)
-      flares.observe(f, effects::eye_image(load_equirect_frame(input, f), eye.layout, eye.index));
+      flares.observe(
+          f, effects::eye_image(load_equirect_frame(input, f, eye.layout), eye.layout, eye.index));
     flares.observe(frame, equirect);
   }
   return flares.layouts(head, frame);
@@ -353,8 +359,10 @@ EyeImage eye_image_of(const io::VideoProperties& video, const io::Sidecar& sidec
 cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,
                        const RenderRequest& r) {
   io::VideoProperties video;
-  const cv::Mat frame = load_equirect_frame(input, r.frame, &video);
+  const io::Picture picture = load_equirect_picture(input, r.frame, &video);
   const EyeImage eye = eye_image_of(video, sidecar, r);
+  // Each eye's image converted from its own planes (no chroma from the other eye's half).
+  const cv::Mat frame = io::to_rgb_by_eye(picture, eye.layout, io::PixelFormat::RgbF32);
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
   ViewScene scene =
       view_scene(input, sidecar, stack, r, effects::eye_image(frame, eye.layout, eye.index), eye);

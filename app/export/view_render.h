@@ -11,6 +11,7 @@
 
 #include "effects/lens_model.h"
 #include "effects/view_renderer.h"
+#include "io/picture.h"
 #include "io/sidecar.h"
 #include "io/video_layout.h"
 #include "xr/blur_method.h"
@@ -45,10 +46,15 @@ struct RenderRequest {
 /// style: object_cloud, free_cloud), which `vdfx render` draws only with --gpu.
 std::optional<std::size_t> first_gpu_only_grain(const io::Sidecar& sidecar);
 
-/// Frame `frame` of a video or still as RGB float, display-encoded. Throws io::InputError naming
-/// the file when it is missing, unreadable, or has no such frame.
+/// Frame `frame` of a video or still as the decoder hands it over (Y'CbCr planes or RGB).
+/// Throws io::InputError naming the file when it is missing, unreadable, or has no such frame.
+io::Picture load_equirect_picture(const std::filesystem::path& input, std::int64_t frame,
+                                  io::VideoProperties* properties = nullptr);
+
+/// Frame `frame` of a video or still as RGB float, display-encoded, each eye of `layout`
+/// converted from its own planes (io::to_rgb_by_eye). Throws as above.
 cv::Mat load_equirect_frame(const std::filesystem::path& input, std::int64_t frame,
-                            io::VideoProperties* properties = nullptr);
+                            const effects::StereoLayout& layout);
 
 /// Renders the request; returns 8-bit RGB. Throws io::InputError for bad input.
 cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& sidecar,

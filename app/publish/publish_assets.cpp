@@ -13,6 +13,7 @@
 #include "effects/effect_shaders.h"
 #include "effects/glsl_common.h"
 #include "effects/grain.h"
+#include "effects/stereo_layout.h"
 #include "effects/video_shaders.h"
 #include "io/input_error.h"
 #include "io/ycbcr.h"
@@ -85,6 +86,20 @@ nlohmann::ordered_json ycbcr_json(const io::YcbcrInfo& y) {
   return j;
 }
 
+/// The stereo layout as the page reads it: the layout's and the coverage's names as the sidecar
+/// writes them, the width of a VR180 image's fade, and each eye's rectangle of the frame
+/// (effects::eye_rect; mono: the whole frame for both), so the page never splits a frame itself.
+void add_layout_json(nlohmann::ordered_json& video, const PublishedVideo& v) {
+  video["layout"] = std::string(effects::stereo_mode_name(v.layout.mode));
+  video["coverage"] = v.layout.coverage_deg;
+  video["coverage_edge_deg"] = effects::kCoverageEdgeDeg;
+  for (const effects::EyeIndex eye : {effects::EyeIndex::Left, effects::EyeIndex::Right}) {
+    const effects::PixelRect r = effects::eye_rect(v.layout, eye, v.width, v.height);
+    video["eyes"][std::string(effects::eye_index_name(eye))] = {
+        {"x", r.x}, {"y", r.y}, {"width", r.width}, {"height", r.height}};
+  }
+}
+
 }  // namespace
 
 PageAssets find_page_assets() {
@@ -110,6 +125,7 @@ PageSettings page_settings(const PublishRequest& r, const io::Sidecar& sidecar,
   m["video"] = {{"file", video.file},     {"codec", codec},       {"fps", video.fps},
                 {"frames", video.frames}, {"width", video.width}, {"height", video.height}};
   if (video.ycbcr) m["video"]["ycbcr"] = ycbcr_json(*video.ycbcr);
+  add_layout_json(m["video"], video);
   m["sidecar"] = r.sidecar.filename().string();
   m["stack_mask"] = keyed_mask(sidecar);
   m["left_out"] = left_out_of(sidecar);

@@ -1,12 +1,14 @@
 /// @file
-/// @brief `vdfx publish VIDEO --sidecar F --out DIR [--title T] [--transcode h264|vp9]`: a
-/// static web page that plays the video with the sidecar's view-dependent effects
-/// (docs/publish.md). The command parses; app/publish/publish_request.h does the work.
+/// @brief `vdfx publish VIDEO --sidecar F --out DIR [--title T] [--transcode h264|vp9]
+/// [--layout L] [--coverage C]`: a static web page that plays the video (mono, stereo or VR180)
+/// with the sidecar's view-dependent effects (docs/publish.md). The command parses;
+/// app/publish/publish_request.h does the work.
 #include <iostream>
 #include <string>
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/cli/layout_options.h"
 #include "app/publish/publish_request.h"
 
 namespace vdfx::app {
@@ -25,6 +27,7 @@ void add_publish_options(CLI::App& cli, PublishRequest& r, PublishTexts& t) {
   cli.add_option("--transcode", t.transcode,
                  "re-encode the video (no effects) for browsers: h264 or vp9")
       ->check(CLI::IsMember({"h264", "vp9"}));
+  add_layout_options(cli, r.layout);
 }
 
 PublishRequest publish_request(PublishRequest r, const PublishTexts& t) {
@@ -50,10 +53,14 @@ int cmd_publish(const Args& args) {
   add_publish_options(cli, options, texts);
   if (auto code = parse_cli(cli, args)) return *code;
   const PublishResult r = run_publish(publish_request(options, texts));
+  if (!r.hint.empty()) std::cerr << "vdfx: hint: " << texts.video << ": " << r.hint << "\n";
   for (const std::string& e : r.left_out)
     std::cerr << "vdfx publish: note: the page does not draw " << e << " yet\n";
   std::cout << r.out.string() << ": " << r.files.size() << " files, video "
-            << (r.transcoded ? "transcoded to " : "") << r.video_codec << "\n";
+            << (r.transcoded ? "transcoded to " : "") << r.video_codec;
+  if (r.layout.stereo() || r.layout.coverage_deg != 360)
+    std::cout << ", " << effects::stereo_mode_name(r.layout.mode) << " " << r.layout.coverage_deg;
+  std::cout << "\n";
   return kExitOk;
 }
 

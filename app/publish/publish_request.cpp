@@ -94,21 +94,6 @@ std::string checked_codec(const PublishRequest& r, const io::VideoProperties& pr
   return codec;
 }
 
-/// The page draws mono 360 only (docs/publish.md): a stereo or VR180 video, by its tags or its
-/// sidecar's `video` section, is refused rather than shown squeezed or stretched.
-void check_mono_360(const PublishRequest& r, const io::VideoProperties& props,
-                    const io::Sidecar& sidecar) {
-  const effects::StereoLayout layout =
-      io::resolve_video_layout(props, {}, &sidecar.video, r.sidecar);
-  if (layout.stereo() || layout.coverage_deg != 360)
-    throw io::InputError(r.video.string() + ": " +
-                         (layout.stereo() ? std::string("a stereo video") : "a VR180 video") +
-                         " (layout " + std::string(effects::stereo_mode_name(layout.mode)) +
-                         ", coverage " + std::to_string(layout.coverage_deg) +
-                         "): the web page draws mono 360 only so far; export a baked "
-                         "or a mono version to share it");
-}
-
 /// Removes `.NAME.publish-PID` folders in `parent` whose process no longer exists (a publish
 /// that was killed or interrupted); a live publish's folder is never touched.
 void remove_stale_staging(const fs::path& parent, const std::string& name) {
@@ -183,12 +168,14 @@ PublishResult run_publish(const PublishRequest& r) {
   const io::Sidecar sidecar = checked_sidecar(r.sidecar);
   const io::VideoProperties props = io::open_frame_decoder(r.video, {})->properties();
   const std::string source_codec = checked_codec(r, props);
-  check_mono_360(r, props, sidecar);
+  PublishResult result;
+  result.layout =
+      io::resolve_video_layout(props, r.layout, &sidecar.video, r.sidecar, &result.hint);
   const PageAssets assets = find_page_assets();
   StagedFolder staged(r.out);
-  PublishResult result;
   result.out = r.out;
-  const PublishedVideo video = publish_video(r, sidecar, staged.path());
+  PublishedVideo video = publish_video(r, sidecar, staged.path());
+  video.layout = result.layout;
   result.video_codec = r.transcode == Transcode::None ? source_codec : video.codec;
   result.transcoded = r.transcode != Transcode::None;
   copy_file_checked(r.sidecar, staged.path() / r.sidecar.filename());

@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "effects/stereo_layout.h"
+#include "io/video_layout.h"
+
 namespace vdfx::app {
 
 /// What `--transcode` re-encodes a video into when browsers cannot play its codec.
@@ -19,6 +22,7 @@ struct PublishRequest {
   std::filesystem::path out;      //!< the folder to write (replaced whole when it exists)
   std::string title;              //!< the page's title; empty: the video's file name
   Transcode transcode = Transcode::None;
+  io::LayoutOverride layout;  //!< --layout / --coverage (docs/stereo.md)
 };
 
 struct PublishResult {
@@ -27,6 +31,8 @@ struct PublishResult {
   std::string video_codec;            //!< the published video's codec ("h264", "vp9")
   bool transcoded = false;            //!< the video was re-encoded
   std::vector<std::string> left_out;  //!< effects of the sidecar the page does not draw
+  effects::StereoLayout layout;       //!< what the page shows (player.json's video.layout)
+  std::string hint;  //!< a hint for an untagged frame shaped like stereo shown as mono
 };
 
 /// The codecs every WebGL2 browser plays in the containers publish accepts (docs/publish.md).
@@ -34,9 +40,11 @@ bool browser_plays(const std::string& codec);
 
 /// Checks the inputs before anything is written (io::InputError, exit 1: a sidecar that fails
 /// validation with validate's own message, a video in a codec browsers do not play without
-/// --transcode, naming the codec and the option; an OUT that is an input, a file, or a folder
-/// vdfx publish did not write), then builds the folder in a temporary sibling and puts it in
-/// place with one atomic exchange: OUT holds the old folder or the new one, never a mix.
+/// --transcode, naming the codec and the option; a stereo layout that does not divide the frame
+/// or that contradicts the stream's tags, as io::resolve_video_layout reports it; an OUT that
+/// is an input, a file, or a folder vdfx publish did not write), then builds the folder in a
+/// temporary sibling and puts it in place with one atomic exchange: OUT holds the old folder or the
+/// new one, never a mix.
 PublishResult run_publish(const PublishRequest& request);
 
 }  // namespace vdfx::app

@@ -25,6 +25,7 @@ void transcode(const PublishRequest& r, const io::Sidecar& sidecar, const fs::pa
   e.video = r.video;
   e.sidecar = no_effects;
   e.baked_out = out;
+  e.layout = r.layout;  // the baked export keeps a stereo layout and tags it (docs/export.md)
   if (r.transcode == Transcode::Vp9) {
     // Constant quality (b = 0 makes crf the only target); "good" at cpu-used 4 with row
     // threading: a few times faster than the default at a small cost in size.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/publish/publish_request.h"
+#include "effects/stereo_layout.h"
 #include "io/picture.h"
 #include "io/sidecar.h"
 
@@ -23,6 +24,9 @@ struct PublishedVideo {
   /// How its first frame's Y'CbCr code values are read (the stream's tags, io/ycbcr.h); none
   /// for an RGB codec.
   std::optional<io::YcbcrInfo> ycbcr;
+  /// How the frame holds the eyes and how much of the sphere they cover (run_publish sets it
+  /// from io::resolve_video_layout).
+  effects::StereoLayout layout;
 };
 
 /// Copies `request.video` into `dir` under its own name, or with a transcode writes

@@ -4,8 +4,10 @@
 /// real browser (tests/publish/page_test.cjs).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <set>
 
 #include "export_test_util.h"
@@ -50,6 +52,12 @@ std::string publish_args(const Fixture& f, const fs::path& out, const std::strin
          out.string() + " " + extra;
 }
 
+/// player.json's video.eyes.<eye> as {x, y, width, height}.
+std::array<int, 4> eye_rect_of(const nlohmann::json& manifest, const char* eye) {
+  const nlohmann::json& r = manifest["video"]["eyes"][eye];
+  return {r["x"].get<int>(), r["y"].get<int>(), r["width"].get<int>(), r["height"].get<int>()};
+}
+
 TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
   if (!module_built()) GTEST_SKIP() << kNoModule;
   const Fixture f = make_fixture();
@@ -83,6 +91,10 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
   EXPECT_EQ(manifest["video"]["file"], "clip.mp4");
   EXPECT_EQ(manifest["video"]["codec"], "h264");
   EXPECT_EQ(manifest["video"]["frames"], kFrames);
+  EXPECT_EQ(manifest["video"]["layout"], "mono");
+  EXPECT_EQ(manifest["video"]["coverage"], 360);
+  EXPECT_EQ(eye_rect_of(manifest, "left"), (std::array<int, 4>{0, 0, kW, kH}));
+  EXPECT_EQ(eye_rect_of(manifest, "right"), (std::array<int, 4>{0, 0, kW, kH}));
   // Blur (bit 0), exposure (2) and saturation (3) have keyframes.
   EXPECT_EQ(manifest["stack_mask"], 1 + 4 + 8);
   // GLSL ES 3.00 with highp, the effects of the sidecar compiled in.
@@ -112,9 +124,10 @@ TEST(Publish, NamesTheGrainAndFlaresThePageDoesNotDraw) {
   EXPECT_EQ(manifest["stack_mask"], 0);
 }
 
-// The page draws mono 360 only: a video the sidecar says is stereo VR180 is refused, not shown
-// squeezed.
-TEST(Publish, AStereoOrVr180VideoIsRefusedNamingItsLayout) {
+// The page shows every layout vdfx reads (docs/stereo.md): the sidecar's record of a VR180
+// side-by-side video reaches player.json with each eye's rectangle; nothing is refused.
+TEST(Publish, AStereoVr180VideoIsPublishedWithItsLayoutInTheManifest) {
+  if (!module_built()) GTEST_SKIP() << kNoModule;
   const Fixture f = make_fixture();
   write_text(f.sidecar, R"({"format": "vdfx.sidecar", "version": 1,
     "video": {"path": "clip.mp4", "fps": 24.0, "frames": 12, "width": 128, "height": 64,
@@ -122,13 +135,43 @@ TEST(Publish, AStereoOrVr180VideoIsRefusedNamingItsLayout) {
     "interpolation": {"exponent": 1.0, "time_scale": 1.0}, "effects": []})");
   const fs::path out = f.dir / "site";
   const CommandResult r = run_vdfx_headless(publish_args(f, out));
-  EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("a stereo video (layout left-right, coverage 180): the web page draws "
-                          "mono 360 only"),
-            std::string::npos)
-      << r.output;
-  EXPECT_FALSE(fs::exists(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("video h264, left-right 180"), std::string::npos) << r.output;
+  const auto m = nlohmann::json::parse(slurp(out / "player.json"));
+  EXPECT_EQ(m["video"]["layout"], "left-right");
+  EXPECT_EQ(m["video"]["coverage"], 180);
+  EXPECT_EQ(m["video"]["coverage_edge_deg"], 2.0);
+  EXPECT_EQ(eye_rect_of(m, "left"), (std::array<int, 4>{0, 0, 64, 64}));
+  EXPECT_EQ(eye_rect_of(m, "right"), (std::array<int, 4>{64, 0, 64, 64}));
   EXPECT_TRUE(leftovers(out).empty());
+}
+
+// --layout and --coverage override the stream's tags and the sidecar, as on every command that
+// reads a video; a layout that does not split the frame is exit 1 naming the video and the
+// option, and nothing is written.
+TEST(Publish, LayoutOptionsReachTheManifestAndABadSplitIsRefused) {
+  if (!module_built()) GTEST_SKIP() << kNoModule;
+  const Fixture f = make_fixture();
+  const fs::path out = f.dir / "site";
+  CommandResult r = run_vdfx_headless(publish_args(f, out, "--layout right-left --coverage 360"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto m = nlohmann::json::parse(slurp(out / "player.json"));
+  EXPECT_EQ(m["video"]["layout"], "right-left");
+  EXPECT_EQ(m["video"]["coverage"], 360);
+  EXPECT_EQ(eye_rect_of(m, "left"), (std::array<int, 4>{64, 0, 64, 64}));
+  EXPECT_EQ(eye_rect_of(m, "right"), (std::array<int, 4>{0, 0, 64, 64}));
+
+  // A still of odd height (H.264 has no odd 4:2:0 frames) split top-bottom.
+  Fixture odd = f;
+  odd.clip = f.dir / "odd.png";
+  ASSERT_TRUE(cv::imwrite(odd.clip.string(), cv::Mat(65, 128, CV_8UC3, cv::Scalar(90, 120, 150))));
+  const fs::path out2 = f.dir / "site2";
+  r = run_vdfx_headless(publish_args(odd, out2, "--layout top-bottom --transcode h264"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("--layout: top-bottom needs an even frame height"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(out2));
+  EXPECT_EQ(run_vdfx_headless(publish_args(f, out, "--layout stacked")).exit_code, 2);
 }
 
 TEST(Publish, ABrokenSidecarIsExit1WithValidatesOwnMessageAndWritesNothing) {
@@ -174,13 +217,18 @@ TEST(Publish, ACodecBrowsersDoNotPlayIsRefusedNamingItAndTheOptionThenTranscoded
   EXPECT_NE(r.output.find("--transcode h264"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
 
-  const CommandResult t = run_vdfx_headless(publish_args(f, out, "--transcode h264"));
+  // A stereo layout given on the command line stays stereo through the transcode (the baked
+  // export tags it st3d), so the published video says what player.json says.
+  const CommandResult t =
+      run_vdfx_headless(publish_args(f, out, "--transcode h264 --layout top-bottom"));
   ASSERT_EQ(t.exit_code, 0) << t.output;
   const auto manifest = nlohmann::json::parse(slurp(out / "player.json"));
   EXPECT_EQ(manifest["video"]["codec"], "h264");
   EXPECT_EQ(manifest["video"]["frames"], 6);
+  EXPECT_EQ(manifest["video"]["layout"], "top-bottom");
   auto decoder = io::open_frame_decoder(out / "clip.mp4", {});
   EXPECT_EQ(decoder->properties().codec, "h264");
+  EXPECT_EQ(decoder->properties().stereo_tags.mode, effects::StereoMode::TopBottom);
   EXPECT_TRUE(leftovers(out).empty());
 }
 

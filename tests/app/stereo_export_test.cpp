@@ -17,6 +17,7 @@
 
 #include "command_test_util.h"
 #include "export_test_util.h"
+#include "io/eye_picture.h"
 #include "io/frame_decoder.h"
 #include "tests/media_clips.h"
 
@@ -113,6 +114,34 @@ TEST(StereoExport, BakedTopBottomKeepsItsLayoutAndNeverBlursAcrossTheHalves) {
   cv::minMaxLoc(ch[0].rowRange(64, 128), nullptr, &bottom_red);
   EXPECT_LE(top_blue, 2.0);
   EXPECT_LE(bottom_red, 2.0);
+}
+
+// At 4:2:0 each eye is decoded from its own planes and encoded from its own half: no chroma
+// sample next to the boundary mixes red and blue (lossless, so only the conversions could).
+TEST(StereoExport, A420BakedSideBySideMixesNoChromaAcrossTheHalves) {
+  const fs::path dir = test_dir();
+  const cv::Mat red(64, 64, CV_8UC3, cv::Scalar(230, 0, 0)),
+      blue(64, 64, CV_8UC3, cv::Scalar(0, 0, 230));
+  const fs::path clip = stereo_clip(dir / "lr.mp4", "left-right", red, blue, true);
+  write_text(dir / "s.vdfx.json", sidecar_json(128, 64, ""));  // no effects: uniform halves
+  const fs::path out = dir / "baked.mp4";
+  const testing::CommandResult r =
+      run_vdfx("export " + clip.string() + " --sidecar " + (dir / "s.vdfx.json").string() +
+               " --baked " + out.string() + " --crf 0 --chroma 420 --preset ultrafast");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto d = io::open_frame_decoder(out);
+  io::Picture pic;
+  ASSERT_EQ(d->read_picture(pic), io::DecodeStatus::Ok);
+  const cv::Mat frame =
+      io::to_rgb_by_eye(pic, {effects::StereoMode::LeftRight, 360}, io::PixelFormat::Rgb8);
+  // Each half one colour (red and blue as encoded): the columns at the boundary as the rest.
+  for (const int x0 : {0, 64}) {
+    const cv::Mat half = frame.colRange(x0, x0 + 64);
+    const cv::Mat first(half.size(), half.type(), cv::Scalar(half.at<cv::Vec3b>(0, 0)));
+    EXPECT_EQ(cv::norm(half, first, cv::NORM_INF), 0.0) << "half at column " << x0;
+  }
+  EXPECT_GT(frame.at<cv::Vec3b>(0, 0)[0], 200);
+  EXPECT_GT(frame.at<cv::Vec3b>(0, 64)[2], 200);
 }
 
 TEST(StereoExport, EachBakedHalfIsItsEyeBakedAlone) {

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "command_test_util.h"
+#include "io/eye_picture.h"
 #include "io/frame_decoder.h"
 #include "tests/media_clips.h"
 
@@ -130,19 +131,21 @@ double max_diff(const cv::Mat& a, const cv::Mat& b) {
   return testing::max_abs_diff(a, b);
 }
 
-/// The decoded frame 0 of `path` (RGB 8-bit), as vdfx decodes it.
-cv::Mat decoded(const fs::path& path) {
+/// The decoded frame 0 of `path` (RGB 8-bit), as vdfx decodes it: each eye's image converted
+/// from its own planes (io::to_rgb_by_eye), so no eye's chroma is interpolated with the other's.
+cv::Mat decoded(const fs::path& path, const std::string& layout, int coverage) {
   auto d = io::open_frame_decoder(path);
-  cv::Mat rgb;
-  EXPECT_EQ(d->read(rgb), io::DecodeStatus::Ok);
-  return rgb;
+  io::Picture picture;
+  EXPECT_EQ(d->read_picture(picture), io::DecodeStatus::Ok);
+  const effects::StereoLayout l{*effects::stereo_mode_from_name(layout), coverage};
+  return io::to_rgb_by_eye(picture, l, io::PixelFormat::Rgb8);
 }
 
 /// Each eye of `input` (shown with `args`) against the pinhole of its own half, at views that
 /// cross the seam and look near a pole.
 void expect_eyes_match(const fs::path& dir, const fs::path& input, const std::string& layout,
                        const std::string& args, int coverage = 360) {
-  const cv::Mat frame = decoded(input);
+  const cv::Mat frame = decoded(input, layout, coverage);
   const fs::path sidecar = dir / "empty.vdfx.json";
   write_text(sidecar, sidecar_json(frame.cols, frame.rows));
   for (int eye = 0; eye < 2; ++eye) {

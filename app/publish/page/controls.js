@@ -1,6 +1,7 @@
 // Desktop and phone controls of the player page: drag to look, wheel to zoom the field of
-// view, keys (space play/pause, arrows seek 5 s, comma/period one frame), the bar's buttons
-// (play, sound, the seek slider), and device orientation on phones.
+// view, keys (space play/pause, arrows seek 5 s, comma/period one frame, 5 the other eye of a
+// stereo video, as in vdfx play), the bar's buttons (play, sound, the seek slider, the eye), and
+// device orientation on phones.
 const clamp = (x, lo, hi) => Math.min(hi, Math.max(lo, x));
 const wrapAz = (az) => ((((az + 180) % 360) + 360) % 360) - 180;
 
@@ -54,7 +55,7 @@ function attachKeys(player) {
     const actions = {
       ' ': () => togglePlay(player), ArrowLeft: () => seekBy(player, -5),
       ArrowRight: () => seekBy(player, 5), ',': () => seekBy(player, -step),
-      '.': () => seekBy(player, step),
+      '.': () => seekBy(player, step), 5: () => player.switchEye(),
     };
     if (!actions[e.key]) return;
     e.preventDefault();
@@ -78,6 +79,10 @@ function attachBar(player) {
     time.textContent = `${formatTime(v.currentTime)} / ${formatTime(v.duration || 0)}`;
   });
   seek.addEventListener('input', () => { v.currentTime = seek.value * (v.duration || 0); });
+  const eye = document.getElementById('eye');
+  eye.hidden = !player.stereo();
+  eye.textContent = `${player.eye === 'left' ? 'Left' : 'Right'} eye`;
+  eye.addEventListener('click', () => player.switchEye());
 }
 
 // Phones: the device's orientation steers the view once it reports one (absolute yaw is

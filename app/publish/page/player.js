@@ -6,7 +6,8 @@
 // canvas is exactly W x H CSS pixels at device pixel ratio 1, nothing drawn over it; with
 // frame= or paused=1 the page shows that one frame paused and sets document.title to
 // "vdfx-ready" once it is drawn; xr=1 draws that frame in an immersive session entered at once
-// (for a test's injected XRSystem). Any error sets document.title to "vdfx-error: MESSAGE".
+// (for a test's injected XRSystem); eye=left|right picks the eye a stereo video shows on the
+// canvas (default left; key 5 switches). Any error sets document.title to "vdfx-error: MESSAGE".
 import { Renderer } from './renderer.js';
 import { attachControls } from './controls.js';
 import { enterVr, startXr } from './xr.js';
@@ -39,7 +40,11 @@ export function parseHooks(search) {
   if (frame && !(Number.isInteger(frame[0]) && frame[0] >= 0))
     throw new Error(`the URL's frame=${q.get('frame')} must be a frame index`);
   if (fov && !(fov[0] >= 1 && fov[0] <= 179)) throw new Error('the URL\'s fov= must be in 1..179');
+  const eye = q.get('eye');
+  if (eye !== null && eye !== 'left' && eye !== 'right')
+    throw new Error(`the URL's eye=${eye} is not left or right`);
   return {
+    eye: eye ?? 'left',
     view: view ? { az: view[0], alt: view[1] } : null, fov: fov ? fov[0] : null,
     frame: frame ? frame[0] : null, size, paused: q.get('paused') === '1', xr: q.get('xr') === '1',
   };
@@ -133,11 +138,26 @@ class Player {
     this.video.loop = true;
     this.view = { az: hooks.view?.az ?? 0, alt: hooks.view?.alt ?? 0, fov: hooks.fov ?? 90 };
     this.frame = hooks.frame ?? 0;
-    this.stats = { evalMs: [], drawMs: [], uploadMs: [], conversion: null, view: this.view };
+    // The eye a stereo video shows on the canvas (a headset draws each eye its own).
+    this.eye = hooks.eye;
+    renderer.setLayout(config.video);
+    this.stats = { evalMs: [], drawMs: [], uploadMs: [], conversion: null, view: this.view,
+                   eye: this.eye };
     window.vdfxStats = this.stats;
   }
 
   fps() { return this.config.video.fps; }
+
+  stereo() { return (this.config.video.layout ?? 'mono') !== 'mono'; }
+
+  // Key 5 and the bar's eye button: the other eye on the canvas (stereo video only).
+  switchEye() {
+    if (!this.stereo()) return;
+    this.eye = this.eye === 'left' ? 'right' : 'left';
+    this.stats.eye = this.eye;
+    this.dirty = true;
+    $('eye').textContent = `${this.eye === 'left' ? 'Left' : 'Right'} eye`;
+  }
 
   // Canvas size in device pixels (exactly the hook's W x H at device pixel ratio 1).
   resize() {
@@ -157,7 +177,7 @@ class Player {
     const p = this.module.eval(this.view.az, this.view.alt, this.frame);
     const t1 = performance.now();
     if (!p) return;
-    this.renderer.draw(this.view, this.canvas.width, this.canvas.height, p);
+    this.renderer.draw({ ...this.view, eye: this.eye }, this.canvas.width, this.canvas.height, p);
     const t2 = performance.now();
     this.#record(this.stats.evalMs, t1 - t0);
     this.#record(this.stats.drawMs, t2 - t1);
@@ -180,9 +200,8 @@ class Player {
       try {
         frame = new VideoFrame(this.video);
         const planes = await decodedPlanes(frame);
-        if (planes) {
-          const r = frame.visibleRect;
-          this.renderer.uploadPlanes(planes, r.width, r.height, info);
+        const r = frame.visibleRect;
+        if (planes && this.renderer.uploadPlanes(planes, r.width, r.height, info)) {
           this.stats.conversion = 'vdfx';
           return;
         }

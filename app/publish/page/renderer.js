@@ -1,9 +1,11 @@
 // The page's WebGL2 renderer: the passes of vdfx's GL compositor for one view, compiled from the
 // same GLSL (shaders/, written by `vdfx publish` from effects/' sources with the GLSL ES 3.00
 // prelude). Per frame:
-//   1. video layer: each pixel's ray into the equirect frame (shaders/video.frag), into a float
-//      target larger than the view by the blur's margin, so the blur sees real image beyond
-//      the border (effects/view_renderer.h);
+//   1. video layer: each pixel's ray into the eye's equirect image (shaders/video.frag), into a
+//      float target larger than the view by the blur's margin, so the blur sees real image
+//      beyond the border (effects/view_renderer.h). A stereo frame is uploaded as two images,
+//      one per eye with its own mipmaps, as xr/video_layer_gl.cpp does, so no sample, mip level
+//      or blur tap reads the other eye's half; VR180 is black outside its coverage;
 //   2. with a blur: the horizontal Gaussian (shaders/blur_1d.frag);
 //   3. the stack (shaders/stack*.frag): the vertical Gaussian fused in, tint, exposure,
 //      saturation, contrast, vignette, into the canvas.
@@ -122,9 +124,13 @@ export class Renderer {
     this.stack = program(gl, shaders.vert, shaders.stack, 'stack.frag');
     this.stackBlur = program(gl, shaders.vert, shaders.stackBlur, 'stack_blur.frag');
     this.vao = gl.createVertexArray();
-    this.frameTex = this.#videoTexture();
-    this.planeTex = [this.#videoTexture(), this.#videoTexture(), this.#videoTexture()];
-    this.ycbcr = null; // set by uploadPlanes: the frame is three planes converted per sample
+    this.frameTex = this.#videoTexture(); // the browser-converted frame (mono: the eye's image)
+    // What each eye samples (mono: eyes[0] only): its image as an RGB texture, or three planes
+    // converted per sample (ycbcr set by uploadPlanes).
+    this.eyes = [0, 1].map(() => ({
+      rgb: this.#videoTexture(), ycbcr: null,
+      planes: [this.#videoTexture(), this.#videoTexture(), this.#videoTexture()] }));
+    this.setLayout({});
     this.taps = [this.#tapTexture(), this.#tapTexture()];
     this.targets = null;
   }
@@ -140,6 +146,23 @@ export class Renderer {
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
     return tex;
+  }
+
+  // player.json's video: layout, coverage, coverage_edge_deg, each eye's rectangle of the frame
+  // (written by publish from effects/stereo_layout.h) and the frame's height. Absent: mono 360.
+  setLayout(video) {
+    const stereo = (video.layout ?? 'mono') !== 'mono';
+    this.layout = { stereo, coverage: video.coverage ?? 360, edge: video.coverage_edge_deg ?? 2,
+                    rects: stereo ? [video.eyes.left, video.eyes.right] : null,
+                    height: video.height };
+  }
+
+  // Columns wrap at a 360 image's seam and clamp at a VR180 image's edges (as the GL path).
+  #setWrap(tex) {
+    const gl = this.gl;
+    gl.bindTexture(gl.TEXTURE_2D, tex);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S,
+                     this.layout.coverage === 360 ? gl.REPEAT : gl.CLAMP_TO_EDGE);
   }
 
   #tapTexture() {
@@ -160,37 +183,71 @@ export class Renderer {
     gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, true);
     gl.pixelStorei(gl.UNPACK_COLORSPACE_CONVERSION_WEBGL, gl.NONE);
     gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, source);
-    gl.generateMipmap(gl.TEXTURE_2D);
     gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
-    this.ycbcr = null;
+    for (const e of this.eyes) e.ycbcr = null;
+    if (!this.layout.stereo) {
+      this.#setWrap(this.frameTex);
+      gl.generateMipmap(gl.TEXTURE_2D);
+      return;
+    }
+    // Each eye's half copied into its own texture (rows bottom first, as uploaded).
+    this.readFb ??= gl.createFramebuffer();
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.readFb);
+    gl.framebufferTexture2D(gl.READ_FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D,
+                            this.frameTex, 0);
+    for (const [i, r] of this.layout.rects.entries()) {
+      this.#setWrap(this.eyes[i].rgb);
+      gl.copyTexImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, r.x, this.layout.height - r.y - r.height,
+                        r.width, r.height, 0);
+      gl.generateMipmap(gl.TEXTURE_2D);
+    }
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
   }
 
   // A decoded 8-bit frame as its three planes (each { data, stride }, rows top first),
   // converted per sample by the video layer as the GL path converts (u_ycbcr = 1; `info` is
-  // player.json's video.ycbcr, written by publish from io/ycbcr.h). Chroma (u, v) from luma
-  // (u, v) as xr/video_layer_gl.cpp maps it (set_frame).
+  // player.json's video.ycbcr, written by publish from io/ycbcr.h). A stereo frame's planes are
+  // cut at each eye's rectangle, the chroma planes at the subsampled rectangle
+  // (io/eye_picture.h, cut_picture). False, uploading nothing, when a half does not fall
+  // on the chroma grid (an odd half height in 4:2:0): the caller lets the browser convert.
   uploadPlanes(planes, width, height, info) {
+    const [sx, sy] = info.log2_chroma;
+    const rects = this.layout.rects ?? [{ x: 0, y: 0, width, height }];
+    const mx = (1 << sx) - 1, my = (1 << sy) - 1;
+    const off = (r) => ((r.x | r.width) & mx) !== 0 || ((r.y | r.height) & my) !== 0;
+    if (this.layout.stereo && rects.some(off)) return false;
+    for (const [i, r] of rects.entries()) this.#uploadEyePlanes(this.eyes[i], planes, r, info);
+    return true;
+  }
+
+  #uploadEyePlanes(eye, planes, r, info) {
     const gl = this.gl;
-    const cw = Math.ceil(width / 2 ** info.log2_chroma[0]);
-    const ch = Math.ceil(height / 2 ** info.log2_chroma[1]);
-    const sizes = [[width, height], [cw, ch], [cw, ch]];
+    const [sx, sy] = info.log2_chroma;
+    const cw = Math.ceil(r.width / 2 ** sx), ch = Math.ceil(r.height / 2 ** sy);
+    const sizes = [[r.width, r.height], [cw, ch], [cw, ch]];
+    const corners = [[r.x, r.y], [r.x >> sx, r.y >> sy], [r.x >> sx, r.y >> sy]];
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
     for (let i = 0; i < 3; ++i) {
-      gl.bindTexture(gl.TEXTURE_2D, this.planeTex[i]);
+      this.#setWrap(eye.planes[i]);
       gl.pixelStorei(gl.UNPACK_ROW_LENGTH, planes[i].stride);
+      gl.pixelStorei(gl.UNPACK_SKIP_PIXELS, corners[i][0]);
+      gl.pixelStorei(gl.UNPACK_SKIP_ROWS, corners[i][1]);
       gl.texImage2D(gl.TEXTURE_2D, 0, gl.R8, sizes[i][0], sizes[i][1], 0, gl.RED,
                     gl.UNSIGNED_BYTE, planes[i].data);
       gl.generateMipmap(gl.TEXTURE_2D);
     }
+    gl.pixelStorei(gl.UNPACK_SKIP_PIXELS, 0);
+    gl.pixelStorei(gl.UNPACK_SKIP_ROWS, 0);
     gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 0);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+    // Luma (u, v) -> chroma (u, v) of this eye's planes, as xr/video_layer_gl.cpp maps it.
     const scale = [], offset = [];
     for (let a = 0; a < 2; ++a) {
       const step = 2 ** info.log2_chroma[a], chroma = sizes[1][a];
       scale.push(sizes[0][a] / (step * chroma));
       offset.push((0.5 - (0.5 + info.chroma_siting[a]) / step) / chroma);
     }
-    this.ycbcr = { m: info.m, offset: info.offset, scale, chromaOffset: offset };
+    eye.ycbcr = { m: info.m, offset: info.offset, scale, chromaOffset: offset };
   }
 
   #targetsFor(width, height, margin) {
@@ -216,33 +273,34 @@ export class Renderer {
     gl.activeTexture(gl.TEXTURE0);
   }
 
-  // The video layer into `dst` (the view widened by `margin` pixels on every side).
-  #videoPass(dst, rot, tan, width, height, margin) {
+  // The video layer into `dst` (the view widened by `margin` pixels on every side), sampling
+  // `eye`'s image ('left' or 'right'; mono: the one image).
+  #videoPass(dst, rot, tan, width, height, margin, eye) {
     const gl = this.gl, v = this.video;
     const dx = (margin * (tan[1] - tan[0])) / width, dy = (margin * (tan[3] - tan[2])) / height;
     gl.bindFramebuffer(gl.FRAMEBUFFER, dst.fb);
     gl.viewport(0, 0, dst.width, dst.height);
     gl.useProgram(v.p);
+    const e = this.eyes[this.layout.stereo && eye === 'right' ? 1 : 0];
     gl.activeTexture(gl.TEXTURE0);
-    gl.bindTexture(gl.TEXTURE_2D, this.frameTex);
+    gl.bindTexture(gl.TEXTURE_2D, this.layout.stereo ? e.rgb : this.frameTex);
     gl.uniform1i(v.u('u_equirect'), 0);
     gl.uniformMatrix3fv(v.u('u_rot'), false, columnMajor(rot));
     gl.uniform1i(v.u('u_lod_mode'), 0);
-    // Mono 360 (stereo and VR180 layouts are not yet drawn here: docs/publish.md).
-    gl.uniform1f(v.u('u_coverage'), 360);
-    gl.uniform1f(v.u('u_edge'), 2);
-    gl.uniform1i(v.u('u_ycbcr'), this.ycbcr ? 1 : 0);
-    if (this.ycbcr) this.#setYcbcr(v);
+    gl.uniform1f(v.u('u_coverage'), this.layout.coverage);
+    gl.uniform1f(v.u('u_edge'), this.layout.edge);
+    gl.uniform1i(v.u('u_ycbcr'), e.ycbcr ? 1 : 0);
+    if (e.ycbcr) this.#setYcbcr(v, e);
     gl.uniform4f(v.u('u_tan'), tan[0] - dx, tan[1] + dx, tan[2] - dy, tan[3] + dy);
     gl.uniform2f(v.u('u_size'), dst.width, dst.height);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
   }
 
-  #setYcbcr(v) {
-    const gl = this.gl, y = this.ycbcr;
+  #setYcbcr(v, eye) {
+    const gl = this.gl, y = eye.ycbcr;
     for (let i = 0; i < 3; ++i) {
       gl.activeTexture(gl.TEXTURE1 + i);
-      gl.bindTexture(gl.TEXTURE_2D, this.planeTex[i]);
+      gl.bindTexture(gl.TEXTURE_2D, eye.planes[i]);
       gl.uniform1i(v.u(`u_plane${i}`), 1 + i);
     }
     gl.activeTexture(gl.TEXTURE0);
@@ -309,7 +367,8 @@ export class Renderer {
   // One view (width x height device pixels) with the parameters p: into the canvas, or with
   // `out` ({ fb, x, y }: an XR layer's framebuffer and the eye's viewport corner) into that.
   // view: { az, alt, fov } for the desktop, or { rot, tan } (an XR eye's own rotation and
-  // projection tangents).
+  // projection tangents); its `eye` ('left' or 'right', default left) picks a stereo frame's
+  // image.
   draw(view, width, height, p, out = null) {
     const gl = this.gl;
     gl.bindVertexArray(this.vao);
@@ -319,7 +378,7 @@ export class Renderer {
     const blur = p[0] > 0 ? blurPixels(p[0], tan, width, height) : null;
     const margin = blur ? Math.max(blur.rx, blur.ry) : 0;
     const t = this.#targetsFor(width, height, margin);
-    this.#videoPass(t.a, rot, tan, width, height, margin);
+    this.#videoPass(t.a, rot, tan, width, height, margin, view.eye);
     if (blur) this.#blurPass(t.a, t.b, blur);
     const dst = out ? this.#outputFor(width, height) : null;
     this.#stackPass(blur ? t.b : t.a, blur ? this.stackBlur : this.stack, p, tan, width, height,

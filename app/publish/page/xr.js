@@ -2,7 +2,8 @@
 // localhost). Each frame: the effects' parameters once, at the head's view direction (the
 // contract: the same for both eyes); then each XRView drawn with its own rotation and its own
 // projection (tangents read from its projection matrix), the vignette centred on that eye's
-// optical axis, as vdfx's compositor draws each eye.
+// optical axis, and a stereo video's image of that eye (XRView.eye; 'none', a mono display,
+// shows the left), as vdfx's compositor draws each eye.
 const DEG = 180 / Math.PI;
 
 // Row-major rotation of a unit quaternion {x, y, z, w} (WebXR's DOMPointReadOnly).
@@ -37,7 +38,8 @@ function drawXrFrame(player, layer, pose) {
   for (const view of pose.views) {
     const vp = layer.getViewport(view);
     const eye = { rot: quaternionRotation(view.transform.orientation),
-                  tan: projectionTangents(view.projectionMatrix) };
+                  tan: projectionTangents(view.projectionMatrix),
+                  eye: view.eye === 'right' ? 'right' : 'left' };
     player.renderer.draw(eye, vp.width, vp.height, p, { fb: layer.framebuffer, x: vp.x, y: vp.y });
     player.stats.xr.views.push({ eye: view.eye, viewport: [vp.x, vp.y, vp.width, vp.height],
                                  tan: eye.tan });
