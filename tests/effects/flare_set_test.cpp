@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
 
+#include "effects/flare_set_cv.h"
 #include "effects/view_camera.h"
 
 namespace vdfx::effects {
@@ -83,7 +84,7 @@ TEST(FlareSet, TrackAndAutoLightsAndSeveralFlares) {
   const Eigen::Vector2d uv = to_equirect_uv({3.0, 2.0});
   cv::circle(frame, cv::Point(static_cast<int>(uv.x() * 512), static_cast<int>(uv.y() * 256)), 4,
              cv::Scalar::all(1.0), cv::FILLED);
-  seen.observe(5, frame);
+  observe_frame(seen, 5, frame);
   ASSERT_TRUE(seen.light(1, 5));
   EXPECT_LT(angle_between(*seen.light(1, 5), to_unit({3.0, 2.0})) * kRadToDeg, 1.0);
   EXPECT_EQ(seen.layouts(looking_at({0.0, 0.0}), 5).size(), 2u);
