@@ -51,7 +51,8 @@ int cmd_publish(const Args& args) {
   if (auto code = parse_cli(cli, args)) return *code;
   const PublishResult r = run_publish(publish_request(options, texts));
   for (const std::string& e : r.left_out)
-    std::cerr << "vdfx publish: note: the page does not draw " << e << " yet\n";
+    std::cerr << "vdfx publish: note: the page does not draw " << e
+              << " (volumetric grain: vdfx's GPU renderer only)\n";
   std::cout << r.out.string() << ": " << r.files.size() << " files, video "
             << (r.transcoded ? "transcoded to " : "") << r.video_codec << "\n";
   return kExitOk;
