@@ -1,6 +1,6 @@
 // Flares and grain on the page of `vdfx publish` in a real browser (CTest: publish.page_effects;
 // docs/publish.md):
-//   node page_effects_test.cjs VDFX_BINARY OUTPUT_DIR
+//   node page_effects_test.cjs VDFX_BINARY SOURCE_DIR OUTPUT_DIR
 // Debian's chromium, headless, WebGL2 through SwiftShader (browser.cjs). For each site, at three
 // views, frames and fields of view, the page's canvas matches `vdfx render --mode view` of the
 // same view, frame, FOV and size within 3/255 per channel and 1/255 mean:
@@ -10,15 +10,19 @@
 //  - grain: the headset and the surface style (the frame's grain: its refresh from the frame's
 //    display time, as vdfx render picks it).
 // player.json's left_out names nothing for these, and a volumetric grain stays named there.
+// WebXR (a fake XRSystem, fake_xr.cjs): the flares and the headset grain drawn per eye, the eyes
+// half the IPD to the head's sides with the asymmetric frusta of xr/profiles/offcentre.json; each
+// half of the canvas matches `vdfx render --hmd offcentre.json --eye left|right` (no distortion).
 'use strict';
 const fs = require('fs');
 const path = require('path');
 const { execFileSync, spawnSync } = require('child_process');
 const { serve, Browser, decodePng, diff } = require('./browser.cjs');
+const { fakeXr, viewQuaternion, projectionOf, half } = require('./fake_xr.cjs');
 
-const [vdfx, outDir] = process.argv.slice(2).map((p) => p && path.resolve(p));
-if (!vdfx || !outDir) {
-  console.error('usage: node page_effects_test.cjs VDFX_BINARY OUTPUT_DIR');
+const [vdfx, sourceDir, outDir] = process.argv.slice(2).map((p) => p && path.resolve(p));
+if (!vdfx || !sourceDir || !outDir) {
+  console.error('usage: node page_effects_test.cjs VDFX_BINARY SOURCE_DIR OUTPUT_DIR');
   process.exit(2);
 }
 fs.rmSync(outDir, { recursive: true, force: true });
@@ -176,6 +180,45 @@ async function comparePixels(browser, port) {
   console.log(rows.join('\n'));
 }
 
+// The eyes of xr/profiles/offcentre.json: tangents of its fov_deg (left, right, down, up) and
+// its IPD. The canvas is 640 x 360, each eye 320 x 360: at 160 px across its 90 degrees the
+// grain's lattice would be finer than a pixel, and the band limit would leave no grain to test.
+const XW = 640, XH = 360;
+const OFFCENTRE = { ipd: 0.064, eyes: [
+  { eye: 'left', deg: [-60, 30, -35, 45] }, { eye: 'right', deg: [-30, 60, -35, 45] }] };
+
+// One XR frame of `site` with the head at (az, alt) at the origin: each eye at
+// head.orientation * (-+ipd/2, 0, 0), parallel to the head, its own projection.
+async function checkXr(browser, port, name, [az, alt, frame]) {
+  const profile = path.join(sourceDir, 'xr', 'profiles', 'offcentre.json');
+  const q = viewQuaternion(az, alt);
+  // The head's x axis (right) in LOCAL: the first column of its rotation (renderer.js,
+  // viewRotation), which the altitude does not tilt.
+  const a = (az * Math.PI) / 180, right = [Math.cos(a), 0, Math.sin(a)];
+  const views = OFFCENTRE.eyes.map((e, i) => ({
+    eye: e.eye, q, P: projectionOf(e.deg.map((d) => Math.tan((d * Math.PI) / 180))),
+    pos: right.map((x) => ((i ? 0.5 : -0.5) * OFFCENTRE.ipd) * x) }));
+  const script = await browser.send('Page.addScriptToEvaluateOnNewDocument',
+                                    { source: fakeXr({ head: q, headPos: [0, 0, 0], views }) });
+  const title = await browser.open(`http://127.0.0.1:${port}/${name}/index.html?frame=${frame}` +
+                                   `&size=${XW}x${XH}&xr=1`, XW, XH);
+  await browser.send('Page.removeScriptToEvaluateOnNewDocument', script);
+  if (!title.startsWith('vdfx-ready')) return check(false, `WebXR ${name}: ${title}`);
+  const png = await browser.screenshot(XW, XH), shot = decodePng(png);
+  fs.writeFileSync(path.join(outDir, `xr_${name}_page.png`), png);
+  const site = SITES[name];
+  for (const [i, e] of OFFCENTRE.eyes.entries()) {
+    const ref = path.join(outDir, `xr_${name}_${e.eye}_render.png`);
+    run(['render', site.video, '--sidecar', site.sidecar, '--view', `${az},${alt}`, '--frame',
+         String(frame), '--hmd', profile, '--eye', e.eye, '--distort', 'none', '--size',
+         `${XW / 2}x${XH}`, '--mode', 'view', '--out', ref]);
+    const d = diff(half(shot, i), decodePng(fs.readFileSync(ref)));
+    const label = `WebXR ${name} ${e.eye} eye, head ${az},${alt} frame ${frame}`;
+    console.log(`${label.padEnd(44)} max ${d.max}/255  mean ${d.mean.toFixed(3)}/255`);
+    check(d.max <= MAX && d.mean <= MEAN, `${label}: max ${d.max} mean ${d.mean.toFixed(3)}`);
+  }
+}
+
 (async () => {
   const t0 = Date.now();
   publishSites();
@@ -186,6 +229,8 @@ async function comparePixels(browser, port) {
   const browser = await Browser.launch(path.join(outDir, 'chromium-profile'), W, H);
   try {
     await comparePixels(browser, server.address().port);
+    await checkXr(browser, server.address().port, 'flares', [-5, 5, 3]);
+    await checkXr(browser, server.address().port, 'grain_headset', [20, 10, 4]);
   } finally {
     browser.close();
     server.close();
