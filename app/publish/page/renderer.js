@@ -129,7 +129,7 @@ export class Renderer {
     this.ycbcr = null; // set by uploadPlanes: the frame is three planes converted per sample
     this.taps = [this.#tapTexture(), this.#tapTexture()];
     this.targets = null;
-    this.layers = null; // layers.js's EffectLayers, when the film has flares or grain
+    this.layers = null; // layers.js's EffectLayers: the flares and grain after the stack
   }
 
   #videoTexture() {
