@@ -26,48 +26,26 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <cstdint>
-#include <map>
 #include <opencv2/core.hpp>
 #include <optional>
 
-namespace vdfx::effects {
+#include "effects/light_track.h"
 
-struct AutoLightOptions {
-  int grid_width = 256;         //!< measurement grid (height = width / 2)
-  double top_fraction = 0.001;  //!< of the sphere's solid angle
-  double min_luma = 0.8;        //!< the region's brightest cell must reach this
-  double min_contrast = 2.0;    //!< region mean luma / frame mean luma at least this
-  double region_deg = 10.0;     //!< top-set cells beyond this from the peak are another light
-  int window = 4;               //!< frames before f used by the fit at f
-  double max_jump_deg = 15.0;   //!< measurements farther than this from f's are not f's light
-};
+namespace vdfx::effects {
 
 /// The brightest region of one equirect frame (RGB, encoded values: CV_32FC3, or CV_8UC3 read as
 /// value / 255) as a unit direction, or nullopt when nothing is bright enough.
 std::optional<Eigen::Vector3d> find_brightest_region(const cv::Mat& rgb,
                                                      const AutoLightOptions& options = {});
 
-class AutoLightTracker {
+/// The tracker fed with video frames: each frame measured by find_brightest_region.
+class AutoLightTracker : public LightTrack {
  public:
-  explicit AutoLightTracker(AutoLightOptions options = {});
-
+  using LightTrack::LightTrack;
   /// Measures `frame` (a frame measured before is not measured again). Keeps the measurements of
   /// the most recent frames only (bounded memory).
   void observe(std::int64_t frame, const cv::Mat& rgb);
-  bool observed(std::int64_t frame) const { return cache_.count(frame) != 0; }
-  /// The tracked, smoothed light at `frame` from the measurements of frames frame - window ..
-  /// frame observed so far; nullopt when `frame` itself is unobserved or has no light.
-  std::optional<Eigen::Vector3d> light(std::int64_t frame) const;
-  /// Frames before f that light(f) uses.
-  int window() const { return options_.window; }
-  const AutoLightOptions& options() const { return options_; }
-
- private:
-  AutoLightOptions options_;
-  std::map<std::int64_t, std::optional<Eigen::Vector3d>> cache_;
-  std::int64_t latest_ = 0;
 };
 
 }  // namespace vdfx::effects

@@ -44,8 +44,12 @@ void FlareSet::set_intensity(std::size_t k, std::shared_ptr<const RbfInterpolato
   intensity_.at(k) = std::move(intensity);
 }
 
-void FlareSet::observe(std::int64_t frame, const cv::Mat& rgb) {
-  if (uses_auto_) tracker_.observe(frame, rgb);
+void FlareSet::record_light(std::int64_t frame, const std::optional<Eigen::Vector3d>& measured) {
+  if (uses_auto_) tracker_.record(frame, measured);
+}
+
+void FlareSet::set_auto_lights(std::vector<std::optional<Eigen::Vector3d>> lights) {
+  given_lights_ = std::move(lights);
 }
 
 double FlareSet::intensity(std::size_t k, const Eigen::Vector3d& gaze, std::int64_t frame) const {
@@ -61,7 +65,9 @@ std::optional<Eigen::Vector3d> FlareSet::light(std::size_t k, std::int64_t frame
   const FlareLight& l = flares_.at(k).light;
   if (const auto* d = std::get_if<Direction>(&l)) return to_unit(*d);
   if (const auto* t = std::get_if<std::vector<LightSample>>(&l)) return light_on_track(*t, frame);
-  return tracker_.light(frame);
+  if (!given_lights_) return tracker_.light(frame);
+  if (frame < 0 || frame >= static_cast<std::int64_t>(given_lights_->size())) return std::nullopt;
+  return (*given_lights_)[static_cast<std::size_t>(frame)];
 }
 
 std::vector<FlareLayout> FlareSet::layouts(const HeadPose& head, std::int64_t frame) const {

@@ -2,18 +2,21 @@
 /// @brief The flares of a sidecar, evaluated per frame: each flare's intensity (RBF over gaze
 /// direction and frame), its light direction (fixed, track or auto) and its world-space layout
 /// for the head pose. One call per frame; both eyes draw the same layouts.
+///
+/// No OpenCV here (the web player's module compiles it): an auto light's measurements come in
+/// through record_light (effects/flare_set_cv.h's observe_frame measures a video frame), or
+/// whole, already tracked, through set_auto_lights (the lights `vdfx publish` found).
 #pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
-#include <opencv2/core.hpp>
 #include <optional>
 #include <vector>
 
-#include "effects/auto_light.h"
 #include "effects/flare.h"
 #include "effects/flare_layout.h"
+#include "effects/light_track.h"
 #include "effects/rbf_interpolator.h"
 
 namespace vdfx::effects {
@@ -29,14 +32,19 @@ class FlareSet {
   std::size_t size() const { return flares_.size(); }
   const std::vector<FlareEffect>& flares() const { return flares_; }
 
-  /// True when some flare finds its light in the video frames (observe() them).
+  /// True when some flare finds its light in the video frames (observe_frame() them).
   bool uses_auto_light() const { return uses_auto_; }
   /// Frames before f whose images the auto light at f uses (observe them too for a lone frame).
   int auto_light_window() const { return tracker_.window(); }
-  /// Gives the auto-light tracker a video frame (RGB float equirect); nothing without auto lights.
-  void observe(std::int64_t frame, const cv::Mat& rgb);
+  const AutoLightOptions& auto_light_options() const { return tracker_.options(); }
+  /// Gives the auto-light tracker frame's measurement (find_brightest_region of the frame);
+  /// nothing without auto lights.
+  void record_light(std::int64_t frame, const std::optional<Eigen::Vector3d>& measured);
   /// Whether the tracker has measured `frame` (observe it before asking for its light).
   bool observed(std::int64_t frame) const { return tracker_.observed(frame); }
+  /// The auto light of every frame, tracked elsewhere (entry f: frame f's light or none; none
+  /// beyond the list): from now on light() reads these instead of the tracker.
+  void set_auto_lights(std::vector<std::optional<Eigen::Vector3d>> lights);
 
   /// New flares (an editor's edit), solved like the constructor's. The auto-light tracker keeps
   /// what it measured: it is about the video, not the flares.
@@ -56,7 +64,8 @@ class FlareSet {
  private:
   std::vector<FlareEffect> flares_;
   std::vector<std::shared_ptr<const RbfInterpolator>> intensity_;
-  AutoLightTracker tracker_;
+  LightTrack tracker_;
+  std::optional<std::vector<std::optional<Eigen::Vector3d>>> given_lights_;
   bool uses_auto_ = false;
 };
 

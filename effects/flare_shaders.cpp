@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "effects/flare_layout.h"
+#include "effects/glsl_common.h"
 
 namespace vdfx::effects {
 
@@ -15,13 +16,10 @@ uniform vec3 u_centre;
 uniform vec3 u_axis_u;
 uniform vec3 u_axis_v;
 uniform float u_extent;
-uniform float u_support;
-out vec2 v_q;
 void main() {
   const vec2 corners[6] = vec2[6](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(1.0, 1.0),
                                   vec2(-1.0, -1.0), vec2(1.0, 1.0), vec2(-1.0, 1.0));
   vec2 c = corners[gl_VertexID];
-  v_q = c * u_support;
   vec3 p = u_centre + u_extent * (c.x * u_axis_u + c.y * u_axis_v);
   gl_Position = u_view_proj * vec4(p, 1.0);
 }
@@ -33,9 +31,14 @@ std::string flare_fragment_source() {
   // %.17g: the shader's constants are the doubles of flare_layout.h, rounded once to float.
   std::snprintf(constants, sizeof constants,
                 "const float RIM = %.17g;\nconst float FILL = %.17g;\n", kRingRimWidth, kRingFill);
-  return std::string(constants) + R"(
-in vec2 v_q;
+  return std::string(constants) + glsl::kPinhole + R"(
 out vec4 frag;
+uniform mat3 u_eye_rot;  // the eye's rotation, eye -> world
+uniform vec3 u_centre;
+uniform vec3 u_axis_u;
+uniform vec3 u_axis_v;
+uniform float u_extent;
+uniform float u_support;
 uniform int u_shape;
 uniform vec3 u_colour;
 uniform float u_chroma;
@@ -47,7 +50,18 @@ float ring_channel(float rho) {
   return bump((rho - 1.0) / RIM) + FILL * (1.0 - smoothstep(1.0 - RIM, 1.0, rho));
 }
 void main() {
-  float rho = length(v_q);
+  // This fragment's own ray meets the element's plane, as the CPU reference's flare_at_ray:
+  // world axes, the eye at the origin. Not an interpolated varying: where a rasteriser snaps the
+  // quad's corners to its sub-pixel grid then moves no ring (a ring a few pixels wide has a rim
+  // of a fraction of a pixel).
+  vec3 d = u_eye_rot * pinhole_ray();
+  vec3 n = cross(u_axis_u, u_axis_v);
+  float dn = dot(n, d);
+  if (dn == 0.0) discard;
+  float t = dot(n, u_centre) / dn;
+  if (!(t > 0.0)) discard;
+  vec3 q = t * d - u_centre;
+  float rho = length(vec2(dot(q, u_axis_u), dot(q, u_axis_v))) * (u_support / u_extent);
   vec3 p;
   if (u_shape == 0) {
     float a = bump(rho);

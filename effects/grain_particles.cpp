@@ -1,9 +1,8 @@
 /// @file
-/// @brief sample_grain_particles: regions, the 1/r^3 radial law, particle shape and shade.
+/// @brief grain_particle: regions, the 1/r^3 radial law, particle shape and shade.
 #include "effects/grain_particles.h"
 
 #include <cmath>
-#include <opencv2/core.hpp>
 #include <stdexcept>
 
 #include "effects/coords.h"
@@ -105,27 +104,6 @@ GrainParticle grain_particle(GrainStyle style, const GrainSettings& s, std::uint
   p.brightness = d.u(kDrawBrightness);
   p.opacity = kMinParticleOpacity + (1.0 - kMinParticleOpacity) * d.u(kDrawOpacity);
   return p;
-}
-
-ParticleSet sample_grain_particles(GrainStyle style, const GrainSettings& s, std::uint64_t seed,
-                                   std::int64_t refresh, double size) {
-  if (!is_volumetric(style))
-    throw std::invalid_argument("sample_grain_particles: " + std::string(grain_style_name(style)) +
-                                " is a shader style");
-  ParticleSet out;
-  out.refresh = refresh;
-  const auto count = static_cast<std::size_t>(s.get(GrainSetting::Count));
-  out.particles.resize(count);
-  // Counter-based: particle i is a function of (key, i), so the set is the same however the work
-  // is split between threads, and the GPU generates it the same way.
-  const std::uint32_t key = grain_particle_key(seed, refresh);
-  cv::parallel_for_(cv::Range(0, static_cast<int>(count)), [&](const cv::Range& range) {
-    for (int i = range.start; i < range.end; ++i)
-      out.particles[static_cast<std::size_t>(i)] =
-          grain_particle(style, s, key, static_cast<std::uint32_t>(i), size);
-  });
-  for (const GrainParticle& p : out.particles) ++out.region_count[p.region];
-  return out;
 }
 
 }  // namespace vdfx::effects

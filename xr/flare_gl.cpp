@@ -41,7 +41,7 @@ const std::vector<effects::FlareLayout>& FlareGl::layouts() const {
   return impl_->layouts;
 }
 
-void FlareGl::draw(const RenderView& view, int, int, int) {
+void FlareGl::draw(const RenderView& view, int, int width, int height) {
   Impl& m = *impl_;
   if (m.layouts.empty()) return;
   // Positions are sent relative to the eye, so the rotation alone maps them into eye space and
@@ -52,6 +52,12 @@ void FlareGl::draw(const RenderView& view, int, int, int) {
   m.program.use();
   glBindVertexArray(m.vao);
   glUniformMatrix4fv(m.program.uniform("u_view_proj"), 1, GL_FALSE, view_proj.data());
+  const Eigen::Matrix3f eye_rot = view.orientation.cast<float>();
+  glUniformMatrix3fv(m.program.uniform("u_eye_rot"), 1, GL_FALSE, eye_rot.data());
+  glUniform4f(m.program.uniform("u_tan"), static_cast<float>(view.tan_left),
+              static_cast<float>(view.tan_right), static_cast<float>(view.tan_down),
+              static_cast<float>(view.tan_up));
+  glUniform2f(m.program.uniform("u_size"), static_cast<float>(width), static_cast<float>(height));
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);  // light adds to the image under it
   const auto vec3 = [&](const char* name, const Eigen::Vector3d& v) {

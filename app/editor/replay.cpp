@@ -10,6 +10,7 @@
 #include "app/editor/editor_layers.h"
 #include "effects/equirect_sampler.h"
 #include "effects/flare_render.h"
+#include "effects/flare_set_cv.h"
 #include "effects/grain_render.h"
 #include "effects/view_renderer.h"
 #include "io/file_lock.h"
@@ -127,7 +128,7 @@ cv::Mat render_replay_frame(Editor& editor, EditorLayers& layers, const cv::Mat&
   const glm::dvec3 p = editor.input().head.position;
   const effects::HeadPose head{Eigen::Vector3d(p.x, p.y, p.z), view.orientation};
   layers.update(editor);
-  if (layers.flares().uses_auto_light()) layers.flares().observe(frame, image);
+  if (layers.flares().uses_auto_light()) effects::observe_frame(layers.flares(), frame, image);
   effects::add_flares(rendered, camera, head.position, layers.flares().layouts(head, frame));
   for (const effects::GrainFrame& g : layers.grains().layout(head, t_ns, frame)) {
     if (!effects::is_volumetric(g.style)) {

@@ -3,6 +3,7 @@
 #include "app/export/layers.h"
 
 #include "effects/flare_render.h"
+#include "effects/flare_set_cv.h"
 #include "effects/grain_render.h"
 #include "io/sidecar_sets.h"
 
@@ -32,7 +33,8 @@ void PathLayers::draw(cv::Mat& rgb, const cv::Mat& equirect, const xr::RenderVie
   std::vector<effects::GrainFrame> grains;
   {
     const std::lock_guard lock(mutex_);
-    if (flares_.uses_auto_light() && !flares_.observed(frame)) flares_.observe(frame, equirect);
+    if (flares_.uses_auto_light() && !flares_.observed(frame))
+      effects::observe_frame(flares_, frame, equirect);
     flares = flares_.layouts(head, frame);
     grains = grains_.layout(head, effects::frame_display_time_ns(frame, fps_), frame);
   }

@@ -15,6 +15,7 @@
 #include "effects/distortion_mesh.h"
 #include "effects/effect_shaders.h"
 #include "effects/flare_render.h"
+#include "effects/flare_set_cv.h"
 #include "effects/grain_render.h"
 #include "effects/stack_interpolator.h"
 #include "effects/view_camera.h"
@@ -170,9 +171,10 @@ std::vector<effects::FlareLayout> view_flares(const std::filesystem::path& input
   if (flares.uses_auto_light()) {
     for (std::int64_t f = std::max<std::int64_t>(0, frame - flares.auto_light_window()); f < frame;
          ++f)
-      flares.observe(
-          f, effects::eye_image(load_equirect_frame(input, f, eye.layout), eye.layout, eye.index));
-    flares.observe(frame, equirect);
+      effects::observe_frame(
+          flares, f,
+          effects::eye_image(load_equirect_frame(input, f, eye.layout), eye.layout, eye.index));
+    effects::observe_frame(flares, frame, equirect);
   }
   return flares.layouts(head, frame);
 }

@@ -10,9 +10,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/publish/publish_lights.h"
 #include "effects/effect_shaders.h"
+#include "effects/flare_shaders.h"
 #include "effects/glsl_common.h"
 #include "effects/grain.h"
+#include "effects/grain_shaders.h"
 #include "effects/stereo_layout.h"
 #include "effects/video_shaders.h"
 #include "io/input_error.h"
@@ -69,6 +72,11 @@ void write_shaders(const fs::path& dir, unsigned mask) {
   write_text_file(dir / "stack.frag", es + effects::stack_fragment_source(v));
   v.blur = effects::StackShader::Blur::FusedVertical;
   write_text_file(dir / "stack_blur.frag", es + effects::stack_fragment_source(v));
+  // The layers after the stack (flare.js and grain.js draw them): the flare elements, the shader
+  // grain styles.
+  write_text_file(dir / "flare.vert", es + effects::flare_vertex_source());
+  write_text_file(dir / "flare.frag", es + effects::flare_fragment_source());
+  write_text_file(dir / "grain.frag", es + effects::grain_shader_fragment_source());
 }
 
 /// What the page needs to convert the decoded planes itself, as the GL path does (the video
@@ -128,6 +136,7 @@ PageSettings page_settings(const PublishRequest& r, const io::Sidecar& sidecar,
   add_layout_json(m["video"], video);
   m["sidecar"] = r.sidecar.filename().string();
   m["stack_mask"] = keyed_mask(sidecar);
+  if (uses_auto_light(sidecar)) m["lights"] = kLightsFile;
   m["left_out"] = left_out_of(sidecar);
   return s;
 }
@@ -152,11 +161,10 @@ void write_page(const PageAssets& a, const fs::path& dir, const PageSettings& s)
 
 std::vector<std::string> left_out_of(const io::Sidecar& sidecar) {
   std::vector<std::string> out;
-  for (std::size_t i = 0; i < sidecar.flares.size(); ++i)
-    out.push_back("flare #" + std::to_string(i + 1));
   for (std::size_t i = 0; i < sidecar.grains.size(); ++i)
-    out.push_back("grain #" + std::to_string(i + 1) + " (" +
-                  std::string(effects::grain_style_name(sidecar.grains[i].style)) + ")");
+    if (effects::is_volumetric(sidecar.grains[i].style))
+      out.push_back("grain #" + std::to_string(i + 1) + " (" +
+                    std::string(effects::grain_style_name(sidecar.grains[i].style)) + ")");
   return out;
 }
 

@@ -33,11 +33,11 @@ PageSettings page_settings(const PublishRequest& request, const io::Sidecar& sid
                            const PublishedVideo& video, const std::string& codec);
 
 /// Writes index.html (the title filled in), the player's scripts, the module, shaders/ (the
-/// GLSL ES 3.00 sources) and player.json into `dir`.
+/// GLSL ES 3.00 sources) and player.json into `dir` (lights.json is run_publish's).
 void write_page(const PageAssets& assets, const std::filesystem::path& dir,
                 const PageSettings& settings);
 
-/// The sidecar's effects the page does not draw yet ("flare #1", "grain #2 (dust)").
+/// The sidecar's effects the page does not draw: its volumetric grains ("grain #2 (free_cloud)").
 std::vector<std::string> left_out_of(const io::Sidecar& sidecar);
 
 /// Every file under `dir`, relative, sorted.

@@ -16,6 +16,7 @@
 #include <system_error>
 
 #include "app/publish/publish_assets.h"
+#include "app/publish/publish_lights.h"
 #include "io/atomic_file.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
@@ -180,6 +181,11 @@ PublishResult run_publish(const PublishRequest& r) {
   result.transcoded = r.transcode != Transcode::None;
   copy_file_checked(r.sidecar, staged.path() / r.sidecar.filename());
   write_page(assets, staged.path(), page_settings(r, sidecar, video, result.video_codec));
+  // Tracked in the video the page plays (after --transcode, the transcoded one): the light is
+  // where that video's bright region is, as `vdfx render` of it finds it.
+  if (uses_auto_light(sidecar))
+    write_text_file(staged.path() / kLightsFile,
+                    track_auto_lights(staged.path() / video.file, sidecar).dump(2) + "\n");
   result.left_out = left_out_of(sidecar);
   result.files = folder_listing(staged.path());
   staged.commit(r.out.string());

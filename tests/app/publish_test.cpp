@@ -69,6 +69,9 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
                                           "renderer.js",
                                           "controls.js",
                                           "xr.js",
+                                          "layers.js",
+                                          "flare.js",
+                                          "grain.js",
                                           "vdfx_player.js",
                                           "vdfx_player.wasm",
                                           "player.json",
@@ -78,7 +81,10 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
                                           "shaders/video.frag",
                                           "shaders/blur_1d.frag",
                                           "shaders/stack.frag",
-                                          "shaders/stack_blur.frag"};
+                                          "shaders/stack_blur.frag",
+                                          "shaders/flare.vert",
+                                          "shaders/flare.frag",
+                                          "shaders/grain.frag"};
   EXPECT_EQ(listing(out), expected);
   // The video and the sidecar are copied byte for byte.
   EXPECT_EQ(slurp(out / "clip.mp4"), slurp(f.clip));
@@ -106,7 +112,9 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
   EXPECT_TRUE(leftovers(out).empty());
 }
 
-TEST(Publish, NamesTheGrainAndFlaresThePageDoesNotDraw) {
+// The page draws flares and the shader grain styles; a volumetric grain is named as left out.
+// An auto light is tracked by publish over every frame into lights.json (docs/publish.md).
+TEST(Publish, TracksAutoLightsAndNamesTheVolumetricGrainThePageDoesNotDraw) {
   if (!module_built()) GTEST_SKIP() << kNoModule;
   const Fixture f = make_fixture();
   write_text(f.sidecar, R"({"format": "vdfx.sidecar", "version": 1,
@@ -114,14 +122,29 @@ TEST(Publish, NamesTheGrainAndFlaresThePageDoesNotDraw) {
     "interpolation": {"exponent": 1.0, "time_scale": 1.0},
     "effects": [{"type": "grain", "style": "headset", "seed": 7, "settings": {"refresh_ms": 40.0},
       "keyframes": [{"azimuth_deg": 20.0, "altitude_deg": 10.0, "frame": 5,
-                     "params": {"intensity": 0.5, "size": 1.0}}]}]})");
+                     "params": {"intensity": 0.5, "size": 1.0}}]},
+      {"type": "grain", "style": "free_cloud", "seed": 3,
+       "keyframes": [{"azimuth_deg": 0.0, "altitude_deg": 0.0, "frame": 0,
+                      "params": {"intensity": 0.5, "size": 1.0}}]},
+      {"type": "flare", "style": "directional", "light": "auto",
+       "keyframes": [{"azimuth_deg": 0.0, "altitude_deg": 0.0, "frame": 0,
+                      "params": {"intensity": 1.0}}]}]})");
   const fs::path out = f.dir / "site";
   const CommandResult r = run_vdfx_headless(publish_args(f, out));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("does not draw grain #1 (headset) yet"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("does not draw grain #2 (free_cloud)"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("grain #1"), std::string::npos) << r.output;
   const auto manifest = nlohmann::json::parse(slurp(out / "player.json"));
-  EXPECT_EQ(manifest["left_out"], nlohmann::json::array({"grain #1 (headset)"}));
+  EXPECT_EQ(manifest["left_out"], nlohmann::json::array({"grain #2 (free_cloud)"}));
   EXPECT_EQ(manifest["stack_mask"], 0);
+  EXPECT_EQ(manifest["lights"], "lights.json");
+  const auto lights = nlohmann::json::parse(slurp(out / "lights.json"));
+  EXPECT_EQ(lights["format"], "vdfx.lights");
+  EXPECT_EQ(lights["frames"], kFrames);
+  ASSERT_EQ(lights["lights"].size(), static_cast<std::size_t>(kFrames));
+  // Every entry a direction or null (the fixture's clip has no sun: what the tracker found).
+  for (const auto& l : lights["lights"])
+    EXPECT_TRUE(l.is_null() || (l.contains("azimuth_deg") && l.contains("altitude_deg"))) << l;
 }
 
 // The page shows every layout vdfx reads (docs/stereo.md): the sidecar's record of a VR180

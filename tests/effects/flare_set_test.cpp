@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
 
+#include "effects/auto_light.h"
+#include "effects/flare_set_cv.h"
 #include "effects/view_camera.h"
 
 namespace vdfx::effects {
@@ -83,10 +85,44 @@ TEST(FlareSet, TrackAndAutoLightsAndSeveralFlares) {
   const Eigen::Vector2d uv = to_equirect_uv({3.0, 2.0});
   cv::circle(frame, cv::Point(static_cast<int>(uv.x() * 512), static_cast<int>(uv.y() * 256)), 4,
              cv::Scalar::all(1.0), cv::FILLED);
-  seen.observe(5, frame);
+  observe_frame(seen, 5, frame);
   ASSERT_TRUE(seen.light(1, 5));
   EXPECT_LT(angle_between(*seen.light(1, 5), to_unit({3.0, 2.0})) * kRadToDeg, 1.0);
   EXPECT_EQ(seen.layouts(looking_at({0.0, 0.0}), 5).size(), 2u);
+}
+
+// The web player's way (no OpenCV): the lights publish tracked, handed over whole, replace the
+// tracker: frame f's entry, none for a null entry or beyond the list.
+TEST(FlareSet, GivenAutoLightsReplaceTheTracker) {
+  const std::vector<Keyframe> on{{{0.0, 0.0}, 0, {1.0}}};
+  FlareSet set({flare(AutoLight{}, on)}, {}, 30.0);
+  const Eigen::Vector3d a = to_unit({10.0, 5.0}), b = to_unit({12.0, 5.0});
+  set.set_auto_lights({a, std::nullopt, b});
+  EXPECT_LT(angle_between(*set.light(0, 0), a), 1e-15);
+  EXPECT_FALSE(set.light(0, 1));
+  EXPECT_LT(angle_between(*set.light(0, 2), b), 1e-15);
+  EXPECT_FALSE(set.light(0, 3));
+  EXPECT_FALSE(set.light(0, -1));
+  EXPECT_EQ(set.layouts(looking_at({10.0, 5.0}), 0).size(), 1u);
+  EXPECT_TRUE(set.layouts(looking_at({10.0, 5.0}), 1).empty());
+}
+
+// A measurement recorded by hand is what observe_frame records for the frame it measures.
+TEST(FlareSet, RecordedMeasurementsTrackAsObservedFrames) {
+  const std::vector<Keyframe> on{{{0.0, 0.0}, 0, {1.0}}};
+  FlareSet observed({flare(AutoLight{}, on)}, {}, 30.0), recorded = observed;
+  for (int f = 0; f < 4; ++f) {
+    cv::Mat frame(128, 256, CV_32FC3, cv::Scalar::all(0.2));
+    const Eigen::Vector2d uv = to_equirect_uv({20.0 + 2.0 * f, 10.0});
+    cv::circle(frame, cv::Point(static_cast<int>(uv.x() * 256), static_cast<int>(uv.y() * 128)), 3,
+               cv::Scalar::all(1.0), cv::FILLED);
+    observe_frame(observed, f, frame);
+    recorded.record_light(f, find_brightest_region(frame, recorded.auto_light_options()));
+  }
+  for (int f = 0; f < 4; ++f) {
+    ASSERT_TRUE(observed.light(0, f));
+    EXPECT_EQ(*observed.light(0, f), *recorded.light(0, f)) << "frame " << f;
+  }
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 // The page's per-frame cost in Chromium (docs/publish.md, "Measured"), by hand:
 //   node page_bench.cjs VDFX_BINARY OUTPUT_DIR
-// Publishes a clip (ffmpeg's testsrc2, 512 x 256 or VIDEO_WxH) with a sidecar whose six stack effects are keyed
-// 1000 times each, plays the page in headless Chromium (SwiftShader) at 1280 x 720 for a few
-// seconds, and prints the medians of window.vdfxStats: the module's evaluation (vdfx_eval, once
+// Publishes a clip (ffmpeg's testsrc2, 512 x 256 or VIDEO_WxH) with a sidecar of 8 effects keyed
+// 1000 times each (the six stack effects, a directional flare and a surface grain), plays the
+// page in headless Chromium (SwiftShader) at 1280 x 720 for a few seconds, and prints the medians
+// of window.vdfxStats: the module's evaluation (vdfx_eval and the flare and grain layout, once
 // per drawn frame) and the draw (the GL calls; SwiftShader renders on the CPU), the load and
 // solve time, and the folder's size (what a viewer downloads, the video included).
 'use strict';
@@ -37,6 +38,10 @@ const sidecar = {
     { type: 'saturation', keyframes: kf(() => ({ amount: uniform(0.2, 2) })) },
     { type: 'contrast', keyframes: kf(() => ({ amount: uniform(0.5, 1.5) })) },
     { type: 'vignette', keyframes: kf(() => ({ radius_deg: uniform(20, 90), falloff_deg: uniform(5, 60) })) },
+    { type: 'flare', style: 'directional', light: { azimuth_deg: 30, altitude_deg: 10 },
+      settings: { fade_deg: 60 }, keyframes: kf(() => ({ intensity: uniform(0.2, 2) })) },
+    { type: 'grain', style: 'surface', seed: 4,
+      keyframes: kf(() => ({ intensity: uniform(0.1, 1), size: uniform(1, 4) })) },
   ],
 };
 const clip = path.join(outDir, 'clip.mp4'), file = path.join(outDir, 'bench.vdfx.json');
@@ -69,23 +74,42 @@ const median = (a) => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
     // performance.now() ticks in 100 us steps on a page that is not cross-origin isolated, so
     // one call is timed as 2000 calls (the page's own module.eval: cwrap, the heap copy) at
     // random views and frames, 21 times.
-    const perCall = await browser.evaluate(`(() => {
-      const m = window.vdfxPlayer.module, runs = [];
+    // The 6 stack effects alone (module.eval), then all 8: module.eval, the flare and grain
+    // layout at the head's pose (layers.update) and each grain layer's uniforms for the eye.
+    const perCall = (all) => browser.evaluate(`(() => {
+      const p = window.vdfxPlayer, m = p.module, layers = p.renderer.layers, runs = [];
+      // The head's rotation at (azimuth a, altitude b), row-major (renderer.js, viewRotation).
+      const rotation = (a, b) => {
+        const ca = Math.cos(-a * Math.PI / 180), sa = Math.sin(-a * Math.PI / 180);
+        const cb = Math.cos(b * Math.PI / 180), sb = Math.sin(b * Math.PI / 180);
+        return [ca, sa * sb, sa * cb, 0, cb, -sb, -sa, ca * sb, ca * cb];
+      };
       let seed = 3;
       const r = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
       const views = Array.from({ length: 2000 }, () => [360 * r() - 179, 180 * r() - 90,
                                                          Math.floor(${frames} * r())]);
       for (let k = 0; k < 21; ++k) {
         const t = performance.now();
-        for (const v of views) m.eval(v[0], v[1], v[2]);
+        for (const v of views) {
+          m.eval(v[0], v[1], v[2]);
+          if (!${all}) continue;
+          const eye = { rot: rotation(v[0], v[1]), pos: [0, 0, 0], tan: [-1, 1, -0.5625, 0.5625] };
+          layers.update(eye.rot, eye.pos, v[2]);
+          for (let g = 0; g < layers.frame.grains; ++g) layers.calls.grain(g, eye);
+        }
         runs.push((performance.now() - t) / views.length);
       }
       return runs.sort((a, b) => a - b)[10];
     })()`);
-    console.log(`first frame after ${firstMs} ms (module, sidecar load and solve of 6 x 1000 ` +
+    // Alternated, the better of two each: the shared machine's load moves between runs.
+    const eightA = await perCall(true), six = Math.min(await perCall(false), await perCall(false));
+    const eight = Math.min(eightA, await perCall(true));
+    console.log(`first frame after ${firstMs} ms (module, sidecar load and solve of 8 x 1000 ` +
                 `keyframes, shaders, video)`);
-    console.log(`one evaluation of the 6 effects (the page's per-frame call), median of 21 ` +
-                `runs of 2000: ${(perCall * 1000).toFixed(1)} us`);
+    console.log(`one evaluation, median of 21 runs of 2000 random views and frames: the 6 stack ` +
+                `effects ${(six * 1000).toFixed(1)} us; all 8 (the page's per-frame calls: the ` +
+                `stack, the flare and grain layout, the grain's uniforms) ` +
+                `${(eight * 1000).toFixed(1)} us`);
     console.log(`${s.evalMs.length} frames drawn: evaluation median ${(median(s.evalMs) * 1000).toFixed(0)} us, ` +
                 `draw median ${median(s.drawMs).toFixed(1)} ms (${W}x${H}, SwiftShader), ` +
                 `conversion ${s.conversion}, frame upload median ${median(s.uploadMs).toFixed(1)} ms ` +

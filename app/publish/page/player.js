@@ -8,7 +8,8 @@
 // "vdfx-ready" once it is drawn; xr=1 draws that frame in an immersive session entered at once
 // (for a test's injected XRSystem); eye=left|right picks the eye a stereo video shows on the
 // canvas (default left; key 5 switches). Any error sets document.title to "vdfx-error: MESSAGE".
-import { Renderer } from './renderer.js';
+import { Renderer, viewRotation } from './renderer.js';
+import { effectLayers } from './layers.js';
 import { attachControls } from './controls.js';
 import { enterVr, startXr } from './xr.js';
 
@@ -62,6 +63,7 @@ async function loadModule() {
   const m = await createVdfxPlayer(); // eslint-disable-line no-undef
   const out = m._malloc(9 * 8);
   return {
+    raw: m, // for layers.js's calls
     load: m.cwrap('vdfx_load', 'number', ['string', 'string']),
     message: m.cwrap('vdfx_message', 'string', []),
     evalRaw: m.cwrap('vdfx_eval', 'number', ['number', 'number', 'number', 'number']),
@@ -75,7 +77,8 @@ async function loadModule() {
 
 async function loadShaders() {
   const names = { vert: 'fullscreen.vert', video: 'video.frag', blur: 'blur_1d.frag',
-                  stack: 'stack.frag', stackBlur: 'stack_blur.frag' };
+                  stack: 'stack.frag', stackBlur: 'stack_blur.frag', flareVert: 'flare.vert',
+                  flareFrag: 'flare.frag', grainFrag: 'grain.frag' };
   const out = {};
   for (const [key, file] of Object.entries(names)) out[key] = await fetchText(`shaders/${file}`);
   return out;
@@ -175,6 +178,8 @@ class Player {
     this.resize();
     const t0 = performance.now();
     const p = this.module.eval(this.view.az, this.view.alt, this.frame);
+    // The flares' and grain's layout from the head's pose: the view's, at the origin.
+    this.renderer.layers?.update(viewRotation(this.view.az, this.view.alt), [0, 0, 0], this.frame);
     const t1 = performance.now();
     if (!p) return;
     this.renderer.draw({ ...this.view, eye: this.eye }, this.canvas.width, this.canvas.height, p);
@@ -294,7 +299,9 @@ async function start() {
     throw new Error(module.message().replace(/\n+$/, ''));
   const gl = $('view').getContext('webgl2', { antialias: false, alpha: false });
   if (!gl) throw new Error('this browser has no WebGL2');
-  const renderer = new Renderer(gl, await loadShaders());
+  const shaders = await loadShaders();
+  const renderer = new Renderer(gl, shaders);
+  renderer.layers = await effectLayers(gl, shaders, module, config, fetchText);
   const player = new Player(config, module, renderer, hooks);
   window.vdfxPlayer = player; // for benchmarks and debugging (docs/publish.md)
   await openVideo(player.video, config);

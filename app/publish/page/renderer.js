@@ -8,7 +8,9 @@
 //      or blur tap reads the other eye's half; VR180 is black outside its coverage;
 //   2. with a blur: the horizontal Gaussian (shaders/blur_1d.frag);
 //   3. the stack (shaders/stack*.frag): the vertical Gaussian fused in, tint, exposure,
-//      saturation, contrast, vignette, into the canvas.
+//      saturation, contrast, vignette, into the canvas;
+//   4. with a flare or grain in view: the stack into a float target instead, the flares and the
+//      grain drawn there (layers.js), then copied to the canvas.
 
 const DEG = Math.PI / 180;
 
@@ -79,9 +81,9 @@ function compile(gl, type, source, name) {
   return s;
 }
 
-function program(gl, vertex, fragment, name) {
+export function program(gl, vertex, fragment, name, vertexName = 'fullscreen.vert') {
   const p = gl.createProgram();
-  gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, vertex, 'fullscreen.vert'));
+  gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, vertex, vertexName));
   gl.attachShader(p, compile(gl, gl.FRAGMENT_SHADER, fragment, name));
   gl.linkProgram(p);
   if (!gl.getProgramParameter(p, gl.LINK_STATUS))
@@ -97,7 +99,7 @@ function program(gl, vertex, fragment, name) {
 }
 
 // A float colour target (RGBA16F: filterable in WebGL2, renderable with EXT_color_buffer_float).
-function target(gl, width, height) {
+export function target(gl, width, height) {
   const tex = gl.createTexture();
   gl.bindTexture(gl.TEXTURE_2D, tex);
   gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA16F, width, height);
@@ -133,6 +135,7 @@ export class Renderer {
     this.setLayout({});
     this.taps = [this.#tapTexture(), this.#tapTexture()];
     this.targets = null;
+    this.layers = null; // layers.js's EffectLayers: the flares and grain after the stack
   }
 
   #videoTexture() {
@@ -366,9 +369,9 @@ export class Renderer {
 
   // One view (width x height device pixels) with the parameters p: into the canvas, or with
   // `out` ({ fb, x, y }: an XR layer's framebuffer and the eye's viewport corner) into that.
-  // view: { az, alt, fov } for the desktop, or { rot, tan } (an XR eye's own rotation and
-  // projection tangents); its `eye` ('left' or 'right', default left) picks a stereo frame's
-  // image.
+  // view: { az, alt, fov } for the desktop, or { rot, tan, pos } (an XR eye's own rotation,
+  // projection tangents and position); its `eye` ('left' or 'right', default left) picks a
+  // stereo frame's image.
   draw(view, width, height, p, out = null) {
     const gl = this.gl;
     gl.bindVertexArray(this.vao);
@@ -381,8 +384,11 @@ export class Renderer {
     this.#videoPass(t.a, rot, tan, width, height, margin, view.eye);
     if (blur) this.#blurPass(t.a, t.b, blur);
     const dst = out ? this.#outputFor(width, height) : null;
+    const layered = this.layers ? this.layers.begin(width, height) : null;
     this.#stackPass(blur ? t.b : t.a, blur ? this.stackBlur : this.stack, p, tan, width, height,
-                    margin, blur, dst);
+                    margin, blur, layered ?? dst);
+    if (layered) this.layers.finish({ rot, tan, pos: view.pos ?? [0, 0, 0] }, width, height,
+                                    dst ? dst.fb : null);
     if (!out) return;
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, dst.fb);
     gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, out.fb);

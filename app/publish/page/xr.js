@@ -28,17 +28,23 @@ export function projectionTangents(P) {
   return [(P[8] - 1) / P[0], (P[8] + 1) / P[0], (P[9] - 1) / P[5], (P[9] + 1) / P[5]];
 }
 
+// An XRRigidTransform's position as [x, y, z] (metres).
+const position = (t) => (t.position ? [t.position.x, t.position.y, t.position.z] : [0, 0, 0]);
+
 // One XR frame: the parameters from the head, every view with its own rotation and projection.
 function drawXrFrame(player, layer, pose) {
-  const head = lookDirection(quaternionRotation(pose.transform.orientation));
+  const headRot = quaternionRotation(pose.transform.orientation);
+  const head = lookDirection(headRot);
   const t0 = performance.now();
   const p = player.module.eval(head.az, head.alt, player.frame);
+  // Flares and grain laid out once from the head's pose; each eye draws them from its own.
+  player.renderer.layers?.update(headRot, position(pose.transform), player.frame);
   player.stats.xr = { head, params: p ? Array.from(p) : null, views: [] };
   if (!p) return;
   for (const view of pose.views) {
     const vp = layer.getViewport(view);
     const eye = { rot: quaternionRotation(view.transform.orientation),
-                  tan: projectionTangents(view.projectionMatrix),
+                  tan: projectionTangents(view.projectionMatrix), pos: position(view.transform),
                   eye: view.eye === 'right' ? 'right' : 'left' };
     player.renderer.draw(eye, vp.width, vp.height, p, { fb: layer.framebuffer, x: vp.x, y: vp.y });
     player.stats.xr.views.push({ eye: view.eye, viewport: [vp.x, vp.y, vp.width, vp.height],
