@@ -198,4 +198,37 @@ function diff(a, b) {
   return { max, mean: sum / a.rgb.length };
 }
 
-module.exports = { serve, Browser, decodePng, diff };
+// The frame every page test shares: its arguments as absolute paths (usage and exit 2 when one is
+// missing), the last one an output folder made empty, check() counting failures, and run(body),
+// which awaits the test and exits 1 on a failure or an exception.
+function pageTest(name, argNames) {
+  const args = process.argv.slice(2).map((p) => p && path.resolve(p));
+  if (args.length < argNames.length || args.slice(0, argNames.length).some((a) => !a)) {
+    console.error(`usage: node ${name} ${argNames.join(' ')}`);
+    process.exit(2);
+  }
+  const outDir = args[argNames.length - 1];
+  fs.rmSync(outDir, { recursive: true, force: true });
+  fs.mkdirSync(outDir, { recursive: true });
+  let failures = 0;
+  const check = (ok, what) => {
+    if (!ok) {
+      failures++;
+      console.error(`FAIL: ${what}`);
+    }
+  };
+  const run = (title, body) =>
+    body().then(() => {
+      if (failures) {
+        console.error(`${failures} failure(s); images in ${outDir}`);
+        process.exit(1);
+      }
+      console.log(`${title}: all checks passed`);
+    }).catch((e) => {
+      console.error(e.stack || String(e));
+      process.exit(1);
+    });
+  return { args, check, runTest: run };
+}
+
+module.exports = { serve, Browser, decodePng, diff, pageTest };

@@ -17,24 +17,13 @@
 const fs = require('fs');
 const path = require('path');
 const { execFileSync, spawnSync } = require('child_process');
-const { serve, Browser, decodePng, diff } = require('./browser.cjs');
+const { serve, Browser, decodePng, diff, pageTest } = require('./browser.cjs');
 const { fakeXr, viewQuaternion, projectionOf, half } = require('./fake_xr.cjs');
 
-const [vdfx, sourceDir, outDir] = process.argv.slice(2).map((p) => p && path.resolve(p));
-if (!vdfx || !sourceDir || !outDir) {
-  console.error('usage: node page_effects_test.cjs VDFX_BINARY SOURCE_DIR OUTPUT_DIR');
-  process.exit(2);
-}
-fs.rmSync(outDir, { recursive: true, force: true });
-fs.mkdirSync(outDir, { recursive: true });
+const { args, check, runTest } =
+  pageTest('page_effects_test.cjs', ['VDFX_BINARY', 'SOURCE_DIR', 'OUTPUT_DIR']);
+const [vdfx, sourceDir, outDir] = args;
 const W = 320, H = 180, MAX = 3, MEAN = 1;
-let failures = 0;
-function check(ok, what) {
-  if (!ok) {
-    failures++;
-    console.error(`FAIL: ${what}`);
-  }
-}
 
 function run(args, options = {}) {
   const r = spawnSync(vdfx, args, { encoding: 'utf8', ...options });
@@ -219,7 +208,7 @@ async function checkXr(browser, port, name, [az, alt, frame]) {
   }
 }
 
-(async () => {
+runTest('publish.page_effects', async () => {
   const t0 = Date.now();
   publishSites();
   checkLights();
@@ -237,12 +226,4 @@ async function checkXr(browser, port, name, [az, alt, frame]) {
   }
   console.log(`publish ${((t1 - t0) / 1000).toFixed(1)} s, browser ` +
               `${((Date.now() - t1) / 1000).toFixed(1)} s`);
-  if (failures) {
-    console.error(`${failures} failure(s); images in ${outDir}`);
-    process.exit(1);
-  }
-  console.log('publish.page_effects: all checks passed');
-})().catch((e) => {
-  console.error(e.stack || String(e));
-  process.exit(1);
 });

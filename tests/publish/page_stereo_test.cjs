@@ -16,24 +16,12 @@
 const fs = require('fs');
 const path = require('path');
 const { execFileSync, spawnSync } = require('child_process');
-const { serve, Browser, decodePng, diff } = require('./browser.cjs');
+const { serve, Browser, decodePng, diff, pageTest } = require('./browser.cjs');
 const { fakeXr, viewQuaternion, projection } = require('./fake_xr.cjs');
 
-const [vdfx, outDir] = process.argv.slice(2).map((p) => p && path.resolve(p));
-if (!vdfx || !outDir) {
-  console.error('usage: node page_stereo_test.cjs VDFX_BINARY OUTPUT_DIR');
-  process.exit(2);
-}
-fs.rmSync(outDir, { recursive: true, force: true });
-fs.mkdirSync(outDir, { recursive: true });
+const { args, check, runTest } = pageTest('page_stereo_test.cjs', ['VDFX_BINARY', 'OUTPUT_DIR']);
+const [vdfx, outDir] = args;
 const W = 256, H = 160, MAX = 3, MEAN = 1, FPS = 24, FRAMES = 4;
-let failures = 0;
-function check(ok, what) {
-  if (!ok) {
-    failures++;
-    console.error(`FAIL: ${what}`);
-  }
-}
 
 function run(args, options = {}) {
   const r = spawnSync(vdfx, args, { encoding: 'utf8', ...options });
@@ -208,7 +196,7 @@ async function checkXr(browser, port, site) {
   }
 }
 
-(async () => {
+runTest('publish.page_stereo', async () => {
   const t0 = Date.now();
   const sites = publishSites();
   const t1 = Date.now();
@@ -225,12 +213,4 @@ async function checkXr(browser, port, site) {
   }
   console.log(`publish ${((t1 - t0) / 1000).toFixed(1)} s, browser ` +
               `${((Date.now() - t1) / 1000).toFixed(1)} s`);
-  if (failures) {
-    console.error(`${failures} failure(s); images in ${outDir}`);
-    process.exit(1);
-  }
-  console.log('publish.page_stereo: all checks passed');
-})().catch((e) => {
-  console.error(e.stack || String(e));
-  process.exit(1);
 });

@@ -13,24 +13,13 @@
 const fs = require('fs');
 const path = require('path');
 const { execFileSync, spawnSync } = require('child_process');
-const { serve, Browser, decodePng, diff } = require('./browser.cjs');
+const { serve, Browser, decodePng, diff, pageTest } = require('./browser.cjs');
 const { fakeXr, viewQuaternion, projection } = require('./fake_xr.cjs');
 
-const [vdfx, sourceDir, outDir] = process.argv.slice(2).map((p) => p && path.resolve(p));
-if (!vdfx || !sourceDir || !outDir) {
-  console.error('usage: node page_test.cjs VDFX_BINARY SOURCE_DIR OUTPUT_DIR');
-  process.exit(2);
-}
-fs.rmSync(outDir, { recursive: true, force: true });
-fs.mkdirSync(outDir, { recursive: true });
+const { args, check, runTest } =
+  pageTest('page_test.cjs', ['VDFX_BINARY', 'SOURCE_DIR', 'OUTPUT_DIR']);
+const [vdfx, sourceDir, outDir] = args;
 const W = 320, H = 180, MAX = 3, MEAN = 1;
-let failures = 0;
-function check(ok, what) {
-  if (!ok) {
-    failures++;
-    console.error(`FAIL: ${what}`);
-  }
-}
 
 // 512 x 256, 8 frames at 24 fps: smooth colours that wrap at the seam and move with the frame.
 function writeClip(file) {
@@ -210,7 +199,7 @@ async function checkXr(browser, port) {
   }
 }
 
-(async () => {
+runTest('publish.page', async () => {
   const t0 = Date.now();
   const sites = publishSites();
   const t1 = Date.now();
@@ -226,12 +215,4 @@ async function checkXr(browser, port) {
   }
   console.log(`publish ${((t1 - t0) / 1000).toFixed(1)} s, browser ` +
               `${((Date.now() - t1) / 1000).toFixed(1)} s`);
-  if (failures) {
-    console.error(`${failures} failure(s); images in ${outDir}`);
-    process.exit(1);
-  }
-  console.log('publish.page: all checks passed');
-})().catch((e) => {
-  console.error(e.stack || String(e));
-  process.exit(1);
 });
