@@ -19,8 +19,8 @@
 #include "io/image_write.h"
 #include "io/sidecar.h"
 #include "io/video_source.h"
-#include "xr/input_backend.h"
-#include "xr/openxr_runtime.h"
+#include "xr/input/input_backend.h"
+#include "xr/openxr/gl/openxr_runtime.h"
 
 namespace vdfx::app::bench {
 namespace {

@@ -60,7 +60,7 @@ unsigned keyed_mask(const io::Sidecar& sidecar) {
 }
 
 /// The shared GLSL as the page compiles it: the ES prelude, then the same text the GL path
-/// compiles (xr/gl_program.h prepends the desktop prelude instead).
+/// compiles (xr/render/gl_program.h prepends the desktop prelude instead).
 void write_shaders(const fs::path& dir, unsigned mask) {
   fs::create_directory(dir);
   const std::string es = glsl::prelude(glsl::Target::Es300);

@@ -11,7 +11,7 @@
 //    display time, as vdfx render picks it).
 // player.json's left_out names nothing for these, and a volumetric grain stays named there.
 // WebXR (a fake XRSystem, fake_xr.cjs): the flares and the headset grain drawn per eye, the eyes
-// half the IPD to the head's sides with the asymmetric frusta of xr/profiles/offcentre.json; each
+// half the IPD to the head's sides with the asymmetric frusta of xr/headset/profiles/offcentre.json; each
 // half of the canvas matches `vdfx render --hmd offcentre.json --eye left|right` (no distortion).
 'use strict';
 const fs = require('fs');
@@ -169,7 +169,7 @@ async function comparePixels(browser, port) {
   console.log(rows.join('\n'));
 }
 
-// The eyes of xr/profiles/offcentre.json: tangents of its fov_deg (left, right, down, up) and
+// The eyes of xr/headset/profiles/offcentre.json: tangents of its fov_deg (left, right, down, up) and
 // its IPD. The canvas is 640 x 360, each eye 320 x 360: at 160 px across its 90 degrees the
 // grain's lattice would be finer than a pixel, and the band limit would leave no grain to test.
 const XW = 640, XH = 360;
@@ -179,7 +179,7 @@ const OFFCENTRE = { ipd: 0.064, eyes: [
 // One XR frame of `site` with the head at (az, alt) at the origin: each eye at
 // head.orientation * (-+ipd/2, 0, 0), parallel to the head, its own projection.
 async function checkXr(browser, port, name, [az, alt, frame]) {
-  const profile = path.join(sourceDir, 'xr', 'profiles', 'offcentre.json');
+  const profile = path.join(sourceDir, 'xr', 'headset', 'profiles', 'offcentre.json');
   const q = viewQuaternion(az, alt);
   // The head's x axis (right) in LOCAL: the first column of its rotation (renderer.js,
   // viewRotation), which the altitude does not tilt.
