@@ -369,15 +369,22 @@ class Player {
   // is (its timestamp; the element's time where the browser gives none). Polled once per
   // animation frame: requestVideoFrameCallback does not fire for a <video> that is not on the
   // page (this one is only a texture source).
+  // After a seek (the bar, the keys) the picture can come an animation frame or two after the
+  // element's time moved: while it is not yet the frame at that time, it is looked at again (a
+  // few dozen times at most, so a stream whose timestamps do not start at 0 costs nothing).
   #pollFrame() {
     const t = this.video.currentTime;
     if (this.uploading || t === this.shownTime) return;
+    if (t !== this.polledTime) this.retries = 0;
+    this.polledTime = t;
     this.uploading = true;
     this.shownTime = t;
     this.uploadFrame().then((got) => {
       const last = this.config.video.frames - 1;
-      this.frame = Math.min(last, got ?? Math.floor(t * this.fps() + 1e-6));
+      const at = Math.min(last, Math.floor(t * this.fps() + 1e-6));
+      this.frame = Math.min(last, got ?? at);
       this.pictureFrame = got;
+      if (got !== null && got !== at && this.retries++ < 30) this.shownTime = null;
       this.uploading = false;
       this.dirty = true;
     });
