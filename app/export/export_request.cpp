@@ -17,7 +17,7 @@
 #include "app/export/output_file.h"
 #include "app/export/path_export.h"
 #include "app/export/pipeline.h"
-#include "app/export/progress.h"
+#include "app/cli/progress.h"
 #include "effects/stack_interpolator.h"
 #include "io/eye_picture.h"
 #include "io/frame_decoder.h"

@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "app/export/progress.h"
+#include "app/cli/progress.h"
 
 namespace vdfx::app {
 namespace {

@@ -1,6 +1,7 @@
 /// @file
-/// @brief Export progress: on a terminal one bar redrawn in place (frames, frames/s, ETA); into a
-/// file or pipe plain lines every few seconds. Time is passed in (seconds since the start).
+/// @brief Progress of a long command (export, track): on a terminal one bar redrawn in place
+/// (frames, frames/s, ETA); into a file or pipe plain lines every few seconds. Time is passed in
+/// (seconds since the start).
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 /// @file
 /// @brief ProgressReporter.
-#include "app/export/progress.h"
+#include "app/cli/progress.h"
 
 #include <algorithm>
 #include <cmath>
