@@ -13,6 +13,7 @@
 #include "io/excerpt.h"
 #include "io/input_file.h"
 #include "io/json_text.h"
+#include "io/sidecar_anchor.h"
 #include "io/sidecar_checker.h"
 #include "io/sidecar_flare.h"
 #include "io/sidecar_grain.h"
@@ -229,7 +230,8 @@ void read_effect(Checker& c, const json& v, const std::string& ptr,
                  std::map<effects::EffectType, std::string>& seen, effects::EffectTrack& out) {
   const json* obj = c.object(v, ptr);
   if (!obj) return;
-  c.only_keys(*obj, ptr, {"type", "interpolation", "keyframes"});
+  c.only_keys(*obj, ptr, {"type", "anchor", "interpolation", "keyframes"});
+  read_anchor(c, *obj, ptr, out.anchor);
   const effects::EffectSpec* spec = nullptr;
   if (const json* p = c.member(*obj, ptr, "type")) {
     if (auto s = c.string(*p, ptr + "/type")) {
@@ -378,7 +380,8 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
   Checker c(file_for_messages, problems);
   const json* root = c.object(document, "");
   if (!root) return out;
-  c.only_keys(*root, "", {"format", "version", "video", "interpolation", "effects"});
+  c.only_keys(*root, "",
+              {"format", "version", "video", "interpolation", "effects", "camera", "tracks"});
 
   // A file that is not a vdfx sidecar at all gets one clear message, not a cascade.
   const json* format = c.member(*root, "", "format");
@@ -409,6 +412,12 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
 
   if (const json* p = c.member(*root, "", "interpolation"))
     read_interpolation(c, *p, "/interpolation", out.interpolation);
+  // Frames of reference (optional: contract "Frames of reference").
+  if (const json* p = c.member(*root, "", "camera", /*required=*/false))
+    read_camera(c, *p, frames, out.camera);
+  if (const json* p = c.member(*root, "", "tracks", /*required=*/false))
+    read_tracks(c, *p, frames, out.tracks);
+  std::vector<AnchorAt> anchors;
 
   if (const json* p = c.member(*root, "", "effects")) {
     if (!p->is_array()) {
@@ -419,22 +428,28 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
         const std::string ep = "/effects/" + std::to_string(i);
         // Extension types (several may coexist) have readers of their own.
         const std::optional<effects::InterpolationSettings>* own = nullptr;
+        const effects::Anchor* anchor = nullptr;
         if (is_flare_entry((*p)[i])) {
           read_flare(c, (*p)[i], ep, frames, out.flares.emplace_back());
           own = &out.flares.back().interpolation;
+          anchor = &out.flares.back().anchor;
         } else if (is_grain_entry((*p)[i])) {
           read_grain(c, (*p)[i], ep, frames, out.grains.emplace_back());
           own = &out.grains.back().interpolation;
+          anchor = &out.grains.back().anchor;
         } else {
           read_effect(c, (*p)[i], ep, frames, seen, out.effects.emplace_back());
           own = &out.effects.back().interpolation;
+          anchor = &out.effects.back().anchor;
         }
         if (*own) overrides.emplace_back(ep + "/interpolation", **own);
+        if (!anchor->is_video()) anchors.emplace_back(ep + "/anchor", *anchor);
       }
     }
   }
   // Checks across fields, each in a function of its own.
   check_time_scaling(c, out, overrides, problems, first_problem);
+  check_anchors(c, out, anchors);
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <system_error>
 
+#include "app/cli/layout_options.h"
 #include "app/publish/publish_assets.h"
 #include "app/publish/publish_lights.h"
 #include "io/atomic_file.h"
@@ -170,8 +171,7 @@ PublishResult run_publish(const PublishRequest& r) {
   const io::VideoProperties props = io::open_frame_decoder(r.video, {})->properties();
   const std::string source_codec = checked_codec(r, props);
   PublishResult result;
-  result.layout =
-      io::resolve_video_layout(props, r.layout, &sidecar.video, r.sidecar, &result.hint);
+  result.layout = shown_layout(props, r.layout, &sidecar.video, r.sidecar);
   const PageAssets assets = find_page_assets();
   StagedFolder staged(r.out);
   result.out = r.out;

@@ -32,7 +32,6 @@ struct PublishResult {
   bool transcoded = false;            //!< the video was re-encoded
   std::vector<std::string> left_out;  //!< effects of the sidecar the page does not draw
   effects::StereoLayout layout;       //!< what the page shows (player.json's video.layout)
-  std::string hint;  //!< a hint for an untagged frame shaped like stereo shown as mono
 };
 
 /// The codecs every WebGL2 browser plays in the containers publish accepts (docs/publish.md).
