@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ostream>
+#include <utility>
 
 namespace vdfx::app {
 namespace {
@@ -36,8 +37,12 @@ Rates rates(std::int64_t done, std::int64_t total, double elapsed_s) {
 }  // namespace
 
 ProgressReporter::ProgressReporter(std::ostream& out, bool terminal, std::int64_t total,
-                                   double interval)
-    : out_(out), terminal_(terminal), total_(total), interval_(interval) {}
+                                   double interval, std::string label)
+    : out_(out),
+      terminal_(terminal),
+      total_(total),
+      interval_(interval),
+      label_(std::move(label)) {}
 
 std::string ProgressReporter::bar_text(std::int64_t done, std::int64_t total, double elapsed_s) {
   const Rates r = rates(done, total, elapsed_s);
@@ -69,7 +74,7 @@ void ProgressReporter::update(std::int64_t done, double elapsed_s) {
   if (terminal_)
     out_ << "\r" << bar_text(done, total_, elapsed_s) << std::flush;
   else
-    out_ << "export: " << line_text(done, total_, elapsed_s) << "\n" << std::flush;
+    out_ << label_ << ": " << line_text(done, total_, elapsed_s) << "\n" << std::flush;
 }
 
 void ProgressReporter::finish(std::int64_t done, double elapsed_s) {
@@ -77,7 +82,7 @@ void ProgressReporter::finish(std::int64_t done, double elapsed_s) {
   if (terminal_)
     out_ << "\r" << bar_text(done, total_, elapsed_s) << "\n" << std::flush;
   else
-    out_ << "export: " << line_text(done, total_, elapsed_s) << "\n" << std::flush;
+    out_ << label_ << ": " << line_text(done, total_, elapsed_s) << "\n" << std::flush;
 }
 
 }  // namespace vdfx::app

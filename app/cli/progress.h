@@ -12,9 +12,10 @@ namespace vdfx::app {
 
 class ProgressReporter {
  public:
-  /// `terminal`: redraw a bar with '\r'; otherwise a line at most every `line_interval_s`.
+  /// `terminal`: redraw a bar with '\r'; otherwise a line at most every `line_interval_s`,
+  /// starting "LABEL: ".
   ProgressReporter(std::ostream& out, bool terminal, std::int64_t total,
-                   double line_interval_s = 5.0);
+                   double line_interval_s = 5.0, std::string label = "export");
   void update(std::int64_t done, double elapsed_s);
   /// The last state, and a newline after the bar.
   void finish(std::int64_t done, double elapsed_s);
@@ -29,6 +30,7 @@ class ProgressReporter {
   bool terminal_;
   std::int64_t total_;
   double interval_;
+  std::string label_;
   double last_ = -1e9;
   std::int64_t last_done_ = -1;
 };
