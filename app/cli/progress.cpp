@@ -37,31 +37,34 @@ Rates rates(std::int64_t done, std::int64_t total, double elapsed_s) {
 }  // namespace
 
 ProgressReporter::ProgressReporter(std::ostream& out, bool terminal, std::int64_t total,
-                                   double interval, std::string label)
+                                   double interval, std::string prefix, std::string unit)
     : out_(out),
       terminal_(terminal),
       total_(total),
       interval_(interval),
-      label_(std::move(label)) {}
+      prefix_(std::move(prefix)),
+      unit_(std::move(unit)) {}
 
-std::string ProgressReporter::bar_text(std::int64_t done, std::int64_t total, double elapsed_s) {
+std::string ProgressReporter::bar_text(std::int64_t done, std::int64_t total, double elapsed_s,
+                                       const std::string& unit) {
   const Rates r = rates(done, total, elapsed_s);
   const int filled = std::clamp(r.percent / 5, 0, 20);
   char buf[160];
-  std::snprintf(buf, sizeof buf, "[%s%s] %3d%%  %lld/%lld frames  %.1f frames/s  ETA %s",
+  std::snprintf(buf, sizeof buf, "[%s%s] %3d%%  %lld/%lld %s  %.1f %s/s  ETA %s",
                 std::string(static_cast<std::size_t>(filled), '#').c_str(),
                 std::string(static_cast<std::size_t>(20 - filled), ' ').c_str(), r.percent,
-                static_cast<long long>(done), static_cast<long long>(total), r.fps,
-                clock_text(r.eta_s).c_str());
+                static_cast<long long>(done), static_cast<long long>(total), unit.c_str(), r.fps,
+                unit.c_str(), clock_text(r.eta_s).c_str());
   return buf;
 }
 
-std::string ProgressReporter::line_text(std::int64_t done, std::int64_t total, double elapsed_s) {
+std::string ProgressReporter::line_text(std::int64_t done, std::int64_t total, double elapsed_s,
+                                        const std::string& unit) {
   const Rates r = rates(done, total, elapsed_s);
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%lld/%lld frames (%d%%), %.1f frames/s, ETA %s",
-                static_cast<long long>(done), static_cast<long long>(total), r.percent, r.fps,
-                clock_text(r.eta_s).c_str());
+  std::snprintf(buf, sizeof buf, "%lld/%lld %s (%d%%), %.1f %s/s, ETA %s",
+                static_cast<long long>(done), static_cast<long long>(total), unit.c_str(),
+                r.percent, r.fps, unit.c_str(), clock_text(r.eta_s).c_str());
   return buf;
 }
 
@@ -72,17 +75,17 @@ void ProgressReporter::update(std::int64_t done, double elapsed_s) {
   last_ = elapsed_s;
   last_done_ = done;
   if (terminal_)
-    out_ << "\r" << bar_text(done, total_, elapsed_s) << std::flush;
+    out_ << "\r" << bar_text(done, total_, elapsed_s, unit_) << std::flush;
   else
-    out_ << label_ << ": " << line_text(done, total_, elapsed_s) << "\n" << std::flush;
+    out_ << prefix_ << ": " << line_text(done, total_, elapsed_s, unit_) << "\n" << std::flush;
 }
 
 void ProgressReporter::finish(std::int64_t done, double elapsed_s) {
   if (!terminal_ && done == last_done_) return;  // that line is out already
   if (terminal_)
-    out_ << "\r" << bar_text(done, total_, elapsed_s) << "\n" << std::flush;
+    out_ << "\r" << bar_text(done, total_, elapsed_s, unit_) << "\n" << std::flush;
   else
-    out_ << label_ << ": " << line_text(done, total_, elapsed_s) << "\n" << std::flush;
+    out_ << prefix_ << ": " << line_text(done, total_, elapsed_s, unit_) << "\n" << std::flush;
 }
 
 }  // namespace vdfx::app

@@ -13,12 +13,12 @@
 
 #include "app/cli/command_registry.h"
 #include "app/cli/layout_options.h"
+#include "app/cli/progress.h"
 #include "app/export/baked_export.h"
 #include "app/export/layers.h"
 #include "app/export/output_file.h"
 #include "app/export/path_export.h"
 #include "app/export/pipeline.h"
-#include "app/cli/progress.h"
 #include "effects/stack_interpolator.h"
 #include "io/eye_picture.h"
 #include "io/frame_decoder.h"

@@ -23,6 +23,13 @@ TEST(ExportProgress, BarAndLineSayFramesRateAndEta) {
   EXPECT_NE(ProgressReporter::line_text(1, 9000, 1.0).find("ETA 2:29:59"), std::string::npos);
 }
 
+TEST(ExportProgress, OtherCommandsNameWhatTheyCountAndThemselves) {
+  std::ostringstream lines;
+  ProgressReporter p(lines, false, 40, 5.0, "suggest", "keyframes");
+  p.update(10, 2.0);
+  EXPECT_EQ(lines.str(), "suggest: 10/40 keyframes (25%), 5.0 keyframes/s, ETA 0:06\n");
+}
+
 TEST(ExportProgress, LinesComeEveryIntervalAndTheBarRedrawsInPlace) {
   std::ostringstream lines;
   ProgressReporter p(lines, false, 100, 5.0);
