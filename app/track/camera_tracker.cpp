@@ -18,7 +18,7 @@
 namespace vdfx::app::track {
 namespace {
 
-constexpr int kWindow = 21;           // Lucas-Kanade window, pixels
+constexpr int kWindow = 15;           // Lucas-Kanade window, pixels
 constexpr int kLevels = 3;            // pyramid levels above the image: follows ~80 px a frame
 constexpr double kHeldWeight = 1e-3;  // a link that only says "the camera stayed put"
 // A key frame match far off its prediction is a wrong one; after a loss (a cut, frames that
