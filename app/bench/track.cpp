@@ -162,38 +162,38 @@ void add_track_knobs(Registry& r, bool quick) {
   const int runs = quick ? 1 : 3, other_runs = quick ? 1 : 2;
   const CameraClipSpec turn = quick ? CameraClipSpec{CameraPath::Turn, "turn", 512, 90}
                                     : CameraClipSpec{CameraPath::Turn, "turn", 1920, 300};
-  r.knob(camera_knob("track.camera.width", "the analysis width W (pixels a turn)"));
+  r.knob(camera_knob("track.camera_width", "the analysis width W (pixels a turn)"));
   for (const int w :
        quick ? std::vector<int>{256, 512} : std::vector<int>{256, 384, 512, 768, 1024})
-    r.add("track.camera.width", "W=" + std::to_string(w), [=](Row& row, const Context&) {
+    r.add("track.camera_width", "W=" + std::to_string(w), [=](Row& row, const Context&) {
       track::CameraTrackOptions o;
       o.width = w;
       camera_row(row, turn, o, runs);
     });
   const CameraClipSpec shake = quick ? CameraClipSpec{CameraPath::Shake, "shake", 512, 60}
                                      : CameraClipSpec{CameraPath::Shake, "shake", 1024, 300};
-  r.knob(camera_knob("track.camera.points", "the corners followed per key frame P"));
+  r.knob(camera_knob("track.camera_points", "the corners followed per key frame P"));
   for (const int p : quick ? std::vector<int>{100, 400} : std::vector<int>{100, 200, 400, 800})
-    r.add("track.camera.points", "P=" + std::to_string(p), [=](Row& row, const Context&) {
+    r.add("track.camera_points", "P=" + std::to_string(p), [=](Row& row, const Context&) {
       track::CameraTrackOptions o;
       o.points = p;
       camera_row(row, shake, o, other_runs);
     });
   const CameraClipSpec pan = quick ? CameraClipSpec{CameraPath::Pan, "pan", 512, 200}
                                    : CameraClipSpec{CameraPath::Pan, "pan", 1024, 1000};
-  r.knob(camera_knob("track.camera.keyframes",
+  r.knob(camera_knob("track.camera_keyframes",
                      "the key-frame spacing K (chained: no links past the previous key frame)"));
   std::vector<std::pair<int, int>> spacing = {{10, 8}, {10, 0}};
   if (!quick) spacing = {{5, 8}, {10, 8}, {20, 8}, {10, 0}, {1, 0}};
   for (const auto& [k, far] : spacing)
-    r.add("track.camera.keyframes", "K=" + std::to_string(k) + (far ? "" : " chained"),
+    r.add("track.camera_keyframes", "K=" + std::to_string(k) + (far ? "" : " chained"),
           [=, k = k, far = far](Row& row, const Context&) {
             track::CameraTrackOptions o;
             o.keyframe_spacing = k;
             o.far_links = far;
             camera_row(row, pan, o, other_runs);
           });
-  r.knob({"track.subject.template",
+  r.knob({"track.subject_template",
           "subject direction against the template's side T (pixels): a textured patch moved over a "
           "panorama, x264",
           "frame", "deg", "the patch's true centre, over the frames where it is drawn",
@@ -204,7 +204,7 @@ void add_track_knobs(Registry& r, bool quick) {
                                    {SubjectMotion::Approach, "approach", sw, sf, 0.7}};
   for (const SubjectClipSpec& c : clips)
     for (const int t : quick ? std::vector<int>{32} : std::vector<int>{16, 24, 32, 48})
-      r.add("track.subject.template", std::string(c.name) + " T=" + std::to_string(t),
+      r.add("track.subject_template", std::string(c.name) + " T=" + std::to_string(t),
             [=](Row& row, const Context& ctx) { subject_row(row, c, t, ctx); });
 }
 
