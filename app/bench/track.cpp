@@ -155,44 +155,58 @@ void subject_row(Row& row, const SubjectClipSpec& spec, int template_px, const C
              std::to_string(last.width) + " pixels a turn";
 }
 
+struct CameraSetting {
+  std::string name;
+  track::CameraTrackOptions options;
+};
+
+void add_camera_knob(Registry& r, const char* id, const char* varied, const CameraClipSpec& clip,
+                     int runs, const std::vector<CameraSetting>& settings) {
+  r.knob(camera_knob(id, varied));
+  for (const CameraSetting& s : settings)
+    r.add(id, s.name, [=](Row& row, const Context&) { camera_row(row, clip, s.options, runs); });
+}
+
+/// The default options but for one change.
+template <class Change>
+CameraSetting setting(std::string name, Change change) {
+  CameraSetting s{std::move(name), {}};
+  change(s.options);
+  return s;
+}
+
 }  // namespace
 
 void add_track_knobs(Registry& r, bool quick) {
   // The width knob carries the time goal (3 runs); the others 2 (the 1000-frame pan is long).
   const int runs = quick ? 1 : 3, other_runs = quick ? 1 : 2;
-  const CameraClipSpec turn = quick ? CameraClipSpec{CameraPath::Turn, "turn", 512, 90}
-                                    : CameraClipSpec{CameraPath::Turn, "turn", 1920, 300};
-  r.knob(camera_knob("track.camera_width", "the analysis width W (pixels a turn)"));
+  std::vector<CameraSetting> widths, points, spacings;
   for (const int w :
        quick ? std::vector<int>{256, 512} : std::vector<int>{256, 384, 512, 768, 1024})
-    r.add("track.camera_width", "W=" + std::to_string(w), [=](Row& row, const Context&) {
-      track::CameraTrackOptions o;
-      o.width = w;
-      camera_row(row, turn, o, runs);
-    });
-  const CameraClipSpec shake = quick ? CameraClipSpec{CameraPath::Shake, "shake", 512, 60}
-                                     : CameraClipSpec{CameraPath::Shake, "shake", 1024, 300};
-  r.knob(camera_knob("track.camera_points", "the corners followed per key frame P"));
+    widths.push_back(setting("W=" + std::to_string(w), [w](auto& o) { o.width = w; }));
   for (const int p : quick ? std::vector<int>{100, 400} : std::vector<int>{100, 200, 400, 800})
-    r.add("track.camera_points", "P=" + std::to_string(p), [=](Row& row, const Context&) {
-      track::CameraTrackOptions o;
-      o.points = p;
-      camera_row(row, shake, o, other_runs);
-    });
-  const CameraClipSpec pan = quick ? CameraClipSpec{CameraPath::Pan, "pan", 512, 200}
-                                   : CameraClipSpec{CameraPath::Pan, "pan", 1024, 1000};
-  r.knob(camera_knob("track.camera_keyframes",
-                     "the key-frame spacing K (chained: no links past the previous key frame)"));
-  std::vector<std::pair<int, int>> spacing = {{10, 8}, {10, 0}};
-  if (!quick) spacing = {{5, 8}, {10, 8}, {20, 8}, {10, 0}, {1, 0}};
-  for (const auto& [k, far] : spacing)
-    r.add("track.camera_keyframes", "K=" + std::to_string(k) + (far ? "" : " chained"),
-          [=, k = k, far = far](Row& row, const Context&) {
-            track::CameraTrackOptions o;
-            o.keyframe_spacing = k;
-            o.far_links = far;
-            camera_row(row, pan, o, other_runs);
-          });
+    points.push_back(setting("P=" + std::to_string(p), [p](auto& o) { o.points = p; }));
+  std::vector<std::pair<int, int>> k_far = {{10, 8}, {10, 0}};
+  if (!quick) k_far = {{5, 8}, {10, 8}, {20, 8}, {10, 0}, {1, 0}};
+  for (const auto& [k, far] : k_far)
+    spacings.push_back(
+        setting("K=" + std::to_string(k) + (far ? "" : " chained"), [k = k, far = far](auto& o) {
+          o.keyframe_spacing = k;
+          o.far_links = far;
+        }));
+  add_camera_knob(r, "track.camera_width", "the analysis width W (pixels a turn)",
+                  quick ? CameraClipSpec{CameraPath::Turn, "turn", 512, 90}
+                        : CameraClipSpec{CameraPath::Turn, "turn", 1920, 300},
+                  runs, widths);
+  add_camera_knob(r, "track.camera_points", "the corners followed per key frame P",
+                  quick ? CameraClipSpec{CameraPath::Shake, "shake", 512, 60}
+                        : CameraClipSpec{CameraPath::Shake, "shake", 1024, 300},
+                  other_runs, points);
+  add_camera_knob(r, "track.camera_keyframes",
+                  "the key-frame spacing K (chained: no links past the previous key frame)",
+                  quick ? CameraClipSpec{CameraPath::Pan, "pan", 512, 200}
+                        : CameraClipSpec{CameraPath::Pan, "pan", 1024, 1000},
+                  other_runs, spacings);
   r.knob({"track.subject_template",
           "subject direction against the template's side T (pixels): a textured patch moved over a "
           "panorama, x264",

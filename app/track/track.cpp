@@ -95,6 +95,42 @@ Tick bar_tick(std::int64_t frames) {
   };
 }
 
+/// Runs `job(clip, sidecar, sidecar_path, tick)` on a copy of `sidecar` that replaces it only
+/// once the job is done (a *_into call: the editor's sidecar, a Progress).
+template <class Report, class Job>
+Report run_into(const fs::path& video, const io::LayoutOverride& layout,
+                const io::SidecarOptions& options, io::Sidecar& sidecar, Progress* progress,
+                const Job& job) {
+  const auto start = Clock::now();
+  io::Sidecar work = sidecar;
+  const fs::path sidecar_path = options.in.value_or(fs::path("sidecar"));
+  Clip clip = prepare_clip(open_video(video), video, layout, work, sidecar_path);
+  Report report = job(clip, work, sidecar_path, progress_tick(progress));
+  sidecar = std::move(work);
+  report.seconds = seconds_since(start);
+  return report;
+}
+
+/// Runs `job` on the sidecar the command starts from (io/sidecar_target.h) and writes it, with a
+/// progress bar.
+template <class Report, class Job>
+Report run_writing(const fs::path& video, const io::LayoutOverride& layout,
+                   const io::SidecarOptions& options, const Job& job) {
+  const auto start = Clock::now();
+  const io::SidecarTarget target =
+      io::resolve_sidecar_target(options, {{"VIDEO", video}}, "vdfx track");
+  auto decoder = open_video(video);
+  io::Sidecar sidecar = io::read_sidecar_base(target, fresh_sidecar(video, decoder->properties()));
+  const io::Sidecar before = sidecar;
+  const fs::path sidecar_path = target.base.value_or(options.out);
+  Clip clip = prepare_clip(std::move(decoder), video, layout, sidecar, sidecar_path);
+  Report report = job(clip, sidecar, sidecar_path, bar_tick(clip.decoder->properties().frames));
+  io::write_sidecar(options.out, sidecar);
+  report.sidecar_note = io::sidecar_target_note(target, options.out, before);
+  report.seconds = seconds_since(start);
+  return report;
+}
+
 }  // namespace
 
 namespace {
@@ -164,34 +200,20 @@ CameraReport camera_job(const CameraRequest& r, Clip& clip, io::Sidecar& sidecar
 
 CameraReport track_camera_into(const CameraRequest& request, io::Sidecar& sidecar,
                                Progress* progress) {
-  const auto start = Clock::now();
   check_camera_request(request);
-  io::Sidecar work = sidecar;
-  Clip clip = prepare_clip(open_video(request.video), request.video, request.layout, work,
-                           request.sidecar.in.value_or(fs::path("sidecar")));
-  CameraReport report = camera_job(request, clip, work, progress_tick(progress));
-  sidecar = std::move(work);
-  report.seconds = seconds_since(start);
-  return report;
+  return run_into<CameraReport>(request.video, request.layout, request.sidecar, sidecar, progress,
+                                [&](Clip& clip, io::Sidecar& s, const fs::path&, const Tick& tick) {
+                                  return camera_job(request, clip, s, tick);
+                                });
 }
 
 CameraReport run_track_camera(const CameraRequest& request) {
-  const auto start = Clock::now();
   check_camera_request(request);
-  const io::SidecarTarget target =
-      io::resolve_sidecar_target(request.sidecar, {{"VIDEO", request.video}}, "vdfx track");
-  auto decoder = open_video(request.video);
-  io::Sidecar sidecar =
-      io::read_sidecar_base(target, fresh_sidecar(request.video, decoder->properties()));
-  const io::Sidecar before = sidecar;
-  Clip clip = prepare_clip(std::move(decoder), request.video, request.layout, sidecar,
-                           target.base.value_or(request.sidecar.out));
-  CameraReport report =
-      camera_job(request, clip, sidecar, bar_tick(clip.decoder->properties().frames));
-  io::write_sidecar(request.sidecar.out, sidecar);
-  report.sidecar_note = io::sidecar_target_note(target, request.sidecar.out, before);
-  report.seconds = seconds_since(start);
-  return report;
+  return run_writing<CameraReport>(
+      request.video, request.layout, request.sidecar,
+      [&](Clip& clip, io::Sidecar& s, const fs::path&, const Tick& tick) {
+        return camera_job(request, clip, s, tick);
+      });
 }
 
 namespace {
@@ -261,36 +283,21 @@ SubjectReport subject_job(const SubjectRequest& r, Clip& clip, io::Sidecar& side
 
 SubjectReport track_subject_into(const SubjectRequest& request, io::Sidecar& sidecar,
                                  Progress* progress) {
-  const auto start = Clock::now();
   check_subject_request(request);
-  io::Sidecar work = sidecar;
-  const fs::path sidecar_path = request.sidecar.in.value_or(fs::path("sidecar"));
-  Clip clip =
-      prepare_clip(open_video(request.video), request.video, request.layout, work, sidecar_path);
-  SubjectReport report = subject_job(request, clip, work, sidecar_path, progress_tick(progress));
-  sidecar = std::move(work);
-  report.seconds = seconds_since(start);
-  return report;
+  return run_into<SubjectReport>(
+      request.video, request.layout, request.sidecar, sidecar, progress,
+      [&](Clip& clip, io::Sidecar& s, const fs::path& path, const Tick& tick) {
+        return subject_job(request, clip, s, path, tick);
+      });
 }
 
 SubjectReport run_track_subject(const SubjectRequest& request) {
-  const auto start = Clock::now();
   check_subject_request(request);
-  const io::SidecarTarget target =
-      io::resolve_sidecar_target(request.sidecar, {{"VIDEO", request.video}}, "vdfx track");
-  auto decoder = open_video(request.video);
-  io::Sidecar sidecar =
-      io::read_sidecar_base(target, fresh_sidecar(request.video, decoder->properties()));
-  const io::Sidecar before = sidecar;
-  const fs::path sidecar_path = target.base.value_or(request.sidecar.out);
-  Clip clip =
-      prepare_clip(std::move(decoder), request.video, request.layout, sidecar, sidecar_path);
-  SubjectReport report = subject_job(request, clip, sidecar, sidecar_path,
-                                     bar_tick(clip.decoder->properties().frames));
-  io::write_sidecar(request.sidecar.out, sidecar);
-  report.sidecar_note = io::sidecar_target_note(target, request.sidecar.out, before);
-  report.seconds = seconds_since(start);
-  return report;
+  return run_writing<SubjectReport>(
+      request.video, request.layout, request.sidecar,
+      [&](Clip& clip, io::Sidecar& s, const fs::path& path, const Tick& tick) {
+        return subject_job(request, clip, s, path, tick);
+      });
 }
 
 }  // namespace vdfx::app::track

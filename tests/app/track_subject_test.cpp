@@ -36,23 +36,27 @@ bench::SubjectErrors follow(const app::testing::SubjectClip& clip, std::int64_t 
   return bench::subject_errors(directions, seen, clip.truth);
 }
 
-TEST(TrackSubject, FollowsAPatchAcrossTheSeam) {
-  const auto clip =
-      write_subject_clip(test_dir() / "seam.mp4", bench::SubjectMotion::Seam, 40, 512);
+struct PathCase {
+  const char* name;
+  bench::SubjectMotion motion;
+};
+
+class TrackSubjectPath : public ::testing::TestWithParam<PathCase> {};
+
+// Across the seam and over the north pole, from the middle of the clip both ways.
+TEST_P(TrackSubjectPath, FollowsThePatchWithinADegree) {
+  const auto clip = write_subject_clip(test_dir() / (std::string(GetParam().name) + ".mp4"),
+                                       GetParam().motion, 40, 512);
   const bench::SubjectErrors e = follow(clip, 20, 10.0);
   EXPECT_LE(e.rms, 1.0);
   EXPECT_LE(e.max, 2.0);
   EXPECT_TRUE(e.visible_lost.empty()) << e.visible_lost.size() << " frames lost";
 }
 
-TEST(TrackSubject, FollowsAPatchOverThePole) {
-  const auto clip =
-      write_subject_clip(test_dir() / "pole.mp4", bench::SubjectMotion::Pole, 40, 512);
-  const bench::SubjectErrors e = follow(clip, 20, 10.0);
-  EXPECT_LE(e.rms, 1.0);
-  EXPECT_LE(e.max, 2.0);
-  EXPECT_TRUE(e.visible_lost.empty()) << e.visible_lost.size() << " frames lost";
-}
+INSTANTIATE_TEST_SUITE_P(Paths, TrackSubjectPath,
+                         ::testing::Values(PathCase{"seam", bench::SubjectMotion::Seam},
+                                           PathCase{"pole", bench::SubjectMotion::Pole}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST(TrackSubject, HoldsAndReportsEveryHiddenFrameAndFollowsTheGrowingPatch) {
   const auto clip =
