@@ -9,6 +9,19 @@
 
 namespace vdfx::app::track {
 
+cv::Mat reduce_area(const cv::Mat& image, cv::Size size) {
+  cv::Mat current = image;
+  while (current.cols / 2 >= size.width && current.rows / 2 >= size.height) {
+    cv::Mat half;
+    cv::resize(current, half, cv::Size(current.cols / 2, current.rows / 2), 0, 0, cv::INTER_AREA);
+    current = half;
+  }
+  if (current.size() == size) return current.data == image.data ? current.clone() : current;
+  cv::Mat out;
+  cv::resize(current, out, size, 0, 0, cv::INTER_AREA);
+  return out;
+}
+
 cv::Mat analysis_grey(const io::Picture& picture, const effects::StereoLayout& layout,
                       cv::Size size) {
   if (picture.empty()) throw std::invalid_argument("analysis_grey: empty picture");
@@ -19,8 +32,7 @@ cv::Mat analysis_grey(const io::Picture& picture, const effects::StereoLayout& l
     const cv::Mat eye = effects::eye_image(picture.rgb, layout, effects::EyeIndex::Left);
     cv::cvtColor(eye, grey, cv::COLOR_RGB2GRAY);
   }
-  cv::Mat small;
-  cv::resize(grey, small, size, 0, 0, cv::INTER_AREA);
+  const cv::Mat small = reduce_area(grey, size);
   if (small.depth() == CV_8U) return small;
   cv::Mat out;
   // 16-bit planes hold bit_depth-bit code values; float RGB is [0, 1].

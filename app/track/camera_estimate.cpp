@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 
 #include "app/track/analysis_frame.h"
 
@@ -13,6 +14,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) {
   return std::chrono::duration<double>(d).count();
+}
+
+/// CPU time of the calling thread, seconds.
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 }  // namespace
@@ -38,13 +46,17 @@ CameraEstimate estimate_camera(io::FrameDecoder& decoder, const effects::StereoL
     const auto t0 = Clock::now();
     const io::DecodeStatus status = decoder.read_picture(picture);
     const auto t1 = Clock::now();
+    const double c1 = thread_cpu_seconds();
     tracker.add(status == io::DecodeStatus::Ok ? analysis_grey(picture, layout, size) : cv::Mat());
+    out.analysis_cpu_seconds += thread_cpu_seconds() - c1;
     out.decode_seconds += seconds(t1 - t0);
     out.analysis_seconds += seconds(Clock::now() - t1);
     if (tick) tick(static_cast<double>(f + 1) / static_cast<double>(frames));
   }
   const auto t2 = Clock::now();
+  const double c2 = thread_cpu_seconds();
   out.track = tracker.finish();
+  out.analysis_cpu_seconds += thread_cpu_seconds() - c2;
   out.analysis_seconds += seconds(Clock::now() - t2);
   return out;
 }

@@ -15,6 +15,10 @@ struct CameraEstimate {
   CameraTrack track;
   int width = 0;                  //!< analysis width used (at most the eye image's, per turn)
   double analysis_seconds = 0.0;  //!< reducing the frames and tracking: not the decoding
+  /// The same, as CPU time of the calling thread: what the analysis cost where other work
+  /// shares the machine (wall time then counts the waits too). OpenCV's own worker threads, where
+  /// it starts any, are not in it.
+  double analysis_cpu_seconds = 0.0;
   double decode_seconds = 0.0;
 };
 

@@ -138,6 +138,7 @@ std::optional<RotationLink> CameraTracker::Impl::match(int j, int n,
                                                        const std::vector<cv::Mat>& pyr,
                                                        bool restarting) const {
   const KeyFrame& a = keys[static_cast<std::size_t>(j)];
+  if (a.grey.empty()) return std::nullopt;  // let go (link_earlier)
   const Eigen::Matrix3d predicted = keys[static_cast<std::size_t>(n)].q.transpose() * a.q;
   const int levels = restarting ? kLevels : 2;
   const std::vector<cv::Mat> warped = pyramid(warp_equirect(a.grey, grid, predicted), levels);
@@ -192,6 +193,13 @@ int CameraTracker::Impl::link_earlier(int n, const std::vector<cv::Mat>& pyr, bo
       ++made;
     }
   if (!says.empty()) keys[static_cast<std::size_t>(n)].q = mean_rotation(says);
+  // No later key frame links to one this far back (but the first): its picture can go, so an
+  // hour of video holds a few hundred key frames' pictures, not thousands.
+  const int oldest = n - (1 << std::min(o.far_links, 16));
+  if (oldest > 0) {
+    keys[static_cast<std::size_t>(oldest)].grey.release();
+    keys[static_cast<std::size_t>(oldest)].dirs = {};
+  }
   return made;
 }
 

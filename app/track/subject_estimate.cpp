@@ -3,10 +3,10 @@
 #include "app/track/subject_estimate.h"
 
 #include <algorithm>
-#include <opencv2/imgproc.hpp>
 #include <optional>
 #include <string>
 
+#include "app/track/analysis_frame.h"
 #include "effects/equirect_sampler.h"
 #include "io/input_error.h"
 
@@ -25,8 +25,8 @@ struct Reader {
     cv::Mat rgb;
     if (decoder.read(rgb) != io::DecodeStatus::Ok) return std::nullopt;
     const cv::Mat eye = effects::eye_image(rgb, layout, effects::EyeIndex::Left);
-    cv::Mat small, out;
-    cv::resize(eye, small, size, 0, 0, cv::INTER_AREA);
+    const cv::Mat small = reduce_area(eye, size);
+    cv::Mat out;
     small.convertTo(out, CV_32FC3, small.depth() == CV_8U ? 1.0 / 255.0 : 1.0);
     return out;
   }

@@ -15,6 +15,8 @@
 namespace vdfx::app::track {
 namespace {
 
+constexpr int kSizes = 4;  // template sizes kept: step^-4 .. step^4 times the start's
+
 effects::EquirectSampler sampler_of(const cv::Mat& equirect, int coverage_deg) {
   effects::SamplerOptions s;
   s.filter = effects::SampleFilter::AreaAware;
@@ -56,8 +58,15 @@ SubjectTracker::SubjectTracker(const cv::Mat& equirect, const Eigen::Vector3d& a
     : o_(options), last_(at.normalized()) {
   focal_ = 0.5 * o_.template_px / std::tan(0.5 * o_.size_deg * effects::kDegToRad);
   axes_ = effects::pose_rotation({effects::from_unit(last_), 0.0});
-  template_ = effects::sample_view(sampler_of(equirect, o_.coverage_deg),
-                                   camera_of(axes_, focal_, o_.template_px));
+  const cv::Mat view = effects::sample_view(sampler_of(equirect, o_.coverage_deg),
+                                            camera_of(axes_, focal_, o_.template_px));
+  // The template at each size tried (one search view a frame, matched at several sizes).
+  for (int k = -kSizes; k <= kSizes; ++k) {
+    const int side = static_cast<int>(std::lround(o_.template_px * std::pow(o_.scale_step, k)));
+    cv::Mat t;
+    cv::resize(view, t, cv::Size(side, side), 0, 0, k < 0 ? cv::INTER_AREA : cv::INTER_LINEAR);
+    templates_.push_back(t);
+  }
 }
 
 SubjectSample SubjectTracker::start() const {
@@ -65,30 +74,31 @@ SubjectSample SubjectTracker::start() const {
 }
 
 SubjectTracker::Match SubjectTracker::search(const cv::Mat& equirect, double side_widths) const {
-  const effects::EquirectSampler sampler = sampler_of(equirect, o_.coverage_deg);
   const int side = std::max(o_.template_px + 2,
                             static_cast<int>(std::lround(o_.template_px * side_widths)) / 2 * 2);
   const Eigen::Vector3d predicted = lost_ ? last_ : (velocity_ * last_).normalized();
   const Eigen::Matrix3d axes = Eigen::Quaterniond::FromTwoVectors(last_, predicted) * axes_;
-  // While lost the subject may have changed size by more than a step: five sizes, two steps
-  // apart, are tried.
-  const double step = lost_ ? o_.scale_step * o_.scale_step : o_.scale_step;
-  std::vector<double> scales = {scale_ / step, scale_, scale_ * step};
-  if (lost_) scales.insert(scales.end(), {scale_ / (step * step), scale_ * step * step});
+  // One view at the last size; the template at the sizes around it: a step either way, or while
+  // lost (the subject may have changed more) two and four steps either way.
+  const effects::ViewCamera camera = camera_of(axes, focal_ / scale_, side);
+  const cv::Mat view = effects::sample_view(sampler_of(equirect, o_.coverage_deg), camera);
+  const std::vector<int> sizes =
+      lost_ ? std::vector<int>{-4, -2, 0, 2, 4} : std::vector<int>{-1, 0, 1};
   Match best;
-  for (const double s : scales) {
-    const effects::ViewCamera camera = camera_of(axes, focal_ / s, side);
-    const cv::Mat view = effects::sample_view(sampler, camera);
+  for (const int k : sizes) {
+    const cv::Mat& t = templates_[static_cast<std::size_t>(k + kSizes)];
+    if (t.cols >= side) continue;
     cv::Mat map;
-    cv::matchTemplate(view, template_, map, cv::TM_CCOEFF_NORMED);
+    cv::matchTemplate(view, t, map, cv::TM_CCOEFF_NORMED);
     double score = 0.0;
     cv::Point at;
     cv::minMaxLoc(map, nullptr, &score, nullptr, &at);
     if (!(score > best.score)) continue;
     // matchTemplate's (x, y) puts the template's top-left corner on pixel (x, y): its centre is
-    // template_px / 2 further, in pixel-edge coordinates.
+    // half its side further, in pixel-edge coordinates.
     const cv::Point2d p = refine_peak(map, at);
-    best = {score, camera.ray(p.x + 0.5 * o_.template_px, p.y + 0.5 * o_.template_px), s};
+    best = {score, camera.ray(p.x + 0.5 * t.cols, p.y + 0.5 * t.rows),
+            scale_ * t.cols / static_cast<double>(o_.template_px)};
   }
   return best;
 }

@@ -7,18 +7,20 @@
 ///    pixels);
 ///  - in each next frame, a view `search` subject widths wide is centred on the prediction (the
 ///    last direction moved on by the last frame's motion), its axes carried along by the
-///    shortest-arc rotation between the centres (parallel transport: no spin near a pole), at three
-///    scales (the subject growing or shrinking by scale_step), and the template is found in it by
-///    normalised cross-correlation (OpenCV's matchTemplate, TM_CCOEFF_NORMED) with a sub-pixel
-///    peak;
+///    shortest-arc rotation between the centres (parallel transport: no spin near a pole), at the
+///    subject's last size; the template, resized to that size and a scale_step either way (the
+///    subject growing or shrinking), is found in it by normalised cross-correlation (OpenCV's
+///    matchTemplate, TM_CCOEFF_NORMED) with a sub-pixel peak;
 ///  - a peak below lost_score means the subject is not seen (hidden, gone, or changed beyond
 ///    recognition): the last confident direction is held and searched around in a view twice as
-///    wide, at five sizes two steps apart, until a peak of found_score picks it up again.
+///    wide, with the template two and four steps either way too, until a peak of found_score picks
+///    it up again.
 /// Confidence is the peak's correlation where the subject is seen, 0 where it is held.
 #pragma once
 
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
+#include <vector>
 
 namespace vdfx::app::track {
 
@@ -63,10 +65,10 @@ class SubjectTracker {
   Match search(const cv::Mat& equirect, double side_widths) const;
 
   SubjectOptions o_;
-  double focal_ = 0.0;  //!< template pixels per radian at scale 1
-  cv::Mat template_;
-  Eigen::Matrix3d axes_;  //!< the view's camera-to-world, centred on the last direction
-  Eigen::Vector3d last_;  //!< the last confident direction
+  double focal_ = 0.0;              //!< template pixels per radian at scale 1
+  std::vector<cv::Mat> templates_;  //!< the start's view resized by scale_step^-4 .. ^4
+  Eigen::Matrix3d axes_;            //!< the view's camera-to-world, centred on the last direction
+  Eigen::Vector3d last_;            //!< the last confident direction
   Eigen::Quaterniond velocity_ = Eigen::Quaterniond::Identity();  //!< last frame's motion
   double scale_ = 1.0;
   bool lost_ = false;

@@ -5,8 +5,10 @@
 /// its parts: the robust rotation fit and the rotation averaging.
 #include <gtest/gtest.h>
 
+#include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "app/track/analysis_frame.h"
 #include "app/track/camera_estimate.h"
 #include "app/track/rotation_fit.h"
 #include "app/track/rotation_graph.h"
@@ -105,6 +107,25 @@ TEST(TrackCamera, FollowsAVr180Image) {
   const auto err = orientation_errors(e.track.orientation, truth);
   EXPECT_LE(err.rms, 0.15);
   EXPECT_LE(err.max, 0.4);
+}
+
+TEST(TrackCamera, ReducesAFrameAsAreaAveragingDoes) {
+  // A 4K-sized luma plane to the default analysis size: halvings then one non-integer step, about
+  // as OpenCV's one-step area average (which is ten times slower at this factor).
+  cv::Mat big(1920, 3840, CV_8U), ref;
+  cv::randu(big, 0, 255);
+  cv::GaussianBlur(big, big, cv::Size(0, 0), 2.0);
+  const cv::Mat small = reduce_area(big, cv::Size(512, 256));
+  ASSERT_EQ(small.size(), cv::Size(512, 256));
+  cv::resize(big, ref, cv::Size(512, 256), 0, 0, cv::INTER_AREA);
+  cv::Mat diff;
+  cv::absdiff(small, ref, diff);
+  EXPECT_LT(cv::mean(diff)[0], 2.0);
+  // Exact halvings are OpenCV's own 2x2 means, and the size asked for is the size returned.
+  cv::Mat half;
+  cv::resize(big, half, cv::Size(1920, 960), 0, 0, cv::INTER_AREA);
+  EXPECT_EQ(cv::norm(reduce_area(big, cv::Size(1920, 960)), half, cv::NORM_INF), 0.0);
+  EXPECT_EQ(reduce_area(big, cv::Size(700, 300)).size(), cv::Size(700, 300));
 }
 
 TEST(RotationFit, FindsTheRotationOfTheInliersAmongManyOutliers) {
