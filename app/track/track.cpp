@@ -192,6 +192,7 @@ CameraReport camera_job(const CameraRequest& r, Clip& clip, io::Sidecar& sidecar
         std::max(report.largest_turn_deg,
                  o.angularDistance(Eigen::Quaterniond::Identity()) * effects::kRadToDeg);
   }
+  if (sidecar.camera) report.replaced = effects::camera_source_name(sidecar.camera->source);
   sidecar.camera = std::move(motion);
   return report;
 }

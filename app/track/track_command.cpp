@@ -63,6 +63,8 @@ void print_camera(const track::CameraRequest& r, const track::CameraReport& repo
   if (!report.held.empty())
     std::printf("no estimate (orientation held) at %zu frames: %s\n", report.held.size(),
                 frame_ranges(report.held).c_str());
+  if (!report.replaced.empty())
+    std::printf("the sidecar's camera (source: %s) is replaced\n", report.replaced.c_str());
   std::printf("%.2f s -> %s%s%s\n", report.seconds, r.sidecar.out.string().c_str(),
               report.sidecar_note.empty() ? "" : " ", report.sidecar_note.c_str());
 }

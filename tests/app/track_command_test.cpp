@@ -69,11 +69,15 @@ TEST(TrackCommand, CameraOffersAndUsesTheVideosCammTrack) {
                                 "gyroscope samples): --source camm uses it"),
             std::string::npos)
       << offered.output;
-  const auto used = run_vdfx("track camera " + camm.string() + " --source camm --force" + out);
+  // Onto the sidecar just written: its estimated camera is replaced, and the command says so.
+  const auto used = run_vdfx("track camera " + camm.string() + " --source camm" + out);
   ASSERT_EQ(used.exit_code, 0) << used.output;
   EXPECT_NE(
       used.output.find("camera: the video's CAMM track: angle-axis orientations (30 records)"),
       std::string::npos)
+      << used.output;
+  EXPECT_NE(used.output.find("the sidecar's camera (source: estimated) is replaced"),
+            std::string::npos)
       << used.output;
   const io::Sidecar s = io::read_sidecar(dir / "s.vdfx.json");
   ASSERT_TRUE(s.camera);
