@@ -45,6 +45,7 @@ struct CameraReport {
   effects::CameraMotion::Source source = effects::CameraMotion::Source::Estimated;
   std::string source_text;  //!< what the orientations came from, for the user
   std::string camm;         //!< the video's CAMM track ("" when it has none): what it holds
+  std::string replaced;     //!< the source of the camera the sidecar had ("" when none)
   std::int64_t frames = 0;
   std::vector<std::int64_t> held;      //!< frames whose orientation is held (no estimate there)
   double largest_turn_deg = 0.0;       //!< the farthest the camera turned from frame 0
