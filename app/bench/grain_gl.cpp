@@ -4,7 +4,7 @@
 /// shader styles (headset plane, surface sphere) the GPU layer's error against the CPU reference
 /// (effects::composite_shader_grain) over the bench eye's image. The volumetric styles have no
 /// CPU reference: their rows give the time and say so.
-#include "xr/grain_gl.h"
+#include "xr/render/grain_gl.h"
 
 #include <epoxy/gl.h>
 

@@ -17,11 +17,11 @@
 #include "io/sidecar.h"
 #include "io/video_source.h"
 #include "tests/app/openxr_test_support.h"
-#include "xr/compositor.h"
-#include "xr/gl_context.h"
-#include "xr/input_backend.h"
-#include "xr/openxr_format.h"
-#include "xr/openxr_runtime.h"
+#include "xr/input/input_backend.h"
+#include "xr/openxr/gl/openxr_runtime.h"
+#include "xr/openxr/openxr_format.h"
+#include "xr/render/compositor.h"
+#include "xr/render/gl_context.h"
 
 namespace vdfx::app {
 namespace {

@@ -15,13 +15,13 @@
 #include "app/editor/editor.h"
 #include "editor_test_util.h"
 #include "tests/support/test_paths.h"
-#include "xr/compositor.h"
-#include "xr/eye_views.h"
-#include "xr/gl_context.h"
-#include "xr/gl_texture.h"
-#include "xr/hmd_profile.h"
-#include "xr/input_backend.h"
-#include "xr/mirror.h"
+#include "xr/headset/eye_views.h"
+#include "xr/headset/hmd_profile.h"
+#include "xr/input/input_backend.h"
+#include "xr/render/compositor.h"
+#include "xr/render/gl_context.h"
+#include "xr/render/gl_texture.h"
+#include "xr/render/mirror.h"
 
 namespace vdfx::app {
 namespace {

@@ -21,7 +21,7 @@
 #include "effects/grain_layout.h"
 #include "gl_bench_support.h"
 #include "play_eye_fixture.h"
-#include "xr/grain_gl.h"
+#include "xr/render/grain_gl.h"
 
 namespace {
 

@@ -34,7 +34,7 @@ keys() {  # keys N: an exposure effect with N keyframes on a spiral
   awk -v n="$1" 'BEGIN{printf "{\"type\":\"exposure\",\"keyframes\":["; for(i=0;i<n;i++){a=(i*137.50776)%359-179; z=2*(i+0.5)/n-1; h=atan2(z,sqrt(1-z*z))*57.29578; printf "%s{\"azimuth_deg\":%.6f,\"altitude_deg\":%.6f,\"frame\":0,\"params\":{\"stops\":%.3f}}", (i?",":""), a, h, (i%17)/4-2}; printf "]}"}'
 }
 head -2 "$root/recordings/sim_look_and_place.vdrec.jsonl" > rec.vdrec.jsonl
-cp "$root/xr/profiles/generic90.json" hmd.json
+cp "$root/xr/headset/profiles/generic90.json" hmd.json
 render="render pano.png --sidecar s.vdfx.json --view 0,0 --fov 90 --size 64x32"
 
 # [SECTION] one case
