@@ -85,7 +85,7 @@ runTest('publish.page_anchor', async () => {
   fs.writeFileSync(anchored, JSON.stringify(sidecar(true), null, 1));
   fs.writeFileSync(plain, JSON.stringify(sidecar(false), null, 1));
   run(['publish', clip, '--sidecar', anchored, '--out', path.join(outDir, 'site')]);
-  const video = path.join(outDir, 'site', 'clip.mp4');
+  const video = path.join(outDir, 'site', 'video.mp4');
   const server = await serve(outDir);
   const browser = await Browser.launch(path.join(outDir, 'chromium-profile'), W, H);
   try {
