@@ -1,12 +1,11 @@
 /// @file
-/// @brief PendingOutput (temporary file + atomic rename) and InterruptGuard (SIGINT/SIGTERM).
+/// @brief PendingOutput: temporary file + atomic rename.
 #include "app/export/output_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <csignal>
 #include <cstring>
 #include <string>
 
@@ -17,23 +16,12 @@
 namespace vdfx::app {
 namespace {
 
-std::atomic<bool> g_interrupted{false};
-std::atomic<int> g_signal{0};
-
-extern "C" void on_signal(int sig) {
-  g_signal.store(sig);
-  g_interrupted.store(true);
-}
-
 void fsync_path(const std::filesystem::path& p, int flags) {
   const int fd = ::open(p.c_str(), flags | O_CLOEXEC);
   if (fd < 0) return;
   ::fsync(fd);
   ::close(fd);
 }
-
-struct sigaction g_old_int {
-}, g_old_term{};
 
 }  // namespace
 
@@ -51,6 +39,7 @@ PendingOutput::PendingOutput(std::filesystem::path target) : target_(std::move(t
   const std::string prefix = "." + target_.stem().string() + ".tmp-";
   io::remove_stale_temps(dir, prefix, target_.extension().string(), false);
   temp_ = dir / (prefix + std::to_string(::getpid()) + target_.extension().string());
+  emergency_ = io::EmergencyUnlink(temp_);
 }
 
 PendingOutput::~PendingOutput() {
@@ -65,30 +54,8 @@ void PendingOutput::commit() {
     throw io::InputError("cannot write " + target_.string() + ": rename from " + temp_.string() +
                          " failed: " + std::strerror(errno));
   committed_ = true;
+  emergency_.reset();
   fsync_path(target_.parent_path().empty() ? "." : target_.parent_path(), O_RDONLY | O_DIRECTORY);
-}
-
-InterruptGuard::InterruptGuard() {
-  g_interrupted = false;
-  g_signal = 0;
-  struct sigaction sa {};
-  sa.sa_handler = on_signal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, &g_old_int);
-  sigaction(SIGTERM, &sa, &g_old_term);
-}
-
-InterruptGuard::~InterruptGuard() {
-  sigaction(SIGINT, &g_old_int, nullptr);
-  sigaction(SIGTERM, &g_old_term, nullptr);
-  if (const int sig = g_signal.load()) std::raise(sig);
-}
-
-const std::atomic<bool>& InterruptGuard::interrupted() const {
-  return g_interrupted;
-}
-int InterruptGuard::signal() const {
-  return g_signal.load();
 }
 
 }  // namespace vdfx::app
