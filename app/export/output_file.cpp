@@ -2,7 +2,6 @@
 /// @brief PendingOutput: temporary file + atomic rename.
 #include "app/export/output_file.h"
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -10,20 +9,11 @@
 #include <string>
 
 #include "io/atomic_file.h"
+#include "io/durable.h"
 #include "io/file_lock.h"
 #include "io/input_error.h"
 
 namespace vdfx::app {
-namespace {
-
-void fsync_path(const std::filesystem::path& p, int flags) {
-  const int fd = ::open(p.c_str(), flags | O_CLOEXEC);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
-}  // namespace
 
 PendingOutput::PendingOutput(std::filesystem::path target) : target_(std::move(target)) {
   const std::filesystem::path dir = target_.parent_path().empty() ? "." : target_.parent_path();
@@ -49,13 +39,14 @@ PendingOutput::~PendingOutput() {
 void PendingOutput::commit() {
   struct stat old {};
   if (::stat(target_.c_str(), &old) == 0) ::chmod(temp_.c_str(), old.st_mode & 07777);
-  fsync_path(temp_, O_RDONLY);
+  // Best effort, as before the rename: the encoder has already closed the file.
+  io::fsync_written_file(temp_);
   if (::rename(temp_.c_str(), target_.c_str()) != 0)
     throw io::InputError("cannot write " + target_.string() + ": rename from " + temp_.string() +
                          " failed: " + std::strerror(errno));
   committed_ = true;
   emergency_.reset();
-  fsync_path(target_.parent_path().empty() ? "." : target_.parent_path(), O_RDONLY | O_DIRECTORY);
+  io::fsync_folder_entry(target_.parent_path());
 }
 
 }  // namespace vdfx::app

@@ -16,8 +16,8 @@
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const { execFileSync, spawnSync } = require('child_process');
-const { serve, Browser, decodePng, diff, pageTest } = require('./browser.cjs');
+const { execFileSync } = require('child_process');
+const { serve, Browser, decodePng, diff, pageTest, vdfxRunner } = require('./browser.cjs');
 const { fakeXr, viewQuaternion, projectionOf, half } = require('./fake_xr.cjs');
 
 const { args, check, runTest } =
@@ -25,12 +25,7 @@ const { args, check, runTest } =
 const [vdfx, sourceDir, outDir] = args;
 const W = 320, H = 180, MAX = 3, MEAN = 1;
 
-function run(args, options = {}) {
-  const r = spawnSync(vdfx, args, { encoding: 'utf8', ...options });
-  if (r.status !== 0 && !options.allowFail)
-    throw new Error(`vdfx ${args.join(' ')}: exit ${r.status}\n${r.stderr}${r.stdout}`);
-  return r;
-}
+const run = vdfxRunner(vdfx);
 
 // 512 x 256, 8 frames at 24 fps, H.264 4:2:0 BT.709 limited range (as page_test.cjs). `spot`:
 // a dim frame with a white spot (a Gaussian of 4 px sigma reaching full white) that moves right
@@ -110,7 +105,7 @@ function publishSites() {
     site.sidecar = path.join(outDir, `${name}.vdfx.json`);
     fs.writeFileSync(site.sidecar, JSON.stringify(sidecarOf(site), null, 1));
     run(['publish', clips[site.clip], '--sidecar', site.sidecar, '--out', path.join(outDir, name)]);
-    site.video = path.join(outDir, name, path.basename(clips[site.clip]));
+    site.video = path.join(outDir, name, 'video.mp4');
     const manifest = JSON.parse(fs.readFileSync(path.join(outDir, name, 'player.json')));
     check(manifest.left_out.length === 0, `${name}: left_out ${JSON.stringify(manifest.left_out)}`);
   }
