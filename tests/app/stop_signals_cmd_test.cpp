@@ -1,8 +1,9 @@
 /// @file
 /// @brief The headless long commands stopped by real signals (docs/cli.md, "Stopping a command"):
 /// `vdfx replay` (SIGINT) and `vdfx suggest` (SIGHUP) write nothing, leave --sidecar-out as it
-/// was and release its lock; `vdfx publish --transcode` (SIGINT) leaves OUT as it was and removes
-/// its staging folder. Each process ends by the signal and says so.
+/// was and release its lock, as `vdfx track camera` (SIGTERM) does; `vdfx publish --transcode`
+/// (SIGINT) leaves OUT as it was and removes its staging folder. Each process ends by the signal
+/// and says so.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -90,6 +91,22 @@ TEST(StopSignalsCmd, SighupStopsASuggestionWithItsSidecarOutAsItWas) {
       suggest, SIGHUP,
       "vdfx suggest: stopped by SIGHUP: nothing written; " + out.string() + " left as it was");
   EXPECT_EQ(test_files::slurp(out), before);
+  EXPECT_FALSE(fs::exists(io::lock_path(out)));
+}
+
+TEST(StopSignalsCmd, SigtermStopsACameraTrackWithNothingWritten) {
+  const fs::path dir = testing::test_dir();
+  const fs::path video = clip(dir, 128, 64, 60), out = dir / "t.vdfx.json";
+  // A wide analysis makes each frame slow enough to be stopped in the middle of the clip.
+  VdfxProcess track({"track", "camera", video.string(), "--sidecar-out", out.string(), "--width",
+                     "4096", "--points", "5000"},
+                    dir / "track.log");
+  ASSERT_TRUE(track.wait_until([&] { return fs::exists(io::lock_path(out)); })) << track.output();
+  track.signal(SIGTERM);
+  expect_stopped(
+      track, SIGTERM,
+      "vdfx track: stopped by SIGTERM: nothing written; " + out.string() + " left as it was");
+  EXPECT_FALSE(fs::exists(out));
   EXPECT_FALSE(fs::exists(io::lock_path(out)));
 }
 
