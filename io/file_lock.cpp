@@ -199,7 +199,7 @@ FileLock::Result FileLock::acquire(const fs::path& file, const std::string& comm
       }
     }
     if (r == 0) {
-      result.lock.emplace(FileLock(lock));
+      result.lock.emplace(FileLock(lock, text));
       return result;
     }
     const auto before = slurp(lock);
@@ -219,7 +219,8 @@ FileLock::Result FileLock::acquire(const fs::path& file, const std::string& comm
   cannot_lock(file, lock, EEXIST);
 }
 
-FileLock::FileLock(FileLock&& other) noexcept : lock_(std::move(other.lock_)) {
+FileLock::FileLock(FileLock&& other) noexcept
+    : lock_(std::move(other.lock_)), emergency_(std::move(other.emergency_)) {
   other.lock_.clear();
 }
 
@@ -227,6 +228,7 @@ FileLock& FileLock::operator=(FileLock&& other) noexcept {
   if (this != &other) {
     release();
     lock_ = std::move(other.lock_);
+    emergency_ = std::move(other.emergency_);
     other.lock_.clear();
   }
   return *this;
@@ -237,6 +239,7 @@ FileLock::~FileLock() {
 }
 
 void FileLock::release() noexcept {
+  emergency_.reset();
   if (lock_.empty()) return;
   const auto text = slurp(lock_);
   if (!text) return;

@@ -13,6 +13,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
+
+#include "io/emergency_unlink.h"
 
 namespace vdfx::io {
 
@@ -46,7 +49,8 @@ bool owner_alive(const LockOwner& owner);
 void check_not_locked_by_another(const std::filesystem::path& file, const std::string& role = "");
 
 /// A held lock: created by acquire(), removed by the destructor (only while the lock file is
-/// still this process's).
+/// still this process's), or at a hard stop by io::emergency_unlink_all (only while it still
+/// holds what this process wrote).
 class FileLock {
  public:
   struct Result;
@@ -62,9 +66,11 @@ class FileLock {
   const std::filesystem::path& path() const { return lock_; }
 
  private:
-  explicit FileLock(std::filesystem::path lock) : lock_(std::move(lock)) {}
+  FileLock(std::filesystem::path lock, std::string_view text)
+      : lock_(std::move(lock)), emergency_(lock_, text) {}
   void release() noexcept;
   std::filesystem::path lock_;
+  EmergencyUnlink emergency_;  //!< the lock in the table a second Ctrl-C empties
 };
 
 struct FileLock::Result {

@@ -11,6 +11,7 @@
 #include "app/bench/bench_request.h"
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/cli/stop_signals.h"
 
 namespace vdfx::app {
 namespace {
@@ -63,6 +64,7 @@ int cmd_bench(const Args& args) {
       std::cout << s.knob->knob.id << "/" << s.c->setting << (s.c->gl ? "  (GL)" : "") << "\n";
     return kExitOk;
   }
+  const StopSignals stop;  // checked between rows (run_bench)
   const bench::Report report = bench::run_bench(req, std::cout);
   if (const int failed = bench::failed_rows(report)) {
     std::cerr << "vdfx bench: " << failed

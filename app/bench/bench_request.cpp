@@ -14,6 +14,7 @@
 #include "app/bench/output.h"
 #include "app/bench/plot.h"
 #include "app/cli/command_registry.h"
+#include "app/cli/stop_signals.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "xr/render/gl_context.h"
@@ -126,6 +127,9 @@ Report measure(const std::vector<Selected>& selected, const BenchRequest& req) {
   {
     GlState gl;
     for (std::size_t i = 0; i < selected.size(); ++i) {
+      if (stop_requested())  // between rows: a row's timings are never cut short
+        throw Stopped("after " + std::to_string(i) + " of " + std::to_string(selected.size()) +
+                      " rows; no report printed or written");
       if (req.progress) {
         std::cerr << "[" << i + 1 << "/" << selected.size() << "] " << selected[i].knob->knob.id
                   << " " << selected[i].c->setting << ": ";

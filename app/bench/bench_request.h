@@ -38,7 +38,8 @@ std::vector<Selected> select_rows(const Registry& registry, const BenchRequest& 
 /// Measures the selected rows (app::UsageError when the filter matches none or --plot has no
 /// gnuplot; io::InputError for an output folder that is missing or cannot be made: both before
 /// any row runs), writes the markdown report to `markdown` and every output file asked for, and
-/// returns the report. A failed row (a bug) is in it with its reason.
+/// returns the report. A failed row (a bug) is in it with its reason. A stop signal
+/// (app/cli/stop_signals.h) stops it between rows: app::Stopped, nothing written.
 Report run_bench(const BenchRequest& request, std::ostream& markdown);
 
 /// The rows that failed.

@@ -2,10 +2,13 @@
 /// @brief The command registry and the top-level dispatch (only the light commands linked in).
 #include "app/cli/command_registry.h"
 
+#include <unistd.h>
+
 #include <exception>
 #include <iostream>
 
 #include "app/cli/command_functions.h"
+#include "app/cli/stop_signals.h"
 #include "io/input_error.h"
 
 namespace vdfx::app {
@@ -36,6 +39,11 @@ void print_help(std::ostream& out) {
 int run_guarded(const char* name, const std::function<int(const Args&)>& run, const Args& args) {
   try {
     return run(args);
+  } catch (const Stopped& e) {
+    // On a terminal the line starts fresh (after "^C", or a progress bar drawn in place).
+    std::cerr << (::isatty(STDERR_FILENO) ? "\n" : "") << "vdfx " << name << ": " << stopped_by()
+              << ": " << e.what() << "\n";
+    return stop_signal() ? 128 + stop_signal() : kExitInternal;  // the signal ends it, not this
   } catch (const UsageError& e) {
     std::cerr << "vdfx " << name << ": " << e.what() << "\n";
     return kExitUsage;

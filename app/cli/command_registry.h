@@ -62,7 +62,9 @@ const std::vector<Command>& commands();
 void print_help(std::ostream& out);
 
 /// Runs one command, mapping UsageError to exit 2, io::InputError to exit 1 and any other
-/// exception to 3 (the message goes to stderr, prefixed with "vdfx NAME:").
+/// exception to 3 (the message goes to stderr, prefixed with "vdfx NAME:"). A command stopped by
+/// a signal (app::Stopped, app/cli/stop_signals.h) is said as "vdfx NAME: stopped by SIGINT: ...";
+/// the caller then ends the process by that signal (end_by_stop_signal).
 int run_guarded(const char* name, const std::function<int(const Args&)>& run, const Args& args);
 
 /// True when ARGS hold --verbose before any "--": keep the media libraries' own messages.

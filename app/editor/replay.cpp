@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
 
+#include "app/cli/stop_signals.h"
 #include "app/editor/editor.h"
 #include "app/editor/editor_layers.h"
 #include "effects/equirect_sampler.h"
@@ -247,6 +248,9 @@ ReplayResult run_replay(const ReplayOptions& o) {
   std::size_t next_shot = 0;
   EditorLayers layers;  // the document's flares and grain, drawn into the frames
   for (std::size_t i = 0; i < timeline.size(); ++i) {
+    if (stop_requested())  // a stopped replay is not the session: none of it is written
+      throw Stopped("replayed " + std::to_string(i) + " of " + std::to_string(timeline.size()) +
+                    " samples; nothing written, " + o.sidecar_out.string() + " left as it was");
     editor.update(backend->poll(timeline[i]), timeline[i]);
     for (; next_shot < shots.size() && shots[next_shot] == i; ++next_shot)
       write_shot(editor, layers, src, next_shot, timeline[i], o, result);

@@ -43,7 +43,8 @@ struct ReplayResult {
 
 /// Runs the session. An existing sidecar_out is what the session is replayed onto, or replaced
 /// only with `force` (io::resolve_sidecar_target). Throws io::InputError for a bad recording
-/// (file and line), video or sidecar, and for an sidecar_out that would be replaced.
+/// (file and line), video or sidecar, and for an sidecar_out that would be replaced; app::Stopped
+/// when a stop signal came (app/cli/stop_signals.h), sidecar_out left as it was.
 ReplayResult run_replay(const ReplayOptions& options);
 
 /// Draws the panels (premultiplied RGBA textures on their world quads) over an RGB8 view seen

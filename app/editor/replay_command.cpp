@@ -5,6 +5,7 @@
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
 #include "app/cli/layout_options.h"
+#include "app/cli/stop_signals.h"
 #include "app/editor/replay.h"
 
 namespace vdfx::app {
@@ -25,6 +26,7 @@ int cmd_replay(const Args& args) {
   cli.add_option("--frames", frames, "write a few mirror-like PNG frames to this folder");
   add_layout_options(cli, o.layout);
   if (const auto code = parse_cli(cli, args)) return *code;
+  const StopSignals stop;  // checked before each sample (run_replay)
   o.recording = rec;
   o.video = video;
   if (!in.empty()) o.sidecar_in = in;

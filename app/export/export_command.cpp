@@ -9,6 +9,7 @@
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
 #include "app/cli/layout_options.h"
+#include "app/cli/stop_signals.h"
 #include "app/export/export_request.h"
 
 namespace vdfx::app {
@@ -123,9 +124,10 @@ int cmd_export(const Args& args) {
   add_export_options(cli, options, texts);
   if (auto code = parse_cli(cli, args)) return *code;
   const ExportRequest request = parse_request([&] { return export_request(cli, options, texts); });
+  const StopSignals stop;
   const ExportResult r = run_export(request);
   if (r.cancelled)
-    return kExitBadInput;  // not reached when a signal stopped it: it is raised again
+    throw Stopped("the temporary file removed; " + request.output().string() + " left as it was");
   if (r.ended_early)
     std::cerr << "vdfx export: warning: " << request.video.string() << " ends at frame " << r.end
               << " (cut short?); exported " << r.frames << " frames\n";

@@ -14,6 +14,7 @@
 #include "app/cli/command_registry.h"
 #include "app/cli/layout_options.h"
 #include "app/cli/progress.h"
+#include "app/cli/stop_signals.h"
 #include "app/export/baked_export.h"
 #include "app/export/layers.h"
 #include "app/export/output_file.h"
@@ -323,18 +324,15 @@ ExportResult run_export(const ExportRequest& req) {
   if (req.baked()) note_baked_leaves_out(stack);
   const FrameRenderer render = frame_renderer(req, in, stack, layers.get(), enc.settings.ycbcr);
 
-  // Signals only set a flag from here on; the guard outlives the temporary file, so the file is
-  // gone before the signal is raised again.
-  InterruptGuard guard;
+  // A stop signal (the command's StopSignals, app/cli/stop_signals.h) only sets the flag the
+  // pipeline polls; the temporary file is removed on the way out, before the command ends the
+  // process by that signal.
   PendingOutput out(target_file);
-  const PipelineResult r = encode_frames(in, render, enc, threads, guard.interrupted(), out);
+  const PipelineResult r = encode_frames(in, render, enc, threads, StopSignals::flag(), out);
   ExportResult result{req.output(), r.encoded, enc.settings.width, enc.settings.height};
   result.cancelled = r.cancelled;
   result.ended_early = r.ended_early;
   result.end = r.end;
-  // Said before the guard re-raises the signal (which ends the process once `out` is gone).
-  if (r.cancelled)
-    std::cerr << "\nvdfx export: interrupted; " << req.output().string() << " left as it was\n";
   return result;
 }
 

@@ -60,7 +60,8 @@ struct ExportResult {
   std::filesystem::path output;  //!< as named in the request
   std::int64_t frames = 0;       //!< frames encoded
   int width = 0, height = 0;
-  bool cancelled = false;  //!< SIGINT or SIGTERM: nothing written, the old file kept
+  bool cancelled =
+      false;  //!< a stop signal (SIGINT, SIGTERM, SIGHUP): nothing written, the old file kept
   /// The video ended before the last frame asked for (cut short?); `end` is one past the last
   /// frame exported.
   bool ended_early = false;
@@ -74,8 +75,8 @@ void check_export_request(const ExportRequest& request);
 /// Reads and checks every input before anything is written (io::InputError: exit 1), then
 /// renders and encodes the frames (docs/export.md: decode thread, render workers, ordered
 /// encoder) into a temporary file renamed over the output when complete. Prints its plan, notes
-/// and progress on stderr. SIGINT/SIGTERM stop it cleanly (result.cancelled, then the signal is
-/// raised again once the temporary file is gone).
+/// and progress on stderr. A stop signal (app/cli/stop_signals.h: the caller's StopSignals) stops
+/// it cleanly: result.cancelled, the temporary file removed, the output as it was.
 ExportResult run_export(const ExportRequest& request);
 
 }  // namespace vdfx::app

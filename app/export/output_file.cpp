@@ -1,11 +1,10 @@
 /// @file
-/// @brief PendingOutput (temporary file + atomic rename) and InterruptGuard (SIGINT/SIGTERM).
+/// @brief PendingOutput: temporary file + atomic rename.
 #include "app/export/output_file.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <csignal>
 #include <cstring>
 #include <string>
 
@@ -15,20 +14,6 @@
 #include "io/input_error.h"
 
 namespace vdfx::app {
-namespace {
-
-std::atomic<bool> g_interrupted{false};
-std::atomic<int> g_signal{0};
-
-extern "C" void on_signal(int sig) {
-  g_signal.store(sig);
-  g_interrupted.store(true);
-}
-
-struct sigaction g_old_int {
-}, g_old_term{};
-
-}  // namespace
 
 PendingOutput::PendingOutput(std::filesystem::path target) : target_(std::move(target)) {
   const std::filesystem::path dir = target_.parent_path().empty() ? "." : target_.parent_path();
@@ -44,6 +29,7 @@ PendingOutput::PendingOutput(std::filesystem::path target) : target_(std::move(t
   const std::string prefix = "." + target_.stem().string() + ".tmp-";
   io::remove_stale_temps(dir, prefix, target_.extension().string(), false);
   temp_ = dir / (prefix + std::to_string(::getpid()) + target_.extension().string());
+  emergency_ = io::EmergencyUnlink(temp_);
 }
 
 PendingOutput::~PendingOutput() {
@@ -59,30 +45,8 @@ void PendingOutput::commit() {
     throw io::InputError("cannot write " + target_.string() + ": rename from " + temp_.string() +
                          " failed: " + std::strerror(errno));
   committed_ = true;
+  emergency_.reset();
   io::fsync_folder_entry(target_.parent_path());
-}
-
-InterruptGuard::InterruptGuard() {
-  g_interrupted = false;
-  g_signal = 0;
-  struct sigaction sa {};
-  sa.sa_handler = on_signal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, &g_old_int);
-  sigaction(SIGTERM, &sa, &g_old_term);
-}
-
-InterruptGuard::~InterruptGuard() {
-  sigaction(SIGINT, &g_old_int, nullptr);
-  sigaction(SIGTERM, &g_old_term, nullptr);
-  if (const int sig = g_signal.load()) std::raise(sig);
-}
-
-const std::atomic<bool>& InterruptGuard::interrupted() const {
-  return g_interrupted;
-}
-int InterruptGuard::signal() const {
-  return g_signal.load();
 }
 
 }  // namespace vdfx::app

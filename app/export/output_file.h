@@ -1,11 +1,12 @@
 /// @file
 /// @brief The output of an export: written to a temporary file beside the target and renamed
-/// over it only when complete, so Ctrl-C, a kill or a crash leaves the previous file untouched;
-/// and the SIGINT/SIGTERM handling that lets an export stop cleanly.
+/// over it only when complete, so Ctrl-C, a kill or a crash leaves the previous file untouched.
+/// (A stop signal is the command's: app/cli/stop_signals.h.)
 #pragma once
 
-#include <atomic>
 #include <filesystem>
+
+#include "io/emergency_unlink.h"
 
 namespace vdfx::app {
 
@@ -27,21 +28,8 @@ class PendingOutput {
 
  private:
   std::filesystem::path target_, temp_;
+  io::EmergencyUnlink emergency_;  //!< a second Ctrl-C removes the temporary file too
   bool committed_ = false;
-};
-
-/// While alive, SIGINT and SIGTERM only set a flag (the pipeline polls it and stops); the
-/// destructor restores the previous handlers and, when a signal came, re-raises it so that the
-/// process ends the way the shell expects (after the caller has cleaned up).
-class InterruptGuard {
- public:
-  InterruptGuard();
-  ~InterruptGuard();
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
-  const std::atomic<bool>& interrupted() const;
-  /// The signal that arrived (0: none).
-  int signal() const;
 };
 
 }  // namespace vdfx::app

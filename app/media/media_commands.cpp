@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "app/cli/command_functions.h"
+#include "app/cli/stop_signals.h"
 #include "app/window/hmd_openxr_command.h"
 #include "io/library_logs.h"
 #include "xr/render/gl_context.h"
@@ -40,11 +41,13 @@ int gl_unavailable_is_usage(CommandFn fn, const Args& args) {
 int run_main(const Args& args) {
   if (!wants_verbose(args)) io::quiet_library_logs();
   set_hmd_openxr_command(cmd_hmd_openxr);
-  return dispatch(args, [](const Command& c, const Args& rest) {
+  const int code = dispatch(args, [](const Command& c, const Args& rest) {
     const CommandFn fn = command_function(c.name);
     return run_guarded(
         c.name, [fn](const Args& a) { return gl_unavailable_is_usage(fn, a); }, rest);
   });
+  // A long command stopped by a signal has cleaned up by now: the process ends by that signal.
+  return end_by_stop_signal(code);
 }
 
 }  // namespace vdfx::app

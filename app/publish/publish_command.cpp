@@ -9,6 +9,7 @@
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
 #include "app/cli/layout_options.h"
+#include "app/cli/stop_signals.h"
 #include "app/publish/publish_request.h"
 
 namespace vdfx::app {
@@ -52,6 +53,7 @@ int cmd_publish(const Args& args) {
   PublishTexts texts;
   add_publish_options(cli, options, texts);
   if (auto code = parse_cli(cli, args)) return *code;
+  const StopSignals stop;  // checked between the steps of building the folder (run_publish)
   const PublishResult r = run_publish(publish_request(options, texts));
   for (const std::string& e : r.left_out)
     std::cerr << "vdfx publish: note: the page does not draw " << e

@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include "app/cli/stop_signals.h"
 #include "effects/coords.h"
 #include "effects/flare_set_cv.h"
 #include "io/frame_decoder.h"
@@ -48,6 +49,7 @@ nlohmann::ordered_json track_auto_lights(const std::filesystem::path& video,
   // Frame by frame in order: the light at f is fitted from frames f - window .. f, all measured
   // by then, so each frame's light is the one a render of that frame alone finds.
   for (std::int64_t f = 0; f < frames; ++f) {
+    if (stop_requested()) throw Stopped("");  // run_publish says what became of OUT
     cv::Mat image;
     if (decoder->read(image) != io::DecodeStatus::Ok || image.empty())
       throw io::InputError(video.string() + ": frame " + std::to_string(f) +

@@ -16,6 +16,7 @@
 #include <system_error>
 
 #include "app/cli/layout_options.h"
+#include "app/cli/stop_signals.h"
 #include "app/publish/publish_assets.h"
 #include "app/publish/publish_lights.h"
 #include "app/publish/publish_video.h"
@@ -179,6 +180,33 @@ std::string StagedFolder::commit(const std::string& out_name) {
          "); a power cut now could still lose the new folder";
 }
 
+/// The staged folder's files (the video, sidecar, page and lights), checked for a stop signal
+/// between steps (app/cli/stop_signals.h: app::Stopped), then put in place.
+void build_and_commit(const PublishRequest& r, const io::Sidecar& sidecar, const PageAssets& assets,
+                      StagedFolder& staged, PublishResult& result) {
+  const auto check_stop = [] {
+    if (stop_requested()) throw Stopped("");
+  };
+  result.out = r.out;
+  PublishedVideo video = publish_video(r, sidecar, staged.path());
+  check_stop();
+  video.layout = result.layout;
+  if (r.transcode != Transcode::None) result.video_codec = video.codec;
+  result.transcoded = r.transcode != Transcode::None;
+  copy_file_checked(r.sidecar, staged.path() / kPublishedSidecar);
+  write_page(assets, staged.path(), page_settings(r, sidecar, video, result.video_codec));
+  check_stop();
+  // Tracked in the video the page plays (after --transcode, the transcoded one): the light is
+  // where that video's bright region is, as `vdfx render` of it finds it.
+  if (uses_auto_light(sidecar))
+    write_text_file(staged.path() / kLightsFile,
+                    track_auto_lights(staged.path() / video.file, sidecar).dump(2) + "\n");
+  result.left_out = left_out_of(sidecar);
+  check_stop();
+  result.files = folder_listing(staged.path());
+  result.warning = staged.commit(r.out.string());
+}
+
 }  // namespace
 
 bool browser_plays(const std::string& codec) {
@@ -193,23 +221,15 @@ PublishResult run_publish(const PublishRequest& r) {
   const std::string source_codec = checked_codec(r, props);
   PublishResult result;
   result.layout = shown_layout(props, r.layout, &sidecar.video, r.sidecar);
+  result.video_codec = source_codec;  // a transcode's is the new file's
   const PageAssets assets = find_page_assets();
-  StagedFolder staged(r.out);
-  result.out = r.out;
-  PublishedVideo video = publish_video(r, sidecar, staged.path());
-  video.layout = result.layout;
-  result.video_codec = r.transcode == Transcode::None ? source_codec : video.codec;
-  result.transcoded = r.transcode != Transcode::None;
-  copy_file_checked(r.sidecar, staged.path() / kPublishedSidecar);
-  write_page(assets, staged.path(), page_settings(r, sidecar, video, result.video_codec));
-  // Tracked in the video the page plays (after --transcode, the transcoded one): the light is
-  // where that video's bright region is, as `vdfx render` of it finds it.
-  if (uses_auto_light(sidecar))
-    write_text_file(staged.path() / kLightsFile,
-                    track_auto_lights(staged.path() / video.file, sidecar).dump(2) + "\n");
-  result.left_out = left_out_of(sidecar);
-  result.files = folder_listing(staged.path());
-  result.warning = staged.commit(r.out.string());
+  try {
+    StagedFolder staged(r.out);
+    build_and_commit(r, sidecar, assets, staged, result);
+  } catch (const Stopped&) {
+    // By now the staging folder is gone (its destructor ran) and OUT was never touched.
+    throw Stopped("the staging folder removed; " + r.out.string() + " left as it was");
+  }
   return result;
 }
 

@@ -46,7 +46,9 @@ bool browser_plays(const std::string& codec);
 /// or that contradicts the stream's tags, as io::resolve_video_layout reports it; an OUT that
 /// is an input, a file, or a folder vdfx publish did not write), then builds the folder in a
 /// temporary sibling and puts it in place with one atomic exchange: OUT holds the old folder or the
-/// new one, never a mix.
+/// new one, never a mix. A stop signal (app/cli/stop_signals.h) between steps, or during
+/// --transcode or the lights' tracking, throws app::Stopped with the sibling removed, OUT as it
+/// was.
 PublishResult run_publish(const PublishRequest& request);
 
 }  // namespace vdfx::app

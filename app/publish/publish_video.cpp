@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "app/cli/stop_signals.h"
 #include "app/export/export_request.h"
 #include "app/publish/publish_assets.h"
 #include "io/frame_decoder.h"
@@ -40,8 +41,9 @@ void transcode(const PublishRequest& r, const io::Sidecar& sidecar, const fs::pa
     e.crf = 18;
     e.preset = "fast";
   }
-  run_export(e);
+  const bool stopped = run_export(e).cancelled;  // a stop signal: run_publish says so
   fs::remove(no_effects);
+  if (stopped) throw Stopped("");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "app/cli/command_registry.h"
 #include "app/cli/layout_options.h"
+#include "app/cli/stop_signals.h"
 #include "io/eye_decoder.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
@@ -412,9 +413,17 @@ SuggestReport run_suggest(const SuggestRequest& request) {
   r.sidecar_in = target.base;  // an existing --sidecar-out is what the suggestion adds to
   std::optional<io::Sidecar> sidecar;
   if (target.base) sidecar = io::read_sidecar_base(target, {});
-  Clip clip = open_clip(r, nullptr, sidecar);
+  // A stop signal cancels it as the editor's worker does (app/cli/stop_signals.h).
+  Progress progress;
+  const CancelOnStop cancel_on_stop(progress.cancel);
+  Clip clip = open_clip(r, &progress, sidecar);
   const io::Sidecar before = *sidecar;
-  SuggestReport report = suggest_clip(r, clip, *sidecar);
+  SuggestReport report;
+  try {
+    report = suggest_clip(r, clip, *sidecar);
+  } catch (const Cancelled&) {
+    throw Stopped("nothing written; " + r.sidecar_out.string() + " left as it was");
+  }
   io::write_sidecar(r.sidecar_out, *sidecar);
   report.sidecar_note = io::sidecar_target_note(target, r.sidecar_out, before);
   report.seconds = seconds_since(start);

@@ -88,8 +88,9 @@ SuggestReport suggest_into(const SuggestRequest& request, io::Sidecar& sidecar,
 /// Runs one suggestion and writes the sidecar (atomically, never onto an input). An existing
 /// --sidecar-out is added to, or replaced only with `force` (io::resolve_sidecar_target). Throws
 /// io::InputError for input that cannot be used (unreadable video, a video that cannot be
-/// metered, keyframes already there without merge, an --sidecar-out that would be replaced) and
-/// UsageError for options out of range.
+/// metered, keyframes already there without merge, an --sidecar-out that would be replaced),
+/// UsageError for options out of range and app::Stopped when a stop signal cancelled it
+/// (app/cli/stop_signals.h: nothing written).
 SuggestReport run_suggest(const SuggestRequest& request);
 
 /// The frames sampled: 0, every, 2 every, ... and the last frame, plus `extra` (clamped).

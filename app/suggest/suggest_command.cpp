@@ -8,6 +8,7 @@
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
 #include "app/cli/layout_options.h"
+#include "app/cli/stop_signals.h"
 #include "app/suggest/suggest.h"
 
 namespace vdfx::app {
@@ -101,6 +102,7 @@ int cmd_suggest(const Args& args) {
       ->check(finite_range(1e-3, 90.0));
 
   if (const auto code = parse_cli(cli, args)) return *code;
+  const StopSignals stop;  // run_suggest's progress is cancelled by a stop signal
   r.kind = exposure->parsed()  ? suggest::Kind::Exposure
            : comfort->parsed() ? suggest::Kind::Comfort
                                : suggest::Kind::Guide;

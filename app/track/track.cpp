@@ -16,6 +16,7 @@
 #include "app/cli/command_registry.h"
 #include "app/cli/layout_options.h"
 #include "app/cli/progress.h"
+#include "app/cli/stop_signals.h"
 #include "app/track/camera_estimate.h"
 #include "app/track/camm_motion.h"
 #include "app/track/subject_estimate.h"
@@ -95,6 +96,15 @@ Tick bar_tick(std::int64_t frames) {
   };
 }
 
+/// The bar, with a stop signal (app/cli/stop_signals.h, through `progress`'s cancel flag) ending
+/// the job at its next frame, as the editor's Cancel does (Cancelled).
+Tick stoppable_bar_tick(Progress& progress, std::int64_t frames) {
+  return [check = progress_tick(&progress), bar = bar_tick(frames)](double fraction) {
+    check(fraction);
+    bar(fraction);
+  };
+}
+
 /// Runs `job(clip, sidecar, sidecar_path, tick)` on a copy of `sidecar` that replaces it only
 /// once the job is done (a *_into call: the editor's sidecar, a Progress).
 template <class Report, class Job>
@@ -112,11 +122,13 @@ Report run_into(const fs::path& video, const io::LayoutOverride& layout,
 }
 
 /// Runs `job` on the sidecar the command starts from (io/sidecar_target.h) and writes it, with a
-/// progress bar.
+/// progress bar. A stop signal stops it with nothing written (app::Stopped).
 template <class Report, class Job>
 Report run_writing(const fs::path& video, const io::LayoutOverride& layout,
                    const io::SidecarOptions& options, const Job& job) {
   const auto start = Clock::now();
+  Progress progress;
+  const CancelOnStop cancel_on_stop(progress.cancel);
   const io::SidecarTarget target =
       io::resolve_sidecar_target(options, {{"VIDEO", video}}, "vdfx track");
   auto decoder = open_video(video);
@@ -124,7 +136,13 @@ Report run_writing(const fs::path& video, const io::LayoutOverride& layout,
   const io::Sidecar before = sidecar;
   const fs::path sidecar_path = target.base.value_or(options.out);
   Clip clip = prepare_clip(std::move(decoder), video, layout, sidecar, sidecar_path);
-  Report report = job(clip, sidecar, sidecar_path, bar_tick(clip.decoder->properties().frames));
+  Report report;
+  try {
+    report = job(clip, sidecar, sidecar_path,
+                 stoppable_bar_tick(progress, clip.decoder->properties().frames));
+  } catch (const Cancelled&) {
+    throw Stopped("nothing written; " + options.out.string() + " left as it was");
+  }
   io::write_sidecar(options.out, sidecar);
   report.sidecar_note = io::sidecar_target_note(target, options.out, before);
   report.seconds = seconds_since(start);

@@ -62,7 +62,8 @@ CameraReport track_camera_into(const CameraRequest& request, io::Sidecar& sideca
                                Progress* progress = nullptr);
 
 /// Tracks the camera and writes --sidecar-out (io/sidecar_target.h's rule), with a progress bar
-/// on stderr.
+/// on stderr. A stop signal (app/cli/stop_signals.h) stops it at its next frame: app::Stopped,
+/// nothing written.
 CameraReport run_track_camera(const CameraRequest& request);
 
 struct SubjectRequest {
@@ -92,7 +93,7 @@ struct SubjectReport {
 SubjectReport track_subject_into(const SubjectRequest& request, io::Sidecar& sidecar,
                                  Progress* progress = nullptr);
 
-/// Follows the subject and writes --sidecar-out.
+/// Follows the subject and writes --sidecar-out (stopped as run_track_camera is).
 SubjectReport run_track_subject(const SubjectRequest& request);
 
 }  // namespace vdfx::app::track

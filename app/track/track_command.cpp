@@ -9,6 +9,7 @@
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
 #include "app/cli/layout_options.h"
+#include "app/cli/stop_signals.h"
 #include "app/track/track.h"
 
 namespace vdfx::app {
@@ -120,6 +121,7 @@ int cmd_track(const Args& args) {
   subject->add_flag("--replace", sub.replace, "replace a track of the same name");
 
   if (const auto code = parse_cli(cli, args)) return *code;
+  const StopSignals stop;  // the tracking stops at its next frame, nothing written
   if (camera->parsed()) {
     fill_sidecar(c, cam.sidecar);
     cam.video = c.video;

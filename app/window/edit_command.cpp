@@ -3,14 +3,17 @@
 /// editor in the simulated headset's window (docs/editor.md, "In the window"). The loop is
 /// app/window/frame_loop.h; the per-frame logic is EditorClient around app/editor/editor.h's
 /// Editor.
+#include <poll.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <iostream>
 #include <string>
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/cli/stop_signals.h"
 #include "app/editor/edit_access.h"
 #include "app/window/editor_client.h"
 #include "app/window/frame_loop_cli.h"
@@ -42,6 +45,24 @@ fs::path sidecar_video(const fs::path& sidecar_path, const io::Sidecar& s) {
 // The desktop layout puts both panels in front of the head (the sim's mouse reaches them); sim
 // recordings were made with it, so their replays need it too.
 
+/// A line typed on the terminal, or nothing when a stop signal came first: Ctrl-C at the prompt
+/// ends the command (std::getline would read on through it, the handler's read being restarted).
+std::optional<std::string> read_answer() {
+  std::string line;
+  while (!stop_requested()) {
+    pollfd p{STDIN_FILENO, POLLIN, 0};
+    const int ready = ::poll(&p, 1, 100);  // a signal may not interrupt it: look every 0.1 s
+    if (ready < 0 && errno != EINTR) return line;
+    if (ready <= 0) continue;
+    char c = 0;
+    const ssize_t n = ::read(STDIN_FILENO, &c, 1);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0 || c == '\n') return line;
+    line += c;
+  }
+  return std::nullopt;
+}
+
 // Offers an unclean exit's recovery copy. Returns the file to load instead of the sidecar.
 std::optional<fs::path> handle_recovery(const fs::path& sidecar_path, const std::string& recover) {
   const auto offer = find_recovery(sidecar_path);
@@ -52,9 +73,11 @@ std::optional<fs::path> handle_recovery(const fs::path& sidecar_path, const std:
     if (isatty(STDIN_FILENO)) {
       std::cerr << "vdfx edit: load the recovery copy " << offer->path.string() << "? [y/N] "
                 << std::flush;
-      std::string answer;
-      std::getline(std::cin, answer);
-      yes = !answer.empty() && (answer[0] == 'y' || answer[0] == 'Y');
+      const std::optional<std::string> answer = read_answer();
+      if (!answer)
+        throw Stopped("nothing opened; the recovery copy " + offer->path.string() +
+                      " is still there (--recover yes loads it)");
+      yes = !answer->empty() && ((*answer)[0] == 'y' || (*answer)[0] == 'Y');
     } else {
       std::cerr << "vdfx edit: not interactive: not recovered (--recover yes loads it)\n";
     }
@@ -187,7 +210,12 @@ int edit_in_loop(EditDocument& d, const LoopCli& loop, LoopSetup& setup) {
     std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
     return kExitBadInput;  // the sidecar could not be written (e.g. a read-only folder)
   }
-  if (!d.demo) std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
+  if (result.stopped)
+    std::cerr << "vdfx edit: " << stopped_by() << ": "
+              << (d.demo ? "the bundled demo, not saved" : editor.autosave_status())
+              << recording_note(loop) << "\n";
+  else if (!d.demo)
+    std::cerr << "vdfx edit: " << editor.autosave_status() << "\n";
   return kExitOk;
 }
 
@@ -220,6 +248,9 @@ int cmd_edit(const Args& args) {
   cli.footer(edit_help_footer());
   if (auto code = parse_cli(cli, args)) return *code;
 
+  // From here a stop signal ends the session as Escape does, everything saved and the lock
+  // released (docs/cli.md, "Stopping a command").
+  const StopSignals stop;
   EditDocument doc = open_document(video, sidecar_arg, recover, access);
   LoopSetup setup = prepare_loop(loop, doc.video, true, {{"--sidecar", doc.sidecar_path}});
   if (!doc.exists) {

@@ -303,6 +303,8 @@ struct FrameLoop::Impl {
 
   std::ostream& stats_stream() const { return o.stats_out ? *o.stats_out : std::cout; }
 
+  bool stop_asked() const { return o.stop && o.stop->load(); }
+
   /// The run's totals, and their line with --stats.
   void finish(FrameLoopResult& result, FrameLoopStats& stats, Clock::time_point wall0) {
     result.wall_s = std::chrono::duration<double>(Clock::now() - wall0).count();
@@ -400,6 +402,10 @@ struct FrameLoop::Impl {
     for (std::int64_t n = 0; !quit; ++n) {
       if ((o.max_frames >= 0 && n >= o.max_frames) || (replay && n >= frames)) break;
       if (gl->should_close()) break;
+      if (stop_asked()) {
+        result.stopped = true;
+        break;
+      }
       const auto frame_t0 = Clock::now();
       gl->poll_events();  // first: a resize it delivers is this frame's size
       const auto [fbw, fbh] = render_size();
@@ -511,6 +517,7 @@ struct FrameLoop::Impl {
     bool quit = false;
     for (std::int64_t n = 0;;) {
       quit = openxr_window_events(n) || quit;
+      if (stop_asked() && !result.stopped) quit = result.stopped = true;
       if (quit || (o.max_frames >= 0 && n >= o.max_frames)) rt.request_exit();
       rt.poll_events();
       if (rt.lifecycle().leaving()) break;

@@ -14,6 +14,7 @@
 ///   mirror.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -90,6 +91,9 @@ struct FrameLoopOptions {
   /// The video's stereo layout and coverage (docs/stereo.md): each eye samples its own image;
   /// the desktop view shows one eye, key 5 toggles which.
   effects::StereoLayout video_layout;
+  /// Set from outside (a stop signal: app/cli/stop_signals.h): the loop ends after the frame it
+  /// is in, as on Escape (a headset session through the runtime's states). Null: never.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct FrameRecord {
@@ -114,6 +118,7 @@ struct FrameLoopResult {
   /// Why the loop ended when the headset's runtime ended it ("the OpenXR session is being lost
   /// ..."); empty when vdfx did.
   std::string end_reason;
+  bool stopped = false;  //!< FrameLoopOptions::stop ended it
 };
 
 class FrameLoop {
@@ -125,7 +130,8 @@ class FrameLoop {
   FrameLoop(const FrameLoop&) = delete;
   FrameLoop& operator=(const FrameLoop&) = delete;
 
-  /// Runs until the window closes, Escape, the client asks, max_frames, or the replay ends.
+  /// Runs until the window closes, Escape, the client asks, max_frames, the replay ends or
+  /// options.stop is set.
   FrameLoopResult run();
 
  private:

@@ -8,6 +8,7 @@
 #include "app/cli/cli_util.h"
 #include "app/cli/command_registry.h"
 #include "app/cli/layout_options.h"
+#include "app/cli/stop_signals.h"
 #include "io/input_error.h"
 #include "xr/headset/hmd_profile.h"
 #include "xr/openxr/gl/openxr_runtime.h"
@@ -165,6 +166,7 @@ LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path
   f.vsync = !o.no_vsync;
   f.desktop_hfov_deg = o.fov;
   f.decode_timeout = std::chrono::nanoseconds(static_cast<std::int64_t>(o.decode_timeout_ms * 1e6));
+  f.stop = &StopSignals::flag();  // the command's StopSignals (app/cli/stop_signals.h)
 
   io::VideoSourceOptions vo;
   vo.loop = loop_video;
@@ -212,6 +214,10 @@ LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path
     s.input = xr::create_recording_backend(std::move(s.input), o.record, h);
   }
   return s;
+}
+
+std::string recording_note(const LoopCli& o) {
+  return o.record.empty() ? "" : "; the input recorded to " + o.record + " (whole lines)";
 }
 
 void report_loop(const char* command, const FrameLoopResult& r) {

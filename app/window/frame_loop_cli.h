@@ -78,4 +78,8 @@ void resolve_loop_layout(LoopSetup& s, const LoopCli& o, const io::VideoInfo* si
 /// Prints the run's summary line (frames, late frames, frames per second) to stderr.
 void report_loop(const char* command, const FrameLoopResult& r);
 
+/// "; the input recorded to REC (whole lines)" with --record, else "": said when a stop signal
+/// ended the loop.
+std::string recording_note(const LoopCli& o);
+
 }  // namespace vdfx::app

@@ -6,6 +6,7 @@
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "app/cli/stop_signals.h"
 #include "app/window/frame_loop_cli.h"
 #include "app/window/player.h"
 #include "io/sidecar.h"
@@ -52,6 +53,7 @@ int cmd_play(const Args& args) {
   cli.footer(play_help_footer());
   if (auto code = parse_cli(cli, args)) return *code;
 
+  const StopSignals stop;  // a stop signal ends the loop after its frame (docs/cli.md)
   const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
   LoopSetup setup = prepare_loop(loop, video, !no_loop, {{"--sidecar", sidecar_path}});
   resolve_loop_layout(setup, loop, &sidecar.video, sidecar_path);
@@ -62,7 +64,11 @@ int cmd_play(const Args& args) {
   po.mode = mode == "pixel" ? ParamMode::PerPixel : ParamMode::ViewDependent;
   Player player(sidecar, setup.video->properties(), po);
   FrameLoop frame_loop(setup.options, *setup.input, *setup.video, player);
-  report_loop("vdfx play", frame_loop.run());
+  const FrameLoopResult result = frame_loop.run();
+  report_loop("vdfx play", result);
+  if (result.stopped)
+    std::cerr << "vdfx play: " << stopped_by() << " after " << result.frames << " frames"
+              << recording_note(loop) << "\n";
   return kExitOk;
 }
 

@@ -2,8 +2,9 @@
 /// @brief `vdfx edit` and `vdfx play` with `--runtime openxr` against the simulated OpenXR
 /// runtime (Debian's loader, the core validation layer on): the session's lifecycle, LOSS_PENDING
 /// mid-edit, a scripted trigger press placing a keyframe at the scripted gaze, a headset
-/// recording replaying in the sim to the same sidecar, each error's message and exit code, and
-/// `vdfx hmd openxr`.
+/// recording replaying in the sim to the same sidecar, each error's message and exit code, SIGINT
+/// ending the session through the runtime's lifecycle, and `vdfx hmd openxr` (the refresh rate
+/// read or measured, every format by name).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -13,6 +14,7 @@
 #include "effects/coords.h"
 #include "io/sidecar.h"
 #include "tests/app/openxr_test_support.h"
+#include "tests/app/signal_test_support.h"
 
 namespace vdfx::app {
 namespace {
@@ -206,6 +208,69 @@ TEST_F(OpenXrCmd, HmdOpenxrPrintsWhatTheRuntimeOffers) {
   const auto none = run("hmd openxr");
   EXPECT_EQ(none.exit_code, 1) << none.output;
   EXPECT_NE(none.output.find("no OpenXR runtime"), std::string::npos) << none.output;
+}
+
+TEST_F(OpenXrCmd, SigintEndsTheSessionThroughTheRuntimesLifecycle) {
+  // A long script: the session would run for minutes; SIGINT once frame 5 has been shown.
+  write_script(dir() / "s.vdrec.jsonl", gaze_script(0.0, 0.0, 5000));
+  knob("VDFX_TEST_RUNTIME_SCRIPT", (dir() / "s.vdrec.jsonl").string());
+  knob("VDFX_TEST_RUNTIME_CAPTURE", "5");
+  std::vector<std::pair<std::string, std::string>> env = env_->variables();
+  env.insert(env.end(), knobs_.begin(), knobs_.end());
+  testing::VdfxProcess play({"play", pano_.string(), "--sidecar", sidecar_.string(), "--runtime",
+                             "openxr", "--hidden", "--scale", "0.1"},
+                            dir() / "play.log", env);
+  ASSERT_TRUE(play.wait_until([&] { return fs::exists(frame_dir(5) / "frame.json"); }))
+      << play.output();
+  play.signal(SIGINT);
+  const int status = play.wait();
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT)
+      << testing::describe_status(status) << "\n"
+      << play.output();
+  EXPECT_NE(play.output().find("vdfx play: stopped by SIGINT after "), std::string::npos)
+      << play.output();
+  // The runtime saw the session ended in order: asked to exit, ended, destroyed.
+  const nlohmann::json session = session_json();
+  std::vector<std::string> calls;
+  for (const auto& c : session["lifecycle_calls"]) calls.push_back(c["call"]);
+  EXPECT_EQ(calls, (std::vector<std::string>{"xrBeginSession", "xrRequestExitSession",
+                                             "xrEndSession", "xrDestroySession"}));
+  EXPECT_EQ(states().back(), "EXITING");
+  EXPECT_LT(session["frames_ended"].get<int>(), 4000) << "left long before the script's end";
+}
+
+TEST_F(OpenXrCmd, HmdOpenxrReadsTheDisplaysRatesOrMeasuresThemPastPlaceholderFrames) {
+  // Monado's first frames predict a placeholder 16 ms apart ("62.5 Hz"): measured past them.
+  knob("VDFX_TEST_RUNTIME_PLACEHOLDER_FRAMES", "5");
+  const auto measured = run("hmd openxr");
+  ASSERT_EQ(measured.exit_code, 0) << measured.output;
+  EXPECT_NE(measured.output.find("refresh        90 Hz (measured: the median interval of the "
+                                 "display times the runtime predicted for 30 frames"),
+            std::string::npos)
+      << measured.output;
+  EXPECT_EQ(measured.output.find("62.5"), std::string::npos) << measured.output;
+  // With XR_FB_display_refresh_rate the display's own rates, read, not measured.
+  knob("VDFX_TEST_RUNTIME_REFRESH_RATES", "72,90,120");
+  const auto read = run("hmd openxr");
+  ASSERT_EQ(read.exit_code, 0) << read.output;
+  EXPECT_NE(read.output.find("refresh        90 Hz (XR_FB_display_refresh_rate; the display "
+                             "offers 72, 90, 120 Hz)"),
+            std::string::npos)
+      << read.output;
+  const nlohmann::json session = session_json();
+  EXPECT_EQ(session["frames_waited"], 0) << "read, so no frame was run to measure";
+}
+
+TEST_F(OpenXrCmd, HmdOpenxrNamesEverySwapchainFormat) {
+  knob("VDFX_TEST_RUNTIME_SWAPCHAIN_FORMATS",
+       "GL_RGBA16F,GL_SRGB8_ALPHA8,GL_DEPTH24_STENCIL8,GL_DEPTH32F_STENCIL8,GL_R11F_G11F_B10F");
+  const auto r = run("hmd openxr");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // GL_DEPTH32F_STENCIL8 (0x8CAD) was printed as a number.
+  EXPECT_NE(r.output.find("\nformats        GL_RGBA16F, GL_SRGB8_ALPHA8, GL_DEPTH24_STENCIL8, "
+                          "GL_DEPTH32F_STENCIL8, GL_R11F_G11F_B10F\n"),
+            std::string::npos)
+      << r.output;
 }
 
 }  // namespace

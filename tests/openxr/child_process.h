@@ -31,9 +31,9 @@ struct ChildResult {
   std::string output;  //!< stdout and stderr together
 };
 
-inline ChildResult run_child(const std::vector<std::string>& argv,
-                             const std::vector<std::pair<std::string, std::string>>& env,
-                             const std::filesystem::path& log, int timeout_s) {
+/// This process's environment with `env` added (or replacing), as NAME=VALUE strings.
+inline std::vector<std::string> environment_with(
+    const std::vector<std::pair<std::string, std::string>>& env) {
   std::map<std::string, std::string> vars;
   for (char** e = environ; *e; ++e) {
     const std::string kv = *e;
@@ -43,6 +43,13 @@ inline ChildResult run_child(const std::vector<std::string>& argv,
   for (const auto& [k, v] : env) vars[k] = v;
   std::vector<std::string> env_strings;
   for (const auto& [k, v] : vars) env_strings.push_back(k + "=" + v);
+  return env_strings;
+}
+
+inline ChildResult run_child(const std::vector<std::string>& argv,
+                             const std::vector<std::pair<std::string, std::string>>& env,
+                             const std::filesystem::path& log, int timeout_s) {
+  std::vector<std::string> env_strings = environment_with(env);
   std::vector<char*> envp;
   for (auto& s : env_strings) envp.push_back(s.data());
   envp.push_back(nullptr);

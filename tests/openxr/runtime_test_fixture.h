@@ -48,7 +48,8 @@ class RuntimeTest : public ::testing::Test {
           "VDFX_TEST_RUNTIME_NO_HMD", "VDFX_TEST_RUNTIME_NO_OPENGL",
           "VDFX_TEST_RUNTIME_SWAPCHAIN_FORMATS", "VDFX_TEST_RUNTIME_LOSS_PENDING_NS",
           "VDFX_TEST_RUNTIME_EXIT_AFTER_FRAMES", "VDFX_TEST_RUNTIME_OUTPUT_DIR",
-          "VDFX_TEST_RUNTIME_CAPTURE", "VDFX_TEST_RUNTIME_SWITCH_CONTEXT"}) {
+          "VDFX_TEST_RUNTIME_CAPTURE", "VDFX_TEST_RUNTIME_SWITCH_CONTEXT",
+          "VDFX_TEST_RUNTIME_REFRESH_RATES", "VDFX_TEST_RUNTIME_PLACEHOLDER_FRAMES"}) {
       unsetenv(name);
     }
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();

@@ -66,14 +66,15 @@ XrTestApp::~XrTestApp() {
   }
 }
 
-XrResult XrTestApp::create_instance(bool opengl) {
+XrResult XrTestApp::create_instance(bool opengl, const std::vector<const char*>& more) {
   XrInstanceCreateInfo info{};
   info.type = XR_TYPE_INSTANCE_CREATE_INFO;
   std::strcpy(info.applicationInfo.applicationName, "vdfx runtime test");
   info.applicationInfo.apiVersion = XR_CURRENT_API_VERSION;
-  const char* extensions[] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME};
-  info.enabledExtensionCount = opengl ? 1 : 0;
-  info.enabledExtensionNames = extensions;
+  std::vector<const char*> extensions = more;
+  if (opengl) extensions.insert(extensions.begin(), XR_KHR_OPENGL_ENABLE_EXTENSION_NAME);
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.enabledExtensionNames = extensions.data();
   return xrCreateInstance(&info, &instance);
 }
 

@@ -37,7 +37,8 @@ class XrTestApp {
   XrTestApp(const XrTestApp&) = delete;
   XrTestApp& operator=(const XrTestApp&) = delete;
 
-  XrResult create_instance(bool opengl = true);
+  /// `more`: extensions enabled besides OpenGL's.
+  XrResult create_instance(bool opengl = true, const std::vector<const char*>& more = {});
   XrResult get_system();
   /// xrGetOpenGLGraphicsRequirementsKHR, then the session on the window's context.
   XrResult create_session();

@@ -101,7 +101,7 @@ Recorder::Recorder(const Instance& inst)
       spec_(inst.config.capture),
       hmd_name_(inst.hmd.name),
       script_(inst.config.script_path),
-      period_ns_(inst.hmd.period_ns()) {
+      period_ns_(display_period_ns(inst)) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec || !std::filesystem::is_directory(dir_)) {
@@ -167,6 +167,10 @@ void Recorder::write_frame(const CapturedFrame& frame) {
   written_.push_back(frame.frame);
 }
 
+void Recorder::call(const char* function, std::int64_t frames_waited) {
+  calls_.emplace_back(function, frames_waited);
+}
+
 void Recorder::finish(std::int64_t frames_waited, std::int64_t frames_ended) {
   if (finished_) return;
   finished_ = true;
@@ -177,6 +181,8 @@ void Recorder::finish(std::int64_t frames_waited, std::int64_t frames_ended) {
   }
   json profiles = json::array();
   for (const auto& [p, t] : profiles_) profiles.push_back({{"profile", p}, {"time_ns", t}});
+  json calls = json::array();
+  for (const auto& [c, frame] : calls_) calls.push_back({{"call", c}, {"frames_waited", frame}});
   json haptics = json::array();
   for (const HapticRecord& h : haptics_) {
     haptics.push_back({{"time_ns", h.time},
@@ -198,6 +204,7 @@ void Recorder::finish(std::int64_t frames_waited, std::int64_t frames_ended) {
                  {"frames_ended", frames_ended},
                  {"frames_captured", written_},
                  {"states", states},
+                 {"lifecycle_calls", calls},
                  {"interaction_profiles", profiles},
                  {"haptics", haptics}};
   write_atomically(dir_ / "session.json", doc.dump(2) + "\n");

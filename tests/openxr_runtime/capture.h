@@ -1,7 +1,8 @@
 /// @file
 /// @brief The read-back folder (VDFX_TEST_RUNTIME_OUTPUT_DIR): what the app submitted, for tests
 /// to check. Chosen frames as PNGs with a JSON of the layers (poses, FOVs, sizes), and at the end
-/// of the session session.json (states, interaction profile, haptics, frame counts). Layout and
+/// of the session session.json (states, lifecycle calls, interaction profile, haptics, frame
+/// counts). Layout and
 /// fields: docs/openxr.md, "Testing without a headset".
 #pragma once
 
@@ -80,6 +81,10 @@ class Recorder {
   void state(XrSessionState state, XrTime time);
   void interaction_profile(const std::string& path, XrTime time);
   void haptic(HapticRecord record);
+  /// A lifecycle call the app made (xrBeginSession, xrRequestExitSession, xrEndSession,
+  /// xrDestroySession), in order, with the frames waited by then: session.json's
+  /// "lifecycle_calls".
+  void call(const char* function, std::int64_t frames_waited);
   /// Writes the frame's files now, or (VDFX_TEST_RUNTIME_CAPTURE=last) keeps it for finish() when
   /// it has layers; returns the frame it no longer keeps, whose GPU copies the caller drops.
   std::optional<CapturedFrame> frame(CapturedFrame frame);
@@ -102,6 +107,7 @@ class Recorder {
   std::vector<std::pair<XrSessionState, XrTime>> states_;
   std::vector<std::pair<std::string, XrTime>> profiles_;
   std::vector<HapticRecord> haptics_;
+  std::vector<std::pair<std::string, std::int64_t>> calls_;
   std::vector<std::int64_t> written_;
   bool finished_ = false;
 };

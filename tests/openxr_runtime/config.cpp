@@ -79,8 +79,10 @@ const std::vector<SwapchainFormat>& known_swapchain_formats() {
       {GL_DEPTH_COMPONENT24, "GL_DEPTH_COMPONENT24", false, true},
       {GL_DEPTH_COMPONENT32F, "GL_DEPTH_COMPONENT32F", false, true},
       {GL_DEPTH24_STENCIL8, "GL_DEPTH24_STENCIL8", false, true},
-      // Offered only when asked for: a colour format few apps render to.
+      // Offered only when asked for: a colour format few apps render to, and a depth format
+      // Monado lists (tests of `vdfx hmd openxr`'s names).
       {GL_R11F_G11F_B10F, "GL_R11F_G11F_B10F", false, false},
+      {GL_DEPTH32F_STENCIL8, "GL_DEPTH32F_STENCIL8", false, true},
   };
   return formats;
 }
@@ -131,6 +133,26 @@ std::vector<SwapchainFormat> parse_swapchain_formats(const std::string& text) {
   return out;
 }
 
+std::vector<float> parse_refresh_rates(const std::string& text) {
+  std::vector<float> out;
+  for (const std::string& item : split(text, ',')) {
+    float hz = 0.0f;
+    const auto* end = item.data() + item.size();
+    const auto [ptr, ec] = std::from_chars(item.data(), end, hz);
+    if (item.empty() || ec != std::errc() || ptr != end || !(hz >= 1.0f && hz <= 1000.0f)) {
+      throw std::runtime_error("VDFX_TEST_RUNTIME_REFRESH_RATES=" + text + ": '" + item +
+                               "' is not a rate in Hz (1 to 1000); the value is a list such as "
+                               "72,90,120");
+    }
+    out.push_back(hz);
+  }
+  return out;
+}
+
+bool refresh_rate_offered_from_environment() {
+  return !trim(env("VDFX_TEST_RUNTIME_REFRESH_RATES")).empty();
+}
+
 bool opengl_offered_from_environment() {
   return env("VDFX_TEST_RUNTIME_NO_OPENGL") != "1";
 }
@@ -162,7 +184,8 @@ Config read_config_from_environment() {
   const std::string formats = env("VDFX_TEST_RUNTIME_SWAPCHAIN_FORMATS");
   if (formats.empty()) {
     for (const auto& f : known_swapchain_formats()) {
-      if (f.gl_format != GL_R11F_G11F_B10F) c.formats.push_back(f);
+      if (f.gl_format != GL_R11F_G11F_B10F && f.gl_format != GL_DEPTH32F_STENCIL8)
+        c.formats.push_back(f);
     }
   } else {
     c.formats = parse_swapchain_formats(formats);
@@ -180,6 +203,12 @@ Config read_config_from_environment() {
       throw std::runtime_error("VDFX_TEST_RUNTIME_SWITCH_CONTEXT=" + v + ": expected 0 or 1");
     }
     c.switch_gl_context = v == "1";
+  }
+  if (const std::string v = trim(env("VDFX_TEST_RUNTIME_REFRESH_RATES")); !v.empty()) {
+    c.refresh_rates = parse_refresh_rates(v);
+  }
+  if (const std::string v = env("VDFX_TEST_RUNTIME_PLACEHOLDER_FRAMES"); !v.empty()) {
+    c.placeholder_frames = int_variable("VDFX_TEST_RUNTIME_PLACEHOLDER_FRAMES", v);
   }
   return c;
 }

@@ -42,7 +42,17 @@ struct Config {
   std::string output_dir;          //!< VDFX_TEST_RUNTIME_OUTPUT_DIR ("" = nothing written)
   CaptureSpec capture;             //!< VDFX_TEST_RUNTIME_CAPTURE
   bool switch_gl_context = false;  //!< VDFX_TEST_RUNTIME_SWITCH_CONTEXT=1 (SteamVR's habit)
+  /// VDFX_TEST_RUNTIME_REFRESH_RATES=72,90,120: XR_FB_display_refresh_rate is offered with these
+  /// rates (Hz); empty: it is not offered.
+  std::vector<float> refresh_rates;
+  /// VDFX_TEST_RUNTIME_PLACEHOLDER_FRAMES=N: the first N frames of a session are predicted
+  /// kPlaceholderPeriodNs apart, and say so as their period, as a runtime does before it has
+  /// the display's timing (Monado: 16 ms, "62.5 Hz").
+  std::int64_t placeholder_frames = 0;
 };
+
+/// The placeholder frame period (VDFX_TEST_RUNTIME_PLACEHOLDER_FRAMES).
+inline constexpr std::int64_t kPlaceholderPeriodNs = 16'000'000;
 
 /// Reads the variables; throws std::runtime_error naming the variable and what is wrong.
 Config read_config_from_environment();
@@ -51,9 +61,13 @@ Config read_config_from_environment();
 /// lists the extensions before it creates an instance: that list must not fail on another
 /// variable's bad value, which xrCreateInstance then reports.
 bool opengl_offered_from_environment();
+/// Whether XR_FB_display_refresh_rate is offered (VDFX_TEST_RUNTIME_REFRESH_RATES is set), for
+/// the same list.
+bool refresh_rate_offered_from_environment();
 
 /// Parses one variable's value (exposed for tests).
 CaptureSpec parse_capture_spec(const std::string& text);
 std::vector<SwapchainFormat> parse_swapchain_formats(const std::string& text);
+std::vector<float> parse_refresh_rates(const std::string& text);
 
 }  // namespace vdfx::test_runtime

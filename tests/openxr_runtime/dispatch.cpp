@@ -46,10 +46,13 @@ struct XrNegotiateRuntimeRequest {
 
 namespace {
 
+/// The extension an entry point belongs to: given only to an instance that enabled it.
+enum class Extension { kNone, kOpenGl, kRefreshRate };
+
 struct Entry {
   PFN_xrVoidFunction function;
   bool needs_instance;  //!< false for the three a null instance may ask for
-  bool opengl;          //!< XR_KHR_opengl_enable's: only when the instance enabled it
+  Extension extension;
 };
 
 template <class F>
@@ -58,21 +61,27 @@ PFN_xrVoidFunction as_void(F* f) {
 }
 
 const std::map<std::string, Entry>& entries() {
-#define VDFX_ENTRY(name)               \
-  {                                    \
-#name, {                           \
-      as_void(&api::name), true, false \
-    }                                  \
+#define VDFX_ENTRY(name)                          \
+  {                                               \
+#name, {                                      \
+      as_void(&api::name), true, Extension::kNone \
+    }                                             \
   }
   static const std::map<std::string, Entry> table{
-      {"xrGetInstanceProcAddr", {as_void(&api::xrGetInstanceProcAddr), false, false}},
+      {"xrGetInstanceProcAddr", {as_void(&api::xrGetInstanceProcAddr), false, Extension::kNone}},
       {"xrEnumerateApiLayerProperties",
-       {as_void(&api::xrEnumerateApiLayerProperties), false, false}},
+       {as_void(&api::xrEnumerateApiLayerProperties), false, Extension::kNone}},
       {"xrEnumerateInstanceExtensionProperties",
-       {as_void(&api::xrEnumerateInstanceExtensionProperties), false, false}},
-      {"xrCreateInstance", {as_void(&api::xrCreateInstance), false, false}},
+       {as_void(&api::xrEnumerateInstanceExtensionProperties), false, Extension::kNone}},
+      {"xrCreateInstance", {as_void(&api::xrCreateInstance), false, Extension::kNone}},
       {"xrGetOpenGLGraphicsRequirementsKHR",
-       {as_void(&api::xrGetOpenGLGraphicsRequirementsKHR), true, true}},
+       {as_void(&api::xrGetOpenGLGraphicsRequirementsKHR), true, Extension::kOpenGl}},
+      {"xrEnumerateDisplayRefreshRatesFB",
+       {as_void(&api::xrEnumerateDisplayRefreshRatesFB), true, Extension::kRefreshRate}},
+      {"xrGetDisplayRefreshRateFB",
+       {as_void(&api::xrGetDisplayRefreshRateFB), true, Extension::kRefreshRate}},
+      {"xrRequestDisplayRefreshRateFB",
+       {as_void(&api::xrRequestDisplayRefreshRateFB), true, Extension::kRefreshRate}},
       VDFX_ENTRY(xrDestroyInstance),
       VDFX_ENTRY(xrGetInstanceProperties),
       VDFX_ENTRY(xrPollEvent),
@@ -148,7 +157,10 @@ XRAPI_ATTR XrResult XRAPI_CALL xrGetInstanceProcAddr(XrInstance instance, const 
   if (!inst && it->second.needs_instance) {
     return fail(fn, XR_ERROR_HANDLE_INVALID, std::string(name) + " needs an instance");
   }
-  if (it->second.opengl && !inst->gl_enabled) return XR_ERROR_FUNCTION_UNSUPPORTED;
+  const Extension ext = it->second.extension;
+  if ((ext == Extension::kOpenGl && !inst->gl_enabled) ||
+      (ext == Extension::kRefreshRate && !inst->refresh_rate_enabled))
+    return XR_ERROR_FUNCTION_UNSUPPORTED;
   *function = it->second.function;
   return XR_SUCCESS;
 }

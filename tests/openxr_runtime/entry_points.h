@@ -1,5 +1,6 @@
 /// @file
-/// @brief The runtime's OpenXR 1.0 entry points (and XR_KHR_opengl_enable's one), in their own
+/// @brief The runtime's OpenXR 1.0 entry points (and XR_KHR_opengl_enable's and
+/// XR_FB_display_refresh_rate's), in their own
 /// namespace: the library exports only xrNegotiateLoaderRuntimeInterface, and the loader reaches
 /// these through xrGetInstanceProcAddr (dispatch.cpp).
 #pragma once
@@ -156,6 +157,13 @@ XRAPI_ATTR XrResult XRAPI_CALL xrStopHapticFeedback(XrSession session,
 XRAPI_ATTR XrResult XRAPI_CALL
 xrGetOpenGLGraphicsRequirementsKHR(XrInstance instance, XrSystemId systemId,
                                    XrGraphicsRequirementsOpenGLKHR* graphicsRequirements);
+XRAPI_ATTR XrResult XRAPI_CALL xrEnumerateDisplayRefreshRatesFB(
+    XrSession session, uint32_t displayRefreshRateCapacityInput,
+    uint32_t* displayRefreshRateCountOutput, float* displayRefreshRates);
+XRAPI_ATTR XrResult XRAPI_CALL xrGetDisplayRefreshRateFB(XrSession session,
+                                                         float* displayRefreshRate);
+XRAPI_ATTR XrResult XRAPI_CALL xrRequestDisplayRefreshRateFB(XrSession session,
+                                                             float displayRefreshRate);
 
 }  // namespace api
 }  // namespace vdfx::test_runtime

@@ -1,7 +1,8 @@
 /// @file
 /// @brief The frame loop on the virtual clock: xrWaitFrame gives frame k the display time
-/// kClockOriginNs + k * period (never waits on the wall clock), xrBeginFrame and xrEndFrame
-/// check their order and every submitted layer, and chosen frames are read back.
+/// kClockOriginNs + k * period (frame_timing: placeholder frames and a refresh rate change
+/// aside; it never waits on the wall clock), xrBeginFrame and xrEndFrame check their order and
+/// every submitted layer, and chosen frames are read back.
 #include <optional>
 
 #include "tests/openxr_runtime/capture.h"
@@ -190,11 +191,11 @@ XRAPI_ATTR XrResult XRAPI_CALL xrWaitFrame(XrSession session, const XrFrameWaitI
     if (!s->running) return fail(fn, XR_ERROR_SESSION_NOT_RUNNING, "xrBeginSession first");
     Instance& inst = *live_instance();
     const std::int64_t k = s->waits++;
-    const std::int64_t period = inst.hmd.period_ns();
-    s->now = kClockOriginNs + k * period;
+    const FrameTiming timing = frame_timing(inst, *s, k);
+    s->now = timing.time;
     advance_states(inst, *s, k);
     state->predictedDisplayTime = s->now;
-    state->predictedDisplayPeriod = period;
+    state->predictedDisplayPeriod = timing.period_ns;
     state->shouldRender =
         (s->state == XR_SESSION_STATE_VISIBLE || s->state == XR_SESSION_STATE_FOCUSED) ? XR_TRUE
                                                                                        : XR_FALSE;
@@ -218,6 +219,7 @@ XRAPI_ATTR XrResult XRAPI_CALL xrBeginFrame(XrSession session, const XrFrameBegi
     // A frame begun again before its xrEndFrame is discarded (a success code).
     const XrResult result = s->in_frame ? XR_FRAME_DISCARDED : XR_SUCCESS;
     s->begun_frame = s->waits - 1;
+    s->begun_time = s->now;
     s->begins = s->waits;
     s->in_frame = true;
     return frame_result(*s, result);
@@ -255,7 +257,7 @@ XRAPI_ATTR XrResult XRAPI_CALL xrEndFrame(XrSession session, const XrFrameEndInf
         CapturedFrame frame;
         frame.frame = s->begun_frame;
         frame.display_time = info->displayTime;
-        frame.predicted_display_time = kClockOriginNs + s->begun_frame * inst.hmd.period_ns();
+        frame.predicted_display_time = s->begun_time;
         const bool later = s->recorder->keeps_last();
         for (uint32_t i = 0; i < info->layerCount; ++i) {
           frame.layers.emplace_back();

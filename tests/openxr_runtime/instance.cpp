@@ -1,9 +1,11 @@
 /// @file
 /// @brief Instance, system and view configuration entry points, paths, strings and the event
 /// queue (xrPollEvent).
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
+#include "tests/openxr_runtime/capture.h"
 #include "tests/openxr_runtime/entry_points.h"
 #include "tests/openxr_runtime/session_state.h"
 
@@ -15,16 +17,20 @@ constexpr XrVersion kRuntimeVersion = XR_MAKE_VERSION(0, 1, 0);
 constexpr XrVersion kMinGlVersion = XR_MAKE_VERSION(3, 3, 0);
 constexpr XrVersion kMaxGlVersion = XR_MAKE_VERSION(4, 6, 0);
 
-/// The extensions offered: OpenGL unless VDFX_TEST_RUNTIME_NO_OPENGL=1 (a runtime without it).
-std::vector<XrExtensionProperties> offered_extensions(bool opengl) {
+/// The extensions offered: OpenGL unless VDFX_TEST_RUNTIME_NO_OPENGL=1 (a runtime without it),
+/// XR_FB_display_refresh_rate when VDFX_TEST_RUNTIME_REFRESH_RATES lists rates.
+std::vector<XrExtensionProperties> offered_extensions(bool opengl, bool refresh_rate) {
   std::vector<XrExtensionProperties> out;
-  if (opengl) {
+  const auto offer = [&](const char* name, std::uint32_t version) {
     XrExtensionProperties p{};
     p.type = XR_TYPE_EXTENSION_PROPERTIES;
-    std::strncpy(p.extensionName, XR_KHR_OPENGL_ENABLE_EXTENSION_NAME, XR_MAX_EXTENSION_NAME_SIZE);
-    p.extensionVersion = XR_KHR_opengl_enable_SPEC_VERSION;
+    std::snprintf(p.extensionName, sizeof p.extensionName, "%s", name);
+    p.extensionVersion = version;
     out.push_back(p);
-  }
+  };
+  if (opengl) offer(XR_KHR_OPENGL_ENABLE_EXTENSION_NAME, XR_KHR_opengl_enable_SPEC_VERSION);
+  if (refresh_rate)
+    offer(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME, XR_FB_display_refresh_rate_SPEC_VERSION);
   return out;
 }
 
@@ -60,6 +66,14 @@ std::unique_ptr<Instance> make_instance() {
     hmd = inst->script->hmd;
   }
   inst->hmd = load_hmd(hmd.empty() ? "generic90" : hmd);
+  // With XR_FB_display_refresh_rate the display runs at the headset's own rate when it is one of
+  // those offered, else at the first one offered.
+  const std::vector<float>& rates = inst->config.refresh_rates;
+  if (!rates.empty()) {
+    inst->refresh_hz = rates.front();
+    for (const float hz : rates)
+      if (std::abs(hz - inst->hmd.refresh_hz) < 0.01) inst->refresh_hz = hz;
+  }
   return inst;
 }
 
@@ -79,7 +93,8 @@ XRAPI_ATTR XrResult XRAPI_CALL xrEnumerateInstanceExtensionProperties(
   constexpr const char* fn = "xrEnumerateInstanceExtensionProperties";
   return guarded(fn, [&] {
     if (layerName) return fail(fn, XR_ERROR_API_LAYER_NOT_PRESENT, "the runtime has no layers");
-    const auto offered = offered_extensions(opengl_offered_from_environment());
+    const auto offered = offered_extensions(opengl_offered_from_environment(),
+                                            refresh_rate_offered_from_environment());
     return two_call(
         fn, capacity, count, properties, offered.size(),
         [&](XrExtensionProperties& p, std::size_t i) {
@@ -110,7 +125,8 @@ XRAPI_ATTR XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* info
       return fail(fn, XR_ERROR_NAME_INVALID, "applicationInfo.applicationName is empty");
     }
     auto inst = make_instance();
-    const auto offered = offered_extensions(!inst->config.no_opengl);
+    const auto offered =
+        offered_extensions(!inst->config.no_opengl, !inst->config.refresh_rates.empty());
     for (uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
       const std::string name = info->enabledExtensionNames[i];
       bool found = false;
@@ -119,6 +135,8 @@ XRAPI_ATTR XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* info
         return fail(fn, XR_ERROR_EXTENSION_NOT_PRESENT, "the runtime does not offer " + name);
       }
       inst->gl_enabled = inst->gl_enabled || name == XR_KHR_OPENGL_ENABLE_EXTENSION_NAME;
+      inst->refresh_rate_enabled =
+          inst->refresh_rate_enabled || name == XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME;
     }
     inst->app_name = info->applicationInfo.applicationName;
     live_instance() = std::move(inst);
@@ -128,10 +146,14 @@ XRAPI_ATTR XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* info
 }
 
 XRAPI_ATTR XrResult XRAPI_CALL xrDestroyInstance(XrInstance instance) {
-  return guarded("xrDestroyInstance", [&] {
+  constexpr const char* fn = "xrDestroyInstance";
+  return guarded(fn, [&] {
     Instance* inst = find_instance(instance);
-    if (!inst) return fail("xrDestroyInstance", XR_ERROR_HANDLE_INVALID, "unknown instance");
-    if (inst->session) destroy_session(*inst);
+    if (!inst) return fail(fn, XR_ERROR_HANDLE_INVALID, "unknown instance");
+    if (inst->session) {
+      if (inst->session->recorder) inst->session->recorder->call(fn, inst->session->waits);
+      destroy_session(*inst);
+    }
     live_instance().reset();
     return XR_SUCCESS;
   });

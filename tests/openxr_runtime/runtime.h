@@ -120,6 +120,11 @@ struct Session {
   XrViewConfigurationType view_config{};
   std::int64_t waits = 0;         //!< xrWaitFrame calls of this session
   std::int64_t begun_frame = -1;  //!< frame of the last xrBeginFrame
+  XrTime begun_time = 0;          //!< its predicted display time
+  /// A refresh rate change (xrRequestDisplayRefreshRateFB) takes effect at this frame, predicted
+  /// for this time; frames after it are one new period apart (-1: no change).
+  std::int64_t rate_change_frame = -1;
+  XrTime rate_change_time = 0;
   std::int64_t begins = 0;
   bool in_frame = false;  //!< between xrBeginFrame and xrEndFrame
   std::int64_t frames_ended = 0;
@@ -140,6 +145,8 @@ struct Instance {
   Hmd hmd;
   std::optional<Script> script;
   bool gl_enabled = false;
+  bool refresh_rate_enabled = false;  //!< XR_FB_display_refresh_rate enabled by the app
+  float refresh_hz = 0.0f;  //!< the display's rate: the headset's, or one of refresh_rates
   std::string app_name;
   PathTable paths;
   int get_system_calls = 0;
@@ -151,6 +158,18 @@ struct Instance {
   std::deque<XrEventDataBuffer> events;
   std::uint32_t events_lost = 0;
 };
+
+/// The display period now, ns (1 / refresh_hz, rounded).
+std::int64_t display_period_ns(const Instance& inst);
+
+/// Frame k's predicted display time and period, as xrWaitFrame gives them: kClockOriginNs +
+/// k x period, except that the first config.placeholder_frames are kPlaceholderPeriodNs apart and
+/// a refresh rate change restarts the count at its frame.
+struct FrameTiming {
+  XrTime time = 0;
+  std::int64_t period_ns = 0;
+};
+FrameTiming frame_timing(const Instance& inst, const Session& s, std::int64_t k);
 
 // [lookup] --------------------------------------------------------------------------------------
 /// Every entry point locks this: the runtime is one state machine, as the spec's "externally

@@ -156,9 +156,9 @@ XRAPI_ATTR XrResult XRAPI_CALL xrCreateSession(XrInstance instance, const XrSess
 
 XRAPI_ATTR XrResult XRAPI_CALL xrDestroySession(XrSession session) {
   return guarded("xrDestroySession", [&] {
-    if (!find_session(session)) {
-      return fail("xrDestroySession", XR_ERROR_HANDLE_INVALID, "unknown session");
-    }
+    Session* s = find_session(session);
+    if (!s) return fail("xrDestroySession", XR_ERROR_HANDLE_INVALID, "unknown session");
+    if (s->recorder) s->recorder->call("xrDestroySession", s->waits);
     destroy_session(*live_instance());
     return XR_SUCCESS;
   });
@@ -182,6 +182,7 @@ XRAPI_ATTR XrResult XRAPI_CALL xrBeginSession(XrSession session, const XrSession
                   "the simulated headset has the stereo view configuration only");
     }
     s->view_config = info->primaryViewConfigurationType;
+    if (s->recorder) s->recorder->call(fn, s->waits);
     s->running = true;
     s->waits = s->begins = 0;
     s->in_frame = false;
@@ -200,6 +201,7 @@ XRAPI_ATTR XrResult XRAPI_CALL xrEndSession(XrSession session) {
       return fail(fn, XR_ERROR_SESSION_NOT_STOPPING,
                   "the session is " + session_state_name(s->state) + ", not STOPPING");
     }
+    if (s->recorder) s->recorder->call(fn, s->waits);
     s->running = false;
     s->in_frame = false;
     Instance& inst = *live_instance();
@@ -218,6 +220,7 @@ XRAPI_ATTR XrResult XRAPI_CALL xrRequestExitSession(XrSession session) {
     if (!s) return fail(fn, XR_ERROR_HANDLE_INVALID, "unknown session");
     if (s->state == XR_SESSION_STATE_LOSS_PENDING) return XR_ERROR_SESSION_LOST;
     if (!s->running) return fail(fn, XR_ERROR_SESSION_NOT_RUNNING, "the session is not running");
+    if (s->recorder) s->recorder->call(fn, s->waits);
     begin_exit(*live_instance(), *s);
     return XR_SUCCESS;
   });

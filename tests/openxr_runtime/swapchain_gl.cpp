@@ -23,6 +23,7 @@ std::pair<GLenum, GLenum> upload_format(GLenum internal) {
     case GL_DEPTH_COMPONENT24:
     case GL_DEPTH_COMPONENT32F: return {GL_DEPTH_COMPONENT, GL_FLOAT};
     case GL_DEPTH24_STENCIL8: return {GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8};
+    case GL_DEPTH32F_STENCIL8: return {GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV};
     default: return {GL_RGBA, GL_UNSIGNED_BYTE};
   }
 }

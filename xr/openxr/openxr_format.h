@@ -38,7 +38,8 @@ std::span<const std::int64_t> preferred_swapchain_formats();
 /// order); nullopt when it lists none of them.
 std::optional<SwapchainFormat> choose_swapchain_format(std::span<const std::int64_t> offered);
 
-/// "GL_SRGB8_ALPHA8" for the formats runtimes commonly list, else the hexadecimal value.
+/// "GL_SRGB8_ALPHA8": the name of any sized internal format of OpenGL 4.6 (colour, depth,
+/// stencil; xr/openxr/gl_format_names.cpp), else the hexadecimal value ("0x1234").
 std::string gl_format_name(std::int64_t format);
 
 /// The sRGB transfer functions (IEC 61966-2-1), for the linear fallback and its tests.

@@ -81,8 +81,12 @@ void OpenXrRuntime::Impl::create_instance() {
   xr_check(xrEnumerateInstanceExtensionProperties(nullptr, n, &n, ext.data()),
            "xrEnumerateInstanceExtensionProperties");
   for (const auto& e : ext) info.extensions.emplace_back(e.extensionName);
-  const bool gl = std::count(info.extensions.begin(), info.extensions.end(),
-                             XR_KHR_OPENGL_ENABLE_EXTENSION_NAME) > 0;
+  const auto offered = [&](const char* name) {
+    return std::count(info.extensions.begin(), info.extensions.end(), name) > 0;
+  };
+  const bool gl = offered(XR_KHR_OPENGL_ENABLE_EXTENSION_NAME);
+  // The display's own refresh rates, where the runtime has them (vdfx hmd openxr reports them).
+  refresh_rate_ext = offered(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
 
   auto ci = xr_struct<XrInstanceCreateInfo>(XR_TYPE_INSTANCE_CREATE_INFO);
   std::snprintf(ci.applicationInfo.applicationName, XR_MAX_APPLICATION_NAME_SIZE, "%s",
@@ -90,10 +94,12 @@ void OpenXrRuntime::Impl::create_instance() {
   ci.applicationInfo.applicationVersion = 1;
   std::snprintf(ci.applicationInfo.engineName, XR_MAX_ENGINE_NAME_SIZE, "vdfx");
   ci.applicationInfo.apiVersion = XR_MAKE_VERSION(1, 0, 0);
-  const char* names[] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME};
-  // Without the extension the instance is made anyway, so the message can name the runtime.
-  ci.enabledExtensionCount = gl ? 1 : 0;
-  ci.enabledExtensionNames = names;
+  std::vector<const char*> names;
+  // Without the GL extension the instance is made anyway, so the message can name the runtime.
+  if (gl) names.push_back(XR_KHR_OPENGL_ENABLE_EXTENSION_NAME);
+  if (refresh_rate_ext) names.push_back(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
+  ci.enabledExtensionCount = static_cast<std::uint32_t>(names.size());
+  ci.enabledExtensionNames = names.data();
   r = xrCreateInstance(&ci, &instance);
   if (is_no_runtime(r)) throw OpenXrUnavailable(no_runtime_message(r));
   xr_check(r, "xrCreateInstance");

@@ -1,10 +1,11 @@
 /// @file
 /// @brief `vdfx hmd openxr`: what the active OpenXR runtime offers, the first thing to run on a
 /// new headset and what a bug report quotes.
-#include <cmath>
+#include <optional>
 #include <sstream>
 #include <thread>
 
+#include "xr/openxr/display_refresh.h"
 #include "xr/openxr/gl/openxr_runtime_impl.h"
 #include "xr/render/gl_context.h"
 
@@ -13,18 +14,46 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// Runs the session to READY and a few frames with no layers: the display period is the one
-/// refresh-rate fact every runtime gives. Returns 0 when the session never became READY.
-double measure_refresh_hz(OpenXrRuntime& rt) {
+/// XR_FB_display_refresh_rate's rates and the current one (the session exists); nothing when the
+/// runtime does not offer the extension or answers none.
+std::optional<DisplayRefresh> extension_refresh(OpenXrRuntime::Impl& m) {
+  if (!m.refresh_rate_ext) return std::nullopt;
+  PFN_xrEnumerateDisplayRefreshRatesFB enumerate = nullptr;
+  PFN_xrGetDisplayRefreshRateFB get = nullptr;
+  if (XR_FAILED(xrGetInstanceProcAddr(m.instance, "xrEnumerateDisplayRefreshRatesFB",
+                                      reinterpret_cast<PFN_xrVoidFunction*>(&enumerate))) ||
+      XR_FAILED(xrGetInstanceProcAddr(m.instance, "xrGetDisplayRefreshRateFB",
+                                      reinterpret_cast<PFN_xrVoidFunction*>(&get))))
+    return std::nullopt;
+  std::uint32_t n = 0;
+  if (XR_FAILED(enumerate(m.session, 0, &n, nullptr))) return std::nullopt;
+  std::vector<float> rates(n);
+  if (n > 0 && XR_FAILED(enumerate(m.session, n, &n, rates.data()))) return std::nullopt;
+  float current = 0.0f;
+  if (XR_FAILED(get(m.session, &current)) || !(current > 0.0f)) return std::nullopt;
+  DisplayRefresh r;
+  r.hz = current;
+  r.from_extension = true;
+  for (std::uint32_t i = 0; i < n; ++i) r.offered_hz.push_back(rates[i]);
+  return r;
+}
+
+/// Runs the session to READY and through frames with no layers, measuring the display times the
+/// runtime predicts (xr/openxr/display_refresh.h), then leaves through the lifecycle. Unknown
+/// when the session never became READY.
+DisplayRefresh measured_refresh(OpenXrRuntime& rt) {
   const auto deadline = Clock::now() + std::chrono::seconds(2);
   while (!rt.lifecycle().running() && !rt.lifecycle().leaving() && Clock::now() < deadline) {
     rt.poll_events();
     if (!rt.lifecycle().running()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  if (!rt.lifecycle().running()) return 0.0;
-  std::int64_t period = 0;
-  for (int i = 0; i < 3 && rt.lifecycle().running(); ++i) {
-    period = rt.begin_frame().period_ns;
+  DisplayRefresh r;
+  if (!rt.lifecycle().running()) return r;
+  std::vector<std::int64_t> times;
+  const std::size_t want = kRefreshWarmupFrames + kRefreshMeasuredFrames + 1;
+  const auto frames_end = Clock::now() + std::chrono::seconds(3);
+  while (rt.lifecycle().running() && times.size() < want && Clock::now() < frames_end) {
+    times.push_back(rt.begin_frame().xr_time);
     rt.end_frame();
     rt.poll_events();
   }
@@ -37,7 +66,13 @@ double measure_refresh_hz(OpenXrRuntime& rt) {
     }
     rt.poll_events();
   }
-  return period > 0 ? 1e9 / static_cast<double>(period) : 0.0;
+  // A runtime that ended the session early: what frames there are, warm-up included.
+  const std::size_t skip = times.size() >= want ? kRefreshWarmupFrames : 0;
+  if (const auto hz = refresh_from_display_times(times, skip)) {
+    r.hz = *hz;
+    r.measured_intervals = static_cast<int>(times.size() - skip - 1);
+  }
+  return r;
 }
 
 void print_list(std::ostringstream& out, const char* label, const std::vector<std::string>& v) {
@@ -88,13 +123,8 @@ std::string openxr_report(const OpenXrOptions& options) {
                                                          : " (linear: values decoded from sRGB)")
                  : std::string("nothing: none of these formats suits vdfx"))
       << "\n";
-  const double hz = measure_refresh_hz(*rt);
-  if (hz > 0.0) {
-    out << "refresh        " << std::round(hz * 100.0) / 100.0
-        << " Hz (predicted display period)\n";
-  } else {
-    out << "refresh        unknown (the session did not become READY within 2 s)\n";
-  }
+  const std::optional<DisplayRefresh> offered = extension_refresh(m);
+  out << "refresh        " << describe_refresh(offered ? *offered : measured_refresh(*rt)) << "\n";
   print_list(out, "extensions    ", info.extensions);
   rt.reset();  // the session goes before the GL context it was bound to
   return out.str();

@@ -183,7 +183,8 @@ class OpenXrRuntime {
 std::unique_ptr<InputBackend> create_openxr_input_backend(OpenXrRuntime& runtime);
 
 /// `vdfx hmd openxr`: what the active runtime offers, as text. Opens a hidden GL window for a
-/// session (swapchain formats need one) and runs it for a few frames for the refresh rate.
+/// session (swapchain formats need one); the refresh rate from XR_FB_display_refresh_rate, or
+/// measured over the session's first frames (xr/openxr/display_refresh.h).
 std::string openxr_report(const OpenXrOptions& options = {});
 
 }  // namespace vdfx::xr

@@ -74,6 +74,7 @@ struct OpenXrRuntime::Impl {
   XrSystemId system = XR_NULL_SYSTEM_ID;
   OpenXrSystemInfo info;
   XrEnvironmentBlendMode blend = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+  bool refresh_rate_ext = false;  //!< XR_FB_display_refresh_rate offered and enabled
 
   // Actions (created with the instance; attached to the session).
   XrActionSet action_set = XR_NULL_HANDLE;
