@@ -101,6 +101,7 @@ FitResult fit_greedy(const TargetField& field, const FitOptions& options,
                            options.neutral);
   std::set<std::string> placed;
   Errors e = measure(field, *set.solution(), units);
+  if (options.on_step) options.on_step(0, e.max_error);
   while (e.max_error > options.tolerance) {
     const auto s = worst(e, placeable, options.tolerance);
     if (!s) break;
@@ -120,7 +121,7 @@ FitResult fit_greedy(const TargetField& field, const FitOptions& options,
       result.added.push_back(std::move(k));
     }
     e = measure(field, *set.solution(), units);
-    if (options.on_step) options.on_step(result.added.size());
+    if (options.on_step) options.on_step(result.added.size(), e.max_error);
   }
   result.max_error = e.max_error;
   result.rms_error = std::sqrt(e.sum_squares / static_cast<double>(n * field.dimension));

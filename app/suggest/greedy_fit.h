@@ -48,9 +48,10 @@ struct FitOptions {
   double fps = 30.0;
   std::vector<double> neutral;  //!< the effect's neutral values (what no keyframes evaluate to)
   StampFn stamp;                //!< none: one keyframe at the picked sample
-  /// Called after each step with the keyframes added so far (progress; it may throw to stop the
-  /// fit, which then leaves nothing behind).
-  std::function<void(std::size_t added)> on_step;
+  /// Called once the starting error is known and after each step, with the keyframes added so
+  /// far and the largest error over the samples now (progress; it may throw to stop the fit,
+  /// which then leaves nothing behind).
+  std::function<void(std::size_t added, double max_error)> on_step;
 };
 
 struct FitResult {

@@ -194,6 +194,39 @@ TEST(SuggestExposure, TheBudgetStopsTheFitAndSaysSo) {
   EXPECT_GT(report.effects[0].fit.max_error, 0.001);
 }
 
+TEST(SuggestExposure, SaysHowFarItIsFramesThenKeyframesWithTheLargestError) {
+  const auto dir = test_dir();
+  SuggestRequest r;
+  r.video = write_window_panorama(dir);
+  r.sidecar_out = dir / "out.vdfx.json";
+  r.tolerance = 0.1;
+  std::vector<ProgressStep> steps;
+  Progress progress;
+  progress.on_step = [&](const ProgressStep& s) { steps.push_back(s); };
+  const SuggestReport report = run_suggest(r, &progress);
+  const FitResult& fit = report.effects.at(0).fit;
+  ASSERT_GE(steps.size(), 3u);
+  // The one frame, metered; then the fit from no keyframes to what it placed.
+  EXPECT_EQ(steps[0].phase, ProgressStep::Phase::Frames);
+  EXPECT_EQ(steps[0].done, 1);
+  EXPECT_EQ(steps[0].total, 1);
+  EXPECT_EQ(steps[1].phase, ProgressStep::Phase::Keyframes);
+  EXPECT_EQ(steps[1].done, 0);
+  EXPECT_GT(steps[1].max_error, 1.0);  // the window's target, before any keyframe
+  for (std::size_t i = 1; i < steps.size(); ++i) {
+    EXPECT_EQ(steps[i].phase, ProgressStep::Phase::Keyframes);
+    EXPECT_EQ(steps[i].effect, effects::EffectType::Exposure);
+    EXPECT_EQ(steps[i].total, 256);
+    EXPECT_DOUBLE_EQ(steps[i].tolerance, 0.1);
+    if (i > 1) {
+      EXPECT_GT(steps[i].done, steps[i - 1].done);
+    }
+  }
+  EXPECT_EQ(steps.back().done, static_cast<std::int64_t>(fit.added.size()));
+  EXPECT_DOUBLE_EQ(steps.back().max_error, fit.max_error);
+  EXPECT_DOUBLE_EQ(progress.fraction.load(), 1.0);
+}
+
 TEST(SuggestExposure, OnTheSunrisePanoramaDarkensTheSunsSide) {
   const std::filesystem::path sunrise =
       "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
@@ -599,6 +632,11 @@ TEST(SuggestCommand, ReportsAndWritesAValidSidecar) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("metered 1 frames as sRGB"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("exposure"), std::string::npos) << r.output;
+  // Progress on stderr (a pipe here: lines), as export shows it: the frames metered, then the
+  // keyframes placed with the largest error against the tolerance.
+  EXPECT_NE(r.output.find("suggest: 1/1 frames (100%)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("suggest exposure: 0/256 keyframes"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(tolerance 0.250)\n"), std::string::npos) << r.output;
   EXPECT_EQ(run_vdfx_headless("validate " + out.string()).exit_code, 0);
 }
 
