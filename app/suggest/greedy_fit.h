@@ -48,6 +48,10 @@ struct FitOptions {
   double fps = 30.0;
   std::vector<double> neutral;  //!< the effect's neutral values (what no keyframes evaluate to)
   StampFn stamp;                //!< none: one keyframe at the picked sample
+  /// Samples a step stamps, as a share of those already stamped and the author's keyframes:
+  /// max(1, share x N) (0: one a step, the plain greedy insertion). docs/suggest.md, "Fitting",
+  /// says what it trades.
+  double step_share = 0.125;
   /// Called once the starting error is known and after each step, with the keyframes added so
   /// far and the largest error over the samples now (progress; it may throw to stop the fit,
   /// which then leaves nothing behind).
@@ -59,6 +63,7 @@ struct FitResult {
   double max_error = 0.0;                //!< over every sample and component, after the fit
   double rms_error = 0.0;
   bool within_tolerance = false;  //!< false: the budget ran out first
+  std::size_t steps = 0;  //!< steps that placed keyframes (each one measure of every sample)
 };
 
 /// Fits `field` by adding keyframes (`options.stamp`'s, at most max_keyframes in all) to `existing`
