@@ -22,8 +22,8 @@
 #include "io/sidecar_target.h"
 #include "io/video_match.h"
 #include "ui/interaction.h"
-#include "xr/input_backend.h"
-#include "xr/render_view.h"
+#include "xr/headset/render_view.h"
+#include "xr/input/input_backend.h"
 
 namespace vdfx::app {
 

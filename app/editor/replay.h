@@ -13,7 +13,7 @@
 #include "io/sidecar.h"
 #include "io/video_layout.h"
 #include "ui/panel.h"
-#include "xr/pose.h"
+#include "xr/headset/pose.h"
 
 namespace vdfx::app {
 

@@ -27,14 +27,14 @@
 #include "io/input_error.h"
 #include "io/output_path.h"
 #include "io/sidecar_sets.h"
-#include "xr/compositor.h"
-#include "xr/effect_stack_gl.h"
-#include "xr/eye_views.h"
-#include "xr/flare_gl.h"
-#include "xr/gl_context.h"
-#include "xr/grain_gl.h"
-#include "xr/param_grid.h"
-#include "xr/render_view.h"
+#include "xr/headset/eye_views.h"
+#include "xr/headset/render_view.h"
+#include "xr/render/compositor.h"
+#include "xr/render/effect_stack_gl.h"
+#include "xr/render/flare_gl.h"
+#include "xr/render/gl_context.h"
+#include "xr/render/grain_gl.h"
+#include "xr/render/param_grid.h"
 
 namespace vdfx::app {
 

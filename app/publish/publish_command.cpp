@@ -56,6 +56,7 @@ int cmd_publish(const Args& args) {
   for (const std::string& e : r.left_out)
     std::cerr << "vdfx publish: note: the page does not draw " << e
               << " (volumetric grain: vdfx's GPU renderer only)\n";
+  if (!r.warning.empty()) std::cerr << "vdfx publish: warning: " << r.warning << "\n";
   std::cout << r.out.string() << ": " << r.files.size() << " files, video "
             << (r.transcoded ? "transcoded to " : "") << r.video_codec;
   if (r.layout.stereo() || r.layout.coverage_deg != 360)

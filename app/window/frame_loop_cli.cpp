@@ -9,8 +9,8 @@
 #include "app/cli/command_registry.h"
 #include "app/cli/layout_options.h"
 #include "io/input_error.h"
-#include "xr/hmd_profile.h"
-#include "xr/openxr_runtime.h"
+#include "xr/headset/hmd_profile.h"
+#include "xr/openxr/gl/openxr_runtime.h"
 
 namespace vdfx::app {
 namespace {
