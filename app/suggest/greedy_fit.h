@@ -1,9 +1,9 @@
 /// @file
 /// @brief The fewest keyframes that reproduce a target field (docs/suggest.md, "Fitting"): greedy
-/// insertion with the editor's incremental solver (effects::KeyframeSet). Each step evaluates the
-/// interpolant at every sample and places a keyframe, with the target's values, at the sample
-/// where it is furthest from the target; it stops when every sample is within the tolerance or
-/// the keyframe budget is spent.
+/// insertion. Each step evaluates the interpolant at every sample and places keyframes, with the
+/// target's values, at the samples where it is furthest from the target (one a step while the
+/// keyframes are few, then a share of them, spaced apart); it stops when every sample is within
+/// the tolerance or the keyframe budget is spent.
 #pragma once
 
 #include <Eigen/Core>
