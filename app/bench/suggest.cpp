@@ -1,13 +1,16 @@
 /// @file
-/// @brief `vdfx suggest`'s knob of `vdfx bench` (docs/suggest.md, "Measured"): one exposure
-/// suggestion over a generated clip of 10 s against its tolerance: the time, the keyframes it
-/// places, and how far the interpolated field stays from its target. The peer is the same
-/// suggestion with nothing to fit (a tolerance of 8 stops): the metering alone (decode of the
-/// sampled frames, the luminance grids, the target field) and one error pass, so the ratio is
-/// what the fit adds.
+/// @brief `vdfx suggest`'s knobs of `vdfx bench` (docs/suggest.md, "Measured"). suggest.exposure:
+/// one exposure suggestion over a generated clip of 10 s against its tolerance: the time, the
+/// keyframes it places, and how far the interpolated field stays from its target. The peer is
+/// the same suggestion with nothing to fit (a tolerance of 8 stops): the metering alone (decode
+/// of the sampled frames, the luminance grids, the target field) and one error pass, so the
+/// ratio is what the fit adds. suggest.fit: the greedy fit alone over a synthetic field of M
+/// samples, its steps placing a share of the keyframes there, against the plain greedy fit (one
+/// keyframe a step): the time and the keyframes of both.
 #include "app/suggest/suggest.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -28,9 +31,88 @@ suggest::SuggestReport suggest_once(const std::filesystem::path& clip, const io:
   return suggest::suggest_into(r, sidecar);
 }
 
+/// An exposure-like target over `directions` x `frames` samples: six soft bright and dark
+/// patches (Gaussian in the angle, 15 to 40 degrees wide, up to 3 stops) drifting in azimuth by
+/// 4 degrees a frame. A fixed formula: every run fits the same field.
+suggest::TargetField drifting_patches(int directions, int frames) {
+  suggest::TargetField field;
+  const auto dirs = suggest::sphere_directions(directions);
+  for (int f = 0; f < frames; ++f)
+    for (const auto& d : dirs) {
+      const Eigen::Vector3d u = effects::to_unit(d);
+      double v = 0.0;
+      for (int k = 0; k < 6; ++k) {
+        const effects::Direction c{-150.0 + 60.0 * k + 4.0 * f, 40.0 * std::sin(1.3 * k)};
+        const double theta = effects::angle_between(u, effects::to_unit(c));
+        const double sigma = (15.0 + 5.0 * k) * effects::kDegToRad;
+        v +=
+            (k % 2 ? -1.0 : 1.0) * (1.0 + 0.4 * k) * std::exp(-theta * theta / (2 * sigma * sigma));
+      }
+      field.add(d, f, std::span(&v, 1));
+    }
+  return field;
+}
+
+/// The fit's options: one frame weighs like 30 degrees of view (fps 1), a budget of 4096.
+suggest::FitOptions fit_options(double tolerance, double step_share) {
+  suggest::FitOptions o;
+  o.tolerance = tolerance;
+  o.max_keyframes = 4096;
+  o.fps = 1.0;
+  o.settings.time_scale = effects::time_scale_from_deg_per_s(30.0);
+  o.neutral = {0.0};
+  o.step_share = step_share;
+  return o;
+}
+
+void add_fit_knob(Registry& r, bool quick) {
+  r.knob({"suggest.fit",
+          "the greedy fit alone over M samples (directions x frames) of a synthetic field "
+          "against the tolerance T, with steps that place a share of the keyframes there",
+          "fit", "stops", "the target field at every sample",
+          "the plain greedy fit: one keyframe a step, the field measured after each",
+          PlotError::Max, false, false});
+  struct Setting {
+    int directions, frames;
+    double tolerance;
+  };
+  const std::vector<Setting> settings =
+      quick ? std::vector<Setting>{{400, 2, 0.1}}
+            : std::vector<Setting>{
+                  {400, 1, 0.05}, {2000, 1, 0.02}, {2000, 4, 0.05}, {2000, 10, 0.05}};
+  for (const Setting& s : settings) {
+    char name[48];
+    std::snprintf(name, sizeof name, "M=%dx%d T=%g", s.directions, s.frames, s.tolerance);
+    r.add("suggest.fit", name, [s](Row& row, const Context& ctx) {
+      const suggest::TargetField field = drifting_patches(s.directions, s.frames);
+      const suggest::FitOptions steps = fit_options(s.tolerance, suggest::FitOptions{}.step_share);
+      const suggest::FitOptions single = fit_options(s.tolerance, 0.0);
+      Budget budget = ctx.budget;  // seconds a sample: a few samples only
+      budget.min_samples = ctx.quick ? 1 : 3;
+      budget.min_time_s = 0.0;
+      suggest::FitResult fit, plain;
+      const auto times =
+          measure_pair(Timed([&] { fit = suggest::fit_greedy(field, steps); }),
+                       Timed([&] { plain = suggest::fit_greedy(field, single); }), budget);
+      row.time = times.subject;
+      row.peer_time = times.peer;
+      row.error.max = fit.max_error;
+      row.error.rms = fit.rms_error;
+      row.add("keyframes", static_cast<double>(fit.added.size()));
+      row.add("peer_keyframes", static_cast<double>(plain.added.size()));
+      row.add("peer_error_max", plain.max_error);
+      row.add("steps", static_cast<double>(fit.steps));
+      row.add("within_tolerance", fit.within_tolerance ? 1.0 : 0.0);
+      row.note = std::to_string(field.size()) + " samples; step share " +
+                 std::to_string(steps.step_share).substr(0, 5) + "; budget 4096 keyframes";
+    });
+  }
+}
+
 }  // namespace
 
 void add_suggest_knobs(Registry& r, bool quick) {
+  add_fit_knob(r, quick);
   r.knob({kKnob,
           "exposure suggestion (metering, greedy fit) of a generated 10 s clip against the "
           "tolerance T",

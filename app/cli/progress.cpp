@@ -75,17 +75,23 @@ void ProgressReporter::update(std::int64_t done, double elapsed_s) {
   last_ = elapsed_s;
   last_done_ = done;
   if (terminal_)
-    out_ << "\r" << bar_text(done, total_, elapsed_s, unit_) << std::flush;
+    out_ << "\r" << bar_text(done, total_, elapsed_s, unit_) << note("  ") << std::flush;
   else
-    out_ << prefix_ << ": " << line_text(done, total_, elapsed_s, unit_) << "\n" << std::flush;
+    out_ << prefix_ << ": " << line_text(done, total_, elapsed_s, unit_) << note(", ") << "\n"
+         << std::flush;
 }
 
 void ProgressReporter::finish(std::int64_t done, double elapsed_s) {
   if (!terminal_ && done == last_done_) return;  // that line is out already
   if (terminal_)
-    out_ << "\r" << bar_text(done, total_, elapsed_s, unit_) << "\n" << std::flush;
+    out_ << "\r" << bar_text(done, total_, elapsed_s, unit_) << note("  ") << "\n" << std::flush;
   else
-    out_ << prefix_ << ": " << line_text(done, total_, elapsed_s, unit_) << "\n" << std::flush;
+    out_ << prefix_ << ": " << line_text(done, total_, elapsed_s, unit_) << note(", ") << "\n"
+         << std::flush;
+}
+
+std::string ProgressReporter::note(const char* separator) const {
+  return note_.empty() ? std::string() : separator + note_;
 }
 
 }  // namespace vdfx::app

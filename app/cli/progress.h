@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <iosfwd>
 #include <string>
+#include <utility>
 
 namespace vdfx::app {
 
@@ -20,6 +21,9 @@ class ProgressReporter {
   void update(std::int64_t done, double elapsed_s);
   /// The last state, and a newline after the bar.
   void finish(std::int64_t done, double elapsed_s);
+  /// Text written after the counts from the next update on (what else the command measures as
+  /// it goes, e.g. suggest's "largest error 0.31, tolerance 0.02"); "" for none.
+  void set_note(std::string note) { note_ = std::move(note); }
 
   /// "[#####     ]  50%  12/24 frames  3.1 frames/s  ETA 0:04" (the bar's text, width 20).
   static std::string bar_text(std::int64_t done, std::int64_t total, double elapsed_s,
@@ -29,11 +33,13 @@ class ProgressReporter {
                                const std::string& unit = "frames");
 
  private:
+  std::string note(const char* separator) const;  //!< separator + the note, or ""
+
   std::ostream& out_;
   bool terminal_;
   std::int64_t total_;
   double interval_;
-  std::string prefix_, unit_;
+  std::string prefix_, unit_, note_;
   double last_ = -1e9;
   std::int64_t last_done_ = -1;
 };

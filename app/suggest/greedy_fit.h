@@ -1,9 +1,9 @@
 /// @file
 /// @brief The fewest keyframes that reproduce a target field (docs/suggest.md, "Fitting"): greedy
-/// insertion with the editor's incremental solver (effects::KeyframeSet). Each step evaluates the
-/// interpolant at every sample and places a keyframe, with the target's values, at the sample
-/// where it is furthest from the target; it stops when every sample is within the tolerance or
-/// the keyframe budget is spent.
+/// insertion. Each step evaluates the interpolant at every sample and places keyframes, with the
+/// target's values, at the samples where it is furthest from the target (one a step while the
+/// keyframes are few, then a share of them, spaced apart); it stops when every sample is within
+/// the tolerance or the keyframe budget is spent.
 #pragma once
 
 #include <Eigen/Core>
@@ -48,9 +48,14 @@ struct FitOptions {
   double fps = 30.0;
   std::vector<double> neutral;  //!< the effect's neutral values (what no keyframes evaluate to)
   StampFn stamp;                //!< none: one keyframe at the picked sample
-  /// Called after each step with the keyframes added so far (progress; it may throw to stop the
-  /// fit, which then leaves nothing behind).
-  std::function<void(std::size_t added)> on_step;
+  /// Samples a step stamps, as a share of those already stamped and the author's keyframes:
+  /// max(1, share x N) (0: one a step, the plain greedy insertion). docs/suggest.md, "Fitting",
+  /// says what it trades.
+  double step_share = 0.125;
+  /// Called once the starting error is known and after each step, with the keyframes added so
+  /// far and the largest error over the samples now (progress; it may throw to stop the fit,
+  /// which then leaves nothing behind).
+  std::function<void(std::size_t added, double max_error)> on_step;
 };
 
 struct FitResult {
@@ -58,6 +63,7 @@ struct FitResult {
   double max_error = 0.0;                //!< over every sample and component, after the fit
   double rms_error = 0.0;
   bool within_tolerance = false;  //!< false: the budget ran out first
+  std::size_t steps = 0;  //!< steps that placed keyframes (each one measure of every sample)
 };
 
 /// Fits `field` by adding keyframes (`options.stamp`'s, at most max_keyframes in all) to `existing`

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <opencv2/core/utility.hpp>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -42,11 +43,30 @@ struct Clip {
   std::int64_t every = 1;  //!< frames between sampled frames
   Progress* progress = nullptr;
 
+  /// A frame read (of `total`): the first half of the progress.
+  void frame_read(std::int64_t done, std::int64_t total) const {
+    ProgressStep step;
+    step.done = done;
+    step.total = total;
+    tick(0.5 * static_cast<double>(done) / static_cast<double>(std::max<std::int64_t>(1, total)),
+         step);
+  }
+  /// A pass of the fit of `step.effect`: the second half.
+  void fit_pass(const ProgressStep& step) const {
+    tick(0.5 + 0.5 * static_cast<double>(step.done) /
+                   static_cast<double>(std::max<std::int64_t>(1, step.total)),
+         step);
+  }
+  /// The end of the suggestion.
+  void done() const { tick(1.0, {}); }
+
+ private:
   /// Says how far the suggestion is, and stops it (Cancelled) when asked to.
-  void tick(double fraction) const {
+  void tick(double fraction, const std::optional<ProgressStep>& step) const {
     if (!progress) return;
     if (progress->cancel.load()) throw Cancelled();
     progress->fraction.store(std::clamp(fraction, 0.0, 1.0));
+    if (step && progress->on_step) progress->on_step(*step);
   }
 };
 
@@ -126,13 +146,31 @@ Clip open_clip(const SuggestRequest& r, Progress* progress, std::optional<io::Si
   return clip;
 }
 
-/// The exposure target over the sampled directions and frames (metering.h's model).
+/// The levels metered for each of `views` (unit vectors) in one frame's grid, on every core.
+std::vector<double> meter_views(const LumaGrid& grid, const MeterGeometry& geometry,
+                                const std::vector<Eigen::Vector3d>& views,
+                                const MeteringOptions& options) {
+  std::vector<double> levels(views.size());
+  cv::parallel_for_(cv::Range(0, static_cast<int>(views.size())), [&](const cv::Range& range) {
+    for (int i = range.start; i < range.end; ++i)
+      levels[static_cast<std::size_t>(i)] = metered_level(grid, geometry, views[i], options);
+  });
+  return levels;
+}
+
+/// The exposure target over the sampled directions and frames (metering.h's model). Each frame
+/// is metered as it is read (the progress counts metered frames); the reference level, the
+/// whole clip's, comes last.
 TargetField exposure_field(const SuggestRequest& r, Clip& clip, SuggestReport& report) {
   const auto& p = clip.decoder->properties();
   const Transfer transfer = transfer_of(p.transfer, p.is_still);
   report.transfer = transfer_name(transfer);
   const MeterGeometry geometry(r.metering.grid_width);
+  const auto directions = field_directions(r, clip);
+  std::vector<Eigen::Vector3d> views;
+  for (const auto& d : directions) views.push_back(effects::to_unit(d));
   std::vector<LumaGrid> grids;
+  std::vector<std::vector<double>> levels;  // per frame, per direction
   double brightest = 0.0;
   for (const std::int64_t f : clip.frames) {
     clip.decoder->seek(p.is_still ? 0 : f);
@@ -143,19 +181,20 @@ TargetField exposure_field(const SuggestRequest& r, Clip& clip, SuggestReport& r
     grids.push_back(
         make_luma_grid(rgb, transfer, geometry, r.metering, f, clip.layout.coverage_deg));
     brightest = std::max(brightest, grids.back().max_luma);
-    clip.tick(0.5 * static_cast<double>(grids.size()) / static_cast<double>(clip.frames.size()));
+    levels.push_back(meter_views(grids.back(), geometry, views, r.metering));
+    clip.frame_read(static_cast<std::int64_t>(grids.size()),
+                    static_cast<std::int64_t>(clip.frames.size()));
   }
   if (brightest <= r.metering.floor)
     throw io::InputError(r.video.string() + ": cannot be metered: every sampled frame (" +
                          std::to_string(grids.size()) + ") is black");
   report.reference_level = reference_level(grids, geometry);
   TargetField field;
-  const auto directions = field_directions(r, clip);
-  for (const LumaGrid& g : grids)
-    for (const auto& d : directions) {
-      const double level = metered_level(g, geometry, effects::to_unit(d), r.metering);
-      const double stops = std::clamp(r.strength * (report.reference_level - level), -8.0, 8.0);
-      field.add(d, g.frame, std::span(&stops, 1));
+  for (std::size_t g = 0; g < grids.size(); ++g)
+    for (std::size_t i = 0; i < directions.size(); ++i) {
+      const double stops =
+          std::clamp(r.strength * (report.reference_level - levels[g][i]), -8.0, 8.0);
+      field.add(directions[i], grids[g].frame, std::span(&stops, 1));
     }
   return field;
 }
@@ -195,7 +234,7 @@ std::vector<double> camera_speeds(const SuggestRequest& r, Clip& clip) {
       speed[static_cast<std::size_t>(f)] =
           estimate_rotation(previous, grey, motion).angle_deg * p.fps.value();
     previous = std::move(grey);
-    clip.tick(0.5 * static_cast<double>(f + 1) / static_cast<double>(p.frames));
+    clip.frame_read(f + 1, p.frames);
   }
   speed[0] = speed[1];
   return speed;
@@ -314,8 +353,15 @@ void fit_into(io::Sidecar& sidecar, EffectType type, const TargetField& field,
   o.fps = sidecar.video.fps;
   o.neutral = effects::effect_spec(type).neutral();
   o.stamp = std::move(stamp);
-  o.on_step = [&](std::size_t added) {
-    clip.tick(0.5 + 0.5 * static_cast<double>(added) / static_cast<double>(o.max_keyframes));
+  o.on_step = [&](std::size_t added, double max_error) {
+    ProgressStep step;
+    step.phase = ProgressStep::Phase::Keyframes;
+    step.done = static_cast<std::int64_t>(added);
+    step.total = static_cast<std::int64_t>(o.max_keyframes);
+    step.effect = type;
+    step.max_error = max_error;
+    step.tolerance = o.tolerance;
+    clip.fit_pass(step);
   };
   SuggestedEffect s{type, o.tolerance, fit_greedy(field, o, track.keyframes)};
   track.keyframes.insert(track.keyframes.end(), s.fit.added.begin(), s.fit.added.end());
@@ -377,7 +423,7 @@ SuggestReport suggest_clip(const SuggestRequest& r, Clip& clip, io::Sidecar& sid
           moves ? clip.every : 0);
     }
   }
-  clip.tick(1.0);
+  clip.done();
   return report;
 }
 
@@ -403,7 +449,7 @@ SuggestReport suggest_into(const SuggestRequest& request, io::Sidecar& sidecar,
   return report;
 }
 
-SuggestReport run_suggest(const SuggestRequest& request) {
+SuggestReport run_suggest(const SuggestRequest& request, Progress* progress) {
   const auto start = Clock::now();
   check_request(request);
   const io::SidecarTarget target =
@@ -414,9 +460,10 @@ SuggestReport run_suggest(const SuggestRequest& request) {
   std::optional<io::Sidecar> sidecar;
   if (target.base) sidecar = io::read_sidecar_base(target, {});
   // A stop signal cancels it as the editor's worker does (app/cli/stop_signals.h).
-  Progress progress;
-  const CancelOnStop cancel_on_stop(progress.cancel);
-  Clip clip = open_clip(r, &progress, sidecar);
+  Progress own_progress;
+  if (progress == nullptr) progress = &own_progress;
+  const CancelOnStop cancel_on_stop(progress->cancel);
+  Clip clip = open_clip(r, progress, sidecar);
   const io::Sidecar before = *sidecar;
   SuggestReport report;
   try {

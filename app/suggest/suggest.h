@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -67,11 +68,25 @@ struct SuggestReport {
   std::string sidecar_note;  //!< run_suggest: what became of an existing --sidecar-out, or ""
 };
 
-/// A suggestion running on another thread (the editor's, app/editor/suggest_worker.h): how far it
-/// is, and a request to stop.
+/// One step of a suggestion as it goes: a frame read, or a pass of the fit.
+struct ProgressStep {
+  enum class Phase { Frames, Keyframes };
+  Phase phase = Phase::Frames;
+  std::int64_t done = 0;   //!< frames read (exposure: and metered), or keyframes placed so far
+  std::int64_t total = 0;  //!< frames to read, or the keyframe budget
+  effects::EffectType effect = effects::EffectType::Exposure;  //!< Keyframes: the effect fitted
+  double max_error = 0.0;  //!< Keyframes: the largest error over the samples now
+  double tolerance = 0.0;  //!< Keyframes: what the fit works down to
+};
+
+/// A suggestion's progress: the editor runs it on another thread (app/editor/suggest_worker.h)
+/// and reads how far it is and may ask it to stop; the command shows each step on stderr.
 struct Progress {
   std::atomic<double> fraction{0.0};  //!< 0..1: frames decoded, then keyframes placed
   std::atomic<bool> cancel{false};    //!< set by the caller; the suggestion then throws Cancelled
+  /// Called on the suggestion's thread at every frame read and after every pass of the fit
+  /// (none: nothing is called).
+  std::function<void(const ProgressStep&)> on_step;
 };
 
 /// Thrown by suggest_into when Progress::cancel was set: nothing was changed.
@@ -90,8 +105,9 @@ SuggestReport suggest_into(const SuggestRequest& request, io::Sidecar& sidecar,
 /// io::InputError for input that cannot be used (unreadable video, a video that cannot be
 /// metered, keyframes already there without merge, an --sidecar-out that would be replaced),
 /// UsageError for options out of range and app::Stopped when a stop signal cancelled it
-/// (app/cli/stop_signals.h: nothing written).
-SuggestReport run_suggest(const SuggestRequest& request);
+/// (app/cli/stop_signals.h: nothing written). `progress` as suggest_into's (a stop signal sets its
+/// cancel flag; without one, a progress of its own carries the flag).
+SuggestReport run_suggest(const SuggestRequest& request, Progress* progress = nullptr);
 
 /// The frames sampled: 0, every, 2 every, ... and the last frame, plus `extra` (clamped).
 std::vector<std::int64_t> sampled_frames(std::int64_t frames, std::int64_t every,

@@ -1,13 +1,18 @@
 /// @file
 /// @brief `vdfx suggest exposure|guide|comfort VIDEO ...` (docs/suggest.md): options into a
 /// suggest::SuggestRequest, then suggest::run_suggest and its report.
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
 #include "app/cli/layout_options.h"
+#include "app/cli/progress.h"
 #include "app/cli/stop_signals.h"
 #include "app/suggest/suggest.h"
 
@@ -41,6 +46,51 @@ void add_common(CLI::App& sub, CommonOptions& c, suggest::SuggestRequest& r) {
                "replace an existing --sidecar-out (without it, an existing --sidecar-out is "
                "added to)");
 }
+
+/// The suggestion's progress on stderr, as export shows its own (app/cli/progress.h): the frames
+/// read, then for each effect fitted the keyframes placed against the budget, with the largest
+/// error against the tolerance. Each phase has its own bar, rate and ETA.
+class SuggestProgress {
+ public:
+  ~SuggestProgress() { finish(); }  // a suggestion that failed: its message on a line of its own
+  void step(const suggest::ProgressStep& s) {
+    const bool frames = s.phase == suggest::ProgressStep::Phase::Frames;
+    if (!bar_ || s.phase != phase_ || s.effect != effect_) {
+      if (bar_) {
+        finish();
+        start_ = Clock::now();
+      }
+      phase_ = s.phase;
+      effect_ = s.effect;
+      bar_ = std::make_unique<ProgressReporter>(
+          std::cerr, ::isatty(2) != 0, s.total, 5.0,
+          frames ? "suggest" : "suggest " + std::string(effects::effect_name(s.effect)),
+          frames ? "frames" : "keyframes");
+    }
+    if (!frames) {
+      char note[96];
+      std::snprintf(note, sizeof note, "largest error %.3f (tolerance %.3f)", s.max_error,
+                    s.tolerance);
+      bar_->set_note(note);
+    }
+    done_ = s.done;
+    bar_->update(done_, seconds());
+  }
+  void finish() {
+    if (bar_) bar_->finish(done_, seconds());
+    bar_.reset();
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+  std::unique_ptr<ProgressReporter> bar_;
+  suggest::ProgressStep::Phase phase_{};
+  effects::EffectType effect_{};
+  Clock::time_point start_ = Clock::now();  //!< of the phase shown (the first: the command's)
+  std::int64_t done_ = 0;
+};
 
 void print_report(const suggest::SuggestRequest& r, const suggest::SuggestReport& report) {
   if (!report.transfer.empty())
@@ -122,7 +172,12 @@ int cmd_suggest(const Args& args) {
   r.guide_effect = effect == "both"       ? suggest::GuideEffect::Both
                    : effect == "exposure" ? suggest::GuideEffect::Exposure
                                           : suggest::GuideEffect::Saturation;
-  print_report(r, suggest::run_suggest(r));
+  SuggestProgress shown;
+  suggest::Progress progress;
+  progress.on_step = [&](const suggest::ProgressStep& s) { shown.step(s); };
+  const suggest::SuggestReport report = suggest::run_suggest(r, &progress);
+  shown.finish();
+  print_report(r, report);
   return kExitOk;
 }
 

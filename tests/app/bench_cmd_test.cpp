@@ -244,7 +244,7 @@ TEST(BenchCommand, VideoRowsDecodeWhatFFmpegDecodesAndBakeWithinOneStep) {
 TEST(BenchCommand, SuggestRowsPlaceMoreKeyframesForATighterTolerance) {
   const auto dir = test_dir();
   const auto r =
-      run_vdfx("bench --quick --filter '^suggest\\.' --json " + (dir / "r.json").string());
+      run_vdfx("bench --quick --filter '^suggest\\.exposure' --json " + (dir / "r.json").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(schema_problem(dir / "r.json"), "");
   const auto j = nlohmann::json::parse(read_file(dir / "r.json"));
@@ -262,6 +262,29 @@ TEST(BenchCommand, SuggestRowsPlaceMoreKeyframesForATighterTolerance) {
   }
   EXPECT_GT(keyframes[0], 0.0);
   EXPECT_GT(keyframes[1], keyframes[0]);
+}
+
+TEST(BenchCommand, SuggestFitRowComparesStepsWithThePlainGreedyFit) {
+  const auto dir = test_dir();
+  const auto r =
+      run_vdfx("bench --quick --filter '^suggest\\.fit' --json " + (dir / "r.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(schema_problem(dir / "r.json"), "");
+  const auto j = nlohmann::json::parse(read_file(dir / "r.json"));
+  ASSERT_EQ(j["rows"].size(), 1u);
+  const auto& row = j["rows"][0];
+  SCOPED_TRACE(row.dump());
+  ASSERT_EQ(row["status"], "ok");
+  EXPECT_EQ(row["knob"], "suggest.fit");
+  EXPECT_LE(row["error"]["max"].get<double>(), 0.1 + 1e-9);
+  EXPECT_LE(row["extra"]["peer_error_max"].get<double>(), 0.1 + 1e-9);
+  EXPECT_EQ(row["extra"]["within_tolerance"].get<double>(), 1.0);
+  EXPECT_GT(row["peer"]["median_s"].get<double>(), 0.0);
+  // The steps place about as many keyframes as the plain fit.
+  const double keyframes = row["extra"]["keyframes"].get<double>();
+  const double plain = row["extra"]["peer_keyframes"].get<double>();
+  EXPECT_GT(plain, 10.0);
+  EXPECT_LE(keyframes, 1.15 * plain);
 }
 
 // The trackers' knobs (docs/anchors.md, "Measured"): against their clips' known truth the camera

@@ -30,6 +30,23 @@ TEST(ExportProgress, OtherCommandsNameWhatTheyCountAndThemselves) {
   EXPECT_EQ(lines.str(), "suggest: 10/40 keyframes (25%), 5.0 keyframes/s, ETA 0:06\n");
 }
 
+TEST(ExportProgress, ANoteFollowsTheCountsOnLinesAndOnTheBar) {
+  std::ostringstream lines;
+  ProgressReporter p(lines, false, 40, 5.0, "suggest exposure", "keyframes");
+  p.set_note("largest error 0.500 (tolerance 0.250)");
+  p.update(10, 2.0);
+  EXPECT_EQ(lines.str(),
+            "suggest exposure: 10/40 keyframes (25%), 5.0 keyframes/s, ETA 0:06, largest error "
+            "0.500 (tolerance 0.250)\n");
+  std::ostringstream bar;
+  ProgressReporter b(bar, true, 40, 5.0, "suggest exposure", "keyframes");
+  b.set_note("largest error 0.200 (tolerance 0.250)");
+  b.finish(40, 4.0);
+  EXPECT_EQ(bar.str(),
+            "\r[####################] 100%  40/40 keyframes  10.0 keyframes/s  ETA 0:00  largest "
+            "error 0.200 (tolerance 0.250)\n");
+}
+
 TEST(ExportProgress, LinesComeEveryIntervalAndTheBarRedrawsInPlace) {
   std::ostringstream lines;
   ProgressReporter p(lines, false, 100, 5.0);

@@ -194,6 +194,39 @@ TEST(SuggestExposure, TheBudgetStopsTheFitAndSaysSo) {
   EXPECT_GT(report.effects[0].fit.max_error, 0.001);
 }
 
+TEST(SuggestExposure, SaysHowFarItIsFramesThenKeyframesWithTheLargestError) {
+  const auto dir = test_dir();
+  SuggestRequest r;
+  r.video = write_window_panorama(dir);
+  r.sidecar_out = dir / "out.vdfx.json";
+  r.tolerance = 0.1;
+  std::vector<ProgressStep> steps;
+  Progress progress;
+  progress.on_step = [&](const ProgressStep& s) { steps.push_back(s); };
+  const SuggestReport report = run_suggest(r, &progress);
+  const FitResult& fit = report.effects.at(0).fit;
+  ASSERT_GE(steps.size(), 3u);
+  // The one frame, metered; then the fit from no keyframes to what it placed.
+  EXPECT_EQ(steps[0].phase, ProgressStep::Phase::Frames);
+  EXPECT_EQ(steps[0].done, 1);
+  EXPECT_EQ(steps[0].total, 1);
+  EXPECT_EQ(steps[1].phase, ProgressStep::Phase::Keyframes);
+  EXPECT_EQ(steps[1].done, 0);
+  EXPECT_GT(steps[1].max_error, 1.0);  // the window's target, before any keyframe
+  for (std::size_t i = 1; i < steps.size(); ++i) {
+    EXPECT_EQ(steps[i].phase, ProgressStep::Phase::Keyframes);
+    EXPECT_EQ(steps[i].effect, effects::EffectType::Exposure);
+    EXPECT_EQ(steps[i].total, 256);
+    EXPECT_DOUBLE_EQ(steps[i].tolerance, 0.1);
+    if (i > 1) {
+      EXPECT_GT(steps[i].done, steps[i - 1].done);
+    }
+  }
+  EXPECT_EQ(steps.back().done, static_cast<std::int64_t>(fit.added.size()));
+  EXPECT_DOUBLE_EQ(steps.back().max_error, fit.max_error);
+  EXPECT_DOUBLE_EQ(progress.fraction.load(), 1.0);
+}
+
 TEST(SuggestExposure, OnTheSunrisePanoramaDarkensTheSunsSide) {
   const std::filesystem::path sunrise =
       "/usr/share/blender/datafiles/studiolights/world/sunrise.exr";
@@ -207,6 +240,92 @@ TEST(SuggestExposure, OnTheSunrisePanoramaDarkensTheSunsSide) {
   // The sun is at (36, 8) (recordings/README.md); the opposite side is the shadowed land.
   EXPECT_LT(s.at(*s.exposure, {36, 8}), -0.5);
   EXPECT_GT(s.at(*s.exposure, {-144, 0}), s.at(*s.exposure, {36, 8}) + 1.0);
+}
+
+/// A smooth field over `directions` x `frames` samples: a bright and a dark patch (Gaussian in
+/// the angle, 30 and 45 degrees wide) drifting 5 degrees in azimuth a frame.
+TargetField drifting_field(int directions, int frames) {
+  TargetField field;
+  for (int f = 0; f < frames; ++f)
+    for (const auto& d : sphere_directions(directions)) {
+      const Eigen::Vector3d u = effects::to_unit(d);
+      const auto patch = [&](const effects::Direction& c, double width_deg) {
+        const double theta = effects::angle_between(u, effects::to_unit(c)) * effects::kRadToDeg;
+        return std::exp(-theta * theta / (2 * width_deg * width_deg));
+      };
+      const double v = 2.5 * patch({40.0 + 5 * f, 10}, 30) - 1.5 * patch({-120.0 + 5 * f, -20}, 45);
+      field.add(d, f, std::span(&v, 1));
+    }
+  return field;
+}
+
+FitOptions drifting_options(double tolerance, double step_share) {
+  FitOptions o;
+  o.tolerance = tolerance;
+  o.max_keyframes = 4096;
+  o.fps = 1.0;
+  o.settings.time_scale = effects::time_scale_from_deg_per_s(30.0);
+  o.neutral = {0.0};
+  o.step_share = step_share;
+  return o;
+}
+
+/// The largest error of the keyframes `fit` placed over every sample of `field`, evaluated as a
+/// player evaluates them (a fresh solve of the keyframes).
+double largest_error(const TargetField& field, const FitOptions& o, const FitResult& fit) {
+  const effects::RbfInterpolator f(fit.added, 1, o.settings, o.fps, o.neutral);
+  double worst = 0.0;
+  for (std::size_t s = 0; s < field.size(); ++s)
+    worst = std::max(
+        worst, std::abs(f.evaluate(field.directions[s], field.frames[s])[0] - field.values[s]));
+  return worst;
+}
+
+TEST(SuggestFit, StepsOfSeveralKeyframesMeetTheToleranceWithAboutThePlainGreedyCount) {
+  const TargetField field = drifting_field(1000, 3);
+  const FitOptions plain_options = drifting_options(0.01, 0.0);
+  FitOptions options = drifting_options(0.01, FitOptions{}.step_share);
+  std::size_t plain_steps = 0, steps = 0;
+  FitOptions counted = plain_options;
+  counted.on_step = [&](std::size_t, double) { ++plain_steps; };
+  const FitResult plain = fit_greedy(field, counted);
+  options.on_step = [&](std::size_t, double) { ++steps; };
+  const FitResult fit = fit_greedy(field, options);
+  ASSERT_TRUE(plain.within_tolerance);
+  ASSERT_TRUE(fit.within_tolerance);
+  // Every sample within the tolerance, checked apart from the fit's own measure.
+  EXPECT_LE(largest_error(field, options, fit), 0.01 + 1e-9);
+  EXPECT_NEAR(largest_error(field, options, fit), fit.max_error, 1e-9);
+  // The plain fit measures after every keyframe (and once before); steps place many at once.
+  EXPECT_EQ(plain_steps, plain.added.size() + 1);
+  EXPECT_EQ(plain.steps, plain.added.size());
+  EXPECT_EQ(fit.steps + 1, steps);
+  EXPECT_LT(fit.steps * 3, fit.added.size());
+  // About as few keyframes as the plain fit (within 10 %).
+  EXPECT_LE(fit.added.size(), plain.added.size() * 11 / 10) << plain.added.size();
+  EXPECT_GE(fit.added.size() * 11 / 10, plain.added.size());
+}
+
+TEST(SuggestFit, LargeStepsSolveAfreshAndTheBudgetIsMetExactly) {
+  // A step share of 1 doubles the keyframes each step: steps of 64 and more solve all the
+  // keyframes afresh instead of updating the solution one keyframe at a time.
+  const TargetField field = drifting_field(800, 1);
+  FitOptions options = drifting_options(0.005, 1.0);
+  std::vector<std::size_t> added;
+  options.on_step = [&](std::size_t n, double) { added.push_back(n); };
+  const FitResult fit = fit_greedy(field, options);
+  ASSERT_TRUE(fit.within_tolerance);
+  EXPECT_GT(fit.added.size(), 128u);
+  EXPECT_LE(largest_error(field, options, fit), 0.005 + 1e-9);
+  EXPECT_EQ(added.front(), 0u);
+  EXPECT_EQ(added.back(), fit.added.size());
+
+  // A budget that ends inside a step: the step is cut to it.
+  options.max_keyframes = 100;
+  const FitResult cut = fit_greedy(field, options);
+  EXPECT_EQ(cut.added.size(), 100u);
+  EXPECT_FALSE(cut.within_tolerance);
+  EXPECT_GT(cut.max_error, 0.005);
 }
 
 TEST(SuggestGuide, FollowsTheDocumentedFalloffAroundThePoint) {
@@ -599,6 +718,11 @@ TEST(SuggestCommand, ReportsAndWritesAValidSidecar) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("metered 1 frames as sRGB"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("exposure"), std::string::npos) << r.output;
+  // Progress on stderr (a pipe here: lines), as export shows it: the frames metered, then the
+  // keyframes placed with the largest error against the tolerance.
+  EXPECT_NE(r.output.find("suggest: 1/1 frames (100%)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("suggest exposure: 0/256 keyframes"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(tolerance 0.250)\n"), std::string::npos) << r.output;
   EXPECT_EQ(run_vdfx_headless("validate " + out.string()).exit_code, 0);
 }
 
