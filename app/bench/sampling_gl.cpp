@@ -1,8 +1,9 @@
 /// @file
-/// @brief Equirect sampling at the poles for `vdfx bench`: the CPU sampler with and without its
-/// ripmap and OpenCV's remap (the CPU peer), and the GPU video layer with the base level only and
-/// with its two mip level choices (peer: a plain textured copy), all against a supersampled
-/// box-filtered reference of a view looking 80 degrees up at the synthetic 4K frame.
+/// @brief Equirect sampling at the poles for `vdfx bench`: the CPU sampler with point sampling
+/// and its footprint filter, OpenCV's remap (the CPU peer), and the GPU video layer with the base
+/// level only, its two isotropic mip level choices and its footprint filter (peer: a plain
+/// textured copy), all against a supersampled box-filtered reference of a view looking 80 degrees
+/// up at the synthetic 4K frame.
 #include <epoxy/gl.h>
 
 #include <map>
@@ -102,13 +103,14 @@ struct Remap {
   }
 };
 
-void cpu_case(Row& row, const Context& ctx, bool ripmap) {
+void cpu_case(Row& row, const Context& ctx, bool footprint) {
   const effects::ViewCamera cam = camera(ctx.quick);
   const Remap remap(ctx.quick);
   const double t0 = now_s();
   const effects::EquirectSampler& s =
-      sampler(ripmap ? effects::SampleFilter::AreaAware : effects::SampleFilter::Bilinear);
-  if (ripmap) row.add("ripmap_build_s", now_s() - t0);  // once per frame, not in the view time
+      sampler(footprint ? effects::SampleFilter::Footprint : effects::SampleFilter::Bilinear);
+  // Once per frame, not in the view time.
+  if (footprint) row.add("mip_chain_build_s", now_s() - t0);
   cv::Mat out;
   const auto t = measure_pair({[&] { out = effects::sample_view(s, cam); }}, {[&] { remap.run(); }},
                               ctx.budget);
@@ -160,7 +162,7 @@ void add_sampling_knobs(Registry& r, bool quick) {
               std::to_string(supersampling(quick)) + " bilinear samples)",
           "OpenCV remap, bilinear, precomputed maps", PlotError::Rms, false});
   r.add(kKnob, "CPU bilinear", [](Row& row, const Context& ctx) { cpu_case(row, ctx, false); });
-  r.add(kKnob, "CPU ripmap", [](Row& row, const Context& ctx) { cpu_case(row, ctx, true); });
+  r.add(kKnob, "CPU footprint", [](Row& row, const Context& ctx) { cpu_case(row, ctx, true); });
   r.add(kKnob, "OpenCV remap", remap_case);
   r.add_gl(kKnob, "GL base level",
            [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Base); });
@@ -168,6 +170,8 @@ void add_sampling_knobs(Registry& r, bool quick) {
            [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Analytic); });
   r.add_gl(kKnob, "GL derivatives LOD",
            [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Derivatives); });
+  r.add_gl(kKnob, "GL footprint",
+           [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Footprint); });
 }
 
 }  // namespace vdfx::app::bench
