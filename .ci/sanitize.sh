@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer (issue 11): builds all of
+# The suite under AddressSanitizer + UndefinedBehaviorSanitizer: builds all of
 # vdfx, its tests and every fuzz target's replay binary with the sanitizers (.ci/asan_configure.sh,
-# into build-asan/ or $VDFX_ASAN_BUILD_DIR), then runs every ctest test, the GL ones under Xvfb
+# into build-asan/ or $VDFX_ASAN_BUILD_DIR), then runs every ctest test but the few long ones
+# .ci/sanitize_leaves.txt leaves to the plain run (with why), the GL ones under Xvfb
 # with Mesa's llvmpipe as .ci/test.sh does, and the command tests through the sanitized vdfx
 # executable. Any undefined behaviour, memory error or leak fails the run; leaks inside
 # third-party libraries are excepted, each in cmake/lsan_suppressions.txt with the reason (the GL
@@ -22,4 +23,7 @@ if command -v llvm-symbolizer-14 > /dev/null; then
   export ASAN_SYMBOLIZER_PATH=$(command -v llvm-symbolizer-14)
 fi
 export LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe
-exec "$root/.ci/with_display.sh" ctest --output-on-failure -j "$jobs" "$@"
+# The tests left to the plain run, said in the log (.ci/sanitize_leaves.txt gives the reasons).
+leaves=$(grep -v '^#' "$root/.ci/sanitize_leaves.txt" | grep -v '^$' | paste -sd'|')
+echo "vdfx sanitize: left to the plain run (.ci/sanitize_leaves.txt): $leaves"
+exec "$root/.ci/with_display.sh" ctest --output-on-failure -j "$jobs" -E "$leaves" "$@"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # @file
 # @brief The bad-input and fault probe behind docs/reliability.md: runs one vdfx executable
-# against every class of issue 11 and prints one line per case (exit code or signal, wall time,
+# against every class of bad input and prints one line per case (exit code or signal, wall time,
 # peak memory, what happened to the files involved, the start of the message).
 #
 # usage: tests/fault/probe.sh VDFX [FAULT_SO]

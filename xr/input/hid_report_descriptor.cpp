@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 
 namespace vdfx::xr {
 
@@ -36,164 +37,218 @@ std::int32_t sign_extend(std::uint32_t raw, int size_bytes) {
   throw HidDescriptorError("report descriptor byte " + std::to_string(offset) + ": " + what);
 }
 
+/// One short item: where it starts, its prefix's fields and its data (little-endian).
+struct Item {
+  std::size_t at = 0;
+  int size = 0;  //!< data bytes: 0, 1, 2 or 4
+  int type = 0;  //!< 0 main, 1 global, 2 local, 3 reserved
+  int tag = 0;
+  std::uint32_t raw = 0;
+  std::int32_t sval = 0;  //!< raw sign-extended from its size
+};
+
+/// Reads the item at `i` and moves `i` past it; false for a long item (skipped, not returned).
+bool next_item(std::span<const std::uint8_t> bytes, std::size_t& i, Item& item) {
+  item.at = i;
+  const std::uint8_t prefix = bytes[i++];
+  if (prefix == 0xFE) {  // long item: size byte, tag byte, data
+    if (i >= bytes.size()) fail(item.at, "truncated long item");
+    i += 2 + bytes[i];
+    return false;
+  }
+  item.size = (prefix & 3) == 3 ? 4 : (prefix & 3);
+  item.type = (prefix >> 2) & 3;
+  item.tag = prefix >> 4;
+  if (i + static_cast<std::size_t>(item.size) > bytes.size())
+    fail(item.at, "item data runs past the end");
+  item.raw = 0;
+  for (int b = 0; b < item.size; ++b)
+    item.raw |= static_cast<std::uint32_t>(bytes[i + b]) << (8 * b);
+  i += static_cast<std::size_t>(item.size);
+  item.sval = item.size == 0 ? 0 : sign_extend(item.raw, item.size);
+  return true;
+}
+
+/// The parser's state between items: the global and local item state of HID 1.11 (6.2.2.7-8),
+/// the collections open and each report's next bit.
+class Walker {
+ public:
+  void global(const Item& it);
+  void local(const Item& it);
+  void main(const Item& it);
+  HidReportDescriptor finish(std::size_t end) {
+    if (depth_ != 0) fail(end, "collection not closed");
+    return std::move(out_);
+  }
+
+ private:
+  void input(const Item& it);
+  void array_fields(std::uint32_t count, std::int32_t lmax, std::uint32_t& pos);
+  void variable_fields(std::uint32_t count, std::int32_t lmax, bool relative, std::uint32_t& pos);
+  std::uint16_t page_of(std::uint32_t usage) const {
+    return static_cast<std::uint16_t>(usage >> 16 ? usage >> 16 : g_.usage_page);
+  }
+
+  HidReportDescriptor out_;
+  Globals g_;
+  std::vector<Globals> stack_;
+  Locals l_;
+  std::map<std::uint8_t, std::uint32_t> bit_pos_;  // per report ID
+  int depth_ = 0;
+};
+
+void Walker::global(const Item& it) {
+  switch (it.tag) {
+    case 0x0: g_.usage_page = static_cast<std::uint16_t>(it.raw); break;
+    case 0x1: g_.logical_min = it.sval; break;
+    case 0x2:
+      g_.logical_max = it.sval;
+      g_.logical_max_raw = it.raw;
+      g_.logical_max_unsigned = true;
+      break;
+    case 0x7: g_.report_size = it.raw; break;
+    case 0x8:
+      if (it.raw == 0 || it.raw > 255) fail(it.at, "report ID must be 1..255");
+      g_.report_id = static_cast<std::uint8_t>(it.raw);
+      out_.uses_report_ids = true;
+      break;
+    case 0x9: g_.report_count = it.raw; break;
+    case 0xA: stack_.push_back(g_); break;
+    case 0xB:
+      if (stack_.empty()) fail(it.at, "Pop without Push");
+      g_ = stack_.back();
+      stack_.pop_back();
+      break;
+    default: break;  // physical range, units: not needed for normalised values
+  }
+}
+
+void Walker::local(const Item& it) {
+  const std::uint32_t usage = it.size == 4 ? it.raw : (it.raw & 0xFFFF);
+  switch (it.tag) {
+    case 0x0: l_.usages.push_back(usage); break;
+    case 0x1:
+      l_.usage_min = usage;
+      l_.have_min = true;
+      break;
+    case 0x2:
+      l_.usage_max = usage;
+      l_.have_max = true;
+      break;
+    default: break;
+  }
+}
+
+void Walker::main(const Item& it) {
+  if (it.tag == 0xA) {  // Collection
+    if (depth_ == 0 && out_.application_usage_page == 0 && it.raw == 1 && !l_.usages.empty()) {
+      const std::uint32_t u = l_.usages.front();
+      out_.application_usage_page = page_of(u);
+      out_.application_usage = static_cast<std::uint16_t>(u & 0xFFFF);
+    }
+    ++depth_;
+  } else if (it.tag == 0xC) {  // End Collection
+    if (depth_ == 0) fail(it.at, "End Collection without Collection");
+    --depth_;
+  } else if (it.tag == 0x8) {  // Input
+    input(it);
+  } else if (it.tag != 0x9 && it.tag != 0xB) {  // not Output or Feature (no input bits)
+    fail(it.at, "unknown main item tag " + std::to_string(it.tag));
+  }
+  l_ = Locals{};  // local items apply to the next main item only
+}
+
+void Walker::input(const Item& it) {
+  if (g_.report_size == 0 || g_.report_size > 32) fail(it.at, "Input needs a Report Size of 1..32");
+  std::int32_t lmax = g_.logical_max;
+  // Many devices write Logical Maximum 255 in one byte (0xFF) with a minimum of 0: read it
+  // unsigned when the minimum is not negative, as the spec's examples intend.
+  if (g_.logical_min >= 0 && lmax < g_.logical_min && g_.logical_max_unsigned) {
+    lmax = static_cast<std::int32_t>(g_.logical_max_raw);
+  }
+  const bool constant = it.raw & 1;
+  const bool variable = it.raw & 2;
+  const bool relative = it.raw & 4;
+  std::uint32_t& pos = bit_pos_[g_.report_id];
+  // A Report Count read from four bytes can be 2^32 - 1: the fields of one report must fit
+  // in the largest report a device can send, and the descriptor in a bounded field list
+  // (found by fuzzing: a 100-byte descriptor allocated gigabytes, and the bit counter of a
+  // constant item could wrap).
+  const std::uint64_t bits = std::uint64_t{g_.report_size} * g_.report_count;
+  if (pos + bits > std::uint64_t{kMaxHidReportBytes} * 8)
+    fail(it.at, "the report would be longer than " + std::to_string(kMaxHidReportBytes) + " bytes");
+  if (!constant && out_.inputs.size() + g_.report_count > kMaxHidInputFields)
+    fail(it.at, "more than " + std::to_string(kMaxHidInputFields) + " input fields");
+  if (constant)
+    pos += g_.report_size * g_.report_count;
+  else if (!variable)  // array: each slot holds a usage index
+    array_fields(g_.report_count, lmax, pos);
+  else
+    variable_fields(g_.report_count, lmax, relative, pos);
+}
+
+void Walker::array_fields(std::uint32_t count, std::int32_t lmax, std::uint32_t& pos) {
+  HidField f;
+  f.report_id = g_.report_id;
+  f.bit_size = g_.report_size;
+  f.logical_min = g_.logical_min;
+  f.logical_max = lmax;
+  f.is_array = true;
+  const std::uint32_t first =
+      l_.have_min ? l_.usage_min : (l_.usages.empty() ? 0 : l_.usages.front());
+  const std::uint32_t last = l_.have_max ? l_.usage_max : first;
+  f.usage_page = page_of(first);
+  f.usage = static_cast<std::uint16_t>(first & 0xFFFF);
+  f.usage_max = static_cast<std::uint16_t>(last & 0xFFFF);
+  for (std::uint32_t c = 0; c < count; ++c) {
+    f.bit_offset = pos;
+    out_.inputs.push_back(f);
+    pos += g_.report_size;
+  }
+}
+
+void Walker::variable_fields(std::uint32_t count, std::int32_t lmax, bool relative,
+                             std::uint32_t& pos) {
+  for (std::uint32_t c = 0; c < count; ++c) {
+    std::uint32_t usage = 0;
+    if (!l_.usages.empty()) {
+      usage = l_.usages[std::min<std::size_t>(c, l_.usages.size() - 1)];
+    } else if (l_.have_min) {
+      usage = std::min(l_.usage_min + c, l_.have_max ? l_.usage_max : l_.usage_min + c);
+    }
+    HidField f;
+    f.report_id = g_.report_id;
+    f.bit_offset = pos;
+    f.bit_size = g_.report_size;
+    f.usage_page = page_of(usage);
+    f.usage = static_cast<std::uint16_t>(usage & 0xFFFF);
+    f.usage_max = f.usage;
+    f.logical_min = g_.logical_min;
+    f.logical_max = lmax;
+    f.is_relative = relative;
+    out_.inputs.push_back(f);
+    pos += g_.report_size;
+  }
+}
+
 }  // namespace
 
 HidReportDescriptor parse_report_descriptor(std::span<const std::uint8_t> bytes) {
-  HidReportDescriptor out;
-  Globals g;
-  std::vector<Globals> stack;
-  Locals l;
-  std::map<std::uint8_t, std::uint32_t> bit_pos;  // per report ID
-  int depth = 0;
+  Walker w;
   std::size_t i = 0;
   while (i < bytes.size()) {
-    const std::size_t at = i;
-    const std::uint8_t prefix = bytes[i++];
-    if (prefix == 0xFE) {  // long item: size byte, tag byte, data
-      if (i >= bytes.size()) fail(at, "truncated long item");
-      i += 2 + bytes[i];
-      continue;
-    }
-    const int size = (prefix & 3) == 3 ? 4 : (prefix & 3);
-    const int type = (prefix >> 2) & 3;
-    const int tag = prefix >> 4;
-    if (i + static_cast<std::size_t>(size) > bytes.size()) fail(at, "item data runs past the end");
-    std::uint32_t raw = 0;
-    for (int b = 0; b < size; ++b) raw |= static_cast<std::uint32_t>(bytes[i + b]) << (8 * b);
-    i += static_cast<std::size_t>(size);
-    const std::int32_t sval = size == 0 ? 0 : sign_extend(raw, size);
-
-    if (type == 1) {  // global
-      switch (tag) {
-        case 0x0: g.usage_page = static_cast<std::uint16_t>(raw); break;
-        case 0x1: g.logical_min = sval; break;
-        case 0x2:
-          g.logical_max = sval;
-          g.logical_max_raw = raw;
-          g.logical_max_unsigned = true;
-          break;
-        case 0x7: g.report_size = raw; break;
-        case 0x8:
-          if (raw == 0 || raw > 255) fail(at, "report ID must be 1..255");
-          g.report_id = static_cast<std::uint8_t>(raw);
-          out.uses_report_ids = true;
-          break;
-        case 0x9: g.report_count = raw; break;
-        case 0xA: stack.push_back(g); break;
-        case 0xB:
-          if (stack.empty()) fail(at, "Pop without Push");
-          g = stack.back();
-          stack.pop_back();
-          break;
-        default: break;  // physical range, units: not needed for normalised values
-      }
-      continue;
-    }
-    if (type == 2) {  // local
-      const std::uint32_t usage = size == 4 ? raw : (raw & 0xFFFF);
-      switch (tag) {
-        case 0x0: l.usages.push_back(usage); break;
-        case 0x1:
-          l.usage_min = usage;
-          l.have_min = true;
-          break;
-        case 0x2:
-          l.usage_max = usage;
-          l.have_max = true;
-          break;
-        default: break;
-      }
-      continue;
-    }
-    if (type != 0) fail(at, "reserved item type");
-    // main items
-    if (tag == 0xA) {  // Collection
-      if (depth == 0 && out.application_usage_page == 0 && raw == 1 && !l.usages.empty()) {
-        const std::uint32_t u = l.usages.front();
-        out.application_usage_page = static_cast<std::uint16_t>(u >> 16 ? u >> 16 : g.usage_page);
-        out.application_usage = static_cast<std::uint16_t>(u & 0xFFFF);
-      }
-      ++depth;
-    } else if (tag == 0xC) {  // End Collection
-      if (depth == 0) fail(at, "End Collection without Collection");
-      --depth;
-    } else if (tag == 0x8 || tag == 0x9 || tag == 0xB) {  // Input, Output, Feature
-      if (tag == 0x8) {
-        if (g.report_size == 0 || g.report_size > 32)
-          fail(at, "Input needs a Report Size of 1..32");
-        std::int32_t lmax = g.logical_max;
-        // Many devices write Logical Maximum 255 in one byte (0xFF) with a minimum of 0: read it
-        // unsigned when the minimum is not negative, as the spec's examples intend.
-        if (g.logical_min >= 0 && lmax < g.logical_min && g.logical_max_unsigned) {
-          lmax = static_cast<std::int32_t>(g.logical_max_raw);
-        }
-        const bool constant = raw & 1;
-        const bool variable = raw & 2;
-        const bool relative = raw & 4;
-        std::uint32_t& pos = bit_pos[g.report_id];
-        // A Report Count read from four bytes can be 2^32 - 1: the fields of one report must fit
-        // in the largest report a device can send, and the descriptor in a bounded field list
-        // (found by fuzzing: a 100-byte descriptor allocated gigabytes, and the bit counter of a
-        // constant item could wrap).
-        const std::uint64_t bits = std::uint64_t{g.report_size} * g.report_count;
-        if (pos + bits > std::uint64_t{kMaxHidReportBytes} * 8)
-          fail(at,
-               "the report would be longer than " + std::to_string(kMaxHidReportBytes) + " bytes");
-        if (!constant && out.inputs.size() + g.report_count > kMaxHidInputFields)
-          fail(at, "more than " + std::to_string(kMaxHidInputFields) + " input fields");
-        auto page_of = [&](std::uint32_t u) {
-          return static_cast<std::uint16_t>(u >> 16 ? u >> 16 : g.usage_page);
-        };
-        if (constant) {
-          pos += g.report_size * g.report_count;
-        } else if (!variable) {  // array: each slot holds a usage index
-          HidField f;
-          f.report_id = g.report_id;
-          f.bit_size = g.report_size;
-          f.logical_min = g.logical_min;
-          f.logical_max = lmax;
-          f.is_array = true;
-          const std::uint32_t first =
-              l.have_min ? l.usage_min : (l.usages.empty() ? 0 : l.usages.front());
-          const std::uint32_t last = l.have_max ? l.usage_max : first;
-          f.usage_page = page_of(first);
-          f.usage = static_cast<std::uint16_t>(first & 0xFFFF);
-          f.usage_max = static_cast<std::uint16_t>(last & 0xFFFF);
-          for (std::uint32_t c = 0; c < g.report_count; ++c) {
-            f.bit_offset = pos;
-            out.inputs.push_back(f);
-            pos += g.report_size;
-          }
-        } else {
-          for (std::uint32_t c = 0; c < g.report_count; ++c) {
-            std::uint32_t usage = 0;
-            if (!l.usages.empty()) {
-              usage = l.usages[std::min<std::size_t>(c, l.usages.size() - 1)];
-            } else if (l.have_min) {
-              usage = std::min(l.usage_min + c, l.have_max ? l.usage_max : l.usage_min + c);
-            }
-            HidField f;
-            f.report_id = g.report_id;
-            f.bit_offset = pos;
-            f.bit_size = g.report_size;
-            f.usage_page = page_of(usage);
-            f.usage = static_cast<std::uint16_t>(usage & 0xFFFF);
-            f.usage_max = f.usage;
-            f.logical_min = g.logical_min;
-            f.logical_max = lmax;
-            f.is_relative = relative;
-            out.inputs.push_back(f);
-            pos += g.report_size;
-          }
-        }
-      }
-    } else {
-      fail(at, "unknown main item tag " + std::to_string(tag));
-    }
-    l = Locals{};  // local items apply to the next main item only
+    Item it;
+    if (!next_item(bytes, i, it)) continue;
+    if (it.type == 1)
+      w.global(it);
+    else if (it.type == 2)
+      w.local(it);
+    else if (it.type == 0)
+      w.main(it);
+    else
+      fail(it.at, "reserved item type");
   }
-  if (depth != 0) fail(bytes.size(), "collection not closed");
-  return out;
+  return w.finish(bytes.size());
 }
 
 bool read_field(const HidField& field, bool uses_report_ids, std::span<const std::uint8_t> report,

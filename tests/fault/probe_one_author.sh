@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # @file
-# @brief The probe of issue 23 behind docs/reliability.md ("One author's work"): runs one vdfx
+# @brief The probe behind docs/reliability.md ("One author's work"): runs one vdfx
 # executable through every case with the real thing where this machine allows it: two real
 # `vdfx edit` processes under Xvfb on one sidecar, another program rewriting the open sidecar,
 # and every writer onto a real, small, full tmpfs (mounted here when run as root; else those
 # cases are skipped). One line per case: exit code, what happened to the files, the message.
 #
-# usage: tests/fault/probe23.sh VDFX        (run it on a build before and after a change)
+# usage: tests/fault/probe_one_author.sh VDFX        (run it on a build before and after a change)
 # Needs ffmpeg, xvfb-run, gnuplot; root for the tmpfs cases.
 set -uo pipefail
 vdfx=$(realpath "$1")
 root=$(cd "$(dirname "$0")/../.." && pwd)
-work=$(mktemp -d /tmp/vdfx-probe23.XXXXXX)
+work=$(mktemp -d /tmp/vdfx-probe_one_author.XXXXXX)
 full="$work/full"
 pids=()
 cleanup() {
@@ -52,7 +52,7 @@ first_editor() {
   sleep 4
 }
 
-echo "probe23 of $vdfx"
+echo "probe_one_author of $vdfx"
 # [SECTION] two editors on one sidecar
 cp s.vdfx.json s.orig
 first_editor s.vdfx.json
