@@ -42,17 +42,6 @@ effects::ViewCamera camera(const ShrinkView& v, bool quick) {
   return render_view(v, quick).camera(view_size(quick).width, view_size(quick).height);
 }
 
-/// The synthetic frame as the CPU takes it: RGB float in [0, 1] (the GPU's 8-bit texels).
-const cv::Mat& frame_rgb() {
-  static const cv::Mat m = [] {
-    cv::Mat rgb;
-    cv::cvtColor(synthetic_frame(), rgb, cv::COLOR_BGR2RGB);
-    rgb.convertTo(rgb, CV_32FC3, 1.0 / 255.0);
-    return rgb;
-  }();
-  return m;
-}
-
 /// The CPU samplers: point sampling, and one footprint sampler at a time (its mip chain of the 4K
 /// frame is 120 MB; rows of one N follow each other). *build_s: the chain's build time, when built.
 const effects::EquirectSampler& sampler(effects::SampleFilter filter, double max_anisotropy,
@@ -63,7 +52,7 @@ const effects::EquirectSampler& sampler(effects::SampleFilter filter, double max
     s.reset();
     const double t0 = now_s();
     s = std::make_unique<effects::EquirectSampler>(
-        frame_rgb(),
+        synthetic_frame_rgb(),
         effects::SamplerOptions{filter, effects::PoleRows::Clamp, 360, max_anisotropy});
     if (build_s) *build_s = now_s() - t0;
   }
@@ -75,19 +64,8 @@ const cv::Mat& truth(const ShrinkView& v, bool quick) {
   static std::map<std::pair<const ShrinkView*, bool>, cv::Mat> cache;
   cv::Mat& t = cache[{&v, quick}];
   if (!t.empty()) return t;
-  const effects::ViewCamera cam = camera(v, quick);
-  const effects::EquirectSampler& s = sampler(effects::SampleFilter::Bilinear, 1.0);
-  const int k = kTruthScale;
-  t = cv::Mat(cam.height(), cam.width(), CV_32FC3);
-  t.forEach<cv::Vec3f>([&](cv::Vec3f& px, const int* pos) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (int b = 0; b < k; ++b)
-      for (int a = 0; a < k; ++a)
-        sum += s.sample(cam.ray(pos[1] + (a + 0.5) / k, pos[0] + (b + 0.5) / k));
-    sum /= k * k;
-    px = cv::Vec3f(static_cast<float>(sum.x()), static_cast<float>(sum.y()),
-                   static_cast<float>(sum.z()));
-  });
+  t = supersampled_view(sampler(effects::SampleFilter::Bilinear, 1.0), camera(v, quick),
+                        kTruthScale);
   return t;
 }
 
@@ -96,7 +74,7 @@ double mean_taps(const ShrinkView& v, bool quick, double max_anisotropy) {
   const effects::ViewCamera cam = camera(v, quick);
   const Eigen::Matrix3d& rot = cam.camera_to_world();
   const Eigen::Vector3d ex = rot.col(0) / cam.fx(), ey = -rot.col(1) / cam.fy();
-  const double w = frame_rgb().cols, h = frame_rgb().rows;
+  const double w = synthetic_frame_rgb().cols, h = synthetic_frame_rgb().rows;
   double sum = 0.0;
   for (int j = 0; j < cam.height(); ++j)
     for (int i = 0; i < cam.width(); ++i) {

@@ -32,23 +32,12 @@ int supersampling(bool quick) {
   return quick ? 12 : 16;
 }
 
-/// The synthetic frame as the CPU sampler takes it: RGB float in [0, 1].
-const cv::Mat& frame_rgb() {
-  static const cv::Mat m = [] {
-    cv::Mat rgb;
-    cv::cvtColor(synthetic_frame(), rgb, cv::COLOR_BGR2RGB);
-    rgb.convertTo(rgb, CV_32FC3, 1.0 / 255.0);
-    return rgb;
-  }();
-  return m;
-}
-
 const effects::EquirectSampler& sampler(effects::SampleFilter f) {
   static std::map<effects::SampleFilter, std::unique_ptr<effects::EquirectSampler>> cache;
   auto& s = cache[f];
   if (!s)
     s = std::make_unique<effects::EquirectSampler>(
-        frame_rgb(), effects::SamplerOptions{f, effects::PoleRows::Clamp});
+        synthetic_frame_rgb(), effects::SamplerOptions{f, effects::PoleRows::Clamp});
   return *s;
 }
 
@@ -62,19 +51,8 @@ const cv::Mat& reference(bool quick) {
   static std::map<bool, cv::Mat> cache;
   cv::Mat& ref = cache[quick];
   if (!ref.empty()) return ref;
-  const effects::ViewCamera cam = camera(quick);
-  const effects::EquirectSampler& s = sampler(effects::SampleFilter::Bilinear);
-  const int n = view_size(quick), k = supersampling(quick);
-  ref = cv::Mat(n, n, CV_32FC3);
-  ref.forEach<cv::Vec3f>([&](cv::Vec3f& px, const int* pos) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (int b = 0; b < k; ++b)
-      for (int a = 0; a < k; ++a)
-        sum += s.sample(cam.ray(pos[1] + (a + 0.5) / k, pos[0] + (b + 0.5) / k).normalized());
-    sum /= k * k;
-    px = cv::Vec3f(static_cast<float>(sum.x()), static_cast<float>(sum.y()),
-                   static_cast<float>(sum.z()));
-  });
+  ref = supersampled_view(sampler(effects::SampleFilter::Bilinear), camera(quick),
+                          supersampling(quick));
   return ref;
 }
 
@@ -83,12 +61,12 @@ const cv::Mat& reference(bool quick) {
 struct Remap {
   cv::Mat padded, map_x, map_y;
   explicit Remap(bool quick) {
-    cv::copyMakeBorder(frame_rgb(), padded, 0, 0, 1, 1, cv::BORDER_WRAP);
+    cv::copyMakeBorder(synthetic_frame_rgb(), padded, 0, 0, 1, 1, cv::BORDER_WRAP);
     const effects::ViewCamera cam = camera(quick);
     const int n = view_size(quick);
     map_x.create(n, n, CV_32FC1);
     map_y.create(n, n, CV_32FC1);
-    const double w = frame_rgb().cols, h = frame_rgb().rows;
+    const double w = synthetic_frame_rgb().cols, h = synthetic_frame_rgb().rows;
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {
         const Eigen::Vector2d uv = effects::to_equirect_uv(effects::from_unit(cam.pixel_ray(x, y)));
