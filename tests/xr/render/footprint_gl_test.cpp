@@ -1,7 +1,7 @@
 /// @file
 /// @brief The footprint filter on the GPU (the video layer's default) against the CPU reference
 /// (effects::EquirectSampler) on a table of views: the seam, both poles, fields of view 30..150,
-/// sizes 64x48..1280x960; both against the supersampled truth (the same view at 8x the size,
+/// sizes 64x48..640x480; both against the supersampled truth (the same view at 8x the size,
 /// area-averaged down), beside the older samplings; and the GPU's mip chain against the CPU's.
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
@@ -94,9 +94,9 @@ const struct ViewCase {
     {"nadir, rolled", {30, -90}, 15, 120, 320, 240, true},
     {"altitude -60", {0, -60}, 0, 60, 320, 240, true},
     {"narrow", {45, 30}, 0, 30, 64, 48, false},
-    {"wide, low", {-60, -40}, 0, 150, 1280, 960, true},
-    {"nadir, large", {0, -90}, 0, 120, 1280, 960, true},
-    {"near the zenith, large", {100, 75}, -20, 60, 1280, 960, true},
+    {"wide, low", {-60, -40}, 0, 150, 640, 480, true},
+    {"nadir, large", {0, -90}, 0, 120, 640, 480, true},
+    {"near the zenith, large", {100, 75}, -20, 60, 640, 480, true},
 };
 
 TEST_F(FootprintGlTest, GpuMatchesTheCpuReferenceOnEveryView) {
@@ -127,7 +127,7 @@ TEST_F(FootprintGlTest, BothAreCloserToTheSupersampledTruthThanPointSampling) {
   const effects::EquirectSampler cpu(panorama_rgb());
   const effects::EquirectSampler point(panorama_rgb(), {effects::SampleFilter::Bilinear});
   for (const ViewCase& c : kViews) {
-    if (c.w > 320) continue;  // the 8x truth of a 1280x960 view is 78 million samples
+    if (c.w > 320) continue;  // the 8x truth of a 640x480 view is 20 million samples
     const RenderView v = RenderView::look_at(c.look, c.roll_deg, c.fov, c.w, c.h);
     const effects::ViewCamera cam = v.camera(c.w, c.h);
     const cv::Mat truth = supersampled(panorama_rgb(), cam, 8);
