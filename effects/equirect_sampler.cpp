@@ -1,5 +1,5 @@
 /// @file
-/// @brief EquirectSampler: bilinear and ripmap (area-aware) sampling of equirect images.
+/// @brief EquirectSampler: bilinear and footprint-filtered sampling of equirect images.
 #include "effects/equirect_sampler.h"
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "effects/coords.h"
+#include "effects/mip_chain.h"
 #include "effects/stereo_layout.h"
 
 namespace vdfx::effects {
@@ -39,33 +40,12 @@ EquirectSampler::EquirectSampler(const cv::Mat& equirect, SamplerOptions options
     throw std::invalid_argument("EquirectSampler: coverage must be 360 or 180");
   // A half sphere has no continuation across the pole inside the image.
   if (options_.coverage_deg != 360) options_.pole_rows = PoleRows::Clamp;
-  levels_.push_back({equirect});
-  if (options_.filter != SampleFilter::AreaAware) return;
-  while ((width_ >> (max_lx_ + 1)) >= 1) ++max_lx_;
-  while ((height_ >> (max_ly_ + 1)) >= 1) ++max_ly_;
-  max_ly_ = std::min(max_ly_, max_lx_);
-  const auto half = [](int n, int l) { return std::max(1, n >> l); };
-  for (int ly = 0; ly <= max_ly_; ++ly) {
-    if (ly > 0) {
-      cv::Mat diag;
-      const cv::Mat& prev = levels_[static_cast<size_t>(ly - 1)][0];
-      cv::resize(prev, diag, cv::Size(half(width_, ly), half(height_, ly)), 0, 0, cv::INTER_AREA);
-      levels_.push_back({diag});
-    }
-    auto& row = levels_[static_cast<size_t>(ly)];
-    for (int lx = ly + 1; lx <= max_lx_; ++lx) {
-      cv::Mat next;
-      cv::resize(row.back(), next, cv::Size(half(width_, lx), half(height_, ly)), 0, 0,
-                 cv::INTER_AREA);
-      row.push_back(next);
-    }
-  }
-}
-
-const cv::Mat& EquirectSampler::level(int lx, int ly) const {
-  ly = std::clamp(ly, 0, max_ly_);
-  lx = std::clamp(std::max(lx, ly), 0, max_lx_);
-  return levels_[static_cast<size_t>(ly)][static_cast<size_t>(lx - ly)];
+  if (!(options_.max_anisotropy >= 1.0))
+    throw std::invalid_argument("EquirectSampler: max_anisotropy must be at least 1");
+  if (options_.filter == SampleFilter::Footprint)
+    levels_ = build_mip_chain(equirect);
+  else
+    levels_ = {equirect};
 }
 
 Eigen::Vector3d EquirectSampler::row_lerp(const cv::Mat& img, int row, double x) const {
@@ -88,8 +68,8 @@ Eigen::Vector3d EquirectSampler::row_lerp(const cv::Mat& img, int row, double x)
   return out;
 }
 
-Eigen::Vector3d EquirectSampler::sample_uv(double u, double v, int level_x, int level_y) const {
-  const cv::Mat& img = level(level_x, level_y);
+Eigen::Vector3d EquirectSampler::sample_uv(double u, double v, int level) const {
+  const cv::Mat& img = levels_[static_cast<std::size_t>(std::clamp(level, 0, levels() - 1))];
   const int w = img.cols, h = img.rows;
   const double x = u * w - 0.5;
   const double y = v * h - 0.5;
@@ -107,6 +87,16 @@ Eigen::Vector3d EquirectSampler::sample_uv(double u, double v, int level_x, int 
   return (1.0 - t) * fetch_row(r0) + t * fetch_row(r0 + 1);
 }
 
+Eigen::Vector3d EquirectSampler::sample_lod(double u, double v, double lod) const {
+  const int last = levels() - 1;
+  if (!(lod > 0.0)) return sample_uv(u, v, 0);
+  if (lod >= last) return sample_uv(u, v, last);
+  const int l0 = static_cast<int>(lod);
+  const double f = lod - l0;
+  const Eigen::Vector3d lo = sample_uv(u, v, l0);
+  return f == 0.0 ? lo : Eigen::Vector3d((1.0 - f) * lo + f * sample_uv(u, v, l0 + 1));
+}
+
 double EquirectSampler::image_u(double u) const {
   return 0.5 + (u - 0.5) * (360.0 / options_.coverage_deg);
 }
@@ -122,44 +112,32 @@ Eigen::Vector3d EquirectSampler::sample(const Eigen::Vector3d& dir) const {
   return w * sample_uv(image_u(uv.x()), uv.y());
 }
 
-Eigen::Vector3d EquirectSampler::sample(const Eigen::Vector3d& dir,
-                                        const Footprint& footprint) const {
-  const Eigen::Vector2d duv = direction_to_uv(dir);
-  const double w = weight(duv.x());
+Eigen::Vector3d EquirectSampler::sample_pixel(const ViewCamera& camera, double x, double y) const {
+  const Eigen::Vector3d centre = camera.ray(x, y);
+  const double w = weight(direction_to_uv(centre).x());
   if (w <= 0.0) return Eigen::Vector3d::Zero();
-  const Eigen::Vector2d uv(image_u(duv.x()), duv.y());
-  if (options_.filter != SampleFilter::AreaAware) return w * sample_uv(uv.x(), uv.y());
-  // Level l averages 2^l texels, so a footprint of n texels wants level log2(n).
-  const auto lod = [](double texels, int max_level) {
-    return std::clamp(std::log2(std::max(texels, 1.0)), 0.0, static_cast<double>(max_level));
-  };
-  const double ly_f = lod(footprint.dv_texels, max_ly_);
-  const double lx_f = std::max(lod(footprint.du_texels, max_lx_), ly_f);
-  const int lx0 = static_cast<int>(lx_f), ly0 = static_cast<int>(ly_f);
-  const double tx = lx_f - lx0, ty = ly_f - ly0;
-  const int lx1 = std::min(lx0 + 1, max_lx_), ly1 = std::min(ly0 + 1, max_ly_);
-  const auto at = [&](int lx, int ly) { return sample_uv(uv.x(), uv.y(), lx, ly); };
-  Eigen::Vector3d lo = at(lx0, ly0);
-  if (tx > 0.0) lo = (1.0 - tx) * lo + tx * at(lx1, ly0);
-  if (ty == 0.0) return w * lo;
-  Eigen::Vector3d hi = at(lx0, ly1);
-  if (tx > 0.0) hi = (1.0 - tx) * hi + tx * at(lx1, ly1);
-  return w * ((1.0 - ty) * lo + ty * hi);
+  if (options_.filter == SampleFilter::Bilinear) return w * sample(centre);
+  return w * footprint_sample(camera, x, y);
 }
 
-Footprint EquirectSampler::footprint(const Eigen::Vector3d& dir, const Eigen::Vector3d& dir_dx,
-                                     const Eigen::Vector3d& dir_dy) const {
-  const Eigen::Vector2d uv = direction_to_uv(dir);
-  const auto delta = [&](const Eigen::Vector3d& other) {
-    Eigen::Vector2d d = direction_to_uv(other) - uv;
-    d.x() -= std::round(d.x());  // the short way round the seam
-    return d;
-  };
-  const Eigen::Vector2d a = delta(dir_dx), b = delta(dir_dy);
-  // A 180 image has its width over half the turn: twice the texels per degree.
+Eigen::Vector3d EquirectSampler::footprint_sample(const ViewCamera& camera, double x,
+                                                  double y) const {
+  // The unnormalised ray is affine in the pixel position: d + dx ex + dy ey.
+  const Eigen::Matrix3d& rot = camera.camera_to_world();
+  const Eigen::Vector2d t = camera.tangent(x, y);
+  const Eigen::Vector3d d = rot * Eigen::Vector3d(t.x(), t.y(), -1.0);
+  const Eigen::Vector3d ex = rot.col(0) / camera.fx(), ey = -rot.col(1) / camera.fy();
   const double per_turn = width_ * (360.0 / options_.coverage_deg);
-  return {std::max(std::abs(a.x()), std::abs(b.x())) * per_turn,
-          std::max(std::abs(a.y()), std::abs(b.y())) * height_};
+  const FootprintTaps taps =
+      footprint_taps(equirect_jacobian(d, ex, ey, {per_turn, static_cast<double>(height_)}),
+                     options_.max_anisotropy, per_turn);
+  const Eigen::Vector3d step = taps.spacing * (taps.axis.x() * ex + taps.axis.y() * ey);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int k = -taps.half_count; k <= taps.half_count; ++k) {
+    const Eigen::Vector2d uv = direction_to_uv(d + k * step);
+    sum += taps.weight(k) * sample_lod(image_u(uv.x()), uv.y(), taps.lod);
+  }
+  return sum;
 }
 
 }  // namespace vdfx::effects

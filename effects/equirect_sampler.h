@@ -8,12 +8,12 @@
 /// CLAMP_TO_EDGE would) or, optionally, continued across the pole (row -1 is row 0 seen from the
 /// opposite azimuth).
 ///
-/// Near the poles one view pixel covers many equirect columns (a row's length shrinks with
-/// cos(altitude)), so plain bilinear sampling aliases there. The area-aware filter keeps a
-/// "ripmap": levels (lx, ly) of width W / 2^lx and height H / 2^ly (ly <= lx, box-averaged with
-/// cv::resize INTER_AREA), and picks lx from the footprint's horizontal extent in texels and ly
-/// from its vertical extent, blending linearly between neighbouring levels (4 bilinear lookups).
-/// The horizontal level can thus grow towards the poles without blurring vertically.
+/// A view pixel (sample_pixel) is, by default, the image filtered over the pixel's footprint
+/// (effects/pixel_footprint.h): taps along the footprint's major axis, each trilinear in the
+/// area-average mip chain (effects/mip_chain.h) at the level of the minor axis. Near the poles a
+/// view pixel covers many equirect columns (a row's length shrinks with cos(altitude)) and few
+/// rows; the taps spread along the row without blurring across rows. The GPU's video layer
+/// computes the same taps from the same chain (docs/effects.md, "Sampling a view").
 ///
 /// Coverage (effects/stereo_layout.h): a 360 image spans azimuth -180..180 and wraps; a 180
 /// (VR180) image spans -90..90: its columns are clamped, never wrapped, and a sample is weighted
@@ -26,13 +26,15 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "effects/pixel_footprint.h"
 #include "effects/stereo_layout.h"
+#include "effects/view_camera.h"
 
 namespace vdfx::effects {
 
 enum class SampleFilter {
-  Bilinear,   //!< level 0 only
-  AreaAware,  //!< ripmap level chosen from the pixel footprint
+  Bilinear,   //!< level 0 at the pixel centre (aliases where the view shrinks the image)
+  Footprint,  //!< the pixel's footprint filtered from the mip chain (pixel_footprint.h)
 };
 
 enum class PoleRows {
@@ -41,16 +43,12 @@ enum class PoleRows {
 };
 
 struct SamplerOptions {
-  SampleFilter filter = SampleFilter::AreaAware;
+  SampleFilter filter = SampleFilter::Footprint;
   PoleRows pole_rows = PoleRows::Clamp;
   /// Degrees of azimuth the image spans, centred on azimuth 0: 360 or 180.
   int coverage_deg = 360;
-};
-
-/// Extent of one view pixel in level-0 equirect texels.
-struct Footprint {
-  double du_texels = 0.0;  //!< horizontal (azimuth) extent
-  double dv_texels = 0.0;  //!< vertical (altitude) extent
+  /// Footprint: the largest ratio of the footprint's axes resolved by taps (>= 1).
+  double max_anisotropy = kDefaultMaxAnisotropy;
 };
 
 class EquirectSampler {
@@ -61,26 +59,23 @@ class EquirectSampler {
 
   /// Bilinear sample at level 0 at a (non-zero, not necessarily unit) world direction.
   Eigen::Vector3d sample(const Eigen::Vector3d& dir) const;
-  /// Sample whose filter width follows `footprint` (level 0 bilinear when filter is Bilinear).
-  Eigen::Vector3d sample(const Eigen::Vector3d& dir, const Footprint& footprint) const;
+  /// The view pixel of `camera` centred at continuous pixel position (x, y): filtered over its
+  /// footprint (Footprint) or bilinear at (x, y) (Bilinear); times the coverage weight there.
+  Eigen::Vector3d sample_pixel(const ViewCamera& camera, double x, double y) const;
   /// Bilinear sample at the image's texture coordinates (u wraps for coverage 360 and is clamped
-  /// for 180, v per PoleRows) on a ripmap level; no coverage weight.
-  Eigen::Vector3d sample_uv(double u, double v, int level_x = 0, int level_y = 0) const;
-
-  /// Footprint of a pixel whose ray is `dir` and whose right and lower neighbours' rays are
-  /// `dir_dx` and `dir_dy` (finite differences, as GPU derivatives are); the azimuth difference
-  /// is taken the short way round the seam.
-  Footprint footprint(const Eigen::Vector3d& dir, const Eigen::Vector3d& dir_dx,
-                      const Eigen::Vector3d& dir_dy) const;
+  /// for 180, v per PoleRows) on a mip level; no coverage weight.
+  Eigen::Vector3d sample_uv(double u, double v, int level = 0) const;
+  /// Trilinear sample (GL's LINEAR_MIPMAP_LINEAR at level of detail `lod`: level 0 bilinear for
+  /// lod <= 0, the last level beyond the chain, else a blend of the two levels around lod).
+  Eigen::Vector3d sample_lod(double u, double v, double lod) const;
 
   int width() const { return width_; }
   int height() const { return height_; }
-  int max_level_x() const { return max_lx_; }  //!< 0 without the ripmap
-  int max_level_y() const { return max_ly_; }
+  int levels() const { return static_cast<int>(levels_.size()); }  //!< 1 without the chain
   const SamplerOptions& options() const { return options_; }
 
  private:
-  const cv::Mat& level(int lx, int ly) const;
+  Eigen::Vector3d footprint_sample(const ViewCamera& camera, double x, double y) const;
   Eigen::Vector3d row_lerp(const cv::Mat& img, int row, double x) const;
   /// The image's u of a direction's equirect u, and the coverage weight there.
   double image_u(double u) const;
@@ -88,8 +83,7 @@ class EquirectSampler {
 
   SamplerOptions options_;
   int width_ = 0, height_ = 0;
-  int max_lx_ = 0, max_ly_ = 0;
-  std::vector<std::vector<cv::Mat>> levels_;  //!< levels_[ly][lx - ly]
+  std::vector<cv::Mat> levels_;  //!< the mip chain (level 0 only for Bilinear)
 };
 
 /// `eye`'s image in a frame of `layout` (mono: the frame): a view into `frame`, not a copy. The

@@ -14,17 +14,11 @@ namespace vdfx::effects {
 
 cv::Mat sample_view(const EquirectSampler& sampler, const ViewCamera& camera) {
   cv::Mat out(camera.height(), camera.width(), CV_32FC3);
-  const bool area = sampler.options().filter == SampleFilter::AreaAware;
   cv::parallel_for_(cv::Range(0, camera.height()), [&](const cv::Range& rows) {
     for (int j = rows.start; j < rows.end; ++j) {
       auto* o = out.ptr<cv::Vec3f>(j);
       for (int i = 0; i < camera.width(); ++i) {
-        const double x = i + 0.5, y = j + 0.5;
-        const Eigen::Vector3d dir = camera.ray(x, y);
-        const Eigen::Vector3d c =
-            area ? sampler.sample(
-                       dir, sampler.footprint(dir, camera.ray(x + 1.0, y), camera.ray(x, y + 1.0)))
-                 : sampler.sample(dir);
+        const Eigen::Vector3d c = sampler.sample_pixel(camera, i + 0.5, j + 0.5);
         o[i] = cv::Vec3f(static_cast<float>(c.x()), static_cast<float>(c.y()),
                          static_cast<float>(c.z()));
       }

@@ -27,8 +27,8 @@ enum class RenderMode { View, Pixel };
 /// Called from the calling thread only.
 using ParamsAt = std::function<StackParams(const Direction&)>;
 
-/// Equirect sample at every pixel of the camera, no effects (CV_32FC3 RGB). With an area-aware
-/// sampler the footprint comes from the rays of the right and lower neighbouring pixels.
+/// Equirect sample at every pixel of the camera, no effects (CV_32FC3 RGB):
+/// EquirectSampler::sample_pixel at each pixel centre (the footprint filter by default).
 cv::Mat sample_view(const EquirectSampler& sampler, const ViewCamera& camera);
 
 /// View mode with given parameters. Unclamped CV_32FC3 RGB.

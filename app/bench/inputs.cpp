@@ -43,6 +43,31 @@ const cv::Mat& synthetic_frame() {
   return frame;
 }
 
+const cv::Mat& synthetic_frame_rgb() {
+  static const cv::Mat m = [] {
+    cv::Mat rgb;
+    cv::cvtColor(synthetic_frame(), rgb, cv::COLOR_BGR2RGB);
+    rgb.convertTo(rgb, CV_32FC3, 1.0 / 255.0);
+    return rgb;
+  }();
+  return m;
+}
+
+cv::Mat supersampled_view(const effects::EquirectSampler& s, const effects::ViewCamera& cam,
+                          int k) {
+  cv::Mat out(cam.height(), cam.width(), CV_32FC3);
+  out.forEach<cv::Vec3f>([&](cv::Vec3f& px, const int* pos) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int b = 0; b < k; ++b)
+      for (int a = 0; a < k; ++a)
+        sum += s.sample(cam.ray(pos[1] + (a + 0.5) / k, pos[0] + (b + 0.5) / k));
+    sum /= k * k;
+    px = cv::Vec3f(static_cast<float>(sum.x()), static_cast<float>(sum.y()),
+                   static_cast<float>(sum.z()));
+  });
+  return out;
+}
+
 cv::Mat noise_image(int size) {
   cv::Mat m(size, size, CV_32FC3);
   cv::RNG rng(42);

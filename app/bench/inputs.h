@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "effects/effect_types.h"
+#include "effects/equirect_sampler.h"
 #include "effects/keyframe.h"
 #include "effects/lens_model.h"
 #include "xr/headset/session.h"
@@ -23,6 +24,12 @@ std::vector<effects::Keyframe> random_keyframes(int n, int dim, std::uint64_t se
 /// A 3840 x 1920 CV_8UC3 BGR equirect (a common 4K 360 video size): sawtooth ramps of periods
 /// 36, 85 and 1024 texels, whose 255 -> 0 wraps are worst-case steps for filters. Built once.
 const cv::Mat& synthetic_frame();
+/// synthetic_frame() as the CPU samplers take it: CV_32FC3 RGB in [0, 1]. Built once.
+const cv::Mat& synthetic_frame_rgb();
+
+/// The supersampled truth of a view: each pixel the mean of k x k level-0 bilinear samples of
+/// `s` spread over its square (the view at k times the size, area-averaged down). CV_32FC3.
+cv::Mat supersampled_view(const effects::EquirectSampler& s, const effects::ViewCamera& cam, int k);
 
 /// Blender's CC0 `sunrise.exr` (blender-data) as CV_32FC3 RGB with its HDR values, or seeded
 /// uniform noise in [0, 1] of the same 1024 x 512 size when the file is missing (then

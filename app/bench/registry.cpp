@@ -37,6 +37,7 @@ Registry build_registry(bool quick) {
   add_lens_gl_knobs(r, quick);
   add_blur_knobs(r, quick);
   add_sampling_knobs(r, quick);
+  add_sampling_footprint_knobs(r, quick);
   add_effects_gl_knobs(r, quick);
   add_flare_knobs(r, quick);
   add_grain_knobs(r, quick);

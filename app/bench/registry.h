@@ -53,20 +53,21 @@ class Registry {
 };
 
 // One function per area, each in its own file; `quick` selects the smaller settings list.
-void add_rbf_knobs(Registry& r, bool quick);         // app/bench/rbf.cpp
-void add_lens_knobs(Registry& r, bool quick);        // app/bench/lens.cpp
-void add_lens_gl_knobs(Registry& r, bool quick);     // app/bench/lens_gl.cpp
-void add_blur_knobs(Registry& r, bool quick);        // app/bench/blur.cpp
-void add_sampling_knobs(Registry& r, bool quick);    // app/bench/sampling_gl.cpp
-void add_effects_gl_knobs(Registry& r, bool quick);  // app/bench/effects_gl.cpp
-void add_flare_knobs(Registry& r, bool quick);       // app/bench/flare_gl.cpp
-void add_grain_knobs(Registry& r, bool quick);       // app/bench/grain_gl.cpp
-void add_decode_knobs(Registry& r, bool quick);      // app/bench/decode.cpp
-void add_export_knobs(Registry& r, bool quick);      // app/bench/export.cpp
-void add_openxr_knobs(Registry& r, bool quick);      // app/bench/openxr_gl.cpp
-void add_suggest_knobs(Registry& r, bool quick);     // app/bench/suggest.cpp
-void add_anchor_knobs(Registry& r, bool quick);      // app/bench/anchor.cpp
-void add_track_knobs(Registry& r, bool quick);       // app/bench/track.cpp
+void add_rbf_knobs(Registry& r, bool quick);                 // app/bench/rbf.cpp
+void add_lens_knobs(Registry& r, bool quick);                // app/bench/lens.cpp
+void add_lens_gl_knobs(Registry& r, bool quick);             // app/bench/lens_gl.cpp
+void add_blur_knobs(Registry& r, bool quick);                // app/bench/blur.cpp
+void add_sampling_knobs(Registry& r, bool quick);            // app/bench/sampling_gl.cpp
+void add_sampling_footprint_knobs(Registry& r, bool quick);  // app/bench/sampling_footprint_gl.cpp
+void add_effects_gl_knobs(Registry& r, bool quick);          // app/bench/effects_gl.cpp
+void add_flare_knobs(Registry& r, bool quick);               // app/bench/flare_gl.cpp
+void add_grain_knobs(Registry& r, bool quick);               // app/bench/grain_gl.cpp
+void add_decode_knobs(Registry& r, bool quick);              // app/bench/decode.cpp
+void add_export_knobs(Registry& r, bool quick);              // app/bench/export.cpp
+void add_openxr_knobs(Registry& r, bool quick);              // app/bench/openxr_gl.cpp
+void add_suggest_knobs(Registry& r, bool quick);             // app/bench/suggest.cpp
+void add_anchor_knobs(Registry& r, bool quick);              // app/bench/anchor.cpp
+void add_track_knobs(Registry& r, bool quick);               // app/bench/track.cpp
 
 /// Every knob with the settings of a quick or a full run, in report order.
 Registry build_registry(bool quick);

@@ -1,8 +1,9 @@
 /// @file
-/// @brief Equirect sampling at the poles for `vdfx bench`: the CPU sampler with and without its
-/// ripmap and OpenCV's remap (the CPU peer), and the GPU video layer with the base level only and
-/// with its two mip level choices (peer: a plain textured copy), all against a supersampled
-/// box-filtered reference of a view looking 80 degrees up at the synthetic 4K frame.
+/// @brief Equirect sampling at the poles for `vdfx bench`: the CPU sampler with point sampling
+/// and its footprint filter, OpenCV's remap (the CPU peer), and the GPU video layer with the base
+/// level only, its two isotropic mip level choices and its footprint filter (peer: a plain
+/// textured copy), all against a supersampled box-filtered reference of a view looking 80 degrees
+/// up at the synthetic 4K frame.
 #include <epoxy/gl.h>
 
 #include <map>
@@ -31,23 +32,12 @@ int supersampling(bool quick) {
   return quick ? 12 : 16;
 }
 
-/// The synthetic frame as the CPU sampler takes it: RGB float in [0, 1].
-const cv::Mat& frame_rgb() {
-  static const cv::Mat m = [] {
-    cv::Mat rgb;
-    cv::cvtColor(synthetic_frame(), rgb, cv::COLOR_BGR2RGB);
-    rgb.convertTo(rgb, CV_32FC3, 1.0 / 255.0);
-    return rgb;
-  }();
-  return m;
-}
-
 const effects::EquirectSampler& sampler(effects::SampleFilter f) {
   static std::map<effects::SampleFilter, std::unique_ptr<effects::EquirectSampler>> cache;
   auto& s = cache[f];
   if (!s)
     s = std::make_unique<effects::EquirectSampler>(
-        frame_rgb(), effects::SamplerOptions{f, effects::PoleRows::Clamp});
+        synthetic_frame_rgb(), effects::SamplerOptions{f, effects::PoleRows::Clamp});
   return *s;
 }
 
@@ -61,19 +51,8 @@ const cv::Mat& reference(bool quick) {
   static std::map<bool, cv::Mat> cache;
   cv::Mat& ref = cache[quick];
   if (!ref.empty()) return ref;
-  const effects::ViewCamera cam = camera(quick);
-  const effects::EquirectSampler& s = sampler(effects::SampleFilter::Bilinear);
-  const int n = view_size(quick), k = supersampling(quick);
-  ref = cv::Mat(n, n, CV_32FC3);
-  ref.forEach<cv::Vec3f>([&](cv::Vec3f& px, const int* pos) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (int b = 0; b < k; ++b)
-      for (int a = 0; a < k; ++a)
-        sum += s.sample(cam.ray(pos[1] + (a + 0.5) / k, pos[0] + (b + 0.5) / k).normalized());
-    sum /= k * k;
-    px = cv::Vec3f(static_cast<float>(sum.x()), static_cast<float>(sum.y()),
-                   static_cast<float>(sum.z()));
-  });
+  ref = supersampled_view(sampler(effects::SampleFilter::Bilinear), camera(quick),
+                          supersampling(quick));
   return ref;
 }
 
@@ -82,12 +61,12 @@ const cv::Mat& reference(bool quick) {
 struct Remap {
   cv::Mat padded, map_x, map_y;
   explicit Remap(bool quick) {
-    cv::copyMakeBorder(frame_rgb(), padded, 0, 0, 1, 1, cv::BORDER_WRAP);
+    cv::copyMakeBorder(synthetic_frame_rgb(), padded, 0, 0, 1, 1, cv::BORDER_WRAP);
     const effects::ViewCamera cam = camera(quick);
     const int n = view_size(quick);
     map_x.create(n, n, CV_32FC1);
     map_y.create(n, n, CV_32FC1);
-    const double w = frame_rgb().cols, h = frame_rgb().rows;
+    const double w = synthetic_frame_rgb().cols, h = synthetic_frame_rgb().rows;
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {
         const Eigen::Vector2d uv = effects::to_equirect_uv(effects::from_unit(cam.pixel_ray(x, y)));
@@ -102,13 +81,14 @@ struct Remap {
   }
 };
 
-void cpu_case(Row& row, const Context& ctx, bool ripmap) {
+void cpu_case(Row& row, const Context& ctx, bool footprint) {
   const effects::ViewCamera cam = camera(ctx.quick);
   const Remap remap(ctx.quick);
   const double t0 = now_s();
   const effects::EquirectSampler& s =
-      sampler(ripmap ? effects::SampleFilter::AreaAware : effects::SampleFilter::Bilinear);
-  if (ripmap) row.add("ripmap_build_s", now_s() - t0);  // once per frame, not in the view time
+      sampler(footprint ? effects::SampleFilter::Footprint : effects::SampleFilter::Bilinear);
+  // Once per frame, not in the view time.
+  if (footprint) row.add("mip_chain_build_s", now_s() - t0);
   cv::Mat out;
   const auto t = measure_pair({[&] { out = effects::sample_view(s, cam); }}, {[&] { remap.run(); }},
                               ctx.budget);
@@ -160,7 +140,7 @@ void add_sampling_knobs(Registry& r, bool quick) {
               std::to_string(supersampling(quick)) + " bilinear samples)",
           "OpenCV remap, bilinear, precomputed maps", PlotError::Rms, false});
   r.add(kKnob, "CPU bilinear", [](Row& row, const Context& ctx) { cpu_case(row, ctx, false); });
-  r.add(kKnob, "CPU ripmap", [](Row& row, const Context& ctx) { cpu_case(row, ctx, true); });
+  r.add(kKnob, "CPU footprint", [](Row& row, const Context& ctx) { cpu_case(row, ctx, true); });
   r.add(kKnob, "OpenCV remap", remap_case);
   r.add_gl(kKnob, "GL base level",
            [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Base); });
@@ -168,6 +148,8 @@ void add_sampling_knobs(Registry& r, bool quick) {
            [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Analytic); });
   r.add_gl(kKnob, "GL derivatives LOD",
            [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Derivatives); });
+  r.add_gl(kKnob, "GL footprint",
+           [](Row& row, const Context& ctx) { gl_case(row, ctx, xr::LodMode::Footprint); });
 }
 
 }  // namespace vdfx::app::bench

@@ -19,6 +19,7 @@
 #include "effects/glsl_common.h"
 #include "effects/grain.h"
 #include "effects/grain_shaders.h"
+#include "effects/pixel_footprint.h"
 #include "effects/stereo_layout.h"
 #include "effects/video_shaders.h"
 #include "io/file_type.h"
@@ -70,6 +71,7 @@ void write_shaders(const fs::path& dir, unsigned mask) {
   const std::string es = glsl::prelude(glsl::Target::Es300);
   write_text_file(dir / "fullscreen.vert", es + glsl::kFullscreenVertex);
   write_text_file(dir / "video.frag", es + effects::video_layer_fragment_source());
+  write_text_file(dir / "mip_level.frag", es + effects::mip_level_fragment_source());
   write_text_file(dir / "blur_1d.frag", es + effects::blur_1d_fragment_source());
   effects::StackShader v;
   v.mask = mask & ~shader_bit(EffectType::Blur);
@@ -141,6 +143,8 @@ PageSettings page_settings(const PublishRequest& r, const io::Sidecar& sidecar,
                 {"height", video.height}};
   if (video.ycbcr) m["video"]["ycbcr"] = ycbcr_json(*video.ycbcr);
   add_layout_json(m["video"], video);
+  // The footprint filter's knob, as every other player samples (effects/pixel_footprint.h).
+  m["video"]["max_anisotropy"] = effects::kDefaultMaxAnisotropy;
   m["sidecar"] = kPublishedSidecar;
   m["sidecar_name"] = r.sidecar.filename().string();
   m["stack_mask"] = keyed_mask(sidecar);

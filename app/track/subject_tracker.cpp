@@ -19,7 +19,7 @@ constexpr int kSizes = 4;  // template sizes kept: step^-4 .. step^4 times the s
 
 effects::EquirectSampler sampler_of(const cv::Mat& equirect, int coverage_deg) {
   effects::SamplerOptions s;
-  s.filter = effects::SampleFilter::AreaAware;
+  s.filter = effects::SampleFilter::Footprint;
   s.pole_rows = effects::PoleRows::AcrossPole;  // a half turn clamps it itself
   s.coverage_deg = coverage_deg;
   return effects::EquirectSampler(equirect, s);

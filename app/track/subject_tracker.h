@@ -1,7 +1,7 @@
 /// @file
 /// @brief A subject followed through a 360 video from one point (docs/anchors.md, "Subject
 /// tracks"). Every frame is looked at through a small pinhole view centred on where the subject is
-/// expected (effects::sample_view with the area-aware sampler), never on the equirect itself, so
+/// expected (effects::sample_view with the footprint filter), never on the equirect itself, so
 /// the seam and the poles are no different from anywhere else:
 ///  - the template is the view of the subject at the start (`size_deg` wide over template_px
 ///    pixels);

@@ -45,6 +45,7 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
                                           "sidecar.vdfx.json",
                                           "shaders/fullscreen.vert",
                                           "shaders/video.frag",
+                                          "shaders/mip_level.frag",
                                           "shaders/blur_1d.frag",
                                           "shaders/stack.frag",
                                           "shaders/stack_blur.frag",
@@ -67,6 +68,7 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
   EXPECT_EQ(manifest["video"]["frames"], kFrames);
   EXPECT_EQ(manifest["video"]["layout"], "mono");
   EXPECT_EQ(manifest["video"]["coverage"], 360);
+  EXPECT_EQ(manifest["video"]["max_anisotropy"], 16.0);  // effects/pixel_footprint.h's default
   EXPECT_EQ(eye_rect_of(manifest, "left"), (std::array<int, 4>{0, 0, kW, kH}));
   EXPECT_EQ(eye_rect_of(manifest, "right"), (std::array<int, 4>{0, 0, kW, kH}));
   // Blur (bit 0), exposure (2) and saturation (3) have keyframes.

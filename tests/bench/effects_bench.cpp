@@ -93,12 +93,12 @@ void BM_MatCopy(benchmark::State& state) {
 }
 BENCHMARK(BM_MatCopy)->Name("Effects/MatCopy")->Unit(benchmark::kMillisecond);
 
-/// range(0): 0 bilinear, 1 area-aware; range(1): blur sigma in hundredths of a degree.
+/// range(0): 0 bilinear, 1 footprint; range(1): blur sigma in hundredths of a degree.
 void BM_RenderView(benchmark::State& state) {
   const OneThread one;
   const EquirectSampler sampler(
       sunrise(),
-      {state.range(0) ? SampleFilter::AreaAware : SampleFilter::Bilinear, PoleRows::Clamp});
+      {state.range(0) ? SampleFilter::Footprint : SampleFilter::Bilinear, PoleRows::Clamp});
   StackParams p = colour_params();
   p.blur_sigma_deg = state.range(1) / 100.0;
   for (auto _ : state) benchmark::DoNotOptimize(render_view(sampler, test_camera(), p));
@@ -114,7 +114,7 @@ void BM_SampleView(benchmark::State& state) {
   const OneThread one;
   const EquirectSampler sampler(
       sunrise(),
-      {state.range(0) ? SampleFilter::AreaAware : SampleFilter::Bilinear, PoleRows::Clamp});
+      {state.range(0) ? SampleFilter::Footprint : SampleFilter::Bilinear, PoleRows::Clamp});
   for (auto _ : state) benchmark::DoNotOptimize(sample_view(sampler, test_camera()));
 }
 BENCHMARK(BM_SampleView)->Name("Effects/SampleView")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);

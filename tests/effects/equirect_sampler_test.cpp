@@ -1,5 +1,6 @@
 /// @file
-/// @brief EquirectSampler: bilinear exactness, seam continuity, poles, area-aware filtering.
+/// @brief EquirectSampler: bilinear exactness, seam continuity, poles, the mip chain's levels,
+/// the footprint filter's pixel.
 #include "effects/equirect_sampler.h"
 
 #include <gtest/gtest.h>
@@ -71,7 +72,7 @@ TEST(EquirectSampler, PolesGiveFiniteValuesAndRespectTheirRow) {
   img.row(0).setTo(cv::Scalar(0.2, 0.4, 0.6));
   img.row(31).setTo(cv::Scalar(0.9, 0.1, 0.3));
   for (PoleRows rows : {PoleRows::Clamp, PoleRows::AcrossPole}) {
-    for (SampleFilter filter : {SampleFilter::Bilinear, SampleFilter::AreaAware}) {
+    for (SampleFilter filter : {SampleFilter::Bilinear, SampleFilter::Footprint}) {
       const EquirectSampler s(img, {filter, rows});
       const Eigen::Vector3d north = s.sample(Eigen::Vector3d(0, 1, 0));
       const Eigen::Vector3d south = s.sample(Eigen::Vector3d(0, -1, 0));
@@ -80,10 +81,14 @@ TEST(EquirectSampler, PolesGiveFiniteValuesAndRespectTheirRow) {
       for (double az = -180.0; az <= 180.0; az += 7.5) {
         for (double alt : {89.9999, 90.0, -89.9999, -90.0}) {
           const Eigen::Vector3d dir = to_unit({az, alt});
-          const Footprint huge{1e9, 1e9};
           EXPECT_TRUE(s.sample(dir).allFinite());
-          EXPECT_TRUE(s.sample(dir, huge).allFinite());
+          EXPECT_TRUE(s.sample_lod(0.3, 0.0, 1e9).allFinite());
         }
+      }
+      // A pixel centred exactly on each pole, looking straight at it (the Jacobian's worst case).
+      for (double alt : {90.0, -90.0}) {
+        const ViewCamera cam = ViewCamera::from_horizontal_fov({{0, alt}, 0}, 90.0, 9, 9);
+        EXPECT_TRUE(s.sample_pixel(cam, 4.5, 4.5).allFinite()) << alt;
       }
     }
   }
@@ -104,41 +109,40 @@ TEST(EquirectSampler, AcrossPoleIsContinuousOverThePole) {
   EXPECT_GT(worst_clamp, 0.1);  // the clamped rows are not continuous over the pole
 }
 
-TEST(EquirectSampler, RipmapLevelsAverage) {
+TEST(EquirectSampler, MipLevelsAreAreaAverages) {
   const cv::Mat img = random_equirect(64, 32, 11);
-  const EquirectSampler s(img, {SampleFilter::AreaAware, PoleRows::Clamp});
-  EXPECT_EQ(s.max_level_x(), 6);
-  EXPECT_EQ(s.max_level_y(), 5);
-  // The coarsest horizontal level of row-level 0 is one column: each row's mean.
-  for (int row : {0, 7, 31}) {
-    const cv::Scalar mean = cv::mean(img.row(row));
-    const Eigen::Vector3d got = s.sample_uv(0.3, (row + 0.5) / 32.0, 6, 0);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], mean[k], 1e-5) << row;
+  const EquirectSampler s(img, {SampleFilter::Footprint, PoleRows::Clamp});
+  EXPECT_EQ(s.levels(), 7);  // 64x32 .. 1x1, GL's count
+  // Level 6 is one texel: the image's mean, wherever it is read.
+  const cv::Scalar mean = cv::mean(img);
+  for (const auto& [u, v] : {std::pair{0.3, 0.5}, {0.9, 0.01}}) {
+    const Eigen::Vector3d got = s.sample_uv(u, v, 6);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], mean[k], 1e-5);
   }
-  // A footprint of at most one texel is level 0, exactly bilinear.
-  const Eigen::Vector3d dir = to_unit({12.3, -4.5});
-  EXPECT_EQ(s.sample(dir, {0.8, 1.0}), s.sample(dir));
+  // Level 1 at a texel centre: the 2 x 2 block's mean.
+  const Eigen::Vector3d got = s.sample_uv((5 + 0.5) / 32.0, (3 + 0.5) / 16.0, 1);
+  cv::Scalar block = cv::mean(img(cv::Rect(10, 6, 2, 2)));
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], block[k], 1e-6);
+  // Trilinear halfway between two levels is their mean; lod <= 0 is level 0.
+  const Eigen::Vector3d half = s.sample_lod(0.41, 0.37, 2.5);
+  EXPECT_LT((half - 0.5 * (s.sample_uv(0.41, 0.37, 2) + s.sample_uv(0.41, 0.37, 3))).norm(), 1e-12);
+  EXPECT_EQ(s.sample_lod(0.41, 0.37, -3.0), s.sample_uv(0.41, 0.37, 0));
 }
 
-TEST(EquirectSampler, FootprintFollowsTheRowLength) {
-  const EquirectSampler s(random_equirect(360, 180, 1), {SampleFilter::AreaAware, PoleRows::Clamp});
-  // One degree steps: one texel on the equator; 1 / cos(alt) texels horizontally elsewhere.
-  for (double alt : {0.0, 60.0, 84.0}) {
-    const Eigen::Vector3d d = to_unit({10, alt});
-    const Footprint f = s.footprint(d, to_unit({11, alt}), to_unit({10, alt - 1.0}));
-    EXPECT_NEAR(f.du_texels, 1.0, 1e-9);
-    EXPECT_NEAR(f.dv_texels, 1.0, 1e-9);
-    const Eigen::Vector3d right = to_unit({10.0 + 1.0 / std::cos(alt * kDegToRad), alt});
-    EXPECT_NEAR(s.footprint(d, right, d).du_texels, 1.0 / std::cos(alt * kDegToRad), 1e-9);
+TEST(EquirectSampler, FootprintIsBilinearWhereTheViewEnlargesTheImage) {
+  // 360x180 texels, a 30 degree view 300 pixels wide: 10 pixels per texel at the centre.
+  const cv::Mat img = random_equirect(360, 180, 13);
+  const EquirectSampler foot(img), bilinear(img, {SampleFilter::Bilinear, PoleRows::Clamp});
+  const ViewCamera cam = ViewCamera::from_horizontal_fov({{20, 10}, 5}, 30.0, 300, 200);
+  for (const auto& [x, y] : {std::pair{150.5, 100.5}, {3.5, 7.5}, {290.5, 190.5}}) {
+    const Eigen::Vector3d a = foot.sample_pixel(cam, x, y), b = bilinear.sample_pixel(cam, x, y);
+    EXPECT_LT((a - b).norm(), 1e-12) << x << "," << y;
   }
-  // Across the seam the short way round.
-  EXPECT_NEAR(s.footprint(to_unit({179.5, 0}), to_unit({-179.5, 0}), to_unit({179.5, 0})).du_texels,
-              1.0, 1e-9);
 }
 
-TEST(EquirectSampler, AreaAwareDoesNotAliasAtThePole) {
-  // One-texel stripes of 0 and 1 in azimuth: looking straight up, a view pixel covers many
-  // stripes; the area-aware filter sees their mean, plain bilinear picks stripes (aliasing).
+TEST(EquirectSampler, FootprintDoesNotAliasAtThePole) {
+  // One-texel stripes of 0 and 1 in azimuth: looking up, a view pixel covers many stripes; the
+  // footprint filter sees their mean, plain bilinear picks stripes (aliasing).
   cv::Mat stripes(256, 512, CV_32FC3);
   for (int x = 0; x < 512; ++x) stripes.col(x).setTo(cv::Scalar::all(x % 2));
   const ViewCamera cam = ViewCamera::from_horizontal_fov({{0, 80}, 0}, 60.0, 64, 64);
@@ -149,12 +153,39 @@ TEST(EquirectSampler, AreaAwareDoesNotAliasAtThePole) {
     cv::meanStdDev(view.reshape(1), mean, dev);
     return std::pair{mean[0], dev[0]};
   };
-  const auto [area_mean, area_dev] = spread(SampleFilter::AreaAware);
+  const auto [foot_mean, foot_dev] = spread(SampleFilter::Footprint);
   const auto [bilinear_mean, bilinear_dev] = spread(SampleFilter::Bilinear);
-  EXPECT_NEAR(area_mean, 0.5, 0.02);
-  EXPECT_LT(area_dev, 0.05);
+  EXPECT_NEAR(foot_mean, 0.5, 0.02);
+  EXPECT_LT(foot_dev, 0.05);
   EXPECT_GT(bilinear_dev, 0.2);
   (void)bilinear_mean;
+}
+
+TEST(EquirectSampler, FootprintDoesNotBlurAcrossRowsNearThePole) {
+  // Bands of 4 rows, seen near the pole: a pixel covers about 1.3 rows and up to tens of
+  // columns. One isotropic level as coarse as the long axis (max_anisotropy 1, GL's choice)
+  // averages the bands to grey; taps along the long axis at the short axis' level keep them.
+  cv::Mat rows(256, 512, CV_32FC3);
+  for (int y = 0; y < 256; ++y) rows.row(y).setTo(cv::Scalar::all((y / 4) % 2));
+  const ViewCamera cam = ViewCamera::from_horizontal_fov({{0, 75}, 0}, 60.0, 64, 64);
+  const EquirectSampler point(rows, {SampleFilter::Bilinear, PoleRows::Clamp});
+  cv::Mat truth(64, 64, CV_32FC3);  // 8 x 8 point samples per pixel
+  truth.forEach<cv::Vec3f>([&](cv::Vec3f& px, const int* pos) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int b = 0; b < 8; ++b)
+      for (int a = 0; a < 8; ++a)
+        sum += point.sample(cam.ray(pos[1] + (a + 0.5) / 8, pos[0] + (b + 0.5) / 8));
+    px = cv::Vec3f::all(static_cast<float>(sum.x() / 64));
+  });
+  const auto rms = [&](double max_anisotropy) {
+    SamplerOptions o;
+    o.max_anisotropy = max_anisotropy;
+    const cv::Mat d = sample_view(EquirectSampler(rows, o), cam) - truth;
+    const cv::Mat sq = d.mul(d);
+    return std::sqrt(cv::mean(sq.reshape(1))[0]);
+  };
+  const double footprint = rms(kDefaultMaxAnisotropy), isotropic = rms(1.0);
+  EXPECT_LT(footprint, 0.5 * isotropic) << footprint << " vs " << isotropic;
 }
 
 TEST(EquirectSampler, RejectsWrongType) {

@@ -66,6 +66,7 @@ std::vector<Source> all_sources() {
   std::vector<Source> s = {
       {"fullscreen.vert", glsl::kFullscreenVertex},
       {"video_layer.frag", video_layer_fragment_source()},
+      {"mip_level.frag", mip_level_fragment_source()},
       {"blur_1d.frag", blur_1d_fragment_source()},
       {"downsample.frag", downsample_fragment_source()},
       {"flare.vert", flare_vertex_source()},

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>
+#include <tuple>
 
 #include "effects/coords.h"
 #include "effects/equirect_sampler.h"
@@ -79,15 +80,15 @@ cv::Mat two_halves(int w, int h, cv::Vec3f left, cv::Vec3f right) {
 
 TEST(StereoSampler, EachEyeReadsOnlyItsHalfAtEveryLevel) {
   // Side by side: the left eye red, the right eye blue. Bilinear taps at the seam and every
-  // ripmap level of an eye's image hold only its own colour.
+  // mip level of an eye's image hold only its own colour.
   const cv::Mat frame = two_halves(128, 32, {1, 0, 0}, {0, 0, 1});
   const StereoLayout l{StereoMode::LeftRight, 360};
   for (EyeIndex eye : {EyeIndex::Left, EyeIndex::Right}) {
     const EquirectSampler s(eye_image(frame, l, eye));
     const double want_r = eye == EyeIndex::Left ? 1.0 : 0.0;
-    for (int lx = 0; lx <= s.max_level_x(); ++lx)
+    for (int l = 0; l < s.levels(); ++l)
       for (double u : {0.0, 0.001, 0.5, 0.999})
-        EXPECT_DOUBLE_EQ(s.sample_uv(u, 0.5, lx, std::min(lx, s.max_level_y())).x(), want_r);
+        EXPECT_DOUBLE_EQ(s.sample_uv(u, 0.5, l).x(), want_r);
   }
 }
 
@@ -118,15 +119,24 @@ TEST(StereoSampler, Vr180MapsAHalfTurnAndIsBlackOutside) {
 }
 
 TEST(StereoSampler, Vr180FootprintCountsTwiceTheTexelsPerDegree) {
-  const cv::Mat img(32, 64, CV_32FC3, cv::Scalar::all(0.5));
+  // A VR180 image of width w has as many texels per degree as a 360 image of width 2 w holding
+  // it in its middle half: the footprint filter must take the same taps at the same levels in
+  // both (views whose footprints stay inside the half and need levels 0..2).
+  cv::Mat half_img(64, 256, CV_32FC3);
+  cv::theRNG().state = 21;
+  cv::randu(half_img, cv::Scalar::all(0.0), cv::Scalar::all(1.0));
+  cv::Mat full_img(64, 512, CV_32FC3, cv::Scalar::all(0.25));
+  half_img.copyTo(full_img.colRange(128, 384));
   SamplerOptions o;
   o.coverage_deg = 180;
-  const EquirectSampler half(img, o);
-  const EquirectSampler full(img);
-  const Eigen::Vector3d d = to_unit({0.0, 0.0}), dx = to_unit({1.0, 0.0}),
-                        dy = to_unit({0.0, -1.0});
-  EXPECT_NEAR(half.footprint(d, dx, dy).du_texels, 2.0 * full.footprint(d, dx, dy).du_texels, 1e-9);
-  EXPECT_NEAR(half.footprint(d, dx, dy).dv_texels, full.footprint(d, dx, dy).dv_texels, 1e-9);
+  const EquirectSampler half(half_img, o), full(full_img);
+  for (const auto& [az, alt, fov] : {std::tuple{0.0, 0.0, 100.0}, {-30.0, 20.0, 50.0}}) {
+    const ViewCamera cam = ViewCamera::from_horizontal_fov({{az, alt}, 10.0}, fov, 40, 30);
+    for (const auto& [x, y] : {std::pair{20.5, 15.5}, {3.5, 27.5}, {36.5, 2.5}}) {
+      const Eigen::Vector3d a = half.sample_pixel(cam, x, y), b = full.sample_pixel(cam, x, y);
+      EXPECT_LT((a - b).norm(), 1e-6) << az << " " << x << "," << y;
+    }
+  }
 }
 
 }  // namespace

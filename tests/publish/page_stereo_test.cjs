@@ -89,8 +89,8 @@ function publishSites() {
   return [
     { name: 'tb', layout: ['top-bottom', 360], sidecar: tb, args: [],
       // At the left eye's own north pole (the frame's top edge, no boundary) the page, like
-      // `vdfx render --gpu` (within 1/255), and the CPU reference's ripmap pick different
-      // footprints on this pattern (max 6/255, docs/publish.md): the right eye only there.
+      // `vdfx render --gpu` (within 1/255), and the CPU reference were measured up to 6/255
+      // apart on this pattern (docs/publish.md): the right eye only there.
       views: [[0, 0, 1, 90], [40, -72, 2, 80], [-150, 74, 3, 90, 'right']] },
     { name: 'lr', layout: ['left-right', 360], sidecar: lr, args: ['--layout', 'left-right'],
       views: [[180, 0, 0, 90], [-165, 30, 3, 70]] },

@@ -29,7 +29,7 @@ namespace vdfx::xr {
 struct CompositorConfig {
   int eye_width = 1440, eye_height = 1600;  //!< per eye, eye buffer and display image
   TexFormat eye_format = TexFormat::RGBA16F;
-  LodMode lod = LodMode::Analytic;
+  LodMode lod = LodMode::Footprint;
   DistortionSettings distortion;
   effects::LensModel lens;
   bool gpu_timing = false;              //!< timestamp queries per stage (stage_times())

@@ -1,5 +1,5 @@
 /// @file
-/// @brief VideoLayerGl: per-pixel ray into the mipmapped equirect texture.
+/// @brief VideoLayerGl: each pixel's footprint filtered from the equirect texture's mip chain.
 #include "xr/render/video_layer.h"
 
 #include <epoxy/gl.h>
@@ -15,6 +15,7 @@
 #include "io/ycbcr.h"
 #include "xr/render/gl_context.h"
 #include "xr/render/gl_program.h"
+#include "xr/render/mip_chain_gl.h"
 
 namespace vdfx::xr {
 namespace {
@@ -33,7 +34,7 @@ struct PlaneTexture {
   }
   /// Uploads `m` (CV_8UC1 or CV_16UC1; rows may be padded) as it is and rebuilds the mips;
   /// columns wrap (a 360 image) or are clamped (a VR180 image).
-  void upload(const cv::Mat& m, bool wrap_u) {
+  void upload(const cv::Mat& m, bool wrap_u, const MipChainGl& mips) {
     if (m.type() != CV_8UC1 && m.type() != CV_16UC1)
       throw GlError("VideoLayerGl: unsupported plane type " + std::to_string(m.type()));
     const bool deep = m.type() == CV_16UC1;
@@ -59,7 +60,7 @@ struct PlaneTexture {
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, m.cols, m.rows, GL_RED,
                     deep ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE, m.data);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    glGenerateMipmap(GL_TEXTURE_2D);
+    mips.build(id, width, height, full_mip_levels(width, height));
     check_gl("VideoLayerGl plane upload");
   }
 };
@@ -72,6 +73,7 @@ struct EyeSource {
   std::array<PlaneTexture, 3> planes;
   io::YcbcrInfo info;
   float chroma_scale[2] = {1, 1}, chroma_offset[2] = {0, 0};
+  float chroma_lod = 0.0f;  //!< the chroma planes' level offset (-log2 of the subsampling)
   bool has_frame() const { return ycbcr || static_cast<bool>(texture); }
   /// No frame (the plane textures stay allocated for the next one of their size).
   void clear() {
@@ -85,7 +87,9 @@ struct EyeSource {
 
 struct VideoLayerGl::Impl {
   GlProgram program;
+  MipChainGl mips;
   unsigned vao = 0;
+  double max_anisotropy = effects::kDefaultMaxAnisotropy;
   effects::StereoLayout layout;
   std::array<EyeSource, 2> eyes;  //!< [0] only for mono video
 
@@ -126,7 +130,7 @@ void VideoLayerGl::Impl::set_rgb(EyeSource& e, const cv::Mat& equirect) {
     e.depth = depth;
   }
   t.upload(equirect);
-  t.generate_mipmaps();
+  mips.build(t.id(), t.width(), t.height(), t.levels());
   e.ycbcr = false;
 }
 
@@ -147,7 +151,7 @@ void VideoLayerGl::set_frame(const cv::Mat& equirect) {
 
 void VideoLayerGl::Impl::set_ycbcr(EyeSource& e, const io::Picture& pic) {
   const bool wrap = layout.coverage_deg == 360;
-  for (std::size_t i = 0; i < 3; ++i) e.planes[i].upload(pic.planes[i], wrap);
+  for (std::size_t i = 0; i < 3; ++i) e.planes[i].upload(pic.planes[i], wrap, mips);
   e.info = pic.ycbcr;
   // Luma (u, v) -> chroma (u, v): pixel x = u W - 1/2 reads chroma sample (x - siting) / step,
   // at texture coordinate (that + 1/2) / chroma width (io/ycbcr.h's coordinate).
@@ -162,6 +166,9 @@ void VideoLayerGl::Impl::set_ycbcr(EyeSource& e, const io::Picture& pic) {
     e.chroma_scale[a] = static_cast<float>(size[a] / (step[a] * chroma[a]));
     e.chroma_offset[a] = static_cast<float>((0.5 - (0.5 + siting[a]) / step[a]) / chroma[a]);
   }
+  // A chroma texel spans `step` luma texels: the same footprint is log2(step) levels finer
+  // there (the mean of both axes for 4:2:2).
+  e.chroma_lod = -0.5f * static_cast<float>(pic.ycbcr.log2_chroma_w + pic.ycbcr.log2_chroma_h);
   e.ycbcr = true;
 }
 
@@ -208,6 +215,7 @@ void VideoLayerGl::Impl::bind_ycbcr(const GlProgram& p, const EyeSource& e) {
   glUniform1f(p.uniform("u_code_scale"), e.planes[0].internal == GL_R16 ? 65535.0f : 255.0f);
   glUniform2f(p.uniform("u_chroma_scale"), e.chroma_scale[0], e.chroma_scale[1]);
   glUniform2f(p.uniform("u_chroma_offset"), e.chroma_offset[0], e.chroma_offset[1]);
+  glUniform1f(p.uniform("u_chroma_lod"), e.chroma_lod);
 }
 
 void VideoLayerGl::render(const GlTarget& target, const RenderView& v, LodMode lod, int eye) {
@@ -237,9 +245,15 @@ void VideoLayerGl::render(const GlTarget& target, const RenderView& v, LodMode l
   const Eigen::Matrix3f r = v.orientation.cast<float>();  // column-major, as GLSL expects
   glUniformMatrix3fv(p.uniform("u_rot"), 1, GL_FALSE, r.data());
   glUniform1i(p.uniform("u_lod_mode"), static_cast<int>(lod));
+  glUniform1f(p.uniform("u_max_aniso"), static_cast<float>(m.max_anisotropy));
   glDisable(GL_BLEND);
   glBindVertexArray(impl_->vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void VideoLayerGl::set_max_anisotropy(double ratio) {
+  if (!(ratio >= 1.0)) throw GlError("VideoLayerGl::set_max_anisotropy: the ratio must be >= 1");
+  impl_->max_anisotropy = ratio;
 }
 
 const GlTexture& VideoLayerGl::texture() const {

@@ -119,7 +119,8 @@ async function loadModule() {
 }
 
 async function loadShaders() {
-  const names = { vert: 'fullscreen.vert', video: 'video.frag', blur: 'blur_1d.frag',
+  const names = { vert: 'fullscreen.vert', video: 'video.frag', mip: 'mip_level.frag',
+                  blur: 'blur_1d.frag',
                   stack: 'stack.frag', stackBlur: 'stack_blur.frag', flareVert: 'flare.vert',
                   flareFrag: 'flare.frag', grainFrag: 'grain.frag' };
   const out = {};

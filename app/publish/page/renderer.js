@@ -1,11 +1,14 @@
 // The page's WebGL2 renderer: the passes of vdfx's GL compositor for one view, compiled from the
 // same GLSL (shaders/, written by `vdfx publish` from effects/' sources with the GLSL ES 3.00
 // prelude). Per frame:
-//   1. video layer: each pixel's ray into the eye's equirect image (shaders/video.frag), into a
-//      float target larger than the view by the blur's margin, so the blur sees real image
-//      beyond the border (effects/view_renderer.h). A stereo frame is uploaded as two images,
-//      one per eye with its own mipmaps, as xr/render/video_layer.cpp does, so no sample, mip level
-//      or blur tap reads the other eye's half; VR180 is black outside its coverage;
+//   1. video layer: each pixel's footprint filtered from the eye's equirect image
+//      (shaders/video.frag, effects/pixel_footprint.h: taps along the footprint's major axis from
+//      the area-average mip chain, which shaders/mip_level.frag builds level by level after each
+//      upload, as xr/render/mip_chain_gl.cpp does), into a float target larger than the view by
+//      the blur's margin, so the blur sees real image beyond the border
+//      (effects/view_renderer.h). A stereo frame is uploaded as two images, one per eye with its
+//      own mip chain, as xr/render/video_layer.cpp does, so no sample, mip level or blur tap
+//      reads the other eye's half; VR180 is black outside its coverage;
 //   2. with a blur: the horizontal Gaussian (shaders/blur_1d.frag);
 //   3. the stack (shaders/stack*.frag): the vertical Gaussian fused in, tint, exposure,
 //      saturation, contrast, vignette, into the canvas;
@@ -81,6 +84,17 @@ function compile(gl, type, source, name) {
   return s;
 }
 
+// Levels of a full mip chain (GL's count, down to 1 x 1; effects/mip_chain.h).
+export function mipLevels(width, height) {
+  let levels = 1;
+  while (width > 1 || height > 1) {
+    width = Math.max(1, width >> 1);
+    height = Math.max(1, height >> 1);
+    ++levels;
+  }
+  return levels;
+}
+
 export function program(gl, vertex, fragment, name, vertexName = 'fullscreen.vert') {
   const p = gl.createProgram();
   gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, vertex, vertexName));
@@ -116,12 +130,15 @@ export function target(gl, width, height) {
 }
 
 export class Renderer {
-  // shaders: { vert, video, blur, stack, stackBlur } source texts.
+  // shaders: { vert, video, mip, blur, stack, stackBlur } source texts.
   constructor(gl, shaders) {
     if (!gl.getExtension('EXT_color_buffer_float'))
       throw new Error('this browser\'s WebGL2 has no EXT_color_buffer_float (float targets)');
     this.gl = gl;
     this.video = program(gl, shaders.vert, shaders.video, 'video.frag');
+    this.mip = program(gl, shaders.vert, shaders.mip, 'mip_level.frag');
+    this.mipFb = gl.createFramebuffer();
+    this.mipSizes = new Map(); // texture -> "WxH format" its levels 1.. are allocated for
     this.blur = program(gl, shaders.vert, shaders.blur, 'blur_1d.frag');
     this.stack = program(gl, shaders.vert, shaders.stack, 'stack.frag');
     this.stackBlur = program(gl, shaders.vert, shaders.stackBlur, 'stack_blur.frag');
@@ -142,8 +159,8 @@ export class Renderer {
     const gl = this.gl;
     const tex = gl.createTexture();
     gl.bindTexture(gl.TEXTURE_2D, tex);
-    // Columns wrap at the seam, rows clamp at the poles (effects/equirect_sampler.h); mipmaps
-    // for the level of detail the video layer picks from each pixel's footprint.
+    // Columns wrap at the seam, rows clamp at the poles (effects/equirect_sampler.h); the mip
+    // chain (#buildMips) for the levels the video layer's footprint taps read.
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
@@ -157,7 +174,7 @@ export class Renderer {
     const stereo = (video.layout ?? 'mono') !== 'mono';
     this.layout = { stereo, coverage: video.coverage ?? 360, edge: video.coverage_edge_deg ?? 2,
                     rects: stereo ? [video.eyes.left, video.eyes.right] : null,
-                    height: video.height };
+                    height: video.height, maxAniso: video.max_anisotropy ?? 16 };
   }
 
   // Columns wrap at a 360 image's seam and clamp at a VR180 image's edges (as the GL path).
@@ -166,6 +183,44 @@ export class Renderer {
     gl.bindTexture(gl.TEXTURE_2D, tex);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S,
                      this.layout.coverage === 360 ? gl.REPEAT : gl.CLAMP_TO_EDGE);
+  }
+
+  // Levels 1.. of `tex` (level 0 just uploaded, width x height) as the area-average chain of
+  // effects/mip_chain.h, one draw of shaders/mip_level.frag per level with only the level above
+  // readable, as xr/render/mip_chain_gl.cpp draws them (not generateMipmap, whose filter for odd
+  // sizes is the browser's choice). `format`: [internal format, format] of the levels.
+  #buildMips(tex, width, height, [internal, format]) {
+    const gl = this.gl;
+    const levels = mipLevels(width, height);
+    gl.bindTexture(gl.TEXTURE_2D, tex);
+    const key = `${width}x${height} ${internal}`;
+    if (this.mipSizes.get(tex) !== key) {
+      for (let l = 1, w = width, h = height; l < levels; ++l) {
+        w = Math.max(1, w >> 1);
+        h = Math.max(1, h >> 1);
+        gl.texImage2D(gl.TEXTURE_2D, l, internal, w, h, 0, format, gl.UNSIGNED_BYTE, null);
+      }
+      this.mipSizes.set(tex, key);
+    }
+    gl.useProgram(this.mip.p);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.uniform1i(this.mip.u('u_src'), 0);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, this.mipFb);
+    gl.bindVertexArray(this.vao);
+    gl.disable(gl.BLEND);
+    for (let l = 1, w = width, h = height; l < levels; ++l) {
+      w = Math.max(1, w >> 1);
+      h = Math.max(1, h >> 1);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_BASE_LEVEL, l - 1);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAX_LEVEL, l - 1);
+      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, l);
+      gl.viewport(0, 0, w, h);
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+    }
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, null, 0);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_BASE_LEVEL, 0);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAX_LEVEL, levels - 1);
   }
 
   #tapTexture() {
@@ -188,9 +243,11 @@ export class Renderer {
     gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, source);
     gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
     for (const e of this.eyes) e.ycbcr = null;
+    const rgba = [gl.RGBA8, gl.RGBA];
     if (!this.layout.stereo) {
       this.#setWrap(this.frameTex);
-      gl.generateMipmap(gl.TEXTURE_2D);
+      const w = source.videoWidth ?? source.width, h = source.videoHeight ?? source.height;
+      this.#buildMips(this.frameTex, w, h, rgba);
       return;
     }
     // Each eye's half copied into its own texture (rows bottom first, as uploaded).
@@ -202,9 +259,10 @@ export class Renderer {
       this.#setWrap(this.eyes[i].rgb);
       gl.copyTexImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, r.x, this.layout.height - r.y - r.height,
                         r.width, r.height, 0);
-      gl.generateMipmap(gl.TEXTURE_2D);
     }
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+    for (const [i, r] of this.layout.rects.entries())
+      this.#buildMips(this.eyes[i].rgb, r.width, r.height, rgba);
   }
 
   // A decoded 8-bit frame as its three planes (each { data, stride }, rows top first),
@@ -237,12 +295,13 @@ export class Renderer {
       gl.pixelStorei(gl.UNPACK_SKIP_ROWS, corners[i][1]);
       gl.texImage2D(gl.TEXTURE_2D, 0, gl.R8, sizes[i][0], sizes[i][1], 0, gl.RED,
                     gl.UNSIGNED_BYTE, planes[i].data);
-      gl.generateMipmap(gl.TEXTURE_2D);
     }
     gl.pixelStorei(gl.UNPACK_SKIP_PIXELS, 0);
     gl.pixelStorei(gl.UNPACK_SKIP_ROWS, 0);
     gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 0);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+    for (let i = 0; i < 3; ++i)
+      this.#buildMips(eye.planes[i], sizes[i][0], sizes[i][1], [gl.R8, gl.RED]);
     // Luma (u, v) -> chroma (u, v) of this eye's planes, as xr/render/video_layer.cpp maps it.
     const scale = [], offset = [];
     for (let a = 0; a < 2; ++a) {
@@ -250,7 +309,10 @@ export class Renderer {
       scale.push(sizes[0][a] / (step * chroma));
       offset.push((0.5 - (0.5 + info.chroma_siting[a]) / step) / chroma);
     }
-    eye.ycbcr = { m: info.m, offset: info.offset, scale, chromaOffset: offset };
+    // A chroma texel spans 2^log2_chroma luma texels: the footprint's level is that much finer
+    // there (xr/render/video_layer.cpp).
+    const chromaLod = -0.5 * (info.log2_chroma[0] + info.log2_chroma[1]);
+    eye.ycbcr = { m: info.m, offset: info.offset, scale, chromaOffset: offset, chromaLod };
   }
 
   #targetsFor(width, height, margin) {
@@ -289,7 +351,8 @@ export class Renderer {
     gl.bindTexture(gl.TEXTURE_2D, this.layout.stereo ? e.rgb : this.frameTex);
     gl.uniform1i(v.u('u_equirect'), 0);
     gl.uniformMatrix3fv(v.u('u_rot'), false, columnMajor(rot));
-    gl.uniform1i(v.u('u_lod_mode'), 0);
+    gl.uniform1i(v.u('u_lod_mode'), 3); // the footprint filter (effects/pixel_footprint.h)
+    gl.uniform1f(v.u('u_max_aniso'), this.layout.maxAniso);
     gl.uniform1f(v.u('u_coverage'), this.layout.coverage);
     gl.uniform1f(v.u('u_edge'), this.layout.edge);
     gl.uniform1i(v.u('u_ycbcr'), e.ycbcr ? 1 : 0);
@@ -312,6 +375,7 @@ export class Renderer {
     gl.uniform1f(v.u('u_code_scale'), 255);
     gl.uniform2f(v.u('u_chroma_scale'), y.scale[0], y.scale[1]);
     gl.uniform2f(v.u('u_chroma_offset'), y.chromaOffset[0], y.chromaOffset[1]);
+    gl.uniform1f(v.u('u_chroma_lod'), y.chromaLod);
   }
 
   #blurPass(src, dst, blur) {

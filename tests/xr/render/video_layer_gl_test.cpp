@@ -73,7 +73,7 @@ TEST_F(VideoLayerGlTest, MatchesACpuBilinearSampleOfTheSameRay) {
   for (const auto& row : kViews) {
     const RenderView v = RenderView::look_at(row.look, row.roll_deg, 60.0, w, h);
     const cv::Mat ref = cpu_render(eq, v, w, h, 1);
-    for (LodMode mode : {LodMode::Analytic, LodMode::Derivatives}) {
+    for (LodMode mode : {LodMode::Footprint, LodMode::Analytic, LodMode::Derivatives}) {
       layer.render(dst, v, mode);
       const test::ErrorStats e = test::compare(test::bgr_clamped(dst.read_float()), ref);
       std::printf("[ video    ] %-24s lod %d: max %.3f/255 mean %.4f/255\n", row.name,
@@ -98,19 +98,21 @@ TEST_F(VideoLayerGlTest, PolesDoNotAliasAgainstASupersampledReference) {
   GlTarget dst(w, h, TexFormat::RGBA32F);
   const RenderView v = RenderView::look_at({30, 80}, 0, 90.0, w, h);
   const cv::Mat ref = cpu_render(checks, v, w, h, 12);
-  double err[3] = {};
-  for (LodMode mode : {LodMode::Analytic, LodMode::Derivatives, LodMode::Base}) {
+  double err[4] = {};
+  for (LodMode mode :
+       {LodMode::Analytic, LodMode::Derivatives, LodMode::Base, LodMode::Footprint}) {
     layer.render(dst, v, mode);
     err[static_cast<int>(mode)] = rms(test::bgr_clamped(dst.read_float()), ref);
   }
   std::printf(
       "[ video    ] pole view RMS vs 12x12 supersampled: analytic %.4f, derivatives %.4f, "
-      "base level %.4f\n",
-      err[0], err[1], err[2]);
-  // The aliasing of the base level is the 0.4 amplitude of the checks; mipmapping must remove most.
+      "base level %.4f, footprint %.4f\n",
+      err[0], err[1], err[2], err[3]);
+  // The aliasing of the base level is the 0.4 amplitude of the checks; filtering must remove most.
   EXPECT_GT(err[2], 0.15);
   EXPECT_LT(err[0], err[2] / 3);
   EXPECT_LT(err[1], err[2] / 3);
+  EXPECT_LT(err[3], err[2] / 3);
 }
 
 TEST_F(VideoLayerGlTest, SeamColumnDoesNotPickTheSmallestMip) {
@@ -128,7 +130,7 @@ TEST_F(VideoLayerGlTest, SeamColumnDoesNotPickTheSmallestMip) {
   GlTarget dst(w, h, TexFormat::RGBA32F);
   const RenderView v = RenderView::look_at({180, 0}, 0, 40.0, w, h);
   const cv::Mat ref = cpu_render(checks, v, w, h, 1);
-  for (LodMode mode : {LodMode::Analytic, LodMode::Derivatives}) {
+  for (LodMode mode : {LodMode::Footprint, LodMode::Analytic, LodMode::Derivatives}) {
     layer.render(dst, v, mode);
     const cv::Mat gpu = test::bgr_clamped(dst.read_float());
     const cv::Rect seam(w / 2 - 2, 0, 4, h);
