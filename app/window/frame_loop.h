@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "app/window/frame_client.h"
+#include "effects/anchor.h"
 #include "effects/stereo_layout.h"
 #include "xr/headset/hmd_profile.h"
 #include "xr/render/blur_method.h"
@@ -90,6 +91,9 @@ struct FrameLoopOptions {
   /// The video's stereo layout and coverage (docs/stereo.md): each eye samples its own image;
   /// the desktop view shows one eye, key 5 toggles which.
   effects::StereoLayout video_layout;
+  /// `--stabilize`: the camera's orientation per video frame (effects::AnchorFrames::world); the
+  /// views show the world frame (app/window/stabilized_view.h). Identity: the video frame.
+  effects::AnchorFrames stabilize{};
 };
 
 struct FrameRecord {
