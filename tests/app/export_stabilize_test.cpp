@@ -81,7 +81,9 @@ std::vector<cv::Mat> export_frames(const Clip& c, const std::string& name, const
   const auto r = run_vdfx("export " + c.video.string() + " --sidecar " + side.string() +
                           " --baked " + out.string() + (stabilize ? " --stabilize" : ""));
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  if (stabilize) EXPECT_NE(r.output.find("stabilised"), std::string::npos) << r.output;
+  if (stabilize) {
+    EXPECT_NE(r.output.find("stabilised"), std::string::npos) << r.output;
+  }
   const auto d = io::open_frame_decoder(out);
   std::vector<cv::Mat> frames;
   for (cv::Mat m; d->read(m) == io::DecodeStatus::Ok;) frames.push_back(m.clone());

@@ -143,8 +143,10 @@ TEST(SuggestComfortCamera, TheVignetteFollowsTheSidecarsCameraMotion) {
   const auto& t = s.effects[0];
   const effects::RbfInterpolator f(t.keyframes, 2, t.interpolation.value_or(s.interpolation),
                                    s.video.fps, effects::effect_spec(t.type).neutral());
-  EXPECT_NEAR(f.evaluate({0, 0}, 3)[0], comfort_radius_deg(0.0, 1.0), kVignetteToleranceDeg + 1);
-  EXPECT_NEAR(f.evaluate({0, 0}, 27)[0], comfort_radius_deg(90.0, 1.0), kVignetteToleranceDeg + 1);
+  EXPECT_NEAR(f.evaluate(effects::Direction{0, 0}, 3)[0], comfort_radius_deg(0.0, 1.0),
+              kVignetteToleranceDeg + 1);
+  EXPECT_NEAR(f.evaluate(effects::Direction{0, 0}, 27)[0], comfort_radius_deg(90.0, 1.0),
+              kVignetteToleranceDeg + 1);
 
   // Measured anyway, the still pictures give an open view throughout.
   r.measure_motion = true;
