@@ -9,6 +9,7 @@
 
 #include "effects/coords.h"
 #include "effects/equirect_blur.h"
+#include "effects/equirect_rotate.h"
 #include "io/eye_picture.h"
 #include "io/ycbcr.h"
 
@@ -202,12 +203,19 @@ FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, Bake
   options.cache = cache.get();
   options.coverage_deg = layout.coverage_deg;
   return [&stack, options, out, cache, layout](const io::Picture& source, std::int64_t frame) {
-    thread_local cv::Mat rgb, scratch, half;  // each render thread's frame buffers, reused
+    thread_local cv::Mat rgb, scratch, half, turned;  // each thread's frame buffers, reused
+    // After the effects (evaluated at each pixel's video direction): into the world frame.
+    auto stabilize = [&](cv::Mat& image) {
+      if (options.stabilize.identity()) return;
+      effects::rotate_equirect(image, options.stabilize.at(frame), turned, options.coverage_deg);
+      cv::swap(image, turned);
+    };
     // Each eye decoded from its own planes and encoded from its own half (io/eye_picture.h): no
     // chroma sample mixes the eyes at the boundary between the halves.
     io::to_rgb_by_eye(source, layout, io::PixelFormat::RgbF32, rgb);
     if (!layout.stereo()) {
       render_baked_into(rgb, stack, frame, options, &scratch);
+      stabilize(rgb);
       return io::rgb_to_ycbcr(rgb, out);
     }
     // Each eye's half on its own (the same per-pixel parameters: the halves are the same size
@@ -217,6 +225,7 @@ FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, Bake
       const cv::Rect rect(r.x, r.y, r.width, r.height);
       rgb(rect).copyTo(half);
       render_baked_into(half, stack, frame, options, &scratch);
+      stabilize(half);
       half.copyTo(rgb(rect));
     }
     return io::rgb_to_ycbcr_by_eye(rgb, out, layout);

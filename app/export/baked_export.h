@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "app/export/pipeline.h"
+#include "effects/anchor.h"
 #include "effects/stack_interpolator.h"
 #include "effects/stereo_layout.h"
 #include "io/picture.h"
@@ -53,6 +54,10 @@ struct BakedOptions {
   /// Degrees of azimuth the image spans (360, or 180 for one eye of VR180: its pixels' directions
   /// span azimuth -90..90, its grid does not wrap and its blur clamps at its edges).
   int coverage_deg = 360;
+  /// baked_frame_renderer: the camera's orientation per frame (effects::AnchorFrames::world) to
+  /// turn each rendered frame back into the world frame (`--stabilize`: the picture's direction
+  /// w shows the video at q_f^-1 w q_f); identity: the video frame as it is.
+  effects::AnchorFrames stabilize{};
 };
 
 /// The last parameter grid, reused while every effect's interpolant evaluates at the same frame
@@ -131,7 +136,9 @@ void render_baked_into(cv::Mat& rgb, const effects::StackInterpolator& stack, st
 /// thread, reused: no fresh 4K float image, and its page faults, per frame) -> render_baked_into
 /// -> Y'CbCr in `out`'s layout, with one BakedGridCache for the whole export. `stack` must outlive
 /// the renderer. A stereo `layout` bakes each eye's half on its own (its coverage from `layout`),
-/// the frame keeping its layout.
+/// the frame keeping its layout. With options.stabilize each rendered frame (each eye) is then
+/// turned into the world frame: the effects stay evaluated at the video direction each pixel
+/// shows.
 FrameRenderer baked_frame_renderer(const effects::StackInterpolator& stack, BakedOptions options,
                                    const io::YcbcrInfo& out,
                                    const effects::StereoLayout& layout = {});

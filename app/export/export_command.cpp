@@ -67,6 +67,9 @@ void add_export_options(CLI::App& cli, ExportRequest& r, ExportTexts& t) {
                  "--baked: evaluate the effects exactly every N pixels, bilinear between (1: every "
                  "pixel; default: a grid at most 512 columns wide)")
       ->check(CLI::Range(1, 64));
+  cli.add_flag("--stabilize", r.stabilize,
+               "--baked: turn the video back into the world frame with the sidecar's camera "
+               "motion (the horizon holds still; vdfx track camera records it)");
   cli.add_option("--fov", r.hfov_deg, "--path: horizontal field of view in degrees")
       ->check(finite_range(1.0, 179.0))
       ->capture_default_str();

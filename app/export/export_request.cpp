@@ -61,6 +61,9 @@ Inputs read_inputs(const ExportRequest& req) {
   in.decoder = io::open_frame_decoder(req.video, dopts);
   in.props = in.decoder->properties();
   in.layout = shown_layout(in.props, req.layout, &in.sidecar.video, req.sidecar);
+  if (req.stabilize && !in.sidecar.camera)
+    throw io::InputError(req.sidecar.string() +
+                         ": --stabilize: the sidecar has no camera motion: run vdfx track camera");
   in.last_available = in.props.frames - 1;
   if (req.frames) {
     in.range = *req.frames;
@@ -181,7 +184,7 @@ void announce(const ExportRequest& req, const Inputs& in, const io::EncoderSetti
             << " (" << r.last - r.first + 1 << ") at " << in.props.fps.num << "/"
             << in.props.fps.den << " fps, " << codec_note(es)
             << (req.baked() ? ", Spherical Video V2 equirectangular" : "") << stereo_note(req, in)
-            << "\n";
+            << (req.stabilize ? ", stabilised (the sidecar's camera motion)" : "") << "\n";
   if (!es.copy_audio_from.empty())
     for (const std::string& note : io::audio_copy_notes(es.copy_audio_from))
       std::cerr << "vdfx export: note: " << note << "\n";
@@ -220,6 +223,7 @@ FrameRenderer frame_renderer(const ExportRequest& req, const Inputs& in,
   if (req.baked()) {
     BakedOptions bo;
     bo.param_step = req.param_step;
+    if (req.stabilize) bo.stabilize = effects::AnchorFrames::world(*in.sidecar.camera);
     return baked_frame_renderer(stack, bo, out, in.layout);
   }
   PathRenderSettings ps;
@@ -297,6 +301,7 @@ void check_export_request(const ExportRequest& req) {
     throw UsageError("export: '" + req.output().string() +
                      "': the output must end .mp4, .mov or .mkv");
   if (!req.baked() && req.param_step > 0) throw UsageError("--param-step: goes with --baked");
+  if (!req.baked() && req.stabilize) throw UsageError("--stabilize: goes with --baked");
   check_depth(req);
 }
 

@@ -50,6 +50,9 @@ struct ExportRequest {
   /// Path, stereo video: both eyes side by side (left eye left, each width x height), tagged as
   /// a left-right stereo flat video (--stereo left-right).
   bool stereo_side_by_side = false;
+  /// Baked: each frame turned back into the world frame with the sidecar's `camera` (contract:
+  /// "Frames of reference"); a sidecar without one is an input error.
+  bool stabilize = false;
 
   bool baked() const { return !baked_out.empty(); }
   /// The output as the user named it.
@@ -69,7 +72,8 @@ struct ExportResult {
 };
 
 /// The request's own consistency (either baked_out or path_recording with path_out; an .mp4,
-/// .mov or .mkv output; param_step only baked). Throws app::UsageError naming the option.
+/// .mov or .mkv output; param_step and stabilize only baked). Throws app::UsageError naming the
+/// option.
 void check_export_request(const ExportRequest& request);
 
 /// Reads and checks every input before anything is written (io::InputError: exit 1), then

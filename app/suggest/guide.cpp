@@ -27,6 +27,14 @@ double number(const std::string& text, const std::string& whole, const char* wha
 }  // namespace
 
 PointOfInterest parse_point_of_interest(const std::string& text) {
+  if (text.rfind("track:", 0) == 0) {
+    PointOfInterest p;
+    p.track = text.substr(6);
+    if (!effects::valid_track_name(p.track))
+      throw std::invalid_argument("--poi " + text +
+                                  ": a track's name is 1 to 64 of A-Z, a-z, 0-9, _ and -");
+    return p;
+  }
   std::vector<std::string> parts;
   std::size_t start = 0;
   for (std::size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
@@ -55,6 +63,43 @@ PointOfInterest parse_point_of_interest(const std::string& text) {
   return p;
 }
 
+effects::Direction PointOfInterest::direction_at(std::int64_t frame) const {
+  if (path.empty()) return direction;
+  const std::int64_t i =
+      std::clamp<std::int64_t>(frame - first_frame, 0, static_cast<std::int64_t>(path.size()) - 1);
+  return path[static_cast<std::size_t>(i)];
+}
+
+void resolve_track_points(std::vector<PointOfInterest>& points,
+                          std::span<const effects::SubjectTrack> tracks,
+                          const std::string& sidecar_name) {
+  for (PointOfInterest& p : points) {
+    if (p.track.empty()) continue;
+    const auto t = std::find_if(tracks.begin(), tracks.end(),
+                                [&](const effects::SubjectTrack& s) { return s.name == p.track; });
+    if (t == tracks.end() || t->points.empty()) {
+      std::string names;
+      for (const effects::SubjectTrack& s : tracks) names += (names.empty() ? "" : ", ") + s.name;
+      throw std::invalid_argument(
+          "--poi track:" + p.track + ": " + sidecar_name + " has no track '" + p.track + "' (" +
+          (names.empty() ? "it has none: run vdfx track subject" : "it has: " + names) + ")");
+    }
+    // Frames the tracker did not see the subject at keep the direction last seen (before the
+    // first sighting: the first), whatever the track stores there.
+    const auto seen = std::find_if(t->points.begin(), t->points.end(),
+                                   [](const effects::TrackPoint& q) { return q.confidence > 0.0; });
+    effects::Direction held = (seen == t->points.end() ? t->points.front() : *seen).direction;
+    p.path.clear();
+    for (const effects::TrackPoint& q : t->points) {
+      if (q.confidence > 0.0) held = q.direction;
+      p.path.push_back(held);
+    }
+    p.first_frame = t->points.front().frame;
+    p.last_frame = t->points.back().frame;
+    p.direction = p.path.front();
+  }
+}
+
 double guide_weight(double theta_deg) {
   const double x =
       std::clamp((theta_deg - kGuideInnerDeg) / (kGuideOuterDeg - kGuideInnerDeg), 0.0, 1.0);
@@ -67,8 +112,9 @@ double guide_weight_at(const std::vector<PointOfInterest>& points, const effects
   const Eigen::Vector3d v = effects::to_unit(view);
   for (const auto& p : points)
     if (p.active_at(frame))
-      nearest = std::min(
-          nearest, effects::angle_between(v, effects::to_unit(p.direction)) * effects::kRadToDeg);
+      nearest =
+          std::min(nearest, effects::angle_between(v, effects::to_unit(p.direction_at(frame))) *
+                                effects::kRadToDeg);
   return std::isinf(nearest) ? 0.0 : guide_weight(nearest);
 }
 

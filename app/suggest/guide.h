@@ -10,9 +10,11 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "effects/anchor.h"
 #include "effects/coords.h"
 
 namespace vdfx::app::suggest {
@@ -23,17 +25,33 @@ inline constexpr double kGuideSaturationDepth = 0.8;  //!< saturation 0.2 at str
 inline constexpr double kGuideExposureStops = 1.5;    //!< 1.5 stops darker at strength 1
 
 struct PointOfInterest {
-  effects::Direction direction;
+  effects::Direction direction;            //!< a track's: its direction at first_frame
   std::int64_t first_frame = 0;            //!< inclusive
   std::optional<std::int64_t> last_frame;  //!< inclusive; none: to the end
+  /// "track:NAME": a subject track of the sidecar (resolve_track_points fills `path` and the
+  /// frames from it); empty: a fixed direction. (Braced: points made as {direction, first,
+  /// last} leave these as they are without a warning.)
+  std::string track{};
+  /// A track's direction at each frame from first_frame on (where the tracker did not see the
+  /// subject, confidence 0, the last direction it did see; before any, the first it saw).
+  std::vector<effects::Direction> path{};
   bool active_at(std::int64_t frame) const {
     return frame >= first_frame && (!last_frame || frame <= *last_frame);
   }
+  /// Where the point is at `frame` (a track's nearest end outside its span).
+  effects::Direction direction_at(std::int64_t frame) const;
 };
 
-/// "AZ,ALT" or "AZ,ALT,FROM-TO" (frames, inclusive). Throws std::invalid_argument with a message
-/// naming what is wrong.
+/// "AZ,ALT", "AZ,ALT,FROM-TO" (frames, inclusive) or "track:NAME" (a subject track of the
+/// sidecar, active over the frames it spans). Throws std::invalid_argument with a message naming
+/// what is wrong.
 PointOfInterest parse_point_of_interest(const std::string& text);
+
+/// Each "track:NAME" point's path and frames from the sidecar's `tracks`. Throws
+/// std::invalid_argument naming the option and `sidecar_name` when a name is none of them.
+void resolve_track_points(std::vector<PointOfInterest>& points,
+                          std::span<const effects::SubjectTrack> tracks,
+                          const std::string& sidecar_name);
 
 /// The guidance weight g at angle `theta_deg` from the point.
 double guide_weight(double theta_deg);

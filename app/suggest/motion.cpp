@@ -104,4 +104,20 @@ Rotation estimate_rotation(const cv::Mat& grey_a, const cv::Mat& grey_b,
   return out;
 }
 
+std::vector<double> camera_motion_speeds(const effects::CameraMotion& camera, std::int64_t frames,
+                                         double fps) {
+  std::vector<double> speed(static_cast<std::size_t>(std::max<std::int64_t>(frames, 0)), 0.0);
+  const auto n = static_cast<std::int64_t>(camera.orientation.size());
+  if (n == 0 || speed.size() < 2) return speed;
+  auto at = [&](std::int64_t f) {
+    return effects::to_eigen(camera.orientation[static_cast<std::size_t>(std::min(f, n - 1))])
+        .normalized();
+  };
+  for (std::int64_t f = 1; f < frames; ++f)
+    speed[static_cast<std::size_t>(f)] =
+        at(f - 1).angularDistance(at(f)) * effects::kRadToDeg * fps;
+  speed[0] = speed[1];
+  return speed;
+}
+
 }  // namespace vdfx::app::suggest

@@ -14,7 +14,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <opencv2/core.hpp>
+#include <vector>
+
+#include "effects/anchor.h"
 
 namespace vdfx::app::suggest {
 
@@ -37,6 +41,12 @@ cv::Mat motion_frame(const cv::Mat& rgb, const MotionOptions& options);
 /// Steps 2 and 3 between two motion_frame()s.
 Rotation estimate_rotation(const cv::Mat& grey_a, const cv::Mat& grey_b,
                            const MotionOptions& options);
+
+/// The camera's angular speed at each of `frames` frames, degrees per second, from recorded
+/// orientations (the sidecar's `camera`): the angle of q_{f-1}^-1 q_f times `fps` (frame 0 takes
+/// frame 1's; frames past the recording hold its last orientation).
+std::vector<double> camera_motion_speeds(const effects::CameraMotion& camera, std::int64_t frames,
+                                         double fps);
 
 /// The least-squares rotation R minimising sum |R a_i - b_i|^2 (Kabsch), of unit vectors.
 Eigen::Matrix3d kabsch(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b);

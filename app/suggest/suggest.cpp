@@ -104,8 +104,9 @@ std::vector<effects::Direction> field_directions(const SuggestRequest& r, const 
 }
 
 /// Opens the video for a suggestion into `sidecar` (none: the --sidecar-in file, else a new
-/// sidecar for the video), which records the video's stereo layout.
-Clip open_clip(const SuggestRequest& r, Progress* progress, std::optional<io::Sidecar>& sidecar) {
+/// sidecar for the video), which records the video's stereo layout. Track points of interest get
+/// their paths from the sidecar's tracks here.
+Clip open_clip(SuggestRequest& r, Progress* progress, std::optional<io::Sidecar>& sidecar) {
   Clip clip;
   clip.progress = progress;
   io::DecoderOptions decoder_options;
@@ -124,6 +125,12 @@ Clip open_clip(const SuggestRequest& r, Progress* progress, std::optional<io::Si
   // Stereo: the left eye's image is the sphere the analyses see (docs/stereo.md).
   const effects::StereoLayout layout =
       shown_layout(whole, r.layout, &sidecar->video, r.sidecar_in.value_or(fs::path()));
+  try {  // --poi track:NAME: the sidecar's track (its path, the frames it spans)
+    resolve_track_points(r.points, sidecar->tracks,
+                         r.sidecar_in ? r.sidecar_in->string() : "the sidecar (no --sidecar-in)");
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(e.what());
+  }
   check_points_covered(r, layout);
   io::record_layout(sidecar->video, layout);
   clip.layout = layout;
@@ -240,9 +247,20 @@ std::vector<double> camera_speeds(const SuggestRequest& r, Clip& clip) {
   return speed;
 }
 
-/// The comfort vignette's targets (comfort.h): the same at every direction of a frame.
-TargetField comfort_field(const SuggestRequest& r, Clip& clip, SuggestReport& report) {
-  report.speed_deg_per_s = camera_speeds(r, clip);
+/// The comfort vignette's targets (comfort.h): the same at every direction of a frame. The speed
+/// is the sidecar's recorded camera motion where it has one (unless --measure-motion), else
+/// measured from the pictures.
+TargetField comfort_field(const SuggestRequest& r, Clip& clip, SuggestReport& report,
+                          const io::Sidecar& sidecar) {
+  const auto& p = clip.decoder->properties();
+  if (sidecar.camera && !r.measure_motion && !p.is_still && p.frames >= 2) {
+    report.speed_deg_per_s = camera_motion_speeds(*sidecar.camera, p.frames, p.fps.value());
+    report.motion_note = std::string("using the sidecar's camera motion (") +
+                         effects::camera_source_name(sidecar.camera->source) +
+                         "; --measure-motion measures it from the video instead)";
+  } else {
+    report.speed_deg_per_s = camera_speeds(r, clip);
+  }
   const double fps = clip.decoder->properties().fps.value();
   const auto lead = static_cast<std::int64_t>(std::llround(kComfortLeadSeconds * fps));
   const std::vector<double> speed = look_ahead_max(report.speed_deg_per_s, lead);
@@ -399,7 +417,7 @@ SuggestReport suggest_clip(const SuggestRequest& r, Clip& clip, io::Sidecar& sid
     fit_into(sidecar, EffectType::Exposure, field, r, clip, report);
   } else if (r.kind == Kind::Comfort) {
     const TargetField field =
-        in_anchor_frame(comfort_field(r, clip, report), sidecar, EffectType::Vignette);
+        in_anchor_frame(comfort_field(r, clip, report, sidecar), sidecar, EffectType::Vignette);
     report.samples = field.size();
     fit_into(
         sidecar, EffectType::Vignette, field, r, clip, report,

@@ -46,6 +46,8 @@ struct SuggestRequest {
   std::vector<PointOfInterest> points;  //!< guide
   GuideEffect guide_effect = GuideEffect::Saturation;
   MotionOptions motion;  //!< comfort
+  /// Comfort: measure the camera's motion from the pictures even where the sidecar records one.
+  bool measure_motion = false;
   /// --layout / --coverage (docs/stereo.md): stereo video is analysed in its left eye's image;
   /// VR180 in its half turn only, where the keyframes go too (docs/suggest.md, "VR180").
   io::LayoutOverride layout;
@@ -64,7 +66,10 @@ struct SuggestReport {
   std::string transfer;                 //!< exposure: the transfer the video was linearised with
   double reference_level = 0.0;         //!< exposure: log2 luminance
   std::vector<double> speed_deg_per_s;  //!< comfort: the camera's angular speed at every frame
-  double seconds = 0.0;                 //!< wall time of the whole suggestion
+  /// Comfort: where the speed came from when not measured ("using the sidecar's camera motion
+  /// (estimated)..."), else "".
+  std::string motion_note{};
+  double seconds = 0.0;      //!< wall time of the whole suggestion
   std::string sidecar_note;  //!< run_suggest: what became of an existing --sidecar-out, or ""
 };
 

@@ -96,6 +96,8 @@ void print_report(const suggest::SuggestRequest& r, const suggest::SuggestReport
   if (!report.transfer.empty())
     std::printf("metered %zu frames as %s, reference level %.2f stops\n", report.frames.size(),
                 report.transfer.c_str(), report.reference_level);
+  if (!report.motion_note.empty())
+    std::fprintf(stderr, "vdfx suggest: %s\n", report.motion_note.c_str());
   if (!report.speed_deg_per_s.empty()) {
     const auto fastest =
         std::max_element(report.speed_deg_per_s.begin(), report.speed_deg_per_s.end());
@@ -136,7 +138,10 @@ int cmd_suggest(const Args& args) {
   add_common(*guide, c, r);
   std::vector<std::string> pois;
   std::string effect = "saturation";
-  guide->add_option("--poi", pois, "AZ,ALT[,FROM-TO]: a point of interest (repeat for several)")
+  guide
+      ->add_option("--poi", pois,
+                   "AZ,ALT[,FROM-TO], or track:NAME (a subject track of --sidecar-in, followed as "
+                   "it moves): a point of interest (repeat for several)")
       ->required();
   guide->add_option("--effect", effect, "saturation, exposure or both (saturation)")
       ->check(CLI::IsMember({"saturation", "exposure", "both"}));
@@ -150,6 +155,9 @@ int cmd_suggest(const Args& args) {
   add_common(*comfort, c, r);
   comfort->add_option("--tolerance", tolerance, "largest error allowed, in degrees (3)")
       ->check(finite_range(1e-3, 90.0));
+  comfort->add_flag("--measure-motion", r.measure_motion,
+                    "measure the camera's motion from the video even where --sidecar-in records "
+                    "it (vdfx track camera)");
 
   if (const auto code = parse_cli(cli, args)) return *code;
   const StopSignals stop;  // run_suggest's progress is cancelled by a stop signal

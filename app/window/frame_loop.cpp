@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "app/window/frame_loop_stats.h"
+#include "app/window/stabilized_view.h"
 #include "effects/effect_shaders.h"
 #include "io/image_write.h"
 #include "io/input_error.h"
@@ -219,6 +220,7 @@ struct FrameLoop::Impl {
     unsigned mask = 0;
     bool per_pixel = false;
     std::vector<xr::QuadLayer> quads;
+    std::int64_t param_frame = 0;  //!< the video frame the parameters are for
   };
   Content frame_content(std::int64_t n, std::int64_t t, Clock::time_point wall0,
                         FrameLoopStats& stats, FrameLoopResult& result) {
@@ -253,6 +255,11 @@ struct FrameLoop::Impl {
     // Parameters: view mode once per frame at the head's forward direction, the same for both
     // eyes; per-pixel mode a grid, re-baked when the frame or the parameters change.
     const std::int64_t param_frame = shown ? shown->index : info.video_frame;
+    c.param_frame = param_frame;
+    if (!o.stabilize.identity()) {  // the world frame shown: the head as the video frame sees it
+      c.in.head = video_frame_pose(c.in.head, o.stabilize, param_frame);
+      info.head_forward = xr::forward_direction(c.in.head);
+    }
     c.mask = client.unaltered() ? 0u : client.active_effects();
     c.per_pixel = c.mask && client.param_mode() == ParamMode::PerPixel;
     if (c.per_pixel) {
@@ -469,7 +476,8 @@ struct FrameLoop::Impl {
   /// and the panels drawn over the left eye for the mirror.
   void render_openxr(xr::OpenXrRuntime& rt, const Content& c) {
     const std::array<xr::EyeLayer*, 2> layers{flare.get(), grain.get()};
-    const std::array<xr::EyeView, 2> views = rt.locate_views();
+    std::array<xr::EyeView, 2> views = rt.locate_views();
+    for (xr::EyeView& v : views) v.pose = video_frame_pose(v.pose, o.stabilize, c.param_frame);
     for (int e = 0; e < 2; ++e) {
       compositor->render_eye_buffer(
           e, {xr::render_view(views[e]), c.params, c.mask, c.per_pixel, layers});

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "app/window/frame_client.h"
+#include "effects/anchor.h"
 #include "effects/stereo_layout.h"
 #include "xr/headset/hmd_profile.h"
 #include "xr/render/blur_method.h"
@@ -94,6 +95,9 @@ struct FrameLoopOptions {
   /// Set from outside (a stop signal: app/cli/stop_signals.h): the loop ends after the frame it
   /// is in, as on Escape (a headset session through the runtime's states). Null: never.
   const std::atomic<bool>* stop = nullptr;
+  /// `--stabilize`: the camera's orientation per video frame (effects::AnchorFrames::world); the
+  /// views show the world frame (app/window/stabilized_view.h). Identity: the video frame.
+  effects::AnchorFrames stabilize{};
 };
 
 struct FrameRecord {

@@ -9,6 +9,7 @@
 #include "app/cli/stop_signals.h"
 #include "app/window/frame_loop_cli.h"
 #include "app/window/player.h"
+#include "io/input_error.h"
 #include "io/sidecar.h"
 
 namespace vdfx::app {
@@ -46,6 +47,10 @@ int cmd_play(const Args& args) {
       ->capture_default_str()
       ->check(CLI::IsMember({"view", "pixel"}));
   cli.add_flag("--no-loop", no_loop, "stop on the last frame instead of looping");
+  bool stabilize = false;
+  cli.add_flag("--stabilize", stabilize,
+               "show the world frame: the sidecar's camera motion undone (vdfx track camera "
+               "records it), the horizon held still");
   cli.add_option("--seek-step", seek_step, "seconds per B / F seek")
       ->capture_default_str()
       ->check(finite_range(0.0, 3600.0));
@@ -55,9 +60,13 @@ int cmd_play(const Args& args) {
 
   const StopSignals stop;  // a stop signal ends the loop after its frame (docs/cli.md)
   const io::Sidecar sidecar = io::read_sidecar(sidecar_path);
+  if (stabilize && !sidecar.camera)
+    throw io::InputError(sidecar_path +
+                         ": --stabilize: the sidecar has no camera motion: run vdfx track camera");
   LoopSetup setup = prepare_loop(loop, video, !no_loop, {{"--sidecar", sidecar_path}});
   resolve_loop_layout(setup, loop, &sidecar.video, sidecar_path);
   warn_mismatch(sidecar, setup.video->properties());
+  if (stabilize) setup.options.stabilize = effects::AnchorFrames::world(*sidecar.camera);
   PlayerOptions po;
   po.loop = !no_loop;
   po.seek_step_s = seek_step;

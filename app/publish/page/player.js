@@ -6,13 +6,15 @@
 // it), view=AZ,ALT, fov=DEG, paused=1 (hold that frame: a still), eye=left|right (the eye a
 // stereo video shows on the canvas; key 5 switches). Test hooks: size=WxH (the canvas exactly
 // W x H CSS pixels at device pixel ratio 1, nothing drawn over it), xr=1 (that frame in an
-// immersive session entered at once, for a test's injected XRSystem). Once the starting frame is
+// immersive session entered at once, for a test's injected XRSystem), stabilize=1 (the world
+// frame: the sidecar's camera motion undone, stabilize.js). Once the starting frame is
 // decoded, uploaded and drawn, window.vdfxStats.ready holds it, and with paused=1, size= or
 // xr=1 document.title becomes "vdfx-ready"; any error sets "vdfx-error: MESSAGE".
 import { Renderer, viewRotation } from './renderer.js';
 import { effectLayers } from './layers.js';
 import { attachControls } from './controls.js';
-import { enterVr, startXr } from './xr.js';
+import { enterVr, lookDirection, startXr } from './xr.js';
+import { cameraStabilizer } from './stabilize.js';
 
 const $ = (id) => document.getElementById(id);
 // How long the page waits for a seeked frame's picture before it says so.
@@ -50,8 +52,9 @@ export function parseHooks(search) {
   if (eye !== null && eye !== 'left' && eye !== 'right')
     throw new Error(`the URL's eye=${eye} is not left or right`);
   const paused = q.get('paused') === '1', xr = q.get('xr') === '1';
+  const stabilize = q.get('stabilize') === '1';
   return {
-    eye: eye ?? 'left',
+    eye: eye ?? 'left', stabilize,
     view: view ? { az: view[0], alt: view[1] } : null, fov: fov ? fov[0] : null,
     frame: frame ? frame[0] : null, seconds: t ? t[0] : null, size, paused, xr,
     // A headless test's page: its title says when the frame is on the screen.
@@ -261,16 +264,25 @@ class Player {
     }
   }
 
+  // A view's eye -> world rotation as the video frame shows it: stabilize=1 turns it by the
+  // camera's q_f^-1 at the current frame; otherwise it is the video frame already.
+  turn(rot) {
+    return this.stabilizer ? this.stabilizer.turn(rot, this.frame) : rot;
+  }
+
   // Evaluates the effects at the view and draws the current video frame.
   draw() {
     this.resize();
     const t0 = performance.now();
-    const p = this.module.eval(this.view.az, this.view.alt, this.frame);
+    const rot = this.turn(viewRotation(this.view.az, this.view.alt));
+    const at = lookDirection(rot);
+    const p = this.module.eval(at.az, at.alt, this.frame);
     // The flares' and grain's layout from the head's pose: the view's, at the origin.
-    this.renderer.layers?.update(viewRotation(this.view.az, this.view.alt), [0, 0, 0], this.frame);
+    this.renderer.layers?.update(rot, [0, 0, 0], this.frame);
     const t1 = performance.now();
     if (!p) return;
-    this.renderer.draw({ ...this.view, eye: this.eye }, this.canvas.width, this.canvas.height, p);
+    this.renderer.draw({ ...this.view, rot, eye: this.eye }, this.canvas.width,
+                       this.canvas.height, p);
     const t2 = performance.now();
     this.#record(this.stats.evalMs, t1 - t0);
     this.#record(this.stats.drawMs, t2 - t1);
@@ -443,7 +455,8 @@ async function start() {
   const first = startFrame(hooks, config.video.fps, config.video.frames);
   const module = await loadModule();
   // A sidecar that fails validation: the validator's own lines (vdfx validate's), nothing played.
-  if (!module.load(config.sidecar, await fetchText(config.sidecar)))
+  const sidecarText = await fetchText(config.sidecar);
+  if (!module.load(config.sidecar, sidecarText))
     throw new Error(module.message().replace(/\n+$/, ''));
   const gl = $('view').getContext('webgl2', { antialias: false, alpha: false });
   if (!gl) throw new Error('this browser has no WebGL2');
@@ -451,6 +464,7 @@ async function start() {
   const renderer = new Renderer(gl, shaders);
   renderer.layers = await effectLayers(gl, shaders, module, config, fetchText);
   const player = new Player(config, module, renderer, hooks);
+  if (hooks.stabilize) player.stabilizer = cameraStabilizer(sidecarText, config.sidecar_name ?? config.sidecar);
   window.vdfxPlayer = player; // for benchmarks and debugging (docs/publish.md)
   player.stats.source = await openVideo(player.video, config);
   if (config.left_out.length)

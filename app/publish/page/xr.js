@@ -33,7 +33,8 @@ const position = (t) => (t.position ? [t.position.x, t.position.y, t.position.z]
 
 // One XR frame: the parameters from the head, every view with its own rotation and projection.
 function drawXrFrame(player, layer, pose) {
-  const headRot = quaternionRotation(pose.transform.orientation);
+  // stabilize=1: each pose as the video frame sees it (Player.turn).
+  const headRot = player.turn(quaternionRotation(pose.transform.orientation));
   const head = lookDirection(headRot);
   const t0 = performance.now();
   const p = player.module.eval(head.az, head.alt, player.frame);
@@ -43,7 +44,7 @@ function drawXrFrame(player, layer, pose) {
   if (!p) return;
   for (const view of pose.views) {
     const vp = layer.getViewport(view);
-    const eye = { rot: quaternionRotation(view.transform.orientation),
+    const eye = { rot: player.turn(quaternionRotation(view.transform.orientation)),
                   tan: projectionTangents(view.projectionMatrix), pos: position(view.transform),
                   eye: view.eye === 'right' ? 'right' : 'left' };
     player.renderer.draw(eye, vp.width, vp.height, p, { fb: layer.framebuffer, x: vp.x, y: vp.y });
