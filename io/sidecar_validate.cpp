@@ -4,12 +4,14 @@
 /// no change here.
 #include "io/sidecar_validate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
 
 #include "effects/interpolation_check.h"
+#include "effects/rbf_windows.h"
 #include "io/excerpt.h"
 #include "io/input_file.h"
 #include "io/json_text.h"
@@ -104,7 +106,7 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
                         effects::InterpolationSettings& out) {
   const json* obj = c.object(v, ptr);
   if (!obj) return;
-  c.only_keys(*obj, ptr, {"exponent", "time_scale", "distance", "outside_span"});
+  c.only_keys(*obj, ptr, {"exponent", "time_scale", "distance", "outside_span", "reach_s"});
   // The ranges are effects/interpolation_check.h's: the RBF kernel and the editor ask it too.
   if (const json* p = c.member(*obj, ptr, "exponent"))
     if (auto d = c.number(*p, ptr + "/exponent", kAnyNumber)) {
@@ -119,6 +121,14 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
         c.error(ptr + "/time_scale", *why);
       else
         out.time_scale = *d;
+    }
+  // Extension of format 1: optional, automatic when absent (docs/sidecar.md).
+  if (const json* p = c.member(*obj, ptr, "reach_s", /*required=*/false))
+    if (auto d = c.number(*p, ptr + "/reach_s", kAnyNumber)) {
+      if (auto why = effects::reach_problem(*d))
+        c.error(ptr + "/reach_s", *why);
+      else
+        out.reach_s = *d;
     }
   // Extension of format 1: optional, chordal when absent (docs/sidecar.md).
   if (const json* p = c.member(*obj, ptr, "distance", /*required=*/false)) {
@@ -311,6 +321,33 @@ void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Override
   for (const auto& [ptr, settings] : overrides) check(settings, ptr, true);
 }
 
+/// An entry with keyframes, where it is ("/effects/3") and its own settings, if any.
+struct KeyedEntry {
+  std::string ptr;
+  const std::vector<effects::Keyframe>* keyframes;
+  std::optional<effects::InterpolationSettings> own;
+};
+
+/// Each entry's keyframes must fit local interpolation's windows (effects/rbf_windows.h: no
+/// window holds more keyframes than one dense solve takes), once fps, the settings and the
+/// keyframes' frames are themselves valid.
+void check_windows(Checker& c, const Sidecar& s, const std::vector<KeyedEntry>& entries,
+                   const std::vector<Problem>& problems, std::size_t first) {
+  if (has_problem_at(problems, first, "/video/fps") ||
+      has_problem_at(problems, first, "/interpolation"))
+    return;
+  for (const KeyedEntry& e : entries) {
+    if (has_problem_at(problems, first, e.ptr)) continue;
+    std::vector<std::int64_t> frames;
+    frames.reserve(e.keyframes->size());
+    for (const effects::Keyframe& k : *e.keyframes) frames.push_back(k.frame);
+    std::sort(frames.begin(), frames.end());
+    if (const auto why =
+            effects::window_problem(e.own.value_or(s.interpolation), s.video.fps, frames))
+      c.error(e.ptr + "/keyframes", *why);
+  }
+}
+
 }  // namespace
 
 namespace detail {
@@ -318,9 +355,7 @@ namespace detail {
 bool keyframe_count_ok(Checker& c, const json& keyframes, const std::string& ptr) {
   if (keyframes.size() <= kMaxKeyframesPerEffect) return true;
   c.error(ptr, std::to_string(keyframes.size()) + " keyframes, more than the " +
-                   std::to_string(kMaxKeyframesPerEffect) +
-                   " an effect may have (the interpolation's memory grows with the square of the "
-                   "count, its solve time with the cube)");
+                   std::to_string(kMaxKeyframesPerEffect) + " an effect may have");
   return false;
 }
 
@@ -375,6 +410,7 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
   Sidecar out;
   const std::size_t first_problem = problems.size();
   std::vector<Override> overrides;
+  std::vector<std::pair<std::string, int>> keyed;  // entry pointer, 0 stack / 1 flare / 2 grain
   Checker c(file_for_messages, problems);
   const json* root = c.object(document, "");
   if (!root) return out;
@@ -430,11 +466,24 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
           own = &out.effects.back().interpolation;
         }
         if (*own) overrides.emplace_back(ep + "/interpolation", **own);
+        keyed.emplace_back(ep, is_flare_entry((*p)[i]) ? 1 : (is_grain_entry((*p)[i]) ? 2 : 0));
       }
     }
   }
   // Checks across fields, each in a function of its own.
   check_time_scaling(c, out, overrides, problems, first_problem);
+  std::vector<KeyedEntry> entries;
+  std::size_t next[3] = {0, 0, 0};
+  for (const auto& [ptr, kind] : keyed) {
+    const std::size_t i = next[kind]++;
+    if (kind == 1)
+      entries.push_back({ptr, &out.flares[i].keyframes, out.flares[i].interpolation});
+    else if (kind == 2)
+      entries.push_back({ptr, &out.grains[i].keyframes, out.grains[i].interpolation});
+    else
+      entries.push_back({ptr, &out.effects[i].keyframes, out.effects[i].interpolation});
+  }
+  check_windows(c, out, entries, problems, first_problem);
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include "app/cli/finite_params.h"
 #include "effects/stack_interpolator.h"
 #include "io/input_error.h"
+#include "io/params_text.h"
 #include "io/sidecar.h"
 #include "io/sidecar_sets.h"
 
@@ -45,30 +46,41 @@ int cmd_eval(const Args& args) {
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
   const effects::FlareSet flares = io::flare_set_of(sidecar);
   const effects::GrainSet grains = io::grain_set_of(sidecar);
+  std::string out;  // every line, written at once
   for (const EvalPoint& p : points) {
     const effects::StackParams params = stack.evaluate(p.direction, p.frame);
     require_finite(params, path, p.direction, p.frame);  // never print "null"
-    nlohmann::ordered_json out;
-    out["at"] = {{"azimuth_deg", p.direction.azimuth_deg},
-                 {"altitude_deg", p.direction.altitude_deg},
-                 {"frame", p.frame}};
-    out["effects"] = io::stack_params_to_json(stack, params);
+    const Eigen::Vector3d unit = effects::to_unit(p.direction);
+    out += "{\"at\":{\"azimuth_deg\":";
+    io::append_json_number(out, p.direction.azimuth_deg);
+    out += ",\"altitude_deg\":";
+    io::append_json_number(out, p.direction.altitude_deg);
+    out += ",\"frame\":";
+    io::append_json_integer(out, p.frame);
+    out += "},\"effects\":";
+    io::append_stack_params_json(out, stack, params);
     // Flares (any number, in file order): their keyframed intensity at the view.
-    nlohmann::ordered_json fl = nlohmann::ordered_json::array();
-    for (std::size_t k = 0; k < flares.size(); ++k)
-      fl.push_back({{"intensity", flares.intensity(k, effects::to_unit(p.direction), p.frame)}});
-    out["flares"] = std::move(fl);
-    // Grain effects (any number, in file order): keyframed intensity and size at the view.
-    nlohmann::ordered_json gr = nlohmann::ordered_json::array();
-    for (std::size_t k = 0; k < grains.size(); ++k) {
-      const effects::GrainParams g = grains.params(k, effects::to_unit(p.direction), p.frame);
-      gr.push_back({{"style", effects::grain_style_name(grains.effect(k).style)},
-                    {"intensity", g.intensity},
-                    {"size", g.size}});
+    out += ",\"flares\":[";
+    for (std::size_t k = 0; k < flares.size(); ++k) {
+      out += k ? ",{\"intensity\":" : "{\"intensity\":";
+      io::append_json_number(out, flares.intensity(k, unit, p.frame));
+      out += '}';
     }
-    out["grains"] = std::move(gr);
-    std::cout << out.dump() << "\n";
+    // Grain effects (any number, in file order): keyframed intensity and size at the view.
+    out += "],\"grains\":[";
+    for (std::size_t k = 0; k < grains.size(); ++k) {
+      const effects::GrainParams g = grains.params(k, unit, p.frame);
+      out += k ? ",{\"style\":" : "{\"style\":";
+      io::append_json_name(out, effects::grain_style_name(grains.effect(k).style));
+      out += ",\"intensity\":";
+      io::append_json_number(out, g.intensity);
+      out += ",\"size\":";
+      io::append_json_number(out, g.size);
+      out += '}';
+    }
+    out += "]}\n";
   }
+  std::cout << out << std::flush;
   return kExitOk;
 }
 
