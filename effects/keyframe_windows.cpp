@@ -49,18 +49,21 @@ void KeyframeWindows::solve_all(const std::vector<Keyframe>& keyframes,
   layout_ = *layout;
   data_ = window_data(layout_, frames_);
   solved_.assign(data_.size(), nullptr);
+  cores_.assign(data_.size(), {});
   last_solved_ = 0;
   for (std::size_t j = 0; j < data_.size(); ++j) {
     if (j > 0 && data_[j] == data_[j - 1]) {
       solved_[j] = solved_[j - 1];
-      continue;
+    } else {
+      if (previous)
+        solved_[j] = reusable(keyframes, static_cast<int>(j), *previous, *previous_keyframes);
+      if (!solved_[j]) {
+        solved_[j] = RbfInterpolator::solve_window(keyframes, order_, data_[j], dimension_,
+                                                   settings_, fps_, neutral_);
+        ++last_solved_;
+      }
     }
-    if (previous)
-      solved_[j] = reusable(keyframes, static_cast<int>(j), *previous, *previous_keyframes);
-    if (solved_[j]) continue;
-    solved_[j] = RbfInterpolator::solve_window(keyframes, order_, data_[j], dimension_, settings_,
-                                               fps_, neutral_);
-    ++last_solved_;
+    cores_[j] = RbfInterpolator::core_counts(*solved_[j], layout_, static_cast<int>(j));
   }
   publish();
 }
@@ -127,6 +130,7 @@ bool KeyframeWindows::update(const std::vector<Keyframe>& keyframes, const Keyfr
   if (!layout || layout->width != layout_.width || layout->count > kMaxWindows) return false;
   std::vector<WindowData> data = window_data(*layout, frames_);
   std::vector<std::shared_ptr<const RbfInterpolator>> solved(data.size());
+  std::vector<RbfInterpolator::WindowCore> cores(data.size());
   last_solved_ = 0;
   for (std::size_t j = 0; j < data.size(); ++j) {
     const WindowData& d = data[j];
@@ -138,24 +142,29 @@ bool KeyframeWindows::update(const std::vector<Keyframe>& keyframes, const Keyfr
         data_[static_cast<std::size_t>(old)].lo == d.lo &&
         data_[static_cast<std::size_t>(old)].hi == d.hi) {
       solved[j] = solved_[static_cast<std::size_t>(old)];
-    } else if (j > 0 && d == data[j - 1]) {
+      cores[j] = cores_[static_cast<std::size_t>(old)];  // the same keyframes: the same core
+      continue;
+    }
+    if (j > 0 && d == data[j - 1]) {
       solved[j] = solved[j - 1];
     } else {
       solved[j] = RbfInterpolator::solve_window(keyframes, order_, d, dimension_, settings_, fps_,
                                                 neutral_);
       ++last_solved_;
     }
+    cores[j] = RbfInterpolator::core_counts(*solved[j], *layout, static_cast<int>(j));
   }
   layout_ = *layout;
   data_ = std::move(data);
   solved_ = std::move(solved);
+  cores_ = std::move(cores);
   publish();
   return true;
 }
 
 void KeyframeWindows::publish() {
-  interpolator_ = std::make_shared<const RbfInterpolator>(layout_, solved_, kernel_, neutral_,
-                                                          frames_.front(), frames_.back());
+  interpolator_ = std::make_shared<const RbfInterpolator>(
+      layout_, solved_, cores_, kernel_, neutral_, frames_.front(), frames_.back());
 }
 
 }  // namespace vdfx::effects

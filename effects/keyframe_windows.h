@@ -76,6 +76,7 @@ class KeyframeWindows {
   std::vector<std::int64_t> frames_;  //!< their frames (ascending)
   std::vector<WindowData> data_;
   std::vector<std::shared_ptr<const RbfInterpolator>> solved_;
+  std::vector<RbfInterpolator::WindowCore> cores_;  //!< core_counts of each window
   std::shared_ptr<const RbfInterpolator> interpolator_;
   int last_solved_ = 0;
 };

@@ -42,6 +42,7 @@ RbfInterpolator::RbfInterpolator(std::span<const Keyframe> keyframes, int dimens
                                     std::to_string(kMaxLocalDimension) + " parameters");
       layout_ = *layout;
       const std::vector<WindowData> data = window_data(layout_, frames);
+      std::vector<WindowCore> cores;
       for (std::size_t j = 0; j < data.size(); ++j) {
         // Windows in a gap see the same keyframes: one solve serves them all.
         if (j > 0 && data[j] == data[j - 1])
@@ -49,10 +50,11 @@ RbfInterpolator::RbfInterpolator(std::span<const Keyframe> keyframes, int dimens
         else
           windows_.push_back(
               solve_window(keyframes, order, data[j], dimension, settings, fps, neutral_));
+        cores.push_back(core_counts(*windows_.back(), layout_, static_cast<int>(j)));
       }
       first_frame_ = frames.front();
       last_frame_ = frames.back();
-      combine_window_diagnostics(static_cast<int>(keyframes.size()));
+      combine_window_diagnostics(cores);
       return;
     }
   }
@@ -91,42 +93,45 @@ std::shared_ptr<const RbfInterpolator> RbfInterpolator::solve_window(
 
 RbfInterpolator::RbfInterpolator(const WindowLayout& layout,
                                  std::vector<std::shared_ptr<const RbfInterpolator>> windows,
-                                 const RbfKernel& kernel, Eigen::VectorXd neutral,
-                                 std::int64_t first_frame, std::int64_t last_frame)
+                                 std::span<const WindowCore> cores, const RbfKernel& kernel,
+                                 Eigen::VectorXd neutral, std::int64_t first_frame,
+                                 std::int64_t last_frame)
     : kernel_(kernel),
       neutral_(std::move(neutral)),
       first_frame_(first_frame),
       last_frame_(last_frame),
       layout_(layout),
       windows_(std::move(windows)) {
-  if (static_cast<int>(windows_.size()) != layout_.count)
+  if (static_cast<int>(windows_.size()) != layout_.count ||
+      static_cast<int>(cores.size()) != layout_.count)
     throw std::invalid_argument("RbfInterpolator: " + std::to_string(windows_.size()) +
-                                " windows for a layout of " + std::to_string(layout_.count));
-  int keyframes = 0;
-  for (int j = 0; j < layout_.count; ++j) {
-    const auto& w = *windows_[static_cast<std::size_t>(j)];
-    for (int c = 0; c < w.points_.size(); ++c)
-      if (core_of(w.points_.frame[static_cast<std::size_t>(c)]) == j)
-        keyframes += w.points_.counts[static_cast<std::size_t>(c)];
+                                " windows and " + std::to_string(cores.size()) +
+                                " core counts for a layout of " + std::to_string(layout_.count));
+  combine_window_diagnostics(cores);
+}
+
+RbfInterpolator::WindowCore RbfInterpolator::core_counts(const RbfInterpolator& window,
+                                                         const WindowLayout& layout, int j) {
+  WindowCore core;
+  const RbfPoints& p = window.points_;
+  for (int c = 0; c < p.size(); ++c) {
+    const double f = static_cast<double>(p.frame[static_cast<std::size_t>(c)]);
+    // As blend_at counts a frame's window.
+    if (std::floor(f / layout.width) - static_cast<double>(layout.first) != j) continue;
+    core.keyframes += p.counts[static_cast<std::size_t>(c)];
+    ++core.centres;
   }
-  combine_window_diagnostics(keyframes);
+  return core;
 }
 
-int RbfInterpolator::core_of(std::int64_t frame) const {
-  return static_cast<int>(std::floor(static_cast<double>(frame) / layout_.width) -
-                          static_cast<double>(layout_.first));
-}
-
-void RbfInterpolator::combine_window_diagnostics(int keyframes) {
+void RbfInterpolator::combine_window_diagnostics(std::span<const WindowCore> cores) {
   RbfDiagnostics d;
-  d.keyframes = keyframes;
   d.method = RbfSolveMethod::Polynomial;
   d.condition_estimate = 0.0;
   for (int j = 0; j < layout_.count; ++j) {
-    const RbfInterpolator& w = *windows_[static_cast<std::size_t>(j)];
-    const RbfDiagnostics& wd = w.diagnostics_;
-    for (int c = 0; c < w.points_.size(); ++c)
-      if (core_of(w.points_.frame[static_cast<std::size_t>(c)]) == j) ++d.centres;
+    const RbfDiagnostics& wd = windows_[static_cast<std::size_t>(j)]->diagnostics_;
+    d.keyframes += cores[static_cast<std::size_t>(j)].keyframes;
+    d.centres += cores[static_cast<std::size_t>(j)].centres;
     d.active_terms = std::max(d.active_terms, wd.active_terms);
     d.method = std::max(d.method, wd.method);
     d.max_residual = std::max(d.max_residual, wd.max_residual);

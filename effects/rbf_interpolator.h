@@ -38,13 +38,22 @@ class RbfInterpolator {
   RbfInterpolator(RbfPoints points, const RbfKernel& kernel, PolynomialBasis basis,
                   const RbfSolution& solution, Eigen::VectorXd neutral);
 
+  /// How many of a window's keyframes and centres lie in its own frames (its core, where each
+  /// keyframe lies in exactly one window's): the whole's diagnostics count these.
+  struct WindowCore {
+    int keyframes = 0, centres = 0;
+  };
+  /// Those of window `j` of `layout`, solved as `window`.
+  static WindowCore core_counts(const RbfInterpolator& window, const WindowLayout& layout, int j);
+
   /// Local interpolation from solved windows (KeyframeSet's windowed path): windows[j] is window
-  /// j of `layout`, made by solve_window (windows with the same data may share one). `kernel` is
-  /// the effect's (its `outside` applies to the keyframes' frame span [first_frame, last_frame]).
+  /// j of `layout`, made by solve_window (windows with the same data may share one), cores[j]
+  /// its core_counts. `kernel` is the effect's (its `outside` applies to the keyframes' frame
+  /// span [first_frame, last_frame]). O(windows): nothing is solved or counted again.
   RbfInterpolator(const WindowLayout& layout,
                   std::vector<std::shared_ptr<const RbfInterpolator>> windows,
-                  const RbfKernel& kernel, Eigen::VectorXd neutral, std::int64_t first_frame,
-                  std::int64_t last_frame);
+                  std::span<const WindowCore> cores, const RbfKernel& kernel,
+                  Eigen::VectorXd neutral, std::int64_t first_frame, std::int64_t last_frame);
 
   /// One window's solve: the keyframes keyframes[order[i]], i in [data.begin, data.end) (order
   /// sorts them by frame), solved globally and evaluated without a hold (the blended whole
@@ -92,9 +101,7 @@ class RbfInterpolator {
                   const RbfKernel& kernel, Eigen::VectorXd neutral);
   void solve_global(std::span<const Keyframe> keyframes, int dimension);
   void find_frame_span();
-  void combine_window_diagnostics(int keyframes);
-  /// The window whose core holds `frame` (as blend_at counts it).
-  int core_of(std::int64_t frame) const;
+  void combine_window_diagnostics(std::span<const WindowCore> cores);
   void evaluate_local(const Eigen::Vector3d& unit, std::int64_t frame, double* out) const;
 
   RbfPoints points_;  // structure of arrays: x, y, z, t contiguous

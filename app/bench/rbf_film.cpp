@@ -4,6 +4,7 @@
 /// editor's add and move and the memory they take, each beside today's global scheme at
 /// N = 1000; and the reach, local interpolation's knob: its solve time against its deviation
 /// from the global solve (max and RMS), for the contract's time scale and the author's.
+#include <malloc.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -53,9 +54,9 @@ long status_kb(const char* key) {
   return -1;
 }
 
-/// The memory `fn` takes at its peak, MB: run in a forked child whose peak resident set is reset
-/// first (/proc/self/clear_refs), so nothing this process held before counts. NaN when it
-/// cannot be measured.
+/// The memory `fn` takes at its peak, MB: run in a forked child that first returns its free heap
+/// memory to the system and resets its peak resident set (/proc/self/clear_refs), so nothing
+/// this process held before counts. NaN when it cannot be measured.
 double peak_memory_mb(const std::function<void()>& fn) {
   int fd[2];
   if (pipe(fd) != 0) return kNaN;
@@ -63,6 +64,7 @@ double peak_memory_mb(const std::function<void()>& fn) {
   if (pid < 0) return kNaN;
   if (pid == 0) {
     close(fd[0]);
+    malloc_trim(0);  // free heap memory the parent left resident would hide new allocations
     { std::ofstream("/proc/self/clear_refs") << "5"; }
     const long before = status_kb("VmRSS:");
     fn();
