@@ -5,10 +5,12 @@
 #include <iostream>
 #include <span>
 #include <string>
+#include <thread>
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
 #include "app/cli/finite_params.h"
+#include "effects/solve_threads.h"
 #include "effects/stack_interpolator.h"
 #include "io/input_error.h"
 #include "io/params_text.h"
@@ -100,6 +102,8 @@ int cmd_eval(const Args& args) {
                            " is beyond the video's " + std::to_string(sidecar.video.frames) +
                            " frames (/video/frames)");
   }
+  // Nothing else runs in this process: the solve's independent loops may use every core.
+  effects::set_solve_threads(static_cast<int>(std::thread::hardware_concurrency()));
   const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
   const effects::FlareSet flares = io::flare_set_of(sidecar);
   const effects::GrainSet grains = io::grain_set_of(sidecar);
