@@ -106,8 +106,8 @@ const median = (a) => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
     // Alternated, the better of two each: the shared machine's load moves between runs.
     const eightA = await perCall(true), six = Math.min(await perCall(false), await perCall(false));
     const eight = Math.min(eightA, await perCall(true));
-    console.log(`first frame after ${firstMs} ms (module, sidecar load and solve of 8 x 1000 ` +
-                `keyframes, shaders, video)`);
+    console.log(`first frame after ${firstMs} ms (module, sidecar load and solve of 8 x ` +
+                `${keyframes} keyframes, shaders, video)`);
     console.log(`one evaluation, median of 21 runs of 2000 random views and frames: the 6 stack ` +
                 `effects ${(six * 1000).toFixed(1)} us; all 8 (the page's per-frame calls: the ` +
                 `stack, the flare and grain layout, the grain's uniforms) ` +

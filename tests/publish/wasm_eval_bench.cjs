@@ -59,7 +59,15 @@ for (let r = 0; r < 5; r++) native.push((nativeRun(views.length) - nativeRun(1))
 
 const create = require(path.resolve(wasmDir, 'vdfx_player.js'));
 create({ wasmBinary: fs.readFileSync(path.join(wasmDir, 'vdfx_player.wasm')) }).then((m) => {
-  const load = m.cwrap('vdfx_load', 'number', ['string', 'string']);
+  const loadText = m.cwrap('vdfx_load', 'number', ['string', 'number']);
+  const load = (name, text) => {  // the text on the heap, as the page passes it
+    const p = m.allocateUTF8(text);
+    try {
+      return loadText(name, p);
+    } finally {
+      m._free(p);
+    }
+  };
   const t0 = process.hrtime.bigint();
   if (load(file, fs.readFileSync(file, 'utf8')) !== 1) throw new Error(m.UTF8ToString(m._vdfx_message()));
   const loadMs = Number(process.hrtime.bigint() - t0) / 1e6;
@@ -77,7 +85,8 @@ create({ wasmBinary: fs.readFileSync(path.join(wasmDir, 'vdfx_player.wasm')) }).
     fs.writeFileSync(path.join(outDir, 'bench.html'), `<!doctype html><script src="vdfx_player.js"></script><script>
 createVdfxPlayer().then(async (m) => {
   const text = await (await fetch('bench.vdfx.json')).text();
-  m.ccall('vdfx_load', 'number', ['string', 'string'], ['bench.vdfx.json', text]);
+  const p = m.allocateUTF8(text);
+  m.ccall('vdfx_load', 'number', ['string', 'number'], ['bench.vdfx.json', p]);
   const views = ${JSON.stringify(views.slice(0, 500))};
   const out = m._malloc(72), runs = [];
   for (let r = 0; r < 21; r++) {
