@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Configures the one sanitizer build that .ci/sanitize.sh and .ci/fuzz.sh share (issue 11):
+# Configures the one sanitizer build that .ci/sanitize.sh and .ci/fuzz.sh share:
 # clang-14, AddressSanitizer + UndefinedBehaviorSanitizer, libFuzzer coverage (-DVDFX_FUZZ=ON),
 # the whole of vdfx with GL and its tests but no benchmarks and no WebAssembly module (the
 # regular build tests it), warnings as errors, into $1. One build for both keeps the CI time

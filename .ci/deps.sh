@@ -17,6 +17,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri mesa-utils
   libopenxr-dev libopenxr-loader1 openxr-layer-corevalidation libopenxr-utils
   clang-14 libclang-rt-14-dev llvm-14 clang-format-14
+  universal-ctags
 )
 
 missing=()

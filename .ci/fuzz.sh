@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs every libFuzzer target of tests/fuzz for a bounded time (issue 11): builds them in the
+# Runs every libFuzzer target of tests/fuzz for a bounded time: builds them in the
 # sanitizer build (.ci/asan_configure.sh, build-asan/ or $VDFX_ASAN_BUILD_DIR, shared with
 # .ci/sanitize.sh), then fuzzes each for $VDFX_FUZZ_SECONDS (default 60, as the issue asks: a bounded run in CI that
 # finds shallow faults in new reader code; run it longer by hand after changing a reader)

@@ -30,12 +30,13 @@ echo "vdfx: demo views written to $out (demo-*.png: view-dependent; demo-*-pixel
 
 # The editor: the demo session (recordings/demo.vdrec.jsonl) replayed in the editor's window on
 # the bundled demo (not saved), in the desktop view it was recorded in (1280 x 720), written as
-# a screenshot (Xvfb when there is no display), then the same session replayed headless: the
+# a screenshot (Xvfb when there is no display), then the same session replayed headless (--force:
+# the sidecar is this script's own output, replaced each run): the
 # sidecar it authors and a few frames.
 "$root/.ci/with_display.sh" "$vdfx" edit --input replay:"$root/recordings/demo.vdrec.jsonl" --frames 433 --hidden \
   --screenshot "$out/editor.png"
 "$vdfx" replay "$root/recordings/demo.vdrec.jsonl" --video "$pano" \
-  --sidecar-out "$out/demo-authored.vdfx.json" --frames "$out/replay"
+  --sidecar-out "$out/demo-authored.vdfx.json" --force --frames "$out/replay"
 echo "vdfx: editor window $out/editor.png, authored sidecar $out/demo-authored.vdfx.json"
 # With a display, finish in the real editor on the demo, in the desktop view (VDFX_NO_WINDOW=1
 # skips it).

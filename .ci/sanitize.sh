@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer (issue 11): builds all of
+# The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer: builds all of
 # vdfx, its tests and every fuzz target's replay binary with the sanitizers (.ci/asan_configure.sh,
 # into build-asan/ or $VDFX_ASAN_BUILD_DIR), then runs every ctest test, the GL ones under Xvfb
 # with Mesa's llvmpipe as .ci/test.sh does, and the command tests through the sanitized vdfx

@@ -34,3 +34,50 @@ endfunction()
 function(vdfx_source_dir_definition)
   set_property(SOURCE ${ARGN} APPEND PROPERTY COMPILE_DEFINITIONS VDFX_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endfunction()
+
+# vdfx_room(NAME [GL_FREE]): after vdfx_add_module(NAME ...) in a room of xr/ (xr/input is
+# vdfx_xr_input, xr/input/glfw vdfx_xr_input_glfw). The rooms a room may include are the ones its
+# target links (vdfx::xr_a_b is xr/a/b, vdfx::math xr/math); before the library compiles, the
+# build checks its #include "xr/..." lines against them (cmake/vdfx_room_check.cmake) and fails
+# naming the file and the include. A GL-free room links no GL room or GL library and includes no
+# GL header, so the light `vdfx` executable and the fuzzers that link it stay GL-free.
+function(vdfx_room name)
+  cmake_parse_arguments(ARG "GL_FREE" "" "" ${ARGN})
+  file(RELATIVE_PATH room "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
+  get_target_property(libs vdfx_${name} LINK_LIBRARIES)
+  set(allowed "")
+  foreach(lib ${libs})
+    if(lib STREQUAL "vdfx::math")
+      list(APPEND allowed xr/math)
+    elseif(lib MATCHES "^vdfx::(xr_.+)$")
+      set(dep vdfx_${CMAKE_MATCH_1})
+      string(REPLACE "_" "/" folder "${CMAKE_MATCH_1}")
+      list(APPEND allowed "${folder}")
+      get_target_property(dep_gl_free ${dep} VDFX_GL_FREE)
+      if(ARG_GL_FREE AND NOT dep_gl_free)
+        message(FATAL_ERROR "${room}/ is GL-free but links ${lib}, a GL room")
+      endif()
+    elseif(ARG_GL_FREE AND lib MATCHES "EPOXY|glfw|OpenGL|X11|OPENXR")
+      message(FATAL_ERROR "${room}/ is GL-free but links ${lib}")
+    endif()
+  endforeach()
+  if(ARG_GL_FREE)
+    set(gl_free ON)
+  else()
+    set(gl_free OFF)
+  endif()
+  set_target_properties(vdfx_${name} PROPERTIES VDFX_GL_FREE ${gl_free})
+  string(REPLACE ";" "," allowed_arg "${allowed}")
+  file(GLOB files CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.h"
+    "${CMAKE_CURRENT_SOURCE_DIR}/*.cpp")
+  set(stamp "${CMAKE_CURRENT_BINARY_DIR}/vdfx_${name}.includes")
+  set(script "${PROJECT_SOURCE_DIR}/cmake/vdfx_room_check.cmake")
+  add_custom_command(OUTPUT "${stamp}"
+    COMMAND ${CMAKE_COMMAND} -DROOT=${PROJECT_SOURCE_DIR} -DROOM=${room}
+      -DALLOWED=${allowed_arg} -DGL_FREE=${gl_free} -DSTAMP=${stamp} -P ${script}
+    DEPENDS ${files} "${script}" "${CMAKE_CURRENT_LIST_FILE}"
+    COMMENT "Checking the includes of ${room}/"
+    VERBATIM)
+  add_custom_target(vdfx_${name}_includes DEPENDS "${stamp}")
+  add_dependencies(vdfx_${name} vdfx_${name}_includes)
+endfunction()

@@ -24,7 +24,7 @@ if(VDFX_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
   if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
     # GCC's flow analysis sees through ASan's instrumented code badly: -Wmaybe-uninitialized then
-    # fires inside libstdc++ (std::regex's std::function, xr/gl_program_gl.cpp) where the plain
+    # fires inside libstdc++ (std::regex's std::function, xr/render/gl_program.cpp) where the plain
     # build is clean. The plain build keeps the warning, as an error with VDFX_WERROR.
     add_compile_options(-Wno-maybe-uninitialized)
   endif()

@@ -77,26 +77,12 @@ std::string level_function(int levels) {
   return s;
 }
 
-}  // namespace
+// The stack's fragment shader in parts, which stack_fragment_source joins in this order around
+// what it writes itself (the variant's #defines, the Levels variant's lookup).
 
-std::string stack_fragment_source(const StackShader& v) {
-  using B = StackShader::Blur;
-  std::string s;
-  const auto def = [&](const char* name, bool on) {
-    s += std::string("#define ") + name + (on ? " 1\n" : " 0\n");
-  };
-  const auto has = [&](EffectType t) { return (v.mask & shader_bit(t)) != 0; };
-  def("HAS_TINT", has(EffectType::Tint));
-  def("HAS_EXPOSURE", has(EffectType::Exposure));
-  def("HAS_SATURATION", has(EffectType::Saturation));
-  def("HAS_CONTRAST", has(EffectType::Contrast));
-  def("HAS_VIGNETTE", has(EffectType::Vignette));
-  def("PER_PIXEL", v.per_pixel);
-  s += "#define BLUR_MODE " + std::to_string(static_cast<int>(v.blur)) + "\n";
-  s += glsl::kConstants;
-  s += glsl::kPinhole;
-  s += glsl::kEquirect;
-  s += R"(out vec4 frag;
+// The source's uniforms and each blur mode's (the Levels mode's lookup follows, then kStackParams
+// closes the #if).
+constexpr const char* kStackBlurUniforms = R"(out vec4 frag;
 uniform sampler2D u_src;
 uniform int u_margin;  // the source is larger than the target by this many pixels on each side
 uniform vec2 u_centre_tan;
@@ -111,9 +97,10 @@ uniform float u_blurred_scale;
 uniform float u_tau1_deg;
 uniform float u_level_log2r;  // log2 of the ratio between successive level sigmas
 )";
-  if (v.blur == B::Levels) s += level_function(v.levels);
-  s += "#define LEVELS " + std::to_string(v.blur == B::Levels ? v.levels : 0) + "\n";
-  s += R"(#endif
+
+// The effects' parameters, then main()'s first part: this pixel's ray, source pixel and
+// parameters (per-pixel grids or one value each).
+constexpr const char* kStackParams = R"(#endif
 #if PER_PIXEL
 uniform sampler2D u_grid0;  // tint gain r, g, b; exposure stops
 uniform sampler2D u_grid1;  // saturation, contrast, vignette radius, falloff (radians)
@@ -147,7 +134,10 @@ void main() {
   float saturation = u_saturation, contrast = u_contrast;
   vec2 vignette = u_vignette;
 #endif
-#if BLUR_MODE == 1
+)";
+
+// main(), then: the blur mode's colour of this pixel (or the plain source's).
+constexpr const char* kStackBlur = R"(#if BLUR_MODE == 1
   // Vertical half of the separable Gaussian (the horizontal half ran in the pass before).
   vec2 texel = 1.0 / vec2(textureSize(u_src, 0));
   vec2 q0 = pc * texel;
@@ -178,7 +168,10 @@ void main() {
 #else
   vec3 c = texelFetch(u_src, ivec2(pc), 0).rgb;
 #endif
-#if HAS_TINT
+)";
+
+// main(), last: the colour effects in the contract's order, and the output.
+constexpr const char* kStackGrade = R"(#if HAS_TINT
   c *= tint;
 #endif
 #if HAS_EXPOSURE
@@ -201,6 +194,32 @@ void main() {
   frag = vec4(c, 1.0);
 }
 )";
+
+}  // namespace
+
+std::string stack_fragment_source(const StackShader& v) {
+  using B = StackShader::Blur;
+  std::string s;
+  const auto def = [&](const char* name, bool on) {
+    s += std::string("#define ") + name + (on ? " 1\n" : " 0\n");
+  };
+  const auto has = [&](EffectType t) { return (v.mask & shader_bit(t)) != 0; };
+  def("HAS_TINT", has(EffectType::Tint));
+  def("HAS_EXPOSURE", has(EffectType::Exposure));
+  def("HAS_SATURATION", has(EffectType::Saturation));
+  def("HAS_CONTRAST", has(EffectType::Contrast));
+  def("HAS_VIGNETTE", has(EffectType::Vignette));
+  def("PER_PIXEL", v.per_pixel);
+  s += "#define BLUR_MODE " + std::to_string(static_cast<int>(v.blur)) + "\n";
+  s += glsl::kConstants;
+  s += glsl::kPinhole;
+  s += glsl::kEquirect;
+  s += kStackBlurUniforms;
+  if (v.blur == B::Levels) s += level_function(v.levels);
+  s += "#define LEVELS " + std::to_string(v.blur == B::Levels ? v.levels : 0) + "\n";
+  s += kStackParams;
+  s += kStackBlur;
+  s += kStackGrade;
   return s;
 }
 

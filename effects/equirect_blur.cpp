@@ -468,6 +468,102 @@ RowRuns level_runs(const TileLevels& t, int k, int w, int h, int lw, int lh) {
   return spans;
 }
 
+/// The levels' sigmas: level 0 is the image itself (sigma 0); then half a texel, growing by
+/// `ratio` up to the first at or above `max_sigma`.
+std::vector<double> level_sigmas(int w, double max_sigma, double ratio) {
+  std::vector<double> sigmas{0.0};
+  for (double s = 0.5 * 360.0 / w;; s *= ratio) {
+    sigmas.push_back(s);
+    if (s >= max_sigma) break;
+  }
+  return sigmas;
+}
+
+/// Pixel weight of level k: a hat in sigma, rising from sigma_{k-1} to 1 at sigma_k and falling
+/// to 0 at sigma_{k+1} (level 0 is 1 at sigma <= 0, the last 1 from its sigma on):
+/// clamp(min((s - s_{k-1}) rise, (s_{k+1} - s) fall), 0, 1), the linear mix in sigma.
+struct LevelHats {
+  std::vector<float> base, rise, top, fall;
+
+  explicit LevelHats(const std::vector<double>& sigmas) {
+    constexpr float kFlat = 1e30f;
+    const std::size_t count = sigmas.size();
+    base.resize(count);
+    rise.resize(count);
+    top.resize(count);
+    fall.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      base[i] = i == 0 ? -kFlat : static_cast<float>(sigmas[i - 1]);
+      rise[i] = i == 0 ? 1.0f : static_cast<float>(1.0 / (sigmas[i] - sigmas[i - 1]));
+      top[i] = i + 1 == count ? kFlat : static_cast<float>(sigmas[i + 1]);
+      fall[i] = i + 1 == count ? 1.0f : static_cast<float>(1.0 / (sigmas[i + 1] - sigmas[i]));
+    }
+  }
+};
+
+/// The output's tile rows mixed from the levels' read-backs, by the tiles' levels and each
+/// pixel's sigma.
+struct LevelMix {
+  const TileLevels& tiles;
+  const std::vector<ReadBack>& backs;
+  const cv::Mat& sigma_deg;
+  const LevelHats& hats;
+  int w, h;
+
+  /// Tiles mixing exactly two levels k - 1 and k (nearly all): one pass, the linear mix in
+  /// sigma of the two read-backs, lerp(A, B, (s - s_{k-1}) rise_k) (every sigma of such a tile
+  /// is in (s_{k-1}, s_k]).
+  void two_level_tiles(cv::Mat& out, int ty) const {
+    const int count = static_cast<int>(backs.size());
+    for (int k = 1; k < count; ++k) {
+      const auto runs = tile_runs_where(
+          tiles, ty, [k](int first, int last) { return first == k - 1 && last == k; });
+      const auto i = static_cast<std::size_t>(k);
+      for (int y = ty * kTile; y < std::min(h, (ty + 1) * kTile); ++y)
+        for (const auto& [first, last] : runs)
+          ReadBack::mix(out.ptr<float>(y), y, first * kTile, std::min(w, last * kTile),
+                        backs[i - 1], backs[i], sigma_deg.ptr<float>(y), hats.base[i],
+                        hats.rise[i]);
+    }
+  }
+
+  /// The other tiles, level by level, each pixel weighted by its hat (`weight`: w floats).
+  void other_tiles(cv::Mat& out, int ty, std::vector<float>& weight) const {
+    const int count = static_cast<int>(backs.size());
+    for (int k = 0; k < count; ++k) {
+      const auto runs = tile_runs_where(tiles, ty, [k](int first, int last) {
+        return k >= first && k <= last && !(first + 1 == last);
+      });
+      if (runs.empty()) continue;
+      for (int y = ty * kTile; y < std::min(h, (ty + 1) * kTile); ++y)
+        for (const auto& [first, last] : runs) other_run(out, ty, k, y, first, last, weight);
+    }
+  }
+
+ private:
+  /// Level k added to row y of the run of tiles [first, last) of tile row ty.
+  void other_run(cv::Mat& out, int ty, int k, int y, int first, int last,
+                 std::vector<float>& weight) const {
+    const auto i = static_cast<std::size_t>(k);
+    const auto at = [&](int x) { return static_cast<std::size_t>(ty * tiles.tiles_w + x); };
+    const float* s = sigma_deg.ptr<float>(y);
+    const int a = first * kTile, b = std::min(w, last * kTile);
+    for (int x = a; x < b; ++x) {
+      const float v =
+          std::min((s[x] - hats.base[i]) * hats.rise[i], (hats.top[i] - s[x]) * hats.fall[i]);
+      weight[static_cast<std::size_t>(x)] = std::clamp(v, 0.0f, 1.0f);
+    }
+    // Split where the tiles' first level changes between k and below it.
+    for (int tx = first; tx < last;) {
+      const bool assign = tiles.first[at(tx)] == k;
+      const int from = tx;
+      while (tx < last && (tiles.first[at(tx)] == k) == assign) ++tx;
+      backs[i].add(out.ptr<float>(y), y, from * kTile, std::min(w, tx * kTile), weight.data(),
+                   assign);
+    }
+  }
+};
+
 }  // namespace
 
 cv::Mat blur_equirect(const cv::Mat& rgb, double sigma_deg) {
@@ -507,12 +603,7 @@ void blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat
     return;
   }
   const int w = rgb.cols, h = rgb.rows;
-  // Level 0 is the image itself (sigma 0); then half a texel, growing by `ratio`.
-  std::vector<double> sigmas{0.0};
-  for (double s = 0.5 * 360.0 / w;; s *= ratio) {
-    sigmas.push_back(s);
-    if (s >= max_sigma) break;
-  }
+  const std::vector<double> sigmas = level_sigmas(w, max_sigma, ratio);
   const int count = static_cast<int>(sigmas.size());
   // Each pixel mixes only the two levels around its sigma: a level is computed only at the
   // texels its tiles' read-back reaches.
@@ -527,67 +618,19 @@ void blur_equirect_varying(const cv::Mat& rgb, const cv::Mat& sigma_deg, cv::Mat
     levels.push_back(
         blurred_level(pyramid, w, h, sigmas[static_cast<std::size_t>(k)], &runs.back()));
   }
-  // Pixel weight of level k: a hat in sigma, rising from sigma_{k-1} to 1 at sigma_k and falling
-  // to 0 at sigma_{k+1} (level 0 is 1 at sigma <= 0, the last 1 from its sigma on):
-  // clamp(min((s - s_{k-1}) rise, (s_{k+1} - s) fall), 0, 1), the linear mix in sigma.
-  constexpr float kFlat = 1e30f;
-  std::vector<float> base(static_cast<std::size_t>(count)), rise(base.size()), top(base.size()),
-      fall(base.size());
-  for (int k = 0; k < count; ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    base[i] = k == 0 ? -kFlat : static_cast<float>(sigmas[i - 1]);
-    rise[i] = k == 0 ? 1.0f : static_cast<float>(1.0 / (sigmas[i] - sigmas[i - 1]));
-    top[i] = k + 1 == count ? kFlat : static_cast<float>(sigmas[i + 1]);
-    fall[i] = k + 1 == count ? 1.0f : static_cast<float>(1.0 / (sigmas[i + 1] - sigmas[i]));
-  }
   std::vector<ReadBack> backs;
   backs.reserve(levels.size());
   for (std::size_t k = 0; k < levels.size(); ++k) backs.emplace_back(levels[k], w, h, &runs[k]);
+  const LevelHats hats(sigmas);
+  const LevelMix mix{tiles, backs, sigma_deg, hats, w, h};
   // Levels go in ascending order: a pixel's first (its tile's first level) is stored, the
   // others added, so the output needs no clearing.
   out.create(rgb.size(), CV_32FC3);
   cv::parallel_for_(cv::Range(0, tiles.tiles_h), [&](const cv::Range& r) {
     std::vector<float> weight(static_cast<std::size_t>(w));
     for (int ty = r.start; ty < r.end; ++ty) {
-      // Tiles mixing exactly two levels k - 1 and k (nearly all): one pass, the linear mix in
-      // sigma of the two read-backs, lerp(A, B, (s - s_{k-1}) rise_k) (every sigma of such a
-      // tile is in (s_{k-1}, s_k]).
-      for (int k = 1; k < count; ++k) {
-        const auto runs = tile_runs_where(
-            tiles, ty, [k](int first, int last) { return first == k - 1 && last == k; });
-        const auto i = static_cast<std::size_t>(k);
-        for (int y = ty * kTile; y < std::min(h, (ty + 1) * kTile); ++y)
-          for (const auto& [first, last] : runs)
-            ReadBack::mix(out.ptr<float>(y), y, first * kTile, std::min(w, last * kTile),
-                          backs[i - 1], backs[i], sigma_deg.ptr<float>(y), base[i], rise[i]);
-      }
-      // The others level by level, each pixel weighted by its hat.
-      for (int k = 0; k < count; ++k) {
-        const auto i = static_cast<std::size_t>(k);
-        const auto runs = tile_runs_where(tiles, ty, [k](int first, int last) {
-          return k >= first && k <= last && !(first + 1 == last);
-        });
-        if (runs.empty()) continue;
-        const auto at = [&](int x) { return static_cast<std::size_t>(ty * tiles.tiles_w + x); };
-        for (int y = ty * kTile; y < std::min(h, (ty + 1) * kTile); ++y) {
-          const float* s = sigma_deg.ptr<float>(y);
-          for (const auto& [first, last] : runs) {
-            const int a = first * kTile, b = std::min(w, last * kTile);
-            for (int x = a; x < b; ++x) {
-              const float v = std::min((s[x] - base[i]) * rise[i], (top[i] - s[x]) * fall[i]);
-              weight[static_cast<std::size_t>(x)] = std::clamp(v, 0.0f, 1.0f);
-            }
-            // Split where the tiles' first level changes between k and below it.
-            for (int tx = first; tx < last;) {
-              const bool assign = tiles.first[at(tx)] == k;
-              const int from = tx;
-              while (tx < last && (tiles.first[at(tx)] == k) == assign) ++tx;
-              backs[i].add(out.ptr<float>(y), y, from * kTile, std::min(w, tx * kTile),
-                           weight.data(), assign);
-            }
-          }
-        }
-      }
+      mix.two_level_tiles(out, ty);
+      mix.other_tiles(out, ty, weight);
     }
   });
 }

@@ -14,7 +14,7 @@
 /// level.
 ///
 /// Varying sigma (per pixel): levels of the constant blur at sigmas growing by `ratio` (half
-/// octaves by default, as the GPU per-pixel mode, xr/blur_method.h), the smallest one half a
+/// octaves by default, as the GPU per-pixel mode, xr/render/blur_method.h), the smallest one half a
 /// texel; each pixel mixes the two levels around its own sigma linearly in sigma (level 0 is the
 /// unblurred image). A level is computed only where some pixel mixes it (8 x 8 tiles of the
 /// sigma map, each with the range of levels its sigmas need, dilated by the read-back), and the

@@ -77,6 +77,7 @@ struct FlareEffect {
   FlareSettings settings;
   std::optional<InterpolationSettings> interpolation;  //!< overrides the file's default
   std::vector<Keyframe> keyframes;                     //!< params: {intensity}
+  Anchor anchor = {};  //!< the frame the keyframe directions are in (effects/anchor.h)
   bool operator==(const FlareEffect&) const = default;
 };
 

@@ -1,7 +1,8 @@
 /// @file
 /// @brief CPU reference renderer of flares for one view (one eye): each pixel's ray from the
 /// eye's own position meets the flare plane, and the elements' profiles are summed there. The GL
-/// layer (xr/flare_gl.h) draws the same layout as world-space quads and is tested against this.
+/// layer (xr/render/flare_gl.h) draws the same layout as world-space quads and is tested against
+/// this.
 #pragma once
 
 #include <Eigen/Core>

@@ -2,9 +2,9 @@
 /// @brief GLSL that several programs share, written once (strings: effects/ never links GL).
 ///
 /// Every program that needs one of these concatenates it in front of its own source (the
-/// program builder, xr/gl_program.h, prepends only the target's prelude below), so pi, the pinhole
-/// ray of a fragment and the ray -> equirect mapping have one definition for the video layer, the
-/// effect stack, the lens passes and grain. The formulas are the CPU reference's
+/// program builder, xr/render/gl_program.h, prepends only the target's prelude below), so pi, the
+/// pinhole ray of a fragment and the ray -> equirect mapping have one definition for the video
+/// layer, the effect stack, the lens passes and grain. The formulas are the CPU reference's
 /// (effects/view_camera.h for the pinhole, effects/coords.h for the equirect mapping).
 #pragma once
 
@@ -46,7 +46,7 @@ vec3 pinhole_ray() { return vec3(tan_at_fragment(), -1.0); }
 )";
 
 /// `equirect_uv(d)`: texture coordinates (u, t) of the equirect frame along the (unnormalised)
-/// world ray d, t = 1 - v because textures start at the bottom row (xr/gl_texture.h). Needs
+/// world ray d, t = 1 - v because textures start at the bottom row (xr/render/gl_texture.h). Needs
 /// kConstants.
 inline constexpr const char* kEquirect = R"(vec2 equirect_uv(vec3 d) {
   return vec2(0.5 + atan(d.x, -d.z) / (2.0 * PI), 0.5 + atan(d.y, length(d.xz)) / PI);

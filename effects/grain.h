@@ -86,6 +86,7 @@ struct GrainEffect {
   GrainSettings settings;
   std::optional<InterpolationSettings> interpolation;  //!< overrides the file's default
   std::vector<Keyframe> keyframes;                     //!< params [intensity, size]
+  Anchor anchor = {};  //!< the frame the keyframe directions are in (effects/anchor.h)
   bool operator==(const GrainEffect&) const = default;
 };
 

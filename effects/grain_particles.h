@@ -25,7 +25,7 @@
 ///
 /// The stream: particle i of a refresh is a function of (key, i) alone, its draw j the uniform
 /// unit_uniform(hash32_draw(key, i, j)) (effects/grain_random.h), key = grain_particle_key(seed,
-/// refresh). The GPU layer evaluates the same function in its vertex stage (xr/grain_gl.h,
+/// refresh). The GPU layer evaluates the same function in its vertex stage (xr/render/grain_gl.h,
 /// effects/grain_shaders.cpp); grain_particle is its definition and the tests' reference.
 #pragma once
 

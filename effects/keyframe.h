@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "effects/anchor.h"
 #include "effects/coords.h"
 #include "effects/effect_types.h"
 
@@ -75,6 +76,7 @@ struct EffectTrack {
   EffectType type = EffectType::Exposure;
   std::optional<InterpolationSettings> interpolation;  //!< overrides the file's default
   std::vector<Keyframe> keyframes;
+  Anchor anchor = {};  //!< the frame the keyframe directions are in (effects/anchor.h)
   bool operator==(const EffectTrack&) const = default;
 };
 

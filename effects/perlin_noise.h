@@ -12,7 +12,7 @@
 /// (Fisher-Yates on effects::RandomStream) so that two grain effects differ.
 ///
 /// Evaluated in single precision, in the operation order the GLSL uses, so the two agree to float
-/// rounding (tests/xr/grain_gl_test.cpp).
+/// rounding (tests/xr/render/grain_gl_test.cpp).
 #pragma once
 
 #include <array>

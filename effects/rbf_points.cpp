@@ -50,7 +50,11 @@ void RbfPoints::swap_remove(int i) {
   values.conservativeResize(last, Eigen::NoChange);
 }
 
-RbfPoints merge_keyframes(std::span<const Keyframe> keyframes, int dimension) {
+namespace {
+
+/// Each keyframe's unit direction, after checking its parameters' count and that every number is
+/// finite (std::invalid_argument naming the keyframe otherwise).
+std::vector<Eigen::Vector3d> checked_units(std::span<const Keyframe> keyframes, int dimension) {
   const int n = static_cast<int>(keyframes.size());
   std::vector<Eigen::Vector3d> units(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) {
@@ -71,6 +75,14 @@ RbfPoints merge_keyframes(std::span<const Keyframe> keyframes, int dimension) {
       fail("non-finite direction");
     units[static_cast<size_t>(k)] = to_unit(kf.direction);
   }
+  return units;
+}
+
+}  // namespace
+
+RbfPoints merge_keyframes(std::span<const Keyframe> keyframes, int dimension) {
+  const int n = static_cast<int>(keyframes.size());
+  const std::vector<Eigen::Vector3d> units = checked_units(keyframes, dimension);
 
   // Sort by (frame, x) so coincident keyframes are found by a sweep, O(N log N) typically.
   std::vector<int> order(static_cast<size_t>(n));

@@ -1,7 +1,7 @@
 /// @file
 /// @brief GLSL of the video layer (strings only: effects/ never links GL): each pixel's ray
-/// into the equirect frame, shared by the GL compositor (xr/video_layer_gl.cpp) and the page of
-/// `vdfx publish`. The level-of-detail formulas are documented in xr/video_layer.h.
+/// into the equirect frame, shared by the GL compositor (xr/render/video_layer.cpp) and the page of
+/// `vdfx publish`. The level-of-detail formulas are documented in xr/render/video_layer.h.
 #pragma once
 
 #include <string>

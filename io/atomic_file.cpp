@@ -13,6 +13,7 @@
 #include <cstring>
 #include <string>
 
+#include "io/durable.h"
 #include "io/file_lock.h"
 #include "io/input_error.h"
 
@@ -134,11 +135,8 @@ void write_file_atomic(const std::filesystem::path& user_path, std::string_view 
   // The new name is only durable once the folder's entry is on disk too. The file is already
   // replaced here, so a failure says so instead of "cannot write". File systems that cannot sync
   // a folder at all (EINVAL) are taken as synced.
-  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  const int r = dfd < 0 ? -1 : ::fsync(dfd);
-  const int err = errno;
-  if (dfd >= 0) ::close(dfd);
-  if (r != 0 && err != EINVAL)
+  const int err = fsync_folder_entry(dir);
+  if (err != 0 && err != EINVAL)
     throw InputError(user_path.string() +
                      ": written, but not yet durable: the fsync of its folder " + dir.string() +
                      " failed (" + std::strerror(err) +

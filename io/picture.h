@@ -3,7 +3,7 @@
 /// Y'CbCr in the stream's own layout with the colour description needed to convert it.
 ///
 /// Video frames stay Y'CbCr from the decoder to the GPU, which converts them in the video layer
-/// (xr/video_layer.h); the CPU reference conversion with the same formulas is io/ycbcr.h.
+/// (xr/render/video_layer.h); the CPU reference conversion with the same formulas is io/ycbcr.h.
 #pragma once
 
 #include <array>

@@ -3,7 +3,7 @@
 ///
 /// A recording is JSON Lines: a header line, then one line per input sample (head and hand poses,
 /// triggers, sticks, buttons) or per raw HID report. The types here are plain data with no math
-/// library, so io/ stays free of xr/; xr/input_state_io.h converts them to actions.
+/// library, so io/ stays free of xr/; xr/input/input_state_io.h converts them to actions.
 #pragma once
 
 #include <array>

@@ -4,6 +4,7 @@
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/sidecar_anchor.h"
 #include "io/sidecar_flare.h"
 #include "io/sidecar_grain.h"
 #include "io/sidecar_validate.h"
@@ -46,6 +47,7 @@ ordered ordered_document(const Sidecar& s) {
     const effects::EffectSpec& spec = effects::effect_spec(track.type);
     ordered e;
     e["type"] = std::string(spec.name);
+    detail::write_anchor(e, track.anchor);
     if (track.interpolation) e["interpolation"] = interpolation_json(*track.interpolation);
     ordered kfs = ordered::array();
     for (const effects::Keyframe& k : track.keyframes)
@@ -56,6 +58,10 @@ ordered ordered_document(const Sidecar& s) {
   for (const effects::FlareEffect& f : s.flares) effects_json.push_back(flare_to_json(f));
   for (const effects::GrainEffect& g : s.grains) effects_json.push_back(grain_to_json(g));
   doc["effects"] = std::move(effects_json);
+  // After the effects: a camera holds one line group per frame, and a reader looks for the
+  // effects first.
+  if (s.camera) doc["camera"] = detail::camera_to_json(*s.camera);
+  if (!s.tracks.empty()) doc["tracks"] = detail::tracks_to_json(s.tracks);
   return doc;
 }
 

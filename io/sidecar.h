@@ -51,6 +51,11 @@ struct Sidecar {
   /// "type": "grain" entries, in file order (any number; written after the flares: grain is
   /// drawn after the stack and the flare whatever its place in the file).
   std::vector<effects::GrainEffect> grains;
+  /// "camera" (contract: "Frames of reference"): the camera's orientation at every frame, the
+  /// world anchor's rotations; absent when nobody tracked or gave it.
+  std::optional<effects::CameraMotion> camera;
+  /// "tracks": subjects' directions over frames, the track anchors' rotations.
+  std::vector<effects::SubjectTrack> tracks;
   bool operator==(const Sidecar&) const = default;
 };
 

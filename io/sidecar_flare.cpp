@@ -7,6 +7,7 @@
 
 #include "effects/direction_angle.h"
 #include "io/sidecar.h"
+#include "io/sidecar_anchor.h"
 #include "io/sidecar_checker.h"
 
 namespace vdfx::io {
@@ -166,6 +167,7 @@ nlohmann::ordered_json flare_to_json(const effects::FlareEffect& f) {
   ordered e;
   e["type"] = kFlareTypeName;
   e["style"] = std::string(effects::flare_style_name(f.style));
+  detail::write_anchor(e, f.anchor);
   e["light"] = light_json(f.light);
   ordered s;
   s["fade_deg"] = f.settings.fade_deg;
@@ -183,7 +185,8 @@ namespace detail {
 void read_flare(Checker& c, const json& entry, const std::string& ptr,
                 std::optional<std::int64_t> frames, effects::FlareEffect& out) {
   // is_flare_entry chose this reader: entry is an object with "type": "flare".
-  c.only_keys(entry, ptr, {"type", "style", "light", "settings", "interpolation", "keyframes"});
+  c.only_keys(entry, ptr,
+              {"type", "style", "light", "settings", "anchor", "interpolation", "keyframes"});
   if (const json* p = c.member(entry, ptr, "style")) {
     if (auto s = c.string(*p, ptr + "/style")) {
       if (auto style = effects::flare_style_from_name(*s))
@@ -199,6 +202,7 @@ void read_flare(Checker& c, const json& entry, const std::string& ptr,
     read_light(c, *p, ptr + "/light", frames, out.light);
   if (const json* p = c.member(entry, ptr, "settings", false))
     read_settings(c, *p, ptr + "/settings", out.settings);
+  read_anchor(c, entry, ptr, out.anchor);
   read_interpolation_override(c, entry, ptr, out.interpolation);
   if (const json* p = c.member(entry, ptr, "keyframes"))
     detail::read_scalar_keyframes(c, *p, ptr + "/keyframes", frames,

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "io/sidecar.h"
+#include "io/sidecar_anchor.h"
 #include "io/sidecar_checker.h"
 
 namespace vdfx::io {
@@ -74,6 +75,7 @@ nlohmann::ordered_json grain_to_json(const effects::GrainEffect& g) {
   ordered e;
   e["type"] = kGrainTypeName;
   e["style"] = std::string(effects::grain_style_name(g.style));
+  detail::write_anchor(e, g.anchor);
   e["seed"] = g.seed;
   ordered s = ordered::object();
   for (effects::GrainSetting id : effects::grain_style_settings(g.style)) {
@@ -94,7 +96,8 @@ namespace detail {
 void read_grain(Checker& c, const json& entry, const std::string& ptr,
                 std::optional<std::int64_t> frames, effects::GrainEffect& out) {
   // is_grain_entry chose this reader: entry is an object with "type": "grain".
-  c.only_keys(entry, ptr, {"type", "style", "seed", "settings", "interpolation", "keyframes"});
+  c.only_keys(entry, ptr,
+              {"type", "style", "seed", "settings", "anchor", "interpolation", "keyframes"});
   std::optional<effects::GrainStyle> style;
   if (const json* p = c.member(entry, ptr, "style")) {
     if (auto s = c.string(*p, ptr + "/style")) {
@@ -112,6 +115,7 @@ void read_grain(Checker& c, const json& entry, const std::string& ptr,
   out.settings = effects::GrainSettings(out.style);
   if (const json* p = c.member(entry, ptr, "settings", false))
     read_settings(c, *p, ptr + "/settings", style, out.settings);
+  read_anchor(c, entry, ptr, out.anchor);
   read_interpolation_override(c, entry, ptr, out.interpolation);
   if (const json* p = c.member(entry, ptr, "keyframes"))
     detail::read_scalar_keyframes(c, *p, ptr + "/keyframes", frames, effects::grain_param_specs(),

@@ -15,6 +15,7 @@
 #include "io/excerpt.h"
 #include "io/input_file.h"
 #include "io/json_text.h"
+#include "io/sidecar_anchor.h"
 #include "io/sidecar_checker.h"
 #include "io/sidecar_flare.h"
 #include "io/sidecar_grain.h"
@@ -239,7 +240,8 @@ void read_effect(Checker& c, const json& v, const std::string& ptr,
                  std::map<effects::EffectType, std::string>& seen, effects::EffectTrack& out) {
   const json* obj = c.object(v, ptr);
   if (!obj) return;
-  c.only_keys(*obj, ptr, {"type", "interpolation", "keyframes"});
+  c.only_keys(*obj, ptr, {"type", "anchor", "interpolation", "keyframes"});
+  read_anchor(c, *obj, ptr, out.anchor);
   const effects::EffectSpec* spec = nullptr;
   if (const json* p = c.member(*obj, ptr, "type")) {
     if (auto s = c.string(*p, ptr + "/type")) {
@@ -321,6 +323,9 @@ void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Override
   for (const auto& [ptr, settings] : overrides) check(settings, ptr, true);
 }
 
+/// Where an entry is ("/effects/3") and what it is: 0 a stack effect, 1 a flare, 2 a grain.
+using KeyedAt = std::pair<std::string, int>;
+
 /// An entry with keyframes, where it is ("/effects/3") and its own settings, if any.
 struct KeyedEntry {
   std::string ptr;
@@ -331,11 +336,22 @@ struct KeyedEntry {
 /// Each entry's keyframes must fit local interpolation's windows (effects/rbf_windows.h: no
 /// window holds more keyframes than one dense solve takes), once fps, the settings and the
 /// keyframes' frames are themselves valid.
-void check_windows(Checker& c, const Sidecar& s, const std::vector<KeyedEntry>& entries,
+void check_windows(Checker& c, const Sidecar& s, const std::vector<KeyedAt>& keyed,
                    const std::vector<Problem>& problems, std::size_t first) {
   if (has_problem_at(problems, first, "/video/fps") ||
       has_problem_at(problems, first, "/interpolation"))
     return;
+  std::vector<KeyedEntry> entries;
+  std::size_t next[3] = {0, 0, 0};
+  for (const auto& [ptr, kind] : keyed) {
+    const std::size_t i = next[kind]++;
+    if (kind == 1)
+      entries.push_back({ptr, &s.flares[i].keyframes, s.flares[i].interpolation});
+    else if (kind == 2)
+      entries.push_back({ptr, &s.grains[i].keyframes, s.grains[i].interpolation});
+    else
+      entries.push_back({ptr, &s.effects[i].keyframes, s.effects[i].interpolation});
+  }
   for (const KeyedEntry& e : entries) {
     if (has_problem_at(problems, first, e.ptr)) continue;
     std::vector<std::int64_t> frames;
@@ -405,16 +421,61 @@ void read_scalar_keyframes(Checker& c, const json& v, const std::string& ptr,
 
 }  // namespace detail
 
+namespace {
+
+/// What reading the entries gathers for the checks across fields.
+struct EntryRefs {
+  std::vector<Override> overrides;
+  std::vector<KeyedAt> keyed;
+  std::vector<AnchorAt> anchors;
+};
+
+/// Reads /effects: stack effects, flares and grains, each by its own reader.
+void read_entries(Checker& c, const json& entries, std::optional<std::int64_t> frames, Sidecar& out,
+                  EntryRefs& refs) {
+  if (!entries.is_array()) {
+    c.error("/effects", std::string("expected an array, found ") + type_name(entries));
+    return;
+  }
+  std::map<effects::EffectType, std::string> seen;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const std::string ep = "/effects/" + std::to_string(i);
+    // Extension types (several may coexist) have readers of their own.
+    const std::optional<effects::InterpolationSettings>* own = nullptr;
+    const effects::Anchor* anchor = nullptr;
+    int kind = 0;
+    if (is_flare_entry(entries[i])) {
+      read_flare(c, entries[i], ep, frames, out.flares.emplace_back());
+      own = &out.flares.back().interpolation;
+      anchor = &out.flares.back().anchor;
+      kind = 1;
+    } else if (is_grain_entry(entries[i])) {
+      read_grain(c, entries[i], ep, frames, out.grains.emplace_back());
+      own = &out.grains.back().interpolation;
+      anchor = &out.grains.back().anchor;
+      kind = 2;
+    } else {
+      read_effect(c, entries[i], ep, frames, seen, out.effects.emplace_back());
+      own = &out.effects.back().interpolation;
+      anchor = &out.effects.back().anchor;
+    }
+    if (*own) refs.overrides.emplace_back(ep + "/interpolation", **own);
+    refs.keyed.emplace_back(ep, kind);
+    if (!anchor->is_video()) refs.anchors.emplace_back(ep + "/anchor", *anchor);
+  }
+}
+
+}  // namespace
+
 Sidecar parse_sidecar(const json& document, const std::string& file_for_messages,
                       std::vector<Problem>& problems) {
   Sidecar out;
   const std::size_t first_problem = problems.size();
-  std::vector<Override> overrides;
-  std::vector<std::pair<std::string, int>> keyed;  // entry pointer, 0 stack / 1 flare / 2 grain
   Checker c(file_for_messages, problems);
   const json* root = c.object(document, "");
   if (!root) return out;
-  c.only_keys(*root, "", {"format", "version", "video", "interpolation", "effects"});
+  c.only_keys(*root, "",
+              {"format", "version", "video", "interpolation", "effects", "camera", "tracks"});
 
   // A file that is not a vdfx sidecar at all gets one clear message, not a cascade.
   const json* format = c.member(*root, "", "format");
@@ -445,45 +506,18 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
 
   if (const json* p = c.member(*root, "", "interpolation"))
     read_interpolation(c, *p, "/interpolation", out.interpolation);
+  // Frames of reference (optional: contract "Frames of reference").
+  if (const json* p = c.member(*root, "", "camera", /*required=*/false))
+    read_camera(c, *p, frames, out.camera);
+  if (const json* p = c.member(*root, "", "tracks", /*required=*/false))
+    read_tracks(c, *p, frames, out.tracks);
 
-  if (const json* p = c.member(*root, "", "effects")) {
-    if (!p->is_array()) {
-      c.error("/effects", std::string("expected an array, found ") + type_name(*p));
-    } else {
-      std::map<effects::EffectType, std::string> seen;
-      for (std::size_t i = 0; i < p->size(); ++i) {
-        const std::string ep = "/effects/" + std::to_string(i);
-        // Extension types (several may coexist) have readers of their own.
-        const std::optional<effects::InterpolationSettings>* own = nullptr;
-        if (is_flare_entry((*p)[i])) {
-          read_flare(c, (*p)[i], ep, frames, out.flares.emplace_back());
-          own = &out.flares.back().interpolation;
-        } else if (is_grain_entry((*p)[i])) {
-          read_grain(c, (*p)[i], ep, frames, out.grains.emplace_back());
-          own = &out.grains.back().interpolation;
-        } else {
-          read_effect(c, (*p)[i], ep, frames, seen, out.effects.emplace_back());
-          own = &out.effects.back().interpolation;
-        }
-        if (*own) overrides.emplace_back(ep + "/interpolation", **own);
-        keyed.emplace_back(ep, is_flare_entry((*p)[i]) ? 1 : (is_grain_entry((*p)[i]) ? 2 : 0));
-      }
-    }
-  }
+  EntryRefs refs;
+  if (const json* p = c.member(*root, "", "effects")) read_entries(c, *p, frames, out, refs);
   // Checks across fields, each in a function of its own.
-  check_time_scaling(c, out, overrides, problems, first_problem);
-  std::vector<KeyedEntry> entries;
-  std::size_t next[3] = {0, 0, 0};
-  for (const auto& [ptr, kind] : keyed) {
-    const std::size_t i = next[kind]++;
-    if (kind == 1)
-      entries.push_back({ptr, &out.flares[i].keyframes, out.flares[i].interpolation});
-    else if (kind == 2)
-      entries.push_back({ptr, &out.grains[i].keyframes, out.grains[i].interpolation});
-    else
-      entries.push_back({ptr, &out.effects[i].keyframes, out.effects[i].interpolation});
-  }
-  check_windows(c, out, entries, problems, first_problem);
+  check_time_scaling(c, out, refs.overrides, problems, first_problem);
+  check_windows(c, out, refs.keyed, problems, first_problem);
+  check_anchors(c, out, refs.anchors);
   return out;
 }
 

@@ -220,103 +220,21 @@ class LibavEncoder final : public VideoEncoder {
   LibavEncoder(const std::filesystem::path& path, const EncoderSettings& s)
       : settings_(s), report_name_((s.format_from.empty() ? path : s.format_from).string()) {
     av::limit_logs();
-    const std::string name = path.string();
-    const std::string& format_name = report_name_;
     if (s.width <= 0 || s.height <= 0) throw std::invalid_argument("VideoEncoder: no picture size");
-    // The format follows format_from's name, but the context is named after the file really
-    // written: MP4's faststart pass reopens the context's own name.
-    const AVOutputFormat* oformat = av_guess_format(nullptr, format_name.c_str(), nullptr);
-    if (!oformat)
-      throw InputError(format_name +
-                       ": no container format for this file name (use .mp4, .mov or .mkv)");
-    AVFormatContext* raw = nullptr;
-    if (avformat_alloc_output_context2(&raw, oformat, nullptr, name.c_str()) < 0 || !raw)
-      throw std::runtime_error("VideoEncoder: cannot set up a " + std::string(oformat->name) +
-                               " file");
-    out_.reset(raw);
-    // Spherical Video V2 is an "unofficial" extension of ISO BMFF to libavformat.
-    out_->strict_std_compliance = FF_COMPLIANCE_UNOFFICIAL;
-
-    const AVCodec* codec = avcodec_find_encoder_by_name(s.codec.c_str());
-    if (!codec) throw InputError("no video encoder named '" + s.codec + "' in this FFmpeg");
-    codec_.reset(avcodec_alloc_context3(codec));
-    AVCodecContext* c = codec_.get();
-    c->width = s.width;
-    c->height = s.height;
-    c->pix_fmt = pixel_format(s.ycbcr);
-    c->framerate = q(s.frame_rate);
-    c->time_base =
-        s.time_base.num > 0 ? q(s.time_base) : AVRational{c->framerate.den, c->framerate.num};
-    c->sample_aspect_ratio = {1, 1};
-    c->thread_count = s.threads;
-    if (s.gop > 0) c->gop_size = s.gop;
-    if (s.max_b_frames >= 0) c->max_b_frames = s.max_b_frames;
-    tag_colour(c, s.ycbcr);
-    if (out_->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-    AVDictionary* opts = nullptr;
-    if (s.crf >= 0) av_dict_set(&opts, "crf", std::to_string(s.crf).c_str(), 0);
-    if (!s.preset.empty()) av_dict_set(&opts, "preset", s.preset.c_str(), 0);
-    for (const auto& [k, v] : s.codec_options) av_dict_set(&opts, k.c_str(), v.c_str(), 0);
-    int r = avcodec_open2(c, codec, &opts);
-    std::string unused;
-    for (const AVDictionaryEntry* e = nullptr;
-         (e = av_dict_get(opts, "", e, AV_DICT_IGNORE_SUFFIX));)
-      unused += std::string(unused.empty() ? "" : ", ") + e->key;
-    av_dict_free(&opts);
-    if (r < 0)
-      throw InputError("cannot open the " + s.codec + " encoder for " + std::to_string(s.width) +
-                       "x" + std::to_string(s.height) + " (" + av::error_text(r) + ")");
-    if (!unused.empty())
-      throw std::invalid_argument("VideoEncoder: " + s.codec + " does not know " + unused);
-
-    stream_ = avformat_new_stream(out_.get(), nullptr);
-    if (!stream_) throw std::runtime_error("VideoEncoder: cannot add the video stream");
-    stream_->time_base = c->time_base;
-    stream_->avg_frame_rate = c->framerate;
-    if (avcodec_parameters_from_context(stream_->codecpar, c) < 0)
-      throw std::runtime_error("VideoEncoder: cannot describe the video stream");
-    if (s.spherical_equirect) {
-      std::size_t size = 0;
-      AVSphericalMapping* m = av_spherical_alloc(&size);
-      if (m) set_equirect(*m, s.stereo.coverage_deg);
-      add_side_data(stream_, AV_PKT_DATA_SPHERICAL, m, size);
-      AVStereo3D* st3d = av_stereo3d_alloc();
-      if (st3d) set_stereo_mode(*st3d, s.stereo.mode);
-      add_side_data(stream_, AV_PKT_DATA_STEREO3D, st3d, sizeof(AVStereo3D));
-    } else if (s.stereo.stereo()) {  // a flat 3D video: the stereo mode alone
-      AVStereo3D* st3d = av_stereo3d_alloc();
-      if (st3d) set_stereo_mode(*st3d, s.stereo.mode);
-      add_side_data(stream_, AV_PKT_DATA_STEREO3D, st3d, sizeof(AVStereo3D));
-    }
-    if (s.display_rotation_deg % 360 != 0) {
-      auto* m = static_cast<std::int32_t*>(av_malloc(9 * sizeof(std::int32_t)));
-      // av_display_rotation_get(av_display_rotation_set(a)) is -a, and players (the ffmpeg
-      // command line among them) turn the picture clockwise by -get: so set(a) displays a turn of
-      // a degrees clockwise.
-      if (m) av_display_rotation_set(m, static_cast<double>(s.display_rotation_deg));
-      add_side_data(stream_, AV_PKT_DATA_DISPLAYMATRIX, m, 9 * sizeof(std::int32_t));
-    }
+    const std::string name = path.string();
+    open_container(name);
+    open_codec();
+    add_video_stream();
     if (!s.copy_audio_from.empty()) {
       audio_ = std::make_unique<AudioCopier>(s.copy_audio_from, out_.get(), s.audio_window);
       if (!audio_->has_streams()) audio_.reset();
     }
-
-    if (!(out_->oformat->flags & AVFMT_NOFILE)) {
-      r = avio_open(&out_->pb, name.c_str(), AVIO_FLAG_WRITE);
-      if (r < 0)
-        throw InputError(report_name_ + ": cannot open for writing (" + av::error_text(r) + ")");
-    }
-    AVDictionary* mux = nullptr;
-    if (s.faststart) av_dict_set(&mux, "movflags", "+faststart", 0);
-    r = avformat_write_header(out_.get(), &mux);
-    av_dict_free(&mux);
-    if (r < 0)
-      throw InputError(report_name_ + ": cannot write the header (" + av::error_text(r) + ")");
+    write_header(name);
     frame_ = av::make_frame();
     packet_ = av::make_packet();
-    frame_->format = c->pix_fmt;
-    frame_->width = c->width;
-    frame_->height = c->height;
+    frame_->format = codec_->pix_fmt;
+    frame_->width = codec_->width;
+    frame_->height = codec_->height;
   }
 
   void write(const Picture& p, std::int64_t pts) override {
@@ -370,6 +288,108 @@ class LibavEncoder final : public VideoEncoder {
   }
 
  private:
+  /// The output's format context, its format from format_from's name (else the file's), the
+  /// context named after the file really written: MP4's faststart pass reopens that name.
+  void open_container(const std::string& name) {
+    const std::string& format_name = report_name_;
+    const AVOutputFormat* oformat = av_guess_format(nullptr, format_name.c_str(), nullptr);
+    if (!oformat)
+      throw InputError(format_name +
+                       ": no container format for this file name (use .mp4, .mov or .mkv)");
+    AVFormatContext* raw = nullptr;
+    if (avformat_alloc_output_context2(&raw, oformat, nullptr, name.c_str()) < 0 || !raw)
+      throw std::runtime_error("VideoEncoder: cannot set up a " + std::string(oformat->name) +
+                               " file");
+    out_.reset(raw);
+    // Spherical Video V2 is an "unofficial" extension of ISO BMFF to libavformat.
+    out_->strict_std_compliance = FF_COMPLIANCE_UNOFFICIAL;
+  }
+
+  /// The encoder, set up and opened with the settings' options; an option it does not know is
+  /// an error, not ignored.
+  void open_codec() {
+    const EncoderSettings& s = settings_;
+    const AVCodec* codec = avcodec_find_encoder_by_name(s.codec.c_str());
+    if (!codec) throw InputError("no video encoder named '" + s.codec + "' in this FFmpeg");
+    codec_.reset(avcodec_alloc_context3(codec));
+    AVCodecContext* c = codec_.get();
+    c->width = s.width;
+    c->height = s.height;
+    c->pix_fmt = pixel_format(s.ycbcr);
+    c->framerate = q(s.frame_rate);
+    c->time_base =
+        s.time_base.num > 0 ? q(s.time_base) : AVRational{c->framerate.den, c->framerate.num};
+    c->sample_aspect_ratio = {1, 1};
+    c->thread_count = s.threads;
+    if (s.gop > 0) c->gop_size = s.gop;
+    if (s.max_b_frames >= 0) c->max_b_frames = s.max_b_frames;
+    tag_colour(c, s.ycbcr);
+    if (out_->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+    AVDictionary* opts = nullptr;
+    if (s.crf >= 0) av_dict_set(&opts, "crf", std::to_string(s.crf).c_str(), 0);
+    if (!s.preset.empty()) av_dict_set(&opts, "preset", s.preset.c_str(), 0);
+    for (const auto& [k, v] : s.codec_options) av_dict_set(&opts, k.c_str(), v.c_str(), 0);
+    const int r = avcodec_open2(c, codec, &opts);
+    std::string unused;
+    for (const AVDictionaryEntry* e = nullptr;
+         (e = av_dict_get(opts, "", e, AV_DICT_IGNORE_SUFFIX));)
+      unused += std::string(unused.empty() ? "" : ", ") + e->key;
+    av_dict_free(&opts);
+    if (r < 0)
+      throw InputError("cannot open the " + s.codec + " encoder for " + std::to_string(s.width) +
+                       "x" + std::to_string(s.height) + " (" + av::error_text(r) + ")");
+    if (!unused.empty())
+      throw std::invalid_argument("VideoEncoder: " + s.codec + " does not know " + unused);
+  }
+
+  /// The video stream as the encoder describes it, with its spherical, stereo and display
+  /// rotation side data.
+  void add_video_stream() {
+    const EncoderSettings& s = settings_;
+    stream_ = avformat_new_stream(out_.get(), nullptr);
+    if (!stream_) throw std::runtime_error("VideoEncoder: cannot add the video stream");
+    stream_->time_base = codec_->time_base;
+    stream_->avg_frame_rate = codec_->framerate;
+    if (avcodec_parameters_from_context(stream_->codecpar, codec_.get()) < 0)
+      throw std::runtime_error("VideoEncoder: cannot describe the video stream");
+    if (s.spherical_equirect) {
+      std::size_t size = 0;
+      AVSphericalMapping* m = av_spherical_alloc(&size);
+      if (m) set_equirect(*m, s.stereo.coverage_deg);
+      add_side_data(stream_, AV_PKT_DATA_SPHERICAL, m, size);
+    }
+    // The stereo mode: beside the projection, or alone for a flat 3D video.
+    if (s.spherical_equirect || s.stereo.stereo()) {
+      AVStereo3D* st3d = av_stereo3d_alloc();
+      if (st3d) set_stereo_mode(*st3d, s.stereo.mode);
+      add_side_data(stream_, AV_PKT_DATA_STEREO3D, st3d, sizeof(AVStereo3D));
+    }
+    if (s.display_rotation_deg % 360 != 0) {
+      auto* m = static_cast<std::int32_t*>(av_malloc(9 * sizeof(std::int32_t)));
+      // av_display_rotation_get(av_display_rotation_set(a)) is -a, and players (the ffmpeg
+      // command line among them) turn the picture clockwise by -get: so set(a) displays a turn of
+      // a degrees clockwise.
+      if (m) av_display_rotation_set(m, static_cast<double>(s.display_rotation_deg));
+      add_side_data(stream_, AV_PKT_DATA_DISPLAYMATRIX, m, 9 * sizeof(std::int32_t));
+    }
+  }
+
+  /// Opens the file (unless the format writes none) and writes the container's header.
+  void write_header(const std::string& name) {
+    int r = 0;
+    if (!(out_->oformat->flags & AVFMT_NOFILE)) {
+      r = avio_open(&out_->pb, name.c_str(), AVIO_FLAG_WRITE);
+      if (r < 0)
+        throw InputError(report_name_ + ": cannot open for writing (" + av::error_text(r) + ")");
+    }
+    AVDictionary* mux = nullptr;
+    if (settings_.faststart) av_dict_set(&mux, "movflags", "+faststart", 0);
+    r = avformat_write_header(out_.get(), &mux);
+    av_dict_free(&mux);
+    if (r < 0)
+      throw InputError(report_name_ + ": cannot write the header (" + av::error_text(r) + ")");
+  }
+
   void send(const AVFrame* f) {
     int r = avcodec_send_frame(codec_.get(), f);
     if (r < 0) throw std::runtime_error("VideoEncoder: encoding failed: " + av::error_text(r));

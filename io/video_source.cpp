@@ -72,85 +72,91 @@ void VideoSource::run() {
     flush_warnings(lock);
     changed_.wait(lock, [&] { return stop_ || seek_pending_ || wants_decode(); });
     if (stop_) return;
-
-    if (seek_pending_ || at_end_) {
-      // A requested seek, or the wrap of a loop (which keeps the queued frames).
-      const bool wrap = !seek_pending_;
-      const std::int64_t to = wrap ? 0 : next_;
-      const std::uint64_t epoch = epoch_;
-      seek_pending_ = false;
-      lock.unlock();
-      std::string error;
-      try {
-        decoder_->seek(to);
-      } catch (const std::exception& e) {
-        error = e.what();
-      }
-      lock.lock();
-      if (epoch != epoch_) continue;  // superseded by a newer seek
-      if (!wrap) ++stats_.seeks;
-      if (wrap) {
-        next_ = 0;
-        at_end_ = false;
-      }
-      if (!error.empty()) {
-        // The read that follows counts the failure and skips on.
-        warn("seek to frame " + std::to_string(to) + " failed: " + error);
-      }
-      consecutive_errors_ = 0;
-      continue;
-    }
-
-    const std::int64_t index = next_;
-    const std::uint64_t epoch = epoch_;
-    lock.unlock();
-    Picture picture;
-    DecodeStatus status = DecodeStatus::Error;
-    try {
-      status = decoder_->read_picture(picture);
-    } catch (const std::exception&) {
-      status = DecodeStatus::Error;
-    }
-    lock.lock();
-    if (epoch != epoch_) continue;  // a seek arrived while decoding: this frame is stale
-
-    switch (status) {
-      case DecodeStatus::Ok:
-        queue_.push({index, std::move(picture)});
-        ++stats_.decoded;
-        consecutive_errors_ = 0;
-        next_ = index + 1;
-        break;
-      case DecodeStatus::Error:
-        ++stats_.decode_errors;
-        ++consecutive_errors_;
-        next_ = index + 1;
-        warn("frame " + std::to_string(index) + " could not be decoded; skipped");
-        if (consecutive_errors_ >= options_.max_consecutive_errors) {
-          const std::int64_t end = index + 1 - consecutive_errors_;
-          warn(std::to_string(consecutive_errors_) +
-               " frames in a row failed: the video ends at frame " + std::to_string(end) + " of " +
-               std::to_string(props_.frames) + " (truncated?)");
-          limit_ = std::max<std::int64_t>(end, 1);
-          stats_.ended_early = true;
-          stats_.end = limit_;
-          at_end_ = true;
-        }
-        break;
-      case DecodeStatus::End:
-        if (index < limit_) {
-          warn("the video ends at frame " + std::to_string(index) + " of " +
-               std::to_string(props_.frames) + " declared");
-          limit_ = std::max<std::int64_t>(index, 1);
-          stats_.ended_early = true;
-          stats_.end = limit_;
-        }
-        at_end_ = true;
-        break;
-    }
-    if (next_ >= limit_) at_end_ = true;
-    changed_.notify_all();
+    if (seek_pending_ || at_end_)
+      seek_decoder(lock);
+    else
+      decode_next(lock);
   }
+}
+
+void VideoSource::seek_decoder(std::unique_lock<std::mutex>& lock) {
+  // A requested seek, or the wrap of a loop (which keeps the queued frames).
+  const bool wrap = !seek_pending_;
+  const std::int64_t to = wrap ? 0 : next_;
+  const std::uint64_t epoch = epoch_;
+  seek_pending_ = false;
+  lock.unlock();
+  std::string error;
+  try {
+    decoder_->seek(to);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  lock.lock();
+  if (epoch != epoch_) return;  // superseded by a newer seek
+  if (!wrap) ++stats_.seeks;
+  if (wrap) {
+    next_ = 0;
+    at_end_ = false;
+  }
+  if (!error.empty()) {
+    // The read that follows counts the failure and skips on.
+    warn("seek to frame " + std::to_string(to) + " failed: " + error);
+  }
+  consecutive_errors_ = 0;
+}
+
+void VideoSource::decode_next(std::unique_lock<std::mutex>& lock) {
+  const std::int64_t index = next_;
+  const std::uint64_t epoch = epoch_;
+  lock.unlock();
+  Picture picture;
+  DecodeStatus status = DecodeStatus::Error;
+  try {
+    status = decoder_->read_picture(picture);
+  } catch (const std::exception&) {
+    status = DecodeStatus::Error;
+  }
+  lock.lock();
+  if (epoch != epoch_) return;  // a seek arrived while decoding: this frame is stale
+  switch (status) {
+    case DecodeStatus::Ok:
+      queue_.push({index, std::move(picture)});
+      ++stats_.decoded;
+      consecutive_errors_ = 0;
+      next_ = index + 1;
+      break;
+    case DecodeStatus::Error: decode_failed(index); break;
+    case DecodeStatus::End:
+      if (index < limit_) {
+        warn("the video ends at frame " + std::to_string(index) + " of " +
+             std::to_string(props_.frames) + " declared");
+        end_early(index);
+      }
+      at_end_ = true;
+      break;
+  }
+  if (next_ >= limit_) at_end_ = true;
+  changed_.notify_all();
+}
+
+void VideoSource::decode_failed(std::int64_t index) {
+  ++stats_.decode_errors;
+  ++consecutive_errors_;
+  next_ = index + 1;
+  warn("frame " + std::to_string(index) + " could not be decoded; skipped");
+  if (consecutive_errors_ < options_.max_consecutive_errors) return;
+  const std::int64_t end = index + 1 - consecutive_errors_;
+  warn(std::to_string(consecutive_errors_) + " frames in a row failed: the video ends at frame " +
+       std::to_string(end) + " of " + std::to_string(props_.frames) + " (truncated?)");
+  end_early(end);
+  at_end_ = true;
+}
+
+void VideoSource::end_early(std::int64_t end) {
+  limit_ = std::max<std::int64_t>(end, 1);
+  stats_.ended_early = true;
+  stats_.end = limit_;
 }
 
 void VideoSource::request_seek(std::int64_t index) {

@@ -72,7 +72,12 @@ class VideoSource {
   VideoStats stats() const;
 
  private:
-  void run();
+  void run();  //!< the worker: seeks and decodes until stopped
+  // The worker's steps, called with the lock held (released while the decoder works).
+  void seek_decoder(std::unique_lock<std::mutex>& lock);  //!< a requested seek or a loop's wrap
+  void decode_next(std::unique_lock<std::mutex>& lock);   //!< frame next_ into the queue
+  void decode_failed(std::int64_t index);  //!< counts it; too many in a row end the video
+  void end_early(std::int64_t end);        //!< the video holds only frames before `end`
   bool wants_decode() const;
   void request_seek(std::int64_t index);
   void warn(const std::string& message);  //!< queued; the worker reports it unlocked

@@ -3,6 +3,7 @@
 #include "io/ycbcr.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <opencv2/core/utility.hpp>
 #include <stdexcept>
@@ -209,6 +210,115 @@ void filter_line(const TentFilter& f, const float* src, float* out, int out_n) {
   }
 }
 
+/// R'G'B' -> Y'CbCr codes of one conversion (rgb_to_ycbcr), its constants in float.
+struct ToCodes {
+  std::array<float, 9> m{};  //!< rows Y', Cb, Cr of rgb_to_ycbcr_map
+  std::array<float, 3> offset{};
+  float top = 255.0f;  //!< the largest code
+  bool deep = false;   //!< 16-bit planes, codes LSB-aligned (io/picture.h)
+};
+
+/// The code of a value: codes are never negative here (offsets >= 0, inputs clamped), so
+/// rounding is + 0.5 and a cut.
+template <typename T>
+inline T code_of(float v, float top) {
+  return static_cast<T>(std::clamp(v + 0.5f, 0.0f, top));
+}
+
+/// Row y of an R'G'B' image (8-bit or float) as three lines of floats in [0, 1].
+void read_rgb_row(const cv::Mat& rgb, int y, float* r, float* g, float* b) {
+  const int w = rgb.cols;
+  if (rgb.depth() == CV_8U) {
+    const std::uint8_t* s = rgb.ptr<std::uint8_t>(y);
+    for (int x = 0; x < w; ++x) {
+      r[x] = s[3 * x] * (1.0f / 255.0f);
+      g[x] = s[3 * x + 1] * (1.0f / 255.0f);
+      b[x] = s[3 * x + 2] * (1.0f / 255.0f);
+    }
+    return;
+  }
+  const float* s = rgb.ptr<float>(y);
+  for (int x = 0; x < w; ++x) {
+    r[x] = clamp01(s[3 * x]);
+    g[x] = clamp01(s[3 * x + 1]);
+    b[x] = clamp01(s[3 * x + 2]);
+  }
+}
+
+/// Luma codes of one row into `d`, and the row's Cb and Cr without their offsets into u, v.
+template <typename T>
+void luma_row(const ToCodes& c, const float* pr, const float* pg, const float* pb, int n, T* d,
+              float* pu, float* pv) {
+  // Byte stores may alias anything: locals (and no vector or capture reloads) let it vectorise.
+  const std::array<float, 9> k = c.m;
+  const float ko = c.offset[0], top = c.top;
+  for (int x = 0; x < n; ++x)
+    d[x] = code_of<T>(k[0] * pr[x] + k[1] * pg[x] + k[2] * pb[x] + ko, top);
+  for (int x = 0; x < n; ++x) {
+    pu[x] = k[3] * pr[x] + k[4] * pg[x] + k[5] * pb[x];
+    pv[x] = k[6] * pr[x] + k[7] * pg[x] + k[8] * pb[x];
+  }
+}
+
+/// The luma plane, and Cb and Cr (without their offsets) filtered along x onto the chroma
+/// columns, row by row: cb_h, cr_h are h x cw.
+void luma_and_chroma_columns(const cv::Mat& rgb, const ToCodes& c, const TentFilter& fx, Picture& p,
+                             cv::Mat& cb_h, cv::Mat& cr_h) {
+  const int w = rgb.cols, cw = cb_h.cols;
+  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
+    std::vector<float> r(static_cast<std::size_t>(w)), g(r.size()), b(r.size()), u(r.size()),
+        v(r.size());
+    for (int y = rows.start; y < rows.end; ++y) {
+      read_rgb_row(rgb, y, r.data(), g.data(), b.data());
+      if (c.deep)
+        luma_row(c, r.data(), g.data(), b.data(), w, p.planes[0].ptr<std::uint16_t>(y), u.data(),
+                 v.data());
+      else
+        luma_row(c, r.data(), g.data(), b.data(), w, p.planes[0].ptr<std::uint8_t>(y), u.data(),
+                 v.data());
+      filter_line(fx, u.data(), cb_h.ptr<float>(y), cw);
+      filter_line(fx, v.data(), cr_h.ptr<float>(y), cw);
+    }
+  });
+}
+
+/// Cb and Cr codes of one chroma row from their values (offsets included).
+template <typename T>
+void chroma_codes(const float* pu, const float* pv, int n, float top, T* cb, T* cr) {
+  for (int j = 0; j < n; ++j) {
+    cb[j] = code_of<T>(pu[j], top);
+    cr[j] = code_of<T>(pv[j], top);
+  }
+}
+
+/// The chroma planes: cb_h, cr_h filtered along y onto the chroma rows, offsets added, coded.
+void chroma_rows(const cv::Mat& cb_h, const cv::Mat& cr_h, const ToCodes& c, const TentFilter& fy,
+                 Picture& p) {
+  const int cw = cb_h.cols, ch = p.planes[1].rows;
+  const float o1 = c.offset[1], o2 = c.offset[2];
+  cv::parallel_for_(cv::Range(0, ch), [&](const cv::Range& rows) {
+    std::vector<float> u(static_cast<std::size_t>(cw)), v(u.size());
+    for (int i = rows.start; i < rows.end; ++i) {
+      std::fill(u.begin(), u.end(), o1);
+      std::fill(v.begin(), v.end(), o2);
+      for (const auto& [y, wgt] : fy.taps[static_cast<std::size_t>(i)]) {
+        const float* su = cb_h.ptr<float>(y);
+        const float* sv = cr_h.ptr<float>(y);
+        for (int j = 0; j < cw; ++j) {
+          u[j] += wgt * su[j];
+          v[j] += wgt * sv[j];
+        }
+      }
+      if (c.deep)
+        chroma_codes(u.data(), v.data(), cw, c.top, p.planes[1].ptr<std::uint16_t>(i),
+                     p.planes[2].ptr<std::uint16_t>(i));
+      else
+        chroma_codes(u.data(), v.data(), cw, c.top, p.planes[1].ptr<std::uint8_t>(i),
+                     p.planes[2].ptr<std::uint8_t>(i));
+    }
+  });
+}
+
 }  // namespace
 
 LumaWeights luma_weights(YcbcrMatrix matrix) {
@@ -286,105 +396,29 @@ Picture rgb_to_ycbcr(const cv::Mat& rgb, const YcbcrInfo& info) {
     throw std::invalid_argument("rgb_to_ycbcr: CV_32FC3 or CV_8UC3 RGB expected");
   if (info.bit_depth != 8 && info.bit_depth != 10)
     throw std::invalid_argument("rgb_to_ycbcr: 8- or 10-bit codes only");
-  const bool deep = info.bit_depth > 8;  // 16-bit planes, codes LSB-aligned (io/picture.h)
-  const float top = static_cast<float>((1 << info.bit_depth) - 1);
+  ToCodes c;
+  c.deep = info.bit_depth > 8;
+  c.top = static_cast<float>((1 << info.bit_depth) - 1);
   const AffineMap3 a = rgb_to_ycbcr_map(info);
+  for (int i = 0; i < 9; ++i) c.m[i] = static_cast<float>(a.m[i]);
+  for (int i = 0; i < 3; ++i) c.offset[i] = static_cast<float>(a.offset[i]);
   const int w = rgb.cols, h = rgb.rows;
   const int cw = (w + (1 << info.log2_chroma_w) - 1) >> info.log2_chroma_w;
   const int ch = (h + (1 << info.log2_chroma_h) - 1) >> info.log2_chroma_h;
   Picture p;
   p.ycbcr = info;
-  const int plane_type = deep ? CV_16UC1 : CV_8UC1;
+  const int plane_type = c.deep ? CV_16UC1 : CV_8UC1;
   p.planes[0].create(h, w, plane_type);
   p.planes[1].create(ch, cw, plane_type);
   p.planes[2].create(ch, cw, plane_type);
-  // Codes are never negative here (offsets >= 0, inputs clamped): rounding is + 0.5 and a cut.
-  auto code = [](float v) { return static_cast<std::uint8_t>(std::clamp(v + 0.5f, 0.0f, 255.0f)); };
-  auto code16 = [top](float v) {
-    return static_cast<std::uint16_t>(std::clamp(v + 0.5f, 0.0f, top));
-  };
-  std::array<float, 9> m{};
-  for (int i = 0; i < 9; ++i) m[i] = static_cast<float>(a.m[i]);
-  const float o0 = static_cast<float>(a.offset[0]);
   // Chroma: Cb and Cr of the clamped R'G'B' (without their offsets) filtered along x onto the
   // chroma columns, row by row with the luma; then along y. The filter is linear, so this is
   // filtering R'G'B' down to the chroma grid and converting there.
   const TentFilter fx = tent_filter(cw, w, info.log2_chroma_w, info.chroma_x);
   const TentFilter fy = tent_filter(ch, h, info.log2_chroma_h, info.chroma_y);
   cv::Mat cb_h(h, cw, CV_32FC1), cr_h(h, cw, CV_32FC1);
-  cv::parallel_for_(cv::Range(0, h), [&](const cv::Range& rows) {
-    std::vector<float> r(static_cast<std::size_t>(w)), g(r.size()), b(r.size()), u(r.size()),
-        v(r.size());
-    for (int y = rows.start; y < rows.end; ++y) {
-      if (rgb.depth() == CV_8U) {
-        const std::uint8_t* s = rgb.ptr<std::uint8_t>(y);
-        for (int x = 0; x < w; ++x) {
-          r[x] = s[3 * x] * (1.0f / 255.0f);
-          g[x] = s[3 * x + 1] * (1.0f / 255.0f);
-          b[x] = s[3 * x + 2] * (1.0f / 255.0f);
-        }
-      } else {
-        const float* s = rgb.ptr<float>(y);
-        for (int x = 0; x < w; ++x) {
-          r[x] = clamp01(s[3 * x]);
-          g[x] = clamp01(s[3 * x + 1]);
-          b[x] = clamp01(s[3 * x + 2]);
-        }
-      }
-      // Byte stores may alias anything: locals (and no vector or capture reloads) let it vectorise.
-      const float *pr = r.data(), *pg = g.data(), *pb = b.data();
-      float *pu = u.data(), *pv = v.data();
-      const std::array<float, 9> k = m;
-      const float ko = o0;
-      const int n = w;
-      if (deep) {
-        std::uint16_t* d = p.planes[0].ptr<std::uint16_t>(y);
-        for (int x = 0; x < n; ++x) d[x] = code16(k[0] * pr[x] + k[1] * pg[x] + k[2] * pb[x] + ko);
-      } else {
-        std::uint8_t* d = p.planes[0].ptr<std::uint8_t>(y);
-        for (int x = 0; x < n; ++x) d[x] = code(k[0] * pr[x] + k[1] * pg[x] + k[2] * pb[x] + ko);
-      }
-      for (int x = 0; x < n; ++x) {
-        pu[x] = k[3] * pr[x] + k[4] * pg[x] + k[5] * pb[x];
-        pv[x] = k[6] * pr[x] + k[7] * pg[x] + k[8] * pb[x];
-      }
-      filter_line(fx, u.data(), cb_h.ptr<float>(y), cw);
-      filter_line(fx, v.data(), cr_h.ptr<float>(y), cw);
-    }
-  });
-  const float o1 = static_cast<float>(a.offset[1]), o2 = static_cast<float>(a.offset[2]);
-  cv::parallel_for_(cv::Range(0, ch), [&](const cv::Range& rows) {
-    std::vector<float> u(static_cast<std::size_t>(cw)), v(u.size());
-    for (int i = rows.start; i < rows.end; ++i) {
-      std::fill(u.begin(), u.end(), o1);
-      std::fill(v.begin(), v.end(), o2);
-      for (const auto& [y, wgt] : fy.taps[static_cast<std::size_t>(i)]) {
-        const float* su = cb_h.ptr<float>(y);
-        const float* sv = cr_h.ptr<float>(y);
-        for (int j = 0; j < cw; ++j) {
-          u[j] += wgt * su[j];
-          v[j] += wgt * sv[j];
-        }
-      }
-      const float *pu = u.data(), *pv = v.data();
-      const int n = cw;
-      if (deep) {
-        std::uint16_t* cb = p.planes[1].ptr<std::uint16_t>(i);
-        std::uint16_t* cr = p.planes[2].ptr<std::uint16_t>(i);
-        for (int j = 0; j < n; ++j) {
-          cb[j] = code16(pu[j]);
-          cr[j] = code16(pv[j]);
-        }
-        continue;
-      }
-      std::uint8_t* cb = p.planes[1].ptr<std::uint8_t>(i);
-      std::uint8_t* cr = p.planes[2].ptr<std::uint8_t>(i);
-      for (int j = 0; j < n; ++j) {
-        cb[j] = code(pu[j]);
-        cr[j] = code(pv[j]);
-      }
-    }
-  });
+  luma_and_chroma_columns(rgb, c, fx, p, cb_h, cr_h);
+  chroma_rows(cb_h, cr_h, c, fy, p);
   return p;
 }
 

@@ -1,6 +1,6 @@
 /// @file
-/// @brief Y'CbCr <-> R'G'B' conversion: the formulas the GPU uses (xr/video_layer_gl.cpp) and the
-/// CPU reference path (export, `vdfx render`, tests).
+/// @brief Y'CbCr <-> R'G'B' conversion: the formulas the GPU uses (xr/render/video_layer.cpp) and
+/// the CPU reference path (export, `vdfx render`, tests).
 ///
 /// ITU-R BT.601 / BT.709 / BT.2020 (non-constant luminance) with luma weights Kr, Kb
 /// (Kg = 1 - Kr - Kb), and the code ranges of ITU-T H.273 for n-bit codes:

@@ -16,7 +16,7 @@
 #include "app/cli/command_registry.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
-#include "xr/gl_context.h"
+#include "xr/render/gl_context.h"
 
 namespace vdfx::app::bench {
 namespace {

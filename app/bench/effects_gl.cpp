@@ -14,7 +14,7 @@
 #include "effects/effect_shaders.h"
 #include "effects/effect_stack.h"
 #include "effects/gaussian_blur.h"
-#include "xr/effect_stack_gl.h"
+#include "xr/render/effect_stack_gl.h"
 
 namespace vdfx::app::bench {
 namespace {

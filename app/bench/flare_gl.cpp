@@ -2,7 +2,7 @@
 /// @brief Flare knob of `vdfx bench`: one eye of the play frame (generic90, exposure, mesh
 /// pre-distortion) with a flare of each style, timed interleaved with the same eye without it;
 /// the error of the GPU flare layer against the CPU reference (effects::add_flares) drawn alone.
-#include "xr/flare_gl.h"
+#include "xr/render/flare_gl.h"
 
 #include <epoxy/gl.h>
 
@@ -13,8 +13,8 @@
 #include "app/bench/gl_rows.h"
 #include "app/bench/inputs.h"
 #include "effects/flare_render.h"
-#include "xr/compositor.h"
-#include "xr/eye_views.h"
+#include "xr/headset/eye_views.h"
+#include "xr/render/compositor.h"
 
 namespace vdfx::app::bench {
 namespace {

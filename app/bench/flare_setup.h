@@ -5,7 +5,7 @@
 #pragma once
 
 #include "effects/flare_layout.h"
-#include "xr/session.h"
+#include "xr/headset/session.h"
 
 namespace vdfx::app::bench {
 

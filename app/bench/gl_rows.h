@@ -13,9 +13,9 @@
 #include "app/bench/registry.h"
 #include "app/bench/report.h"
 #include "app/bench/timing.h"
-#include "xr/eye_layer.h"
-#include "xr/gl_texture.h"
-#include "xr/render_view.h"
+#include "xr/headset/render_view.h"
+#include "xr/render/eye_layer.h"
+#include "xr/render/gl_texture.h"
 
 namespace vdfx::app::bench {
 

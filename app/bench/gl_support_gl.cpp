@@ -12,10 +12,10 @@
 #include "app/bench/gl_rows.h"
 #include "app/bench/inputs.h"
 #include "effects/effect_shaders.h"
-#include "xr/compositor.h"
-#include "xr/effect_stack_gl.h"
-#include "xr/eye_views.h"
-#include "xr/video_layer.h"
+#include "xr/headset/eye_views.h"
+#include "xr/render/compositor.h"
+#include "xr/render/effect_stack_gl.h"
+#include "xr/render/video_layer.h"
 
 namespace vdfx::app::bench {
 namespace {

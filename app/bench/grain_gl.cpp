@@ -4,7 +4,7 @@
 /// shader styles (headset plane, surface sphere) the GPU layer's error against the CPU reference
 /// (effects::composite_shader_grain) over the bench eye's image. The volumetric styles have no
 /// CPU reference: their rows give the time and say so.
-#include "xr/grain_gl.h"
+#include "xr/render/grain_gl.h"
 
 #include <epoxy/gl.h>
 
@@ -63,8 +63,8 @@ std::string count_name(int count) {
 
 /// CPU time of one refresh of an object cloud of `count` particles: the layout (parameters, the
 /// refresh's key), a new refresh index every sample; beside it (peer) the CPU sampling of the same
-/// particles that each refresh did before issue 24 (effects::sample_grain_particles on the CPU
-/// threads, the definition the GPU now evaluates).
+/// particles that each refresh did when particles were made on the CPU
+/// (effects::sample_grain_particles on the CPU threads, the definition the GPU now evaluates).
 void refresh_row(Row& row, const Context& ctx, int count) {
   effects::GrainSet set = grain_set(effects::GrainStyle::ObjectCloud, kIntensity, count);
   const effects::GrainEffect& e = set.effect(0);
@@ -113,12 +113,12 @@ void particles_row(Row& row, const Context& ctx, effects::GrainStyle style, int 
 }
 
 void add_cost_knobs(Registry& r, bool quick) {
-  r.knob(
-      {kRefreshKnob,
-       "volumetric grain: CPU time of one refresh against the particle count (object_cloud)",
-       "refresh", "-", "none: a time only",
-       "the CPU sampling of the same particles before issue 24 (effects::sample_grain_particles)",
-       PlotError::Max, false, true});
+  r.knob({kRefreshKnob,
+          "volumetric grain: CPU time of one refresh against the particle count (object_cloud)",
+          "refresh", "-", "none: a time only",
+          "the CPU sampling of the same particles (effects::sample_grain_particles, as before the "
+          "GPU made them)",
+          PlotError::Max, false, true});
   r.knob({kParticlesKnob,
           "volumetric grain: the layer alone into one eye, its particles generated on the GPU",
           "layer draw", "-",

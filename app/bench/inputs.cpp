@@ -11,8 +11,8 @@
 #include <random>
 
 #include "effects/coords.h"
-#include "xr/eye_views.h"
-#include "xr/hmd_profile.h"
+#include "xr/headset/eye_views.h"
+#include "xr/headset/hmd_profile.h"
 
 namespace vdfx::app::bench {
 

@@ -11,7 +11,7 @@
 #include "effects/effect_types.h"
 #include "effects/keyframe.h"
 #include "effects/lens_model.h"
-#include "xr/session.h"
+#include "xr/headset/session.h"
 
 namespace vdfx::app::bench {
 

@@ -10,7 +10,7 @@
 #include "app/bench/gl_rows.h"
 #include "app/bench/inputs.h"
 #include "effects/distortion_mesh.h"
-#include "xr/distortion_gl.h"
+#include "xr/render/distortion_gl.h"
 
 namespace vdfx::app::bench {
 namespace {

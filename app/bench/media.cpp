@@ -30,10 +30,9 @@ cv::Mat media_frame(int i, int w, int h) {
   return m;
 }
 
-fs::path media_clip(const std::string& name, int w, int h, int frames, int fps,
-                    const ClipFormat& format) {
-  const fs::path p = fs::temp_directory_path() / name;
-  if (fs::exists(p)) return p;
+fs::path encode_clip(const fs::path& path, int w, int h, int frames, int fps,
+                     const std::function<cv::Mat(int)>& frame, const ClipFormat& format) {
+  if (fs::exists(path)) return path;
   io::EncoderSettings s;
   s.codec = format.codec;
   if (format.codec == "libx265") s.codec_options["x265-params"] = "log-level=error";
@@ -45,12 +44,19 @@ fs::path media_clip(const std::string& name, int w, int h, int frames, int fps,
   s.crf = 20;
   s.preset = "veryfast";
   // Written aside and renamed, so an interrupted run leaves no half clip under the final name.
-  const fs::path tmp = p.string() + ".part.mp4";
+  const fs::path tmp = path.string() + ".part.mp4";
   auto enc = io::VideoEncoder::create(tmp, s);
-  for (int i = 0; i < frames; ++i) enc->write(io::rgb_to_ycbcr(media_frame(i, w, h), s.ycbcr), i);
+  for (int i = 0; i < frames; ++i) enc->write(io::rgb_to_ycbcr(frame(i), s.ycbcr), i);
   enc->finish();
-  fs::rename(tmp, p);
-  return p;
+  fs::rename(tmp, path);
+  return path;
+}
+
+fs::path media_clip(const std::string& name, int w, int h, int frames, int fps,
+                    const ClipFormat& format) {
+  return encode_clip(
+      fs::temp_directory_path() / name, w, h, frames, fps,
+      [w, h](int i) { return media_frame(i, w, h); }, format);
 }
 
 namespace {

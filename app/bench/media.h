@@ -31,6 +31,12 @@ struct ClipFormat {
   effects::StereoLayout stereo;
 };
 
+/// `frames` frames (RGB 8-bit, w x h, frame(i) the i-th) encoded as media_clip encodes, at `path`;
+/// made only when no file is there yet.
+std::filesystem::path encode_clip(const std::filesystem::path& path, int w, int h, int frames,
+                                  int fps, const std::function<cv::Mat(int)>& frame,
+                                  const ClipFormat& format = {});
+
 /// The clip of `frames` media_frame()s as w x h H.264 (libx264 veryfast, crf 20: B-frames and
 /// CABAC, as delivered files have), or as `format` says, at `fps`, at temp/<name>; made on first
 /// use.

@@ -5,7 +5,6 @@
 /// of the same player and picture in the same run. The simulated runtime is test code
 /// (tests/openxr_runtime, never installed): the row is skipped, saying so, where its manifest is
 /// not beside the executable.
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -18,9 +17,10 @@
 #include "app/window/player.h"
 #include "io/image_write.h"
 #include "io/sidecar.h"
+#include "io/temp_folder.h"
 #include "io/video_source.h"
-#include "xr/input_backend.h"
-#include "xr/openxr_runtime.h"
+#include "xr/input/input_backend.h"
+#include "xr/openxr/gl/openxr_runtime.h"
 
 namespace vdfx::app::bench {
 namespace {
@@ -41,17 +41,9 @@ std::optional<fs::path> test_runtime_manifest() {
 
 /// The play frame as a still: the synthetic 4K frame in a folder of its own, removed after.
 struct StillFile {
-  fs::path dir, path;
-  StillFile() {
-    dir = fs::temp_directory_path() / ("vdfx-bench-openxr-" + std::to_string(getpid()));
-    fs::create_directories(dir);
-    path = dir / "frame.png";
-    io::write_png(path, synthetic_frame());
-  }
-  ~StillFile() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
+  io::TempFolder dir{"vdfx-bench-openxr"};
+  fs::path path = dir.path() / "frame.png";
+  StillFile() { io::write_png(path, synthetic_frame()); }
 };
 
 /// `vdfx play`'s exposure +0.5 (one keyframe: the same everywhere).

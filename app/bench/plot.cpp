@@ -18,6 +18,7 @@
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/temp_folder.h"
 
 extern char** environ;
 
@@ -317,11 +318,10 @@ std::string script_for(const Knob& k, const std::vector<const Row*>& rows,
 }  // namespace
 
 std::string gnuplot_problem() {
-  const auto log = std::filesystem::temp_directory_path() /
-                   ("vdfx-gnuplot-check-" + std::to_string(getpid()) + ".txt");
+  const io::TempFolder work("vdfx-gnuplot-check");
+  const auto log = work.path() / "check.txt";
   const int rc = run_gnuplot({"-e", "set terminal pngcairo"}, log);
   const std::string out = read_text(log);
-  std::filesystem::remove(log);
   if (rc == -1) return "gnuplot is not installed (Debian package gnuplot-nox)";
   if (rc != 0) return "gnuplot has no pngcairo terminal: " + out;
   return {};
@@ -329,37 +329,30 @@ std::string gnuplot_problem() {
 
 std::vector<std::filesystem::path> write_plots(const Report& report, const PlotOptions& o) {
   std::filesystem::create_directories(o.dir);
-  const auto work =
-      std::filesystem::temp_directory_path() / ("vdfx-bench-plot-" + std::to_string(getpid()));
-  std::filesystem::create_directories(work);
+  // gnuplot's work folder: new, vdfx's own, removed with what is in it however this ends.
+  const io::TempFolder temp("vdfx-bench-plot");
+  const std::filesystem::path& work = temp.path();
   std::vector<std::filesystem::path> written;
-  try {
-    for (const Knob& k : report.knobs) {
-      std::vector<const Row*> rows;
-      for (const Row& r : report.rows)
-        if (r.knob == k.id && r.status == RowStatus::Ok && std::isfinite(r.time.median_s) &&
-            std::isfinite(plotted_error(r, k)))
-          rows.push_back(&r);
-      if (rows.empty()) continue;
-      const auto png = o.dir / (k.id + ".png");
-      // gnuplot draws into the work folder; the finished picture then replaces PNG atomically (a
-      // killed run or a failing gnuplot never leaves a half-written plot, a link is written
-      // through).
-      const auto data = work / (k.id + ".dat"), script = work / (k.id + ".gp"),
-                 log = work / (k.id + ".log"), drawn = work / (k.id + ".png");
-      write_work_file(script, script_for(k, rows, data, drawn, o));
-      if (run_gnuplot({script.string()}, log) != 0 || !std::filesystem::exists(drawn)) {
-        throw std::runtime_error("gnuplot failed on the plot of " + k.id + ": " + read_text(log));
-      }
-      io::write_file_atomic(png, read_text(drawn));
-      written.push_back(png);
+  for (const Knob& k : report.knobs) {
+    std::vector<const Row*> rows;
+    for (const Row& r : report.rows)
+      if (r.knob == k.id && r.status == RowStatus::Ok && std::isfinite(r.time.median_s) &&
+          std::isfinite(plotted_error(r, k)))
+        rows.push_back(&r);
+    if (rows.empty()) continue;
+    const auto png = o.dir / (k.id + ".png");
+    // gnuplot draws into the work folder; the finished picture then replaces PNG atomically (a
+    // killed run or a failing gnuplot never leaves a half-written plot, a link is written
+    // through).
+    const auto data = work / (k.id + ".dat"), script = work / (k.id + ".gp"),
+               log = work / (k.id + ".log"), drawn = work / (k.id + ".png");
+    write_work_file(script, script_for(k, rows, data, drawn, o));
+    if (run_gnuplot({script.string()}, log) != 0 || !std::filesystem::exists(drawn)) {
+      throw std::runtime_error("gnuplot failed on the plot of " + k.id + ": " + read_text(log));
     }
-  } catch (...) {
-    std::error_code ec;
-    std::filesystem::remove_all(work, ec);
-    throw;
+    io::write_file_atomic(png, read_text(drawn));
+    written.push_back(png);
   }
-  std::filesystem::remove_all(work);
   return written;
 }
 

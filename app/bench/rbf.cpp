@@ -19,8 +19,8 @@
 #include "effects/rbf_interpolator.h"
 #include "effects/rbf_solve.h"
 #include "effects/stack_interpolator.h"
-#include "xr/param_grid.h"
-#include "xr/render_view.h"
+#include "xr/headset/render_view.h"
+#include "xr/render/param_grid.h"
 
 namespace vdfx::app::bench {
 namespace {

@@ -14,8 +14,8 @@
 #include "effects/equirect_sampler.h"
 #include "effects/view_camera.h"
 #include "effects/view_renderer.h"
-#include "xr/effect_stack_gl.h"
-#include "xr/video_layer.h"
+#include "xr/render/effect_stack_gl.h"
+#include "xr/render/video_layer.h"
 
 namespace vdfx::app::bench {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "app/cli/command_functions.h"
 #include "io/hid_device.h"
-#include "xr/hid_parsers.h"
+#include "xr/input/hid_parsers.h"
 
 namespace vdfx::app {
 

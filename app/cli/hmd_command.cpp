@@ -8,7 +8,7 @@
 
 #include "app/cli/command_functions.h"
 #include "effects/coords.h"
-#include "xr/hmd_profile.h"
+#include "xr/headset/hmd_profile.h"
 
 namespace vdfx::app {
 namespace {

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <vector>
 
-#include "xr/input_backend.h"
+#include "xr/input/input_backend.h"
 
 namespace vdfx::app {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "xr/actions.h"
+#include "xr/input/actions.h"
 
 namespace vdfx::app {
 

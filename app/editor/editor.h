@@ -34,7 +34,7 @@
 #include "app/editor/visualization_cache.h"
 #include "effects/effect_types.h"
 #include "io/frame_time.h"
-#include "xr/actions.h"
+#include "xr/input/actions.h"
 
 namespace vdfx::app {
 

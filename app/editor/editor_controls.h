@@ -10,7 +10,7 @@
 #include "app/editor/bindings.h"
 #include "app/editor/editor_panels.h"
 #include "ui/interaction.h"
-#include "xr/actions.h"
+#include "xr/input/actions.h"
 
 namespace vdfx::app {
 

@@ -46,7 +46,7 @@
 #include "ui/plot.h"
 #include "ui/slider.h"
 #include "ui/timeline_strip.h"
-#include "xr/actions.h"
+#include "xr/input/actions.h"
 
 namespace vdfx::app {
 

@@ -19,9 +19,11 @@
 #include "io/input_error.h"
 #include "io/output_path.h"
 #include "io/recording.h"
+#include "io/sidecar_target.h"
+#include "io/video_match.h"
 #include "ui/interaction.h"
-#include "xr/input_backend.h"
-#include "xr/render_view.h"
+#include "xr/headset/render_view.h"
+#include "xr/input/input_backend.h"
 
 namespace vdfx::app {
 
@@ -151,25 +153,25 @@ cv::Mat render_replay_frame(Editor& editor, EditorLayers& layers, const cv::Mat&
 /// The layout the editor shows (docs/stereo.md), recorded in `sidecar` as `vdfx edit` records
 /// it; a stereo-shaped untagged frame's hint joins the messages.
 effects::StereoLayout replay_layout(const io::VideoProperties& props, const ReplayOptions& o,
-                                    io::Sidecar& sidecar, ReplayResult& result) {
+                                    const std::optional<fs::path>& base, io::Sidecar& sidecar,
+                                    ReplayResult& result) {
   std::string hint;
-  const effects::StereoLayout layout = io::resolve_video_layout(
-      props, o.layout, &sidecar.video, o.sidecar_in.value_or(fs::path()), &hint);
+  const effects::StereoLayout layout =
+      io::resolve_video_layout(props, o.layout, &sidecar.video, base.value_or(fs::path()), &hint);
   if (!hint.empty()) result.messages.push_back(props.path.string() + ": " + hint);
+  if (base)
+    if (std::string w = io::video_mismatch(props, sidecar.video, *base); !w.empty())
+      result.messages.push_back("warning: " + w);
   io::record_layout(sidecar.video, layout);
   return layout;
 }
 
-/// The files an output must never replace; --sidecar-out is checked against them, and against
-/// an editor holding it, before any work.
-std::vector<io::NamedInput> checked_inputs(const ReplayOptions& o) {
+/// The files an output must never replace, --sidecar-out checked against them and against an
+/// editor holding it (io::resolve_sidecar_target), before any work.
+std::vector<io::NamedInput> checked_inputs(const ReplayOptions& o, io::SidecarTarget& target) {
   std::vector<io::NamedInput> inputs = {{"recording", o.recording}, {"--video", o.video}};
-  if (o.sidecar_in) inputs.push_back({"--sidecar-in", *o.sidecar_in});
-  io::check_output_is_not_input("--sidecar-out", o.sidecar_out, inputs);
-  io::resolve_output_path(o.sidecar_out);
-  // A sidecar open in an editor is its author's (written again at the end, where
-  // io::write_file_atomic checks once more).
-  io::check_not_locked_by_another(o.sidecar_out, "--sidecar-out");
+  target = io::resolve_sidecar_target({o.sidecar_in, o.sidecar_out, o.force}, inputs, o.log_prefix);
+  if (target.base) inputs.push_back({"--sidecar-in", *target.base});
   return inputs;
 }
 
@@ -218,7 +220,8 @@ void write_shot(Editor& editor, EditorLayers& layers, const ShotSource& src, std
 
 ReplayResult run_replay(const ReplayOptions& o) {
   ReplayResult result;
-  const std::vector<io::NamedInput> inputs = checked_inputs(o);
+  io::SidecarTarget target;
+  const std::vector<io::NamedInput> inputs = checked_inputs(o, target);
   io::Recording rec = io::read_recording(o.recording);
   for (const auto& w : rec.warnings) result.messages.push_back(w);
 
@@ -226,12 +229,13 @@ ReplayResult run_replay(const ReplayOptions& o) {
   dec_opts.format = io::PixelFormat::RgbF32;
   auto decoder = io::open_frame_decoder(o.video, dec_opts);
   const auto& props = decoder->properties();
-  io::Sidecar sidecar =
-      o.sidecar_in
-          ? io::read_sidecar(*o.sidecar_in)
-          : io::new_sidecar({o.video.string(), props.fps.value(),
-                             std::max<std::int64_t>(1, props.frames), props.width, props.height});
-  const ShotSource src{*decoder, replay_layout(props, o, sidecar, result), inputs};
+  io::Sidecar sidecar = io::read_sidecar_base(
+      target,
+      io::new_sidecar({o.video.string(), props.fps.value(), std::max<std::int64_t>(1, props.frames),
+                       props.width, props.height}));
+  const std::string note = io::sidecar_target_note(target, o.sidecar_out, sidecar);
+  if (!note.empty()) result.messages.push_back(note);
+  const ShotSource src{*decoder, replay_layout(props, o, target.base, sidecar, result), inputs};
   EditorOptions eo = editor_options_for(rec.header);
   eo.video = o.video;
   eo.async_suggestions = false;  // a suggestion lands in the update that asked for it

@@ -13,15 +13,17 @@
 #include "io/sidecar.h"
 #include "io/video_layout.h"
 #include "ui/panel.h"
-#include "xr/pose.h"
+#include "xr/headset/pose.h"
 
 namespace vdfx::app {
 
 struct ReplayOptions {
   std::filesystem::path recording;
   std::filesystem::path video;
-  std::optional<std::filesystem::path> sidecar_in;  //!< start from it (else an empty sidecar)
+  //! Start from it (else from an existing sidecar_out, else an empty sidecar).
+  std::optional<std::filesystem::path> sidecar_in;
   std::filesystem::path sidecar_out;
+  bool force = false;  //!< an existing sidecar_out may be replaced (io/sidecar_target.h)
   std::optional<std::filesystem::path> frames_dir;  //!< write mirror-like PNGs here
   int frame_images = 5;  //!< evenly spaced over the session, the last sample included
   int width = 1280;      //!< of each PNG
@@ -39,7 +41,9 @@ struct ReplayResult {
   std::vector<std::string> messages;  //!< warnings and notes for the user
 };
 
-/// Runs the session. Throws io::InputError for a bad recording (file and line), video or sidecar.
+/// Runs the session. An existing sidecar_out is what the session is replayed onto, or replaced
+/// only with `force` (io::resolve_sidecar_target). Throws io::InputError for a bad recording
+/// (file and line), video or sidecar, and for an sidecar_out that would be replaced.
 ReplayResult run_replay(const ReplayOptions& options);
 
 /// Draws the panels (premultiplied RGBA textures on their world quads) over an RGB8 view seen

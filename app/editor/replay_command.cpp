@@ -16,8 +16,12 @@ int cmd_replay(const Args& args) {
   std::string rec, video, in, out, frames;
   cli.add_option("recording", rec, "the recorded session (.vdrec.jsonl)")->required();
   cli.add_option("--video", video, "the video or panorama it was recorded on")->required();
-  cli.add_option("--sidecar-in", in, "start from this sidecar (default: no effects)");
+  cli.add_option(
+      "--sidecar-in", in,
+      "start from this sidecar (default: --sidecar-out when it exists, else no effects)");
   cli.add_option("--sidecar-out", out, "write the resulting sidecar here")->required();
+  cli.add_flag("--force", o.force,
+               "replace an existing --sidecar-out (without it, the session is replayed onto it)");
   cli.add_option("--frames", frames, "write a few mirror-like PNG frames to this folder");
   add_layout_options(cli, o.layout);
   if (const auto code = parse_cli(cli, args)) return *code;

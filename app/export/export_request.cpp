@@ -12,12 +12,13 @@
 #include <vector>
 
 #include "app/cli/command_registry.h"
+#include "app/cli/layout_options.h"
+#include "app/cli/progress.h"
 #include "app/export/baked_export.h"
 #include "app/export/layers.h"
 #include "app/export/output_file.h"
 #include "app/export/path_export.h"
 #include "app/export/pipeline.h"
-#include "app/export/progress.h"
 #include "effects/stack_interpolator.h"
 #include "io/eye_picture.h"
 #include "io/frame_decoder.h"
@@ -57,9 +58,7 @@ Inputs read_inputs(const ExportRequest& req) {
   dopts.format = io::PixelFormat::RgbF32;
   in.decoder = io::open_frame_decoder(req.video, dopts);
   in.props = in.decoder->properties();
-  std::string hint;
-  in.layout = io::resolve_video_layout(in.props, req.layout, &in.sidecar.video, req.sidecar, &hint);
-  if (!hint.empty()) std::cerr << "vdfx: hint: " << req.video.string() << ": " << hint << "\n";
+  in.layout = shown_layout(in.props, req.layout, &in.sidecar.video, req.sidecar);
   in.last_available = in.props.frames - 1;
   if (req.frames) {
     in.range = *req.frames;

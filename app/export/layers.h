@@ -14,7 +14,7 @@
 #include "effects/flare_set.h"
 #include "effects/grain_layout.h"
 #include "io/sidecar.h"
-#include "xr/render_view.h"
+#include "xr/headset/render_view.h"
 
 namespace vdfx::app {
 

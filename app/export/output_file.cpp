@@ -2,7 +2,6 @@
 /// @brief PendingOutput (temporary file + atomic rename) and InterruptGuard (SIGINT/SIGTERM).
 #include "app/export/output_file.h"
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -11,6 +10,7 @@
 #include <string>
 
 #include "io/atomic_file.h"
+#include "io/durable.h"
 #include "io/file_lock.h"
 #include "io/input_error.h"
 
@@ -23,13 +23,6 @@ std::atomic<int> g_signal{0};
 extern "C" void on_signal(int sig) {
   g_signal.store(sig);
   g_interrupted.store(true);
-}
-
-void fsync_path(const std::filesystem::path& p, int flags) {
-  const int fd = ::open(p.c_str(), flags | O_CLOEXEC);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
 }
 
 struct sigaction g_old_int {
@@ -60,12 +53,13 @@ PendingOutput::~PendingOutput() {
 void PendingOutput::commit() {
   struct stat old {};
   if (::stat(target_.c_str(), &old) == 0) ::chmod(temp_.c_str(), old.st_mode & 07777);
-  fsync_path(temp_, O_RDONLY);
+  // Best effort, as before the rename: the encoder has already closed the file.
+  io::fsync_written_file(temp_);
   if (::rename(temp_.c_str(), target_.c_str()) != 0)
     throw io::InputError("cannot write " + target_.string() + ": rename from " + temp_.string() +
                          " failed: " + std::strerror(errno));
   committed_ = true;
-  fsync_path(target_.parent_path().empty() ? "." : target_.parent_path(), O_RDONLY | O_DIRECTORY);
+  io::fsync_folder_entry(target_.parent_path());
 }
 
 InterruptGuard::InterruptGuard() {

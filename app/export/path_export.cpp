@@ -7,9 +7,9 @@
 #include "effects/equirect_sampler.h"
 #include "effects/view_renderer.h"
 #include "io/input_error.h"
-#include "xr/eye_views.h"
-#include "xr/hmd_profile.h"
-#include "xr/render_view.h"
+#include "xr/headset/eye_views.h"
+#include "xr/headset/hmd_profile.h"
+#include "xr/headset/render_view.h"
 
 namespace vdfx::app {
 

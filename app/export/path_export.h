@@ -17,7 +17,7 @@
 #include "effects/stereo_layout.h"
 #include "io/frame_time.h"
 #include "io/recording.h"
-#include "xr/render_view.h"
+#include "xr/headset/render_view.h"
 
 namespace vdfx::app {
 

@@ -13,8 +13,8 @@
 #include "app/export/view_render.h"
 #include "io/excerpt.h"
 #include "io/input_error.h"
-#include "xr/blur_method.h"
-#include "xr/hmd_profile.h"
+#include "xr/headset/hmd_profile.h"
+#include "xr/render/blur_method.h"
 
 namespace vdfx::app {
 

@@ -11,6 +11,7 @@
 
 #include "app/cli/command_registry.h"
 #include "app/cli/finite_params.h"
+#include "app/cli/layout_options.h"
 #include "app/cli/size_limits.h"
 #include "effects/distortion_mesh.h"
 #include "effects/effect_shaders.h"
@@ -26,14 +27,14 @@
 #include "io/input_error.h"
 #include "io/output_path.h"
 #include "io/sidecar_sets.h"
-#include "xr/compositor.h"
-#include "xr/effect_stack_gl.h"
-#include "xr/eye_views.h"
-#include "xr/flare_gl.h"
-#include "xr/gl_context.h"
-#include "xr/grain_gl.h"
-#include "xr/param_grid.h"
-#include "xr/render_view.h"
+#include "xr/headset/eye_views.h"
+#include "xr/headset/render_view.h"
+#include "xr/render/compositor.h"
+#include "xr/render/effect_stack_gl.h"
+#include "xr/render/flare_gl.h"
+#include "xr/render/gl_context.h"
+#include "xr/render/grain_gl.h"
+#include "xr/render/param_grid.h"
 
 namespace vdfx::app {
 
@@ -345,10 +346,8 @@ namespace {
 /// The frame's layout (command line, stream tags, sidecar) and the eye the request shows.
 EyeImage eye_image_of(const io::VideoProperties& video, const io::Sidecar& sidecar,
                       const RenderRequest& r) {
-  std::string hint;
   EyeImage eye;
-  eye.layout = io::resolve_video_layout(video, r.layout, &sidecar.video, r.sidecar_name, &hint);
-  if (!hint.empty()) std::cerr << "vdfx: hint: " << video.path.string() << ": " << hint << "\n";
+  eye.layout = shown_layout(video, r.layout, &sidecar.video, r.sidecar_name);
   if (r.eye_given && !r.hmd && !eye.layout.stereo())
     throw UsageError("--eye: needs --hmd or a stereo video (" + video.path.string() +
                      " is mono; --layout says otherwise)");

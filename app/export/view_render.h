@@ -14,9 +14,9 @@
 #include "io/picture.h"
 #include "io/sidecar.h"
 #include "io/video_layout.h"
-#include "xr/blur_method.h"
-#include "xr/distortion_gl.h"
-#include "xr/hmd_profile.h"
+#include "xr/headset/hmd_profile.h"
+#include "xr/render/blur_method.h"
+#include "xr/render/distortion_gl.h"
 
 namespace vdfx::app {
 

@@ -8,7 +8,7 @@
 #include "app/cli/command_functions.h"
 #include "app/window/hmd_openxr_command.h"
 #include "io/library_logs.h"
-#include "xr/gl_context.h"
+#include "xr/render/gl_context.h"
 
 namespace vdfx::app {
 

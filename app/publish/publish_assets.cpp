@@ -3,9 +3,12 @@
 #include "app/publish/publish_assets.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -18,6 +21,7 @@
 #include "effects/grain_shaders.h"
 #include "effects/stereo_layout.h"
 #include "effects/video_shaders.h"
+#include "io/file_type.h"
 #include "io/input_error.h"
 #include "io/ycbcr.h"
 
@@ -60,7 +64,7 @@ unsigned keyed_mask(const io::Sidecar& sidecar) {
 }
 
 /// The shared GLSL as the page compiles it: the ES prelude, then the same text the GL path
-/// compiles (xr/gl_program.h prepends the desktop prelude instead).
+/// compiles (xr/render/gl_program.h prepends the desktop prelude instead).
 void write_shaders(const fs::path& dir, unsigned mask) {
   fs::create_directory(dir);
   const std::string es = glsl::prelude(glsl::Target::Es300);
@@ -130,11 +134,15 @@ PageSettings page_settings(const PublishRequest& r, const io::Sidecar& sidecar,
   m["format"] = "vdfx.publish";
   m["version"] = 1;
   m["title"] = s.title;
-  m["video"] = {{"file", video.file},     {"codec", codec},       {"fps", video.fps},
-                {"frames", video.frames}, {"width", video.width}, {"height", video.height}};
+  // The files under fixed names (publish_video.h), each with its original name beside it.
+  m["video"] = {{"file", video.file},     {"name", r.video.filename().string()},
+                {"codec", codec},         {"fps", video.fps},
+                {"frames", video.frames}, {"width", video.width},
+                {"height", video.height}};
   if (video.ycbcr) m["video"]["ycbcr"] = ycbcr_json(*video.ycbcr);
   add_layout_json(m["video"], video);
-  m["sidecar"] = r.sidecar.filename().string();
+  m["sidecar"] = kPublishedSidecar;
+  m["sidecar_name"] = r.sidecar.filename().string();
   m["stack_mask"] = keyed_mask(sidecar);
   if (uses_auto_light(sidecar)) m["lights"] = kLightsFile;
   m["left_out"] = left_out_of(sidecar);
@@ -184,11 +192,57 @@ std::string read_asset_text(const fs::path& path) {
   return s.str();
 }
 
+namespace {
+
+/// A descriptor closed when it goes out of scope.
+struct Fd {
+  int fd = -1;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+/// Writes all of `data`; false with errno set on a failure (a full disk: ENOSPC).
+bool write_all(int fd, const char* data, std::size_t n) {
+  while (n > 0) {
+    const ssize_t w = ::write(fd, data, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w == 0) errno = EIO;
+    if (w <= 0) return false;
+    data += w;
+    n -= static_cast<std::size_t>(w);
+  }
+  return true;
+}
+
+}  // namespace
+
 void copy_file_checked(const fs::path& from, const fs::path& to) {
-  std::error_code ec;
-  if (!fs::copy_file(from, to, fs::copy_options::none, ec))
-    throw io::InputError(to.string() + ": cannot copy " + from.string() + " there (" +
-                         ec.message() + ")");
+  const auto fail = [&](const std::string& why) {
+    throw io::InputError(to.string() + ": cannot copy " + from.string() + " there (" + why + ")");
+  };
+  // Opened as the readers open an input (io/input_file.h): without waiting on a named pipe that
+  // took the file's place, and refused unless it is a regular file.
+  Fd in{::open(from.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+  if (in.fd < 0) fail(std::strerror(errno));
+  struct stat st {};
+  if (::fstat(in.fd, &st) != 0) fail(std::strerror(errno));
+  if (!S_ISREG(st.st_mode))
+    throw io::InputError(from.string() + ": is " + io::file_type_name(st.st_mode) +
+                         ", not a regular file");
+  Fd out{::open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666)};
+  if (out.fd < 0) fail(std::strerror(errno));
+  std::vector<char> buffer(std::size_t{1} << 20);
+  for (;;) {
+    const ssize_t n = ::read(in.fd, buffer.data(), buffer.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) fail(std::string("read: ") + std::strerror(errno));
+    if (n == 0) break;
+    if (!write_all(out.fd, buffer.data(), static_cast<std::size_t>(n))) fail(std::strerror(errno));
+  }
+  const int fd = out.fd;
+  out.fd = -1;
+  if (::close(fd) != 0) fail(std::strerror(errno));
 }
 
 void write_text_file(const fs::path& path, const std::string& text) {
@@ -196,21 +250,6 @@ void write_text_file(const fs::path& path, const std::string& text) {
   out << text;
   out.close();
   if (!out) throw io::InputError(path.string() + ": cannot be written");
-}
-
-void sync_folder(const fs::path& dir) {
-  std::error_code ec;
-  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir, ec)) {
-    const int fd = ::open(e.path().c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) continue;
-    ::fsync(fd);
-    ::close(fd);
-  }
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd >= 0) {
-    ::fsync(fd);
-    ::close(fd);
-  }
 }
 
 }  // namespace vdfx::app

@@ -45,11 +45,11 @@ std::vector<std::string> folder_listing(const std::filesystem::path& dir);
 
 /// The whole file; io::InputError naming it when it cannot be read.
 std::string read_asset_text(const std::filesystem::path& path);
-/// Copies a file (io::InputError naming both when it fails: a full disk, say).
+/// Copies the regular file `from` into the new file `to` (io::InputError naming both when it
+/// fails: a full disk, say; naming `from` when it is not a regular file, which is never opened
+/// to wait on: a named pipe, a device).
 void copy_file_checked(const std::filesystem::path& from, const std::filesystem::path& to);
 /// Writes `text` to a new file (io::InputError naming it on failure).
 void write_text_file(const std::filesystem::path& path, const std::string& text);
-/// fsync of every file in `dir` and of the folder itself (best effort for the files).
-void sync_folder(const std::filesystem::path& dir);
 
 }  // namespace vdfx::app

@@ -53,10 +53,10 @@ int cmd_publish(const Args& args) {
   add_publish_options(cli, options, texts);
   if (auto code = parse_cli(cli, args)) return *code;
   const PublishResult r = run_publish(publish_request(options, texts));
-  if (!r.hint.empty()) std::cerr << "vdfx: hint: " << texts.video << ": " << r.hint << "\n";
   for (const std::string& e : r.left_out)
     std::cerr << "vdfx publish: note: the page does not draw " << e
               << " (volumetric grain: vdfx's GPU renderer only)\n";
+  if (!r.warning.empty()) std::cerr << "vdfx publish: warning: " << r.warning << "\n";
   std::cout << r.out.string() << ": " << r.files.size() << " files, video "
             << (r.transcoded ? "transcoded to " : "") << r.video_codec;
   if (r.layout.stereo() || r.layout.coverage_deg != 360)

@@ -15,11 +15,14 @@
 #include <nlohmann/json.hpp>
 #include <system_error>
 
+#include "app/cli/layout_options.h"
 #include "app/publish/publish_assets.h"
 #include "app/publish/publish_lights.h"
-#include "io/atomic_file.h"
+#include "app/publish/publish_video.h"
+#include "io/durable.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
+#include "io/input_file.h"
 #include "io/output_path.h"
 #include "io/sidecar_validate.h"
 #include "io/video_layout.h"
@@ -33,13 +36,17 @@ namespace fs = std::filesystem;
 constexpr const char* kManifest = "player.json";
 constexpr const char* kManifestFormat = "vdfx.publish";
 
+/// More than any player.json publish writes (a few KiB): a larger one is not publish's.
+constexpr std::uintmax_t kMaxManifestBytes = std::uintmax_t{1} << 20;
+
 bool is_publish_folder(const fs::path& dir) {
-  std::error_code ec;
-  const fs::path manifest = dir / kManifest;
-  if (!fs::is_regular_file(manifest, ec)) return false;
+  // Read as an input is (io/input_file.h): a regular file only, never a pipe waited on.
+  std::string why;
+  const std::optional<std::string> text =
+      io::try_read_input_file(dir / kManifest, kMaxManifestBytes, "a publish manifest", why);
+  if (!text) return false;
   try {
-    const std::string text = read_asset_text(manifest);
-    const nlohmann::json j = nlohmann::json::parse(text);
+    const nlohmann::json j = nlohmann::json::parse(*text);
     return j.is_object() && j.value("format", "") == kManifestFormat;
   } catch (const std::exception&) {
     return false;
@@ -96,13 +103,16 @@ std::string checked_codec(const PublishRequest& r, const io::VideoProperties& pr
 }
 
 /// Removes `.NAME.publish-PID` folders in `parent` whose process no longer exists (a publish
-/// that was killed or interrupted); a live publish's folder is never touched.
+/// that was killed or interrupted); a live publish's folder is never touched. Only the names in
+/// `parent` are read: nothing else there is opened or walked, and only a folder of that name
+/// (not a link, not a file) is removed.
 void remove_stale_staging(const fs::path& parent, const std::string& name) {
   const std::string prefix = "." + name + ".publish-";
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(parent, ec)) {
     const std::string n = e.path().filename().string();
     if (!n.starts_with(prefix) || n.size() == prefix.size()) continue;
+    if (!e.is_directory(ec) || e.is_symlink(ec)) continue;
     const std::string digits = n.substr(prefix.size());
     if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
     const pid_t pid = static_cast<pid_t>(std::stol(digits));
@@ -134,16 +144,21 @@ class StagedFolder {
   StagedFolder(const StagedFolder&) = delete;
   StagedFolder& operator=(const StagedFolder&) = delete;
   const fs::path& path() const { return path_; }
-  /// Puts the folder in place: one rename when OUT is missing, else an atomic exchange of the
-  /// two names (renameat2 RENAME_EXCHANGE), after which the old folder is removed.
-  void commit(const std::string& out_name);
+  /// Puts the folder in place: its own files and folders fsynced (a failure keeps the old
+  /// folder: io::InputError), then one rename when OUT is missing, else an atomic exchange of the
+  /// two names (renameat2 RENAME_EXCHANGE), after which the old folder is removed; then the
+  /// parent's entry fsynced, and only that (never what else the parent holds). Returns a warning
+  /// when that last fsync failed (the folder is in place, not yet durable), else "".
+  std::string commit(const std::string& out_name);
 
  private:
   fs::path path_, target_;
 };
 
-void StagedFolder::commit(const std::string& out_name) {
-  sync_folder(path_);
+std::string StagedFolder::commit(const std::string& out_name) {
+  if (const std::optional<io::SyncFailure> f = io::fsync_written_tree(path_))
+    throw io::InputError(out_name + ": the new folder cannot be made durable (fsync of " +
+                         f->describe() + "); the old one is kept");
   std::error_code ec;
   const bool exists = fs::exists(fs::symlink_status(target_, ec));
   constexpr unsigned kExchange = 1u << 1;  // RENAME_EXCHANGE (linux/fs.h)
@@ -153,8 +168,15 @@ void StagedFolder::commit(const std::string& out_name) {
   if (r != 0)
     throw io::InputError(out_name + ": cannot put the new folder in place (" +
                          std::strerror(errno) + "); the old one is kept");
-  sync_folder(target_.parent_path());
   if (!exists) path_.clear();  // the destructor removes the old folder, now at path_
+  // The new name is durable once the parent's list of names is: that one folder's entry, as
+  // io::write_file_atomic syncs its file's folder. A file system that cannot sync a folder
+  // (EINVAL) counts as synced.
+  const int err = io::fsync_folder_entry(target_.parent_path());
+  if (err == 0 || err == EINVAL) return {};
+  return out_name + ": published, but not yet durable: the fsync of its folder " +
+         target_.parent_path().string() + " failed (" + std::strerror(err) +
+         "); a power cut now could still lose the new folder";
 }
 
 }  // namespace
@@ -170,8 +192,7 @@ PublishResult run_publish(const PublishRequest& r) {
   const io::VideoProperties props = io::open_frame_decoder(r.video, {})->properties();
   const std::string source_codec = checked_codec(r, props);
   PublishResult result;
-  result.layout =
-      io::resolve_video_layout(props, r.layout, &sidecar.video, r.sidecar, &result.hint);
+  result.layout = shown_layout(props, r.layout, &sidecar.video, r.sidecar);
   const PageAssets assets = find_page_assets();
   StagedFolder staged(r.out);
   result.out = r.out;
@@ -179,7 +200,7 @@ PublishResult run_publish(const PublishRequest& r) {
   video.layout = result.layout;
   result.video_codec = r.transcode == Transcode::None ? source_codec : video.codec;
   result.transcoded = r.transcode != Transcode::None;
-  copy_file_checked(r.sidecar, staged.path() / r.sidecar.filename());
+  copy_file_checked(r.sidecar, staged.path() / kPublishedSidecar);
   write_page(assets, staged.path(), page_settings(r, sidecar, video, result.video_codec));
   // Tracked in the video the page plays (after --transcode, the transcoded one): the light is
   // where that video's bright region is, as `vdfx render` of it finds it.
@@ -188,7 +209,7 @@ PublishResult run_publish(const PublishRequest& r) {
                     track_auto_lights(staged.path() / video.file, sidecar).dump(2) + "\n");
   result.left_out = left_out_of(sidecar);
   result.files = folder_listing(staged.path());
-  staged.commit(r.out.string());
+  result.warning = staged.commit(r.out.string());
   return result;
 }
 

@@ -32,7 +32,9 @@ struct PublishResult {
   bool transcoded = false;            //!< the video was re-encoded
   std::vector<std::string> left_out;  //!< effects of the sidecar the page does not draw
   effects::StereoLayout layout;       //!< what the page shows (player.json's video.layout)
-  std::string hint;  //!< a hint for an untagged frame shaped like stereo shown as mono
+  /// Set when the folder is in place but the fsync of its parent's entry failed (not yet
+  /// durable); the command prints it and still succeeds.
+  std::string warning;
 };
 
 /// The codecs every WebGL2 browser plays in the containers publish accepts (docs/publish.md).

@@ -2,6 +2,9 @@
 /// @brief publish_video: copy or transcode.
 #include "app/publish/publish_video.h"
 
+#include <algorithm>
+#include <cctype>
+
 #include "app/export/export_request.h"
 #include "app/publish/publish_assets.h"
 #include "io/frame_decoder.h"
@@ -47,10 +50,14 @@ PublishedVideo publish_video(const PublishRequest& r, const io::Sidecar& sidecar
                              const fs::path& dir) {
   PublishedVideo v;
   if (r.transcode == Transcode::None) {
-    v.file = r.video.filename().string();
+    // The extension is one of the containers browsers play (run_publish checked it).
+    std::string ext = r.video.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    v.file = kPublishedVideoStem + ext;
     copy_file_checked(r.video, dir / v.file);
   } else {
-    v.file = r.video.stem().string() + ".mp4";
+    v.file = std::string(kPublishedVideoStem) + ".mp4";
     transcode(r, sidecar, dir, dir / v.file);
   }
   const auto decoder = io::open_frame_decoder(dir / v.file, {});

@@ -5,16 +5,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <iostream>
 #include <set>
 #include <sstream>
 
 #include "app/cli/command_registry.h"
+#include "app/cli/layout_options.h"
 #include "io/eye_decoder.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
-#include "io/output_path.h"
 #include "io/sidecar.h"
+#include "io/sidecar_target.h"
 
 namespace vdfx::app::suggest {
 
@@ -100,10 +100,8 @@ Clip open_clip(const SuggestRequest& r, Progress* progress, std::optional<io::Si
             : io::new_sidecar({r.video.string(), whole.fps.value(),
                                std::max<std::int64_t>(1, whole.frames), whole.width, whole.height});
   // Stereo: the left eye's image is the sphere the analyses see (docs/stereo.md).
-  std::string hint;
-  const effects::StereoLayout layout = io::resolve_video_layout(
-      whole, r.layout, &sidecar->video, r.sidecar_in.value_or(fs::path()), &hint);
-  if (!hint.empty()) std::cerr << "vdfx: hint: " << r.video.string() << ": " << hint << "\n";
+  const effects::StereoLayout layout =
+      shown_layout(whole, r.layout, &sidecar->video, r.sidecar_in.value_or(fs::path()));
   check_points_covered(r, layout);
   io::record_layout(sidecar->video, layout);
   clip.layout = layout;
@@ -381,17 +379,21 @@ SuggestReport suggest_into(const SuggestRequest& request, io::Sidecar& sidecar,
   return report;
 }
 
-SuggestReport run_suggest(const SuggestRequest& r) {
+SuggestReport run_suggest(const SuggestRequest& request) {
   const auto start = Clock::now();
-  check_request(r);
-  std::vector<io::NamedInput> inputs = {{"VIDEO", r.video}};
-  if (r.sidecar_in) inputs.push_back({"--sidecar-in", *r.sidecar_in});
-  io::check_output_is_not_input("--sidecar-out", r.sidecar_out, inputs);
-  io::resolve_output_path(r.sidecar_out);
+  check_request(request);
+  const io::SidecarTarget target =
+      io::resolve_sidecar_target({request.sidecar_in, request.sidecar_out, request.force},
+                                 {{"VIDEO", request.video}}, "vdfx suggest");
+  SuggestRequest r = request;
+  r.sidecar_in = target.base;  // an existing --sidecar-out is what the suggestion adds to
   std::optional<io::Sidecar> sidecar;
+  if (target.base) sidecar = io::read_sidecar_base(target, {});
   Clip clip = open_clip(r, nullptr, sidecar);
+  const io::Sidecar before = *sidecar;
   SuggestReport report = suggest_clip(r, clip, *sidecar);
   io::write_sidecar(r.sidecar_out, *sidecar);
+  report.sidecar_note = io::sidecar_target_note(target, r.sidecar_out, before);
   report.seconds = seconds_since(start);
   return report;
 }

@@ -34,6 +34,7 @@ struct SuggestRequest {
   std::filesystem::path video;
   std::optional<std::filesystem::path> sidecar_in;
   std::filesystem::path sidecar_out;
+  bool force = false;      //!< an existing --sidecar-out may be replaced (io/sidecar_target.h)
   double strength = 1.0;   //!< 0..1
   std::int64_t every = 0;  //!< frames between sampled frames; 0: about 1 s (comfort: 1/6 s)
   std::optional<double> tolerance;      //!< none: the effect's default above
@@ -63,6 +64,7 @@ struct SuggestReport {
   double reference_level = 0.0;         //!< exposure: log2 luminance
   std::vector<double> speed_deg_per_s;  //!< comfort: the camera's angular speed at every frame
   double seconds = 0.0;                 //!< wall time of the whole suggestion
+  std::string sidecar_note;  //!< run_suggest: what became of an existing --sidecar-out, or ""
 };
 
 /// A suggestion running on another thread (the editor's, app/editor/suggest_worker.h): how far it
@@ -83,9 +85,11 @@ struct Cancelled : std::runtime_error {
 SuggestReport suggest_into(const SuggestRequest& request, io::Sidecar& sidecar,
                            Progress* progress = nullptr);
 
-/// Runs one suggestion and writes the sidecar (atomically, never onto an input). Throws
+/// Runs one suggestion and writes the sidecar (atomically, never onto an input). An existing
+/// --sidecar-out is added to, or replaced only with `force` (io::resolve_sidecar_target). Throws
 /// io::InputError for input that cannot be used (unreadable video, a video that cannot be
-/// metered, keyframes already there without merge) and UsageError for options out of range.
+/// metered, keyframes already there without merge, an --sidecar-out that would be replaced) and
+/// UsageError for options out of range.
 SuggestReport run_suggest(const SuggestRequest& request);
 
 /// The frames sampled: 0, every, 2 every, ... and the last frame, plus `extra` (clamped).

@@ -23,7 +23,8 @@ struct CommonOptions {
 /// The options every suggestion takes.
 void add_common(CLI::App& sub, CommonOptions& c, suggest::SuggestRequest& r) {
   sub.add_option("video", c.video, "the video or panorama")->required();
-  sub.add_option("--sidecar-in", c.in, "add to this sidecar (default: a new one)");
+  sub.add_option("--sidecar-in", c.in,
+                 "add to this sidecar (default: --sidecar-out when it exists, else a new one)");
   add_layout_options(sub, r.layout);
   sub.add_option("--sidecar-out", c.out, "write the sidecar with the suggestion here")->required();
   sub.add_option("--strength", r.strength, "0: neutral, 1: the whole suggestion (default 1)")
@@ -35,6 +36,9 @@ void add_common(CLI::App& sub, CommonOptions& c, suggest::SuggestRequest& r) {
   sub.add_option("--directions", r.directions, "view directions sampled (400)")
       ->check(whole_range(16, 20000));
   sub.add_flag("--merge", r.merge, "add to keyframes the sidecar already has for the effect");
+  sub.add_flag("--force", r.force,
+               "replace an existing --sidecar-out (without it, an existing --sidecar-out is "
+               "added to)");
 }
 
 void print_report(const suggest::SuggestRequest& r, const suggest::SuggestReport& report) {
@@ -53,6 +57,7 @@ void print_report(const suggest::SuggestRequest& r, const suggest::SuggestReport
                 e.fit.max_error, e.fit.rms_error, e.tolerance,
                 e.fit.within_tolerance ? "" : ": the keyframe budget ran out first");
   }
+  if (!report.sidecar_note.empty()) std::printf("%s\n", report.sidecar_note.c_str());
   std::printf("%zu samples (%zu frames) in %.2f s -> %s\n", report.samples, report.frames.size(),
               report.seconds, r.sidecar_out.string().c_str());
 }

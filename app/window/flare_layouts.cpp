@@ -4,7 +4,7 @@
 
 #include "effects/flare_set_cv.h"
 #include "io/ycbcr.h"
-#include "xr/session.h"
+#include "xr/headset/session.h"
 
 namespace vdfx::app {
 

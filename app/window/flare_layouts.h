@@ -8,7 +8,7 @@
 
 #include "effects/flare_set.h"
 #include "io/picture.h"
-#include "xr/pose.h"
+#include "xr/headset/pose.h"
 
 namespace vdfx::app {
 

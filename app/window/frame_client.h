@@ -20,9 +20,9 @@
 #include "effects/flare_layout.h"
 #include "effects/grain_layout.h"
 #include "io/picture.h"
-#include "xr/actions.h"
-#include "xr/input_events.h"
-#include "xr/session.h"
+#include "xr/headset/session.h"
+#include "xr/input/actions.h"
+#include "xr/input/input_events.h"
 
 namespace vdfx::app {
 

@@ -26,9 +26,9 @@
 
 #include "app/window/frame_client.h"
 #include "effects/stereo_layout.h"
-#include "xr/blur_method.h"
-#include "xr/hmd_profile.h"
-#include "xr/mirror.h"
+#include "xr/headset/hmd_profile.h"
+#include "xr/render/blur_method.h"
+#include "xr/render/mirror.h"
 
 namespace vdfx::io {
 class VideoSource;

@@ -9,8 +9,8 @@
 #include "app/cli/command_registry.h"
 #include "app/cli/layout_options.h"
 #include "io/input_error.h"
-#include "xr/hmd_profile.h"
-#include "xr/openxr_runtime.h"
+#include "xr/headset/hmd_profile.h"
+#include "xr/openxr/gl/openxr_runtime.h"
 
 namespace vdfx::app {
 namespace {
@@ -141,11 +141,7 @@ void add_loop_options(CLI::App& cli, LoopCli& o) {
 
 void resolve_loop_layout(LoopSetup& s, const LoopCli& o, const io::VideoInfo* sidecar,
                          const std::filesystem::path& sidecar_path) {
-  std::string hint;
-  s.options.video_layout =
-      io::resolve_video_layout(s.video->properties(), o.layout, sidecar, sidecar_path, &hint);
-  if (!hint.empty())
-    std::cerr << "vdfx: hint: " << s.video->properties().path.string() << ": " << hint << "\n";
+  s.options.video_layout = shown_layout(s.video->properties(), o.layout, sidecar, sidecar_path);
 }
 
 LoopSetup prepare_loop(const LoopCli& o, const std::filesystem::path& video_path, bool loop_video,

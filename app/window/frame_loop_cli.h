@@ -16,7 +16,7 @@
 #include "io/sidecar.h"
 #include "io/video_layout.h"
 #include "io/video_source.h"
-#include "xr/input_backend.h"
+#include "xr/input/input_backend.h"
 
 namespace vdfx::app {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "app/window/frame_loop.h"
-#include "xr/gpu_timer.h"
+#include "xr/render/gpu_timer.h"
 
 namespace vdfx::app {
 

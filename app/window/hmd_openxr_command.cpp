@@ -5,7 +5,7 @@
 
 #include <iostream>
 
-#include "xr/openxr_runtime.h"
+#include "xr/openxr/gl/openxr_runtime.h"
 
 namespace vdfx::app {
 

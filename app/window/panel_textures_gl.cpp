@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "app/window/editor_client.h"
-#include "xr/gl_texture.h"
+#include "xr/render/gl_texture.h"
 
 namespace vdfx::app {
 

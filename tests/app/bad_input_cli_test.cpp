@@ -125,7 +125,7 @@ TEST(BadInput, TheUsersMistakesAreNeverInternalErrors) {
   const fs::path dir = setup();
   fs::create_directories(dir / "folder.vdrec.jsonl");
   fs::create_directories(dir / "folder.json");
-  std::ifstream in(std::string(VDFX_SOURCE_DIR) + "/xr/profiles/generic90.json");
+  std::ifstream in(std::string(VDFX_SOURCE_DIR) + "/xr/headset/profiles/generic90.json");
   std::string profile((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::size_t at = profile.find("\"refresh_hz\":") + 13;
   profile.replace(at, profile.find(',', at) - at, " 1e400");

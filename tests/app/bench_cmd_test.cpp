@@ -264,6 +264,33 @@ TEST(BenchCommand, SuggestRowsPlaceMoreKeyframesForATighterTolerance) {
   EXPECT_GT(keyframes[1], keyframes[0]);
 }
 
+// The trackers' knobs (docs/anchors.md, "Measured"): against their clips' known truth the camera
+// stays within its goals and the subject's hidden frames are all reported.
+TEST(BenchCommand, TrackRowsMeetTheirGoalsOnTheirClips) {
+  const auto dir = test_dir();
+  const auto r = run_vdfx(
+      "bench --quick --filter '^track[.](camera_width/W=512|subject_template/seam T=32)$' "
+      "--json " +
+      (dir / "r.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(schema_problem(dir / "r.json"), "");
+  const auto j = nlohmann::json::parse(read_file(dir / "r.json"));
+  ASSERT_EQ(j["rows"].size(), 2u);
+  const auto& camera = j["rows"][0];
+  SCOPED_TRACE(camera.dump());
+  ASSERT_EQ(camera["status"], "ok");
+  EXPECT_LE(camera["error"]["rms"].get<double>(), 0.1);
+  EXPECT_LE(camera["error"]["max"].get<double>(), 0.3);
+  EXPECT_GT(camera["peer"]["median_s"].get<double>(), 0.0);
+  EXPECT_EQ(camera["extra"]["held"].get<double>(), 0.0);
+  const auto& subject = j["rows"][1];
+  SCOPED_TRACE(subject.dump());
+  ASSERT_EQ(subject["status"], "ok");
+  EXPECT_LE(subject["error"]["rms"].get<double>(), 1.0);
+  EXPECT_EQ(subject["extra"]["hidden_frames_not_reported"].get<double>(), 0.0);
+  EXPECT_EQ(subject["extra"]["visible_frames_lost"].get<double>(), 0.0);
+}
+
 TEST(BenchCommand, UsageAndInputErrorsUseTheContractsExitCodes) {
   const auto dir = test_dir();
   EXPECT_EQ(run_vdfx("bench --filter '('").exit_code, 2);

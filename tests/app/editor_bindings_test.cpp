@@ -9,7 +9,7 @@
 
 #include "app/editor/bindings.h"
 #include "tests/support/test_paths.h"
-#include "xr/input_backend.h"
+#include "xr/input/input_backend.h"
 
 namespace vdfx::app {
 namespace {

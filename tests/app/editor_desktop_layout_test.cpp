@@ -8,8 +8,8 @@
 #include "editor_scripts.h"
 #include "editor_test_util.h"
 #include "ui/theme.h"
-#include "xr/input_backend.h"
-#include "xr/mirror.h"
+#include "xr/input/input_backend.h"
+#include "xr/render/mirror.h"
 
 namespace vdfx::app {
 namespace {

@@ -10,8 +10,8 @@
 #include "app/editor/editor_panels.h"
 #include "effects/effect_types.h"
 #include "ui/colour_wheel.h"
-#include "xr/input_backend.h"
-#include "xr/mirror.h"
+#include "xr/input/input_backend.h"
+#include "xr/render/mirror.h"
 
 namespace vdfx::app::test {
 

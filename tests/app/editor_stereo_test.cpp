@@ -6,7 +6,7 @@
 
 #include "app/editor/editor.h"
 #include "editor_test_util.h"
-#include "xr/input_backend.h"
+#include "xr/input/input_backend.h"
 
 namespace vdfx::app {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "io/sidecar.h"
 #include "tests/test_files.h"
-#include "xr/actions.h"
+#include "xr/input/actions.h"
 
 namespace vdfx::app::test {
 

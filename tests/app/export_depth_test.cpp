@@ -17,7 +17,7 @@
 #include "command_test_util.h"
 #include "io/frame_decoder.h"
 #include "io/recording.h"
-#include "xr/pose.h"
+#include "xr/headset/pose.h"
 
 namespace vdfx::app {
 namespace {

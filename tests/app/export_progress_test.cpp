@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "app/export/progress.h"
+#include "app/cli/progress.h"
 
 namespace vdfx::app {
 namespace {
@@ -21,6 +21,13 @@ TEST(ExportProgress, BarAndLineSayFramesRateAndEta) {
   EXPECT_EQ(ProgressReporter::line_text(12, 48, 4.0), "12/48 frames (25%), 3.0 frames/s, ETA 0:12");
   EXPECT_EQ(ProgressReporter::line_text(0, 48, 0.0), "0/48 frames (0%), 0.0 frames/s, ETA --:--");
   EXPECT_NE(ProgressReporter::line_text(1, 9000, 1.0).find("ETA 2:29:59"), std::string::npos);
+}
+
+TEST(ExportProgress, OtherCommandsNameWhatTheyCountAndThemselves) {
+  std::ostringstream lines;
+  ProgressReporter p(lines, false, 40, 5.0, "suggest", "keyframes");
+  p.update(10, 2.0);
+  EXPECT_EQ(lines.str(), "suggest: 10/40 keyframes (25%), 5.0 keyframes/s, ETA 0:06\n");
 }
 
 TEST(ExportProgress, LinesComeEveryIntervalAndTheBarRedrawsInPlace) {

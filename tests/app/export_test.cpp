@@ -37,7 +37,7 @@ extern "C" {
 #include "tests/media_clips.h"
 #include "tests/support/test_paths.h"
 #include "tests/test_files.h"
-#include "xr/actions.h"
+#include "xr/input/actions.h"
 
 namespace vdfx::app {
 namespace {

@@ -11,7 +11,7 @@
 #include "io/frame_decoder.h"
 #include "io/recording.h"
 #include "tests/media_clips.h"
-#include "xr/actions.h"
+#include "xr/input/actions.h"
 
 namespace vdfx::app::testing {
 

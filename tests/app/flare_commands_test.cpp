@@ -14,7 +14,7 @@
 #include "effects/view_camera.h"
 #include "io/sidecar_validate.h"
 #include "tests/image_centroid.h"
-#include "xr/eye_views.h"
+#include "xr/headset/eye_views.h"
 
 namespace vdfx::app::testing {
 namespace {

@@ -12,8 +12,8 @@
 #include "command_test_util.h"
 #include "io/video_source.h"
 #include "player_test_support.h"
-#include "xr/compositor.h"
-#include "xr/input_backend.h"
+#include "xr/input/input_backend.h"
+#include "xr/render/compositor.h"
 
 namespace vdfx::app::testing {
 namespace {

@@ -13,9 +13,9 @@
 #include "io/video_source.h"
 #include "player_test_support.h"
 #include "tests/support/test_paths.h"
-#include "xr/compositor.h"
-#include "xr/input_backend.h"
-#include "xr/video_layer.h"
+#include "xr/input/input_backend.h"
+#include "xr/render/compositor.h"
+#include "xr/render/video_layer.h"
 
 namespace vdfx::app {
 namespace {

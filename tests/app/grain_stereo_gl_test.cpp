@@ -14,8 +14,8 @@
 #include "app/export/view_render.h"
 #include "effects/grain_layout.h"
 #include "effects/grain_stereo.h"
-#include "xr/eye_views.h"
-#include "xr/hmd_profile.h"
+#include "xr/headset/eye_views.h"
+#include "xr/headset/hmd_profile.h"
 
 namespace vdfx::app {
 namespace {

@@ -59,9 +59,10 @@ TEST(OneAuthor, ReplayNeverWritesASidecarAnotherEditorHasOpen) {
         (dir / "elsewhere.vdfx.json").string());
     EXPECT_EQ(read.exit_code, 0) << read.output;
   }
-  // The editor is gone (killed: its lock is left behind, stale): no longer in the way.
+  // The editor is gone (killed: its lock is left behind, stale): no longer in the way. The file
+  // is not a sidecar, so only --force replaces it (tests/app/sidecar_out_test.cpp).
   ASSERT_TRUE(fs::exists(dir / "out.vdfx.json.lock"));
-  const CommandResult after = run_vdfx_headless(args);
+  const CommandResult after = run_vdfx_headless(args + " --force");
   EXPECT_EQ(after.exit_code, 0) << after.output;
   EXPECT_NE(slurp(out), "the other author's work");
 }

@@ -17,11 +17,11 @@
 #include "io/sidecar.h"
 #include "io/video_source.h"
 #include "tests/app/openxr_test_support.h"
-#include "xr/compositor.h"
-#include "xr/gl_context.h"
-#include "xr/input_backend.h"
-#include "xr/openxr_format.h"
-#include "xr/openxr_runtime.h"
+#include "xr/input/input_backend.h"
+#include "xr/openxr/gl/openxr_runtime.h"
+#include "xr/openxr/openxr_format.h"
+#include "xr/render/compositor.h"
+#include "xr/render/gl_context.h"
 
 namespace vdfx::app {
 namespace {
@@ -184,6 +184,27 @@ cv::Mat texture_rgba(unsigned texture) {
   return m;
 }
 
+/// The largest difference (in 8-bit steps) between a layer's image `got` (BGRA) and the
+/// premultiplied texture `tex` (RGBA) it copies, against what an sRGB image must store:
+/// encode(decode(colour) x alpha) (unchanged where it is opaque); `opaque`: its opaque texels.
+double srgb_copy_error(const cv::Mat& tex, const cv::Mat& got, int& opaque) {
+  double worst = 0.0;
+  opaque = 0;
+  for (int y = 0; y < tex.rows; ++y)
+    for (int x = 0; x < tex.cols; ++x) {
+      const cv::Vec4b t = tex.at<cv::Vec4b>(y, x), g = got.at<cv::Vec4b>(y, x);
+      const double a = t[3] / 255.0;
+      opaque += t[3] == 255;
+      worst = std::max(worst, std::abs(double(g[3]) - t[3]));
+      for (int c = 0; c < 3; ++c) {
+        const double straight = a > 0.0 ? std::min(t[c] / 255.0 / a, 1.0) : 0.0;
+        const double want = xr::linear_to_srgb(xr::srgb_to_linear(straight) * a) * 255.0;
+        worst = std::max(worst, std::abs(g[2 - c] - want));
+      }
+    }
+  return worst;
+}
+
 TEST_F(OpenXrFrames, QuadLayersCarryTheEditorsPanelsAtTheirPoses) {
   write_script(dir() / "s.vdrec.jsonl", gaze_script(10.0, -5.0, 40));
   knob("VDFX_TEST_RUNTIME_SCRIPT", (dir() / "s.vdrec.jsonl").string());
@@ -238,28 +259,14 @@ TEST_F(OpenXrFrames, QuadLayersCarryTheEditorsPanelsAtTheirPoses) {
     const xr::Pose p = pose_of(l["pose"]);
     EXPECT_LT(glm::length(p.position - q.pose.position), 1e-5);
     EXPECT_GT(std::abs(glm::dot(p.orientation, glm::normalize(q.pose.orientation))), 1.0 - 1e-9);
-    // The panel's pixels, as the copy must store them in an sRGB image: encode(decode(colour)
-    // x alpha) of the premultiplied texture (unchanged where it is opaque).
+    // The panel's pixels, as the copy must store them in an sRGB image (srgb_copy_error).
     const cv::Mat got =
         cv::imread((frame_dir(25) / l["image"].get<std::string>()).string(), cv::IMREAD_UNCHANGED);
     const cv::Mat& tex = images_25[i];
     ASSERT_EQ(got.size(), tex.size());
     ASSERT_EQ(got.type(), CV_8UC4);
-    double worst = 0.0;
     int opaque = 0;
-    for (int y = 0; y < tex.rows; ++y)
-      for (int x = 0; x < tex.cols; ++x) {
-        const cv::Vec4b t = tex.at<cv::Vec4b>(y, x), g = got.at<cv::Vec4b>(y, x);  // RGBA, BGRA
-        const double a = t[3] / 255.0;
-        opaque += t[3] == 255;
-        worst = std::max(worst, std::abs(double(g[3]) - t[3]));
-        for (int c = 0; c < 3; ++c) {
-          const double straight = a > 0.0 ? std::min(t[c] / 255.0 / a, 1.0) : 0.0;
-          const double want = xr::linear_to_srgb(xr::srgb_to_linear(straight) * a) * 255.0;
-          worst = std::max(worst, std::abs(g[2 - c] - want));
-        }
-      }
-    EXPECT_LE(worst, 1.5) << "quad " << i << " pixels";
+    EXPECT_LE(srgb_copy_error(tex, got, opaque), 1.5) << "quad " << i << " pixels";
     if (tex.total() > 64 * 64) {
       EXPECT_GT(opaque, 0) << "a panel is mostly opaque";
     }

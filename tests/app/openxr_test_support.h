@@ -19,7 +19,7 @@
 #include "tests/app/command_test_util.h"
 #include "tests/openxr_runtime/test_runtime_env.h"
 #include "tests/test_files.h"
-#include "xr/input_state_io.h"
+#include "xr/input/input_state_io.h"
 
 namespace vdfx::app::testing {
 

@@ -15,8 +15,8 @@
 #include "io/frame_decoder.h"
 #include "io/recording.h"
 #include "io/sidecar.h"
-#include "xr/actions.h"
-#include "xr/hmd_profile.h"
+#include "xr/headset/hmd_profile.h"
+#include "xr/input/actions.h"
 
 namespace vdfx::app::test {
 

@@ -15,13 +15,13 @@
 #include "app/editor/editor.h"
 #include "editor_test_util.h"
 #include "tests/support/test_paths.h"
-#include "xr/compositor.h"
-#include "xr/eye_views.h"
-#include "xr/gl_context.h"
-#include "xr/gl_texture.h"
-#include "xr/hmd_profile.h"
-#include "xr/input_backend.h"
-#include "xr/mirror.h"
+#include "xr/headset/eye_views.h"
+#include "xr/headset/hmd_profile.h"
+#include "xr/input/input_backend.h"
+#include "xr/render/compositor.h"
+#include "xr/render/gl_context.h"
+#include "xr/render/gl_texture.h"
+#include "xr/render/mirror.h"
 
 namespace vdfx::app {
 namespace {
@@ -79,31 +79,11 @@ std::string hovered_id(const Editor& ed) {
   return w ? w->id() : std::string();
 }
 
-TEST(PointingGl, APressAtTheDrawnCentreOfEveryWidgetHitsItInEveryMirrorMode) {
-  xr::GlContextOptions go;
-  go.width = 64;
-  go.height = 64;
-  const auto gl = xr::GlContext::create(go);
-  const xr::HmdProfile profile = xr::load_hmd_profile("generic90");
-
-  EditorOptions eo;
-  eo.layout = PanelLayout::Desktop;
-  eo.viewport = {kW, kH, 100.0};
-  io::Sidecar sc = test::empty_sidecar(90);
-  sc.effects.push_back({effects::EffectType::Exposure, std::nullopt, {{{-50.0, 10.0}, 0, {1.0}}}});
-  Editor ed(sc, DocumentOptions{{.async = false}}, eo);
-  xr::SimConfig sim_cfg;
-  sim_cfg.window_width = kW;
-  sim_cfg.window_height = kH;
-  auto sim = xr::create_sim_backend(sim_cfg);
-  std::int64_t t = 0;
-  ed.update(sim->poll(t), t);  // panels placed for the head at rest
-
-  const std::vector<ui::Panel*> panels = ed.panels();
-  std::vector<cv::Mat> images;
-  const std::vector<Target> targets = paint_ids(panels, images);
-  ASSERT_GE(targets.size(), 12u);  // disabled buttons (nothing to redo yet) take no press
-  std::vector<xr::GlTexture> textures;
+/// The panels' id images as the compositor's quads, each at its panel's pose (`textures` keeps
+/// their GL textures).
+std::vector<xr::QuadLayer> id_quads(const std::vector<ui::Panel*>& panels,
+                                    const std::vector<cv::Mat>& images,
+                                    std::vector<xr::GlTexture>& textures) {
   std::vector<xr::QuadLayer> quads;
   for (std::size_t i = 0; i < panels.size(); ++i) {
     textures.emplace_back(images[i].cols, images[i].rows, xr::TexFormat::RGBA8);
@@ -119,86 +99,174 @@ TEST(PointingGl, APressAtTheDrawnCentreOfEveryWidgetHitsItInEveryMirrorMode) {
     q.texture = textures.back().id();
     quads.push_back(q);
   }
+  return quads;
+}
 
-  xr::CompositorConfig cc;
-  cc.eye_width = 360;  // generic90 at a quarter of its resolution, as the window uses it
-  cc.eye_height = 400;
-  cc.lens = effects::LensModel(profile.lens);
-  xr::Compositor comp(cc);
-  comp.set_video_frame(cv::Mat(32, 64, CV_8UC3, cv::Scalar::all(0)));
-  const xr::Pose head = ed.input().head;
+constexpr xr::MirrorMode kModes[] = {xr::MirrorMode::Desktop, xr::MirrorMode::PreDistorted,
+                                     xr::MirrorMode::ThroughTheLens, xr::MirrorMode::SingleEye};
 
-  std::ostringstream table;
-  table << "| widget |";
-  for (const xr::MirrorMode m : {xr::MirrorMode::Desktop, xr::MirrorMode::PreDistorted,
-                                 xr::MirrorMode::ThroughTheLens, xr::MirrorMode::SingleEye})
-    table << " " << xr::mirror_mode_name(m) << " |";
-  table << "\n|---|---|---|---|---|\n";
-  std::map<std::string, std::string> rows;
-  for (const xr::MirrorMode mode : {xr::MirrorMode::Desktop, xr::MirrorMode::PreDistorted,
-                                    xr::MirrorMode::ThroughTheLens, xr::MirrorMode::SingleEye}) {
+/// The editor with its panels drawn by the compositor as the window would, the mouse moved in
+/// its mirror by the simulated backend.
+class PointingScene {
+ public:
+  PointingScene()
+      : gl_(xr::GlContext::create(context_options())),
+        profile_(xr::load_hmd_profile("generic90")),
+        ed_(sidecar(), DocumentOptions{{.async = false}}, editor_options()),
+        sim_(xr::create_sim_backend(sim_config())),
+        comp_(compositor_config(profile_)) {
+    ed_.update(sim_->poll(t_), t_);  // panels placed for the head at rest
+    panels_ = ed_.panels();
+    targets_ = paint_ids(panels_, images_);
+    quads_ = id_quads(panels_, images_, textures_);
+    comp_.set_video_frame(cv::Mat(32, 64, CV_8UC3, cv::Scalar::all(0)));
+  }
+
+  const std::vector<Target>& targets() const { return targets_; }
+  const xr::HmdProfile& profile() const { return profile_; }
+  const xr::CompositorConfig& config() const { return comp_.config(); }
+
+  /// The mirror window in `mode`, as BGR.
+  cv::Mat draw(xr::MirrorMode mode) {
+    const xr::Pose head = ed_.input().head;
     if (mode == xr::MirrorMode::Desktop) {
-      comp.render_desktop({xr::desktop_view(head, 100.0, kW, kH), {}, 0u, false}, kW, kH, 0.5,
-                          quads, head);
+      comp_.render_desktop({xr::desktop_view(head, 100.0, kW, kH), {}, 0u, false}, kW, kH, 0.5,
+                           quads_, head);
     } else {
-      const auto views = xr::locate_eye_views(head, profile);
+      const auto views = xr::locate_eye_views(head, profile_);
       for (int e = 0; e < 2; ++e)
-        comp.render_eye(e, {xr::render_view(views[static_cast<std::size_t>(e)]), {}, 0u, false},
-                        quads, head);
+        comp_.render_eye(e, {xr::render_view(views[static_cast<std::size_t>(e)]), {}, 0u, false},
+                         quads_, head);
     }
     xr::GlTarget mirror(kW, kH, xr::TexFormat::RGBA8);
-    comp.draw_mirror(mode, &mirror, kW, kH);
-    const cv::Mat bgr = xr::to_bgr8(mirror.read_float());
-    const auto g =
-        xr::MirrorGeometry::from_profile(profile, mode, cc.eye_width, cc.eye_height, kW, kH, 100.0);
-    const int eyes =
-        mode == xr::MirrorMode::PreDistorted || mode == xr::MirrorMode::ThroughTheLens ? 2 : 1;
-    int visible = 0, hit = 0, pinhole_hits = 0;
-    for (const Target& tg : targets) {
-      std::string cell;
-      for (int e = 0; e < eyes; ++e) {
-        const xr::WindowRect r = xr::mirror_eye_rect(mode, e, cc.eye_width, cc.eye_height, kW, kH);
-        const auto c = drawn_centre(bgr, tg.colour, r);
-        if (!c) continue;
-        ++visible;
-        // The mouse there: the ray through what the mirror draws under it (as the frame loop).
-        xr::MouseMoveEvent m{c->x, c->y};
-        m.ray = xr::mirror_ray(g, c->x, c->y);
-        m.over_view = m.ray.has_value();
-        sim->push_event(m);
-        t += 33'333'333;
-        ed.update(sim->poll(t), t);
-        const std::string got = hovered_id(ed);
-        const bool ok = got == tg.widget;
-        hit += ok;
-        EXPECT_TRUE(ok) << xr::mirror_mode_name(mode) << " eye " << e << ": " << tg.panel << "/"
-                        << tg.widget << " drawn at (" << c->x << ", " << c->y
-                        << ") but the ray hits \"" << got << "\"";
-        // Control: the window taken as a plain pinhole (what the sim did before, whatever the
-        // mirror showed) misses in the headset mirrors, so this test can fail.
-        sim->push_event(xr::MouseMoveEvent{c->x, c->y});
-        t += 33'333'333;
-        ed.update(sim->poll(t), t);
-        pinhole_hits += hovered_id(ed) == tg.widget;
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%s(%.0f, %.0f) %s", cell.empty() ? "" : "; ", c->x, c->y,
-                      ok ? "hit" : "MISS");
-        cell += buf;
-      }
-      rows[tg.panel + "/" + tg.widget] +=
-          " " + (cell.empty() ? std::string("not in view") : cell) + " |";
+    comp_.draw_mirror(mode, &mirror, kW, kH);
+    return xr::to_bgr8(mirror.read_float());
+  }
+
+  /// The widget under the mouse moved to `m` (a frame of the editor later).
+  std::string hover(const xr::MouseMoveEvent& m) {
+    sim_->push_event(m);
+    t_ += 33'333'333;
+    ed_.update(sim_->poll(t_), t_);
+    return hovered_id(ed_);
+  }
+
+ private:
+  static xr::GlContextOptions context_options() {
+    xr::GlContextOptions go;
+    go.width = 64;
+    go.height = 64;
+    return go;
+  }
+  static io::Sidecar sidecar() {
+    io::Sidecar sc = test::empty_sidecar(90);
+    sc.effects.push_back(
+        {effects::EffectType::Exposure, std::nullopt, {{{-50.0, 10.0}, 0, {1.0}}}});
+    return sc;
+  }
+  static EditorOptions editor_options() {
+    EditorOptions eo;
+    eo.layout = PanelLayout::Desktop;
+    eo.viewport = {kW, kH, 100.0};
+    return eo;
+  }
+  static xr::SimConfig sim_config() {
+    xr::SimConfig sim_cfg;
+    sim_cfg.window_width = kW;
+    sim_cfg.window_height = kH;
+    return sim_cfg;
+  }
+  static xr::CompositorConfig compositor_config(const xr::HmdProfile& profile) {
+    xr::CompositorConfig cc;
+    cc.eye_width = 360;  // generic90 at a quarter of its resolution, as the window uses it
+    cc.eye_height = 400;
+    cc.lens = effects::LensModel(profile.lens);
+    return cc;
+  }
+
+  std::unique_ptr<xr::GlContext> gl_;
+  xr::HmdProfile profile_;
+  Editor ed_;
+  std::unique_ptr<xr::InputBackend> sim_;
+  xr::Compositor comp_;
+  std::int64_t t_ = 0;
+  std::vector<ui::Panel*> panels_;
+  std::vector<cv::Mat> images_;
+  std::vector<Target> targets_;
+  std::vector<xr::GlTexture> textures_;
+  std::vector<xr::QuadLayer> quads_;
+};
+
+/// Per mirror mode: the widgets seen in it, those the mouse's ray hit, and those the control (the
+/// window as a plain pinhole) hit.
+struct ModeCounts {
+  int visible = 0, hit = 0, pinhole_hits = 0;
+};
+
+/// Points the mouse at the drawn centre of every target in `mode`, in each eye that shows it;
+/// each target's table cell (where it is drawn, hit or MISS) is added to `rows`.
+ModeCounts point_at_targets(PointingScene& scene, xr::MirrorMode mode,
+                            std::map<std::string, std::string>& rows) {
+  const cv::Mat bgr = scene.draw(mode);
+  const xr::CompositorConfig& cc = scene.config();
+  const auto g = xr::MirrorGeometry::from_profile(scene.profile(), mode, cc.eye_width,
+                                                  cc.eye_height, kW, kH, 100.0);
+  const int eyes =
+      mode == xr::MirrorMode::PreDistorted || mode == xr::MirrorMode::ThroughTheLens ? 2 : 1;
+  ModeCounts n;
+  for (const Target& tg : scene.targets()) {
+    std::string cell;
+    for (int e = 0; e < eyes; ++e) {
+      const xr::WindowRect r = xr::mirror_eye_rect(mode, e, cc.eye_width, cc.eye_height, kW, kH);
+      const auto c = drawn_centre(bgr, tg.colour, r);
+      if (!c) continue;
+      ++n.visible;
+      // The mouse there: the ray through what the mirror draws under it (as the frame loop).
+      xr::MouseMoveEvent m{c->x, c->y};
+      m.ray = xr::mirror_ray(g, c->x, c->y);
+      m.over_view = m.ray.has_value();
+      const std::string got = scene.hover(m);
+      const bool ok = got == tg.widget;
+      n.hit += ok;
+      EXPECT_TRUE(ok) << xr::mirror_mode_name(mode) << " eye " << e << ": " << tg.panel << "/"
+                      << tg.widget << " drawn at (" << c->x << ", " << c->y
+                      << ") but the ray hits \"" << got << "\"";
+      // Control: the window taken as a plain pinhole (what the sim did before, whatever the
+      // mirror showed) misses in the headset mirrors, so this test can fail.
+      n.pinhole_hits += scene.hover(xr::MouseMoveEvent{c->x, c->y}) == tg.widget;
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%s(%.0f, %.0f) %s", cell.empty() ? "" : "; ", c->x, c->y,
+                    ok ? "hit" : "MISS");
+      cell += buf;
     }
-    EXPECT_EQ(hit, visible) << xr::mirror_mode_name(mode);
+    rows[tg.panel + "/" + tg.widget] +=
+        " " + (cell.empty() ? std::string("not in view") : cell) + " |";
+  }
+  return n;
+}
+
+TEST(PointingGl, APressAtTheDrawnCentreOfEveryWidgetHitsItInEveryMirrorMode) {
+  PointingScene scene;
+  const int targets = static_cast<int>(scene.targets().size());
+  ASSERT_GE(targets, 12);  // disabled buttons (nothing to redo yet) take no press
+  std::ostringstream table;
+  table << "| widget |";
+  for (const xr::MirrorMode m : kModes) table << " " << xr::mirror_mode_name(m) << " |";
+  table << "\n|---|---|---|---|---|\n";
+  std::map<std::string, std::string> rows;
+  for (const xr::MirrorMode mode : kModes) {
+    const ModeCounts n = point_at_targets(scene, mode, rows);
+    EXPECT_EQ(n.hit, n.visible) << xr::mirror_mode_name(mode);
     if (mode == xr::MirrorMode::Desktop)
-      EXPECT_EQ(pinhole_hits, visible) << "the desktop view is that pinhole";
+      EXPECT_EQ(n.pinhole_hits, n.visible) << "the desktop view is that pinhole";
     else
-      EXPECT_LT(pinhole_hits, visible / 2)
+      EXPECT_LT(n.pinhole_hits, n.visible / 2)
           << xr::mirror_mode_name(mode) << ": the control should miss";
     // The desktop view shows every widget; the headset mirrors most (the eyes see less).
     if (mode == xr::MirrorMode::Desktop)
-      EXPECT_EQ(visible, static_cast<int>(targets.size()));
+      EXPECT_EQ(n.visible, targets);
     else
-      EXPECT_GE(visible, static_cast<int>(targets.size()) / 2) << xr::mirror_mode_name(mode);
+      EXPECT_GE(n.visible, targets / 2) << xr::mirror_mode_name(mode);
   }
   for (const auto& [name, row] : rows) table << "| " << name << " |" << row << "\n";
   std::ofstream(std::string(VDFX_TEST_OUTPUT_DIR) + "/pointing_table.md") << table.str();

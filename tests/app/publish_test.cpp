@@ -8,49 +8,15 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
-#include <set>
 
-#include "export_test_util.h"
+#include "publish_test_util.h"
 
 namespace vdfx::app::testing {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-std::set<std::string> listing(const fs::path& dir) {
-  std::set<std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file()) files.insert(e.path().lexically_relative(dir).generic_string());
-  return files;
-}
-
-/// Names in `dir`'s parent that a publish may leave behind by mistake (its staging folder).
-std::vector<std::string> leftovers(const fs::path& dir) {
-  std::vector<std::string> out;
-  for (const auto& e : fs::directory_iterator(dir.parent_path()))
-    if (e.path().filename().string().find(".publish-") != std::string::npos)
-      out.push_back(e.path().filename().string());
-  return out;
-}
-
-/// The web player's module is built beside the executable unless -DVDFX_BUILD_WASM=OFF (the
-/// sanitizer build): without it publish is an internal error naming it, and the tests that need
-/// a published folder are skipped.
-bool module_built() {
-  return fs::exists(fs::path(VDFX_BINARY).parent_path() / "wasm" / "vdfx_player.wasm");
-}
-
-constexpr const char* kNoModule = "built without the web player's module (VDFX_BUILD_WASM=OFF)";
-
-std::string publish_args(const Fixture& f, const fs::path& out, const std::string& extra = "") {
-  return "publish " + f.clip.string() + " --sidecar " + f.sidecar.string() + " --out " +
-         out.string() + " " + extra;
-}
+using test_files::slurp;
 
 /// player.json's video.eyes.<eye> as {x, y, width, height}.
 std::array<int, 4> eye_rect_of(const nlohmann::json& manifest, const char* eye) {
@@ -75,8 +41,8 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
                                           "vdfx_player.js",
                                           "vdfx_player.wasm",
                                           "player.json",
-                                          "clip.mp4",
-                                          "clip.vdfx.json",
+                                          "video.mp4",
+                                          "sidecar.vdfx.json",
                                           "shaders/fullscreen.vert",
                                           "shaders/video.frag",
                                           "shaders/blur_1d.frag",
@@ -86,15 +52,17 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
                                           "shaders/flare.frag",
                                           "shaders/grain.frag"};
   EXPECT_EQ(listing(out), expected);
-  // The video and the sidecar are copied byte for byte.
-  EXPECT_EQ(slurp(out / "clip.mp4"), slurp(f.clip));
-  EXPECT_EQ(slurp(out / "clip.vdfx.json"), slurp(f.sidecar));
+  // The video and the sidecar are copied byte for byte, under fixed names.
+  EXPECT_EQ(slurp(out / "video.mp4"), slurp(f.clip));
+  EXPECT_EQ(slurp(out / "sidecar.vdfx.json"), slurp(f.sidecar));
   EXPECT_NE(slurp(out / "index.html").find("<title>Dawn &amp; &lt;dusk&gt;</title>"),
             std::string::npos);
   const auto manifest = nlohmann::json::parse(slurp(out / "player.json"));
   EXPECT_EQ(manifest["format"], "vdfx.publish");
-  EXPECT_EQ(manifest["sidecar"], "clip.vdfx.json");
-  EXPECT_EQ(manifest["video"]["file"], "clip.mp4");
+  EXPECT_EQ(manifest["sidecar"], "sidecar.vdfx.json");
+  EXPECT_EQ(manifest["sidecar_name"], "clip.vdfx.json");
+  EXPECT_EQ(manifest["video"]["file"], "video.mp4");
+  EXPECT_EQ(manifest["video"]["name"], "clip.mp4");
   EXPECT_EQ(manifest["video"]["codec"], "h264");
   EXPECT_EQ(manifest["video"]["frames"], kFrames);
   EXPECT_EQ(manifest["video"]["layout"], "mono");
@@ -110,6 +78,33 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
   EXPECT_NE(stack.find("#define HAS_TINT 0"), std::string::npos);
   EXPECT_NE(stack.find("#define BLUR_MODE 1"), std::string::npos);
   EXPECT_TRUE(leftovers(out).empty());
+}
+
+// A video and a sidecar named with what a URL cannot hold as it is ('#', '?', '%', spaces,
+// non-ASCII letters, a leading dash) are published under fixed names; their own names are the
+// title and player.json's names (the page builds its URLs from the fixed ones).
+TEST(Publish, FilesNamedWithUrlCharactersArePublishedUnderFixedNames) {
+  if (!module_built()) GTEST_SKIP() << kNoModule;
+  Fixture f = make_fixture();
+  const std::string video_name = "-take#2 50%? \xc3\xa9t\xc3\xa9.MP4";
+  const std::string sidecar_name = "-s#1 100%?.vdfx.json";
+  fs::rename(f.clip, f.dir / video_name);
+  fs::rename(f.sidecar, f.dir / sidecar_name);
+  const fs::path out = f.dir / "site";
+  // Run in the folder, the video named as it is: "--" before it, since it starts with a dash.
+  const CommandResult r = run_command("cd " + f.dir.string() + " && env -u DISPLAY timeout 60 " +
+                                      VDFX_BINARY + " publish --sidecar '" + sidecar_name +
+                                      "' --out site -- '" + video_name + "' 2>&1");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(slurp(out / "video.mp4"), slurp(f.dir / video_name));
+  EXPECT_EQ(slurp(out / "sidecar.vdfx.json"), slurp(f.dir / sidecar_name));
+  const auto m = nlohmann::json::parse(slurp(out / "player.json"));
+  EXPECT_EQ(m["video"]["file"], "video.mp4");
+  EXPECT_EQ(m["video"]["name"], video_name);
+  EXPECT_EQ(m["sidecar"], "sidecar.vdfx.json");
+  EXPECT_EQ(m["sidecar_name"], sidecar_name);
+  EXPECT_EQ(m["title"], video_name);
+  EXPECT_NE(slurp(out / "index.html").find("<title>" + video_name + "</title>"), std::string::npos);
 }
 
 // The page draws flares and the shader grain styles; a volumetric grain is named as left out.
@@ -249,7 +244,7 @@ TEST(Publish, ACodecBrowsersDoNotPlayIsRefusedNamingItAndTheOptionThenTranscoded
   EXPECT_EQ(manifest["video"]["codec"], "h264");
   EXPECT_EQ(manifest["video"]["frames"], 6);
   EXPECT_EQ(manifest["video"]["layout"], "top-bottom");
-  auto decoder = io::open_frame_decoder(out / "clip.mp4", {});
+  auto decoder = io::open_frame_decoder(out / "video.mp4", {});
   EXPECT_EQ(decoder->properties().codec, "h264");
   EXPECT_EQ(decoder->properties().stereo_tags.mode, effects::StereoMode::TopBottom);
   EXPECT_TRUE(leftovers(out).empty());
@@ -262,7 +257,7 @@ TEST(Publish, TranscodesToVp9) {
   const fs::path out = f.dir / "site";
   const CommandResult t = run_vdfx_headless(publish_args(f, out, "--transcode vp9"));
   ASSERT_EQ(t.exit_code, 0) << t.output;
-  EXPECT_EQ(io::open_frame_decoder(out / "clip.mp4", {})->properties().codec, "vp9");
+  EXPECT_EQ(io::open_frame_decoder(out / "video.mp4", {})->properties().codec, "vp9");
 }
 
 TEST(Publish, RefusesAnOutThatIsAnInputAFileOrAFolderItDidNotWrite) {

@@ -12,8 +12,8 @@
 #include "player_test_support.h"
 #include "tests/media_clips.h"
 #include "tests/test_files.h"
-#include "xr/compositor.h"
-#include "xr/input_backend.h"
+#include "xr/input/input_backend.h"
+#include "xr/render/compositor.h"
 
 namespace vdfx::app {
 namespace {

@@ -23,11 +23,11 @@
 #include "app/bench/inputs.h"
 #include "effects/effect_shaders.h"
 #include "gl_bench_support.h"
-#include "xr/distortion_gl.h"
-#include "xr/effect_stack_gl.h"
-#include "xr/gl_context.h"
-#include "xr/gpu_timer.h"
-#include "xr/video_layer.h"
+#include "xr/render/distortion_gl.h"
+#include "xr/render/effect_stack_gl.h"
+#include "xr/render/gl_context.h"
+#include "xr/render/gpu_timer.h"
+#include "xr/render/video_layer.h"
 
 namespace {
 

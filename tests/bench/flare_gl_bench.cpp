@@ -22,12 +22,12 @@
 #include "effects/flare_layout.h"
 #include "gl_bench_support.h"
 #include "play_eye_fixture.h"
-#include "xr/compositor.h"
-#include "xr/eye_views.h"
-#include "xr/flare_gl.h"
-#include "xr/gl_context.h"
-#include "xr/gpu_timer.h"
-#include "xr/session.h"
+#include "xr/headset/eye_views.h"
+#include "xr/headset/session.h"
+#include "xr/render/compositor.h"
+#include "xr/render/flare_gl.h"
+#include "xr/render/gl_context.h"
+#include "xr/render/gpu_timer.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/bench/timing.h"
-#include "xr/gpu_timer.h"
+#include "xr/render/gpu_timer.h"
 
 namespace vdfx::bench {
 

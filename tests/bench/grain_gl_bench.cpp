@@ -21,7 +21,7 @@
 #include "effects/grain_layout.h"
 #include "gl_bench_support.h"
 #include "play_eye_fixture.h"
-#include "xr/grain_gl.h"
+#include "xr/render/grain_gl.h"
 
 namespace {
 
@@ -74,7 +74,7 @@ void BM_GlGrainParticlesDraw(benchmark::State& s) {
     return;
   }
   const auto style = s.range(0) ? effects::GrainStyle::FreeCloud : effects::GrainStyle::ObjectCloud;
-  // object_cloud at 10 m, the sphere docs/grain.md's figures before issue 24 were taken at.
+  // object_cloud at 10 m, the sphere docs/grain.md's CPU-particle figures were taken at.
   effects::GrainSet set = grain_set(style, 0.5, static_cast<int>(s.range(1)),
                                     style == effects::GrainStyle::ObjectCloud ? 10.0 : 0.0);
   f.grain->set_layers(set.layout(f.head, 0, 0));

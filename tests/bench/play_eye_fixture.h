@@ -13,10 +13,10 @@
 #include "app/bench/inputs.h"
 #include "effects/effect_shaders.h"
 #include "gl_bench_support.h"
-#include "xr/compositor.h"
-#include "xr/eye_views.h"
-#include "xr/gl_context.h"
-#include "xr/session.h"
+#include "xr/headset/eye_views.h"
+#include "xr/headset/session.h"
+#include "xr/render/compositor.h"
+#include "xr/render/gl_context.h"
 
 namespace vdfx::bench {
 

@@ -17,9 +17,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "io/ycbcr.h"
-#include "xr/gl_context.h"
-#include "xr/render_view.h"
-#include "xr/video_layer.h"
+#include "xr/headset/render_view.h"
+#include "xr/render/gl_context.h"
+#include "xr/render/video_layer.h"
 
 namespace {
 

@@ -12,7 +12,7 @@
 namespace vdfx::effects {
 namespace {
 
-/// The generic90 profile's left eye (xr/profiles/generic90.json): 1440 x 1600, FOV
+/// The generic90 profile's left eye (xr/headset/profiles/generic90.json): 1440 x 1600, FOV
 /// -52/+47/+53/-53 degrees, c = (0.22, 0.24), R = 1.8, DK2 LCA.
 EyeLens generic90_left() {
   EyeLens eye;

@@ -11,9 +11,9 @@
 namespace vdfx::effects {
 namespace {
 
-/// Coefficient sets: the bundled profiles (xr/profiles/*.json, also checked by the xr tests on
-/// the loaded files), both Cardboard viewers and lenses whose forward function folds.
-/// r_d_use: the largest normalised panel radius in use (the profile's panel corner), where known.
+/// Coefficient sets: the bundled profiles (xr/headset/profiles/*.json, also checked by the xr tests
+/// on the loaded files), both Cardboard viewers and lenses whose forward function folds. r_d_use:
+/// the largest normalised panel radius in use (the profile's panel corner), where known.
 const struct {
   const char* name;
   double c1, c2;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # @file
 # @brief The bad-input and fault probe behind docs/reliability.md: runs one vdfx executable
-# against every class of issue 11 and prints one line per case (exit code or signal, wall time,
+# against every class of bad input and prints one line per case (exit code or signal, wall time,
 # peak memory, what happened to the files involved, the start of the message).
 #
 # usage: tests/fault/probe.sh VDFX [FAULT_SO]
@@ -34,7 +34,7 @@ keys() {  # keys N: an exposure effect with N keyframes on a spiral
   awk -v n="$1" 'BEGIN{printf "{\"type\":\"exposure\",\"keyframes\":["; for(i=0;i<n;i++){a=(i*137.50776)%359-179; z=2*(i+0.5)/n-1; h=atan2(z,sqrt(1-z*z))*57.29578; printf "%s{\"azimuth_deg\":%.6f,\"altitude_deg\":%.6f,\"frame\":0,\"params\":{\"stops\":%.3f}}", (i?",":""), a, h, (i%17)/4-2}; printf "]}"}'
 }
 head -2 "$root/recordings/sim_look_and_place.vdrec.jsonl" > rec.vdrec.jsonl
-cp "$root/xr/profiles/generic90.json" hmd.json
+cp "$root/xr/headset/profiles/generic90.json" hmd.json
 render="render pano.png --sidecar s.vdfx.json --view 0,0 --fov 90 --size 64x32"
 
 # [SECTION] one case

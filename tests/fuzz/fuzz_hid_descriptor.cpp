@@ -7,7 +7,7 @@
 #include <span>
 
 #include "fuzz_check.h"
-#include "xr/hid_report_descriptor.h"
+#include "xr/input/hid_report_descriptor.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace vdfx::xr;

@@ -12,7 +12,7 @@
 #include <span>
 
 #include "fuzz_check.h"
-#include "xr/hid_parsers.h"
+#include "xr/input/hid_parsers.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace vdfx::xr;

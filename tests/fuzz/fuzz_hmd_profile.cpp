@@ -9,7 +9,7 @@
 
 #include "fuzz_check.h"
 #include "io/input_error.h"
-#include "xr/hmd_profile.h"
+#include "xr/headset/hmd_profile.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace vdfx;

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes the fuzz targets' seed corpora (tests/fuzz/corpus/NAME/) from the project's own test
 data: the demo sidecar and the contract's example, the first lines of the committed recordings,
-the bundled HMD profiles, the report descriptors of tests/xr/hid_test_data.h and the HID reports
-of recordings/hid_*.vdrec.jsonl. Run from the repository root after those change; the output is
+the bundled HMD profiles, the report descriptors of tests/xr/input/hid_test_data.h and the HID
+reports of recordings/hid_*.vdrec.jsonl. Run from the repository root after those change; the output is
 committed, so CI does not need Python."""
 import json
 import pathlib
@@ -74,12 +74,12 @@ for rec in sorted((root / "recordings").glob("*.vdrec.jsonl")):
 
 # HMD profiles: the bundled ones.
 d = fresh("hmd_profile")
-for p in sorted((root / "xr" / "profiles").glob("*.json")):
+for p in sorted((root / "xr" / "headset" / "profiles").glob("*.json")):
     shutil.copy(p, d / p.name)
 
 # Report descriptors: every byte table of the HID test data.
 d = fresh("hid_descriptor")
-header = (root / "tests" / "xr" / "hid_test_data.h").read_text()
+header = (root / "tests" / "xr" / "input" / "hid_test_data.h").read_text()
 descriptors = {}
 for name, body in re.findall(r"std::vector<std::uint8_t> (k\w+Descriptor\w*) = \{(.*?)\};", header, re.S):
     body = re.sub(r"//[^\n]*", "", body)

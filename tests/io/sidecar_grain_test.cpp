@@ -116,7 +116,8 @@ const BrokenCase kBroken[] = {
     {"style_not_string", [](json& j) { j["effects"][1]["style"] = 2; }, "/effects/1/style",
      "expected a string"},
     {"unknown_field", [](json& j) { j["effects"][1]["colour"] = "red"; }, "/effects/1/colour",
-     "unknown field \"colour\" (expected: type, style, seed, settings, interpolation, keyframes)"},
+     "unknown field \"colour\" (expected: type, style, seed, settings, anchor, interpolation, "
+     "keyframes)"},
     {"light_is_not_grain", [](json& j) { j["effects"][1]["light"] = "auto"; }, "/effects/1/light",
      "unknown field \"light\""},
     {"seed_missing", [](json& j) { j["effects"][1].erase("seed"); }, "/effects/1",
@@ -277,7 +278,7 @@ TEST(SidecarGrain, RoundTripIsExact) {
 TEST(SidecarGrain, WrittenInTheGuidesKeyOrderAfterTheFlares) {
   Sidecar s = grain_sidecar();
   s.grains.resize(1);
-  s.flares.push_back({});
+  s.flares.emplace_back();
   const std::string text = format_sidecar(s);
   const auto flare = text.find("\"flare\""), grain = text.find("\"grain\"");
   ASSERT_NE(grain, std::string::npos);

@@ -48,6 +48,32 @@ class LoaderInterface : public RuntimeTest {
     return {1, 1, sizeof(LoaderInfo), 1, 1, XR_MAKE_VERSION(1, 0, 0), XR_MAKE_VERSION(1, 0, 1023)};
   }
   static RuntimeRequest request() { return {3, 1, sizeof(RuntimeRequest), 0, 0, nullptr}; }
+  /// The runtime's xrGetInstanceProcAddr, from a negotiation that must succeed.
+  PFN_xrGetInstanceProcAddr negotiated() {
+    const LoaderInfo info = loader_info();
+    RuntimeRequest r = request();
+    EXPECT_EQ(negotiate_(&info, &r), XR_SUCCESS);
+    EXPECT_NE(r.getInstanceProcAddr, nullptr);
+    return r.getInstanceProcAddr;
+  }
+  /// An instance without OpenGL, through the runtime's own xrCreateInstance.
+  static XrInstance create_instance(PFN_xrGetInstanceProcAddr gipa) {
+    PFN_xrVoidFunction f = nullptr;
+    EXPECT_EQ(gipa(XR_NULL_HANDLE, "xrCreateInstance", &f), XR_SUCCESS);
+    XrInstanceCreateInfo create{};
+    create.type = XR_TYPE_INSTANCE_CREATE_INFO;
+    std::strcpy(create.applicationInfo.applicationName, "loader interface test");
+    create.applicationInfo.apiVersion = XR_CURRENT_API_VERSION;
+    XrInstance instance = XR_NULL_HANDLE;
+    EXPECT_EQ(reinterpret_cast<PFN_xrCreateInstance>(f)(&create, &instance), XR_SUCCESS);
+    EXPECT_NE(instance, XR_NULL_HANDLE);
+    return instance;
+  }
+  static void destroy_instance(PFN_xrGetInstanceProcAddr gipa, XrInstance instance) {
+    PFN_xrVoidFunction f = nullptr;
+    ASSERT_EQ(gipa(instance, "xrDestroyInstance", &f), XR_SUCCESS);
+    EXPECT_EQ(reinterpret_cast<PFN_xrDestroyInstance>(f)(instance), XR_SUCCESS);
+  }
 
   void* library_ = nullptr;
   Negotiate negotiate_ = nullptr;
@@ -77,13 +103,68 @@ TEST_F(LoaderInterface, NegotiatesVersionOneAndRefusesOtherStructs) {
             std::string::npos);
 }
 
-TEST_F(LoaderInterface, ServesEveryCoreFunctionAndNothingElse) {
-  const LoaderInfo info = loader_info();
-  RuntimeRequest r = request();
-  ASSERT_EQ(negotiate_(&info, &r), XR_SUCCESS);
-  const PFN_xrGetInstanceProcAddr gipa = r.getInstanceProcAddr;
+// Every function of OpenXR 1.0 core the runtime serves for an instance.
+constexpr const char* kCoreFunctions[] = {
+    "xrGetInstanceProcAddr",
+    "xrEnumerateApiLayerProperties",
+    "xrEnumerateInstanceExtensionProperties",
+    "xrCreateInstance",
+    "xrDestroyInstance",
+    "xrGetInstanceProperties",
+    "xrPollEvent",
+    "xrResultToString",
+    "xrStructureTypeToString",
+    "xrGetSystem",
+    "xrGetSystemProperties",
+    "xrEnumerateEnvironmentBlendModes",
+    "xrCreateSession",
+    "xrDestroySession",
+    "xrEnumerateReferenceSpaces",
+    "xrCreateReferenceSpace",
+    "xrGetReferenceSpaceBoundsRect",
+    "xrCreateActionSpace",
+    "xrLocateSpace",
+    "xrDestroySpace",
+    "xrEnumerateViewConfigurations",
+    "xrGetViewConfigurationProperties",
+    "xrEnumerateViewConfigurationViews",
+    "xrEnumerateSwapchainFormats",
+    "xrCreateSwapchain",
+    "xrDestroySwapchain",
+    "xrEnumerateSwapchainImages",
+    "xrAcquireSwapchainImage",
+    "xrWaitSwapchainImage",
+    "xrReleaseSwapchainImage",
+    "xrBeginSession",
+    "xrEndSession",
+    "xrRequestExitSession",
+    "xrWaitFrame",
+    "xrBeginFrame",
+    "xrEndFrame",
+    "xrLocateViews",
+    "xrStringToPath",
+    "xrPathToString",
+    "xrCreateActionSet",
+    "xrDestroyActionSet",
+    "xrCreateAction",
+    "xrDestroyAction",
+    "xrSuggestInteractionProfileBindings",
+    "xrAttachSessionActionSets",
+    "xrGetCurrentInteractionProfile",
+    "xrGetActionStateBoolean",
+    "xrGetActionStateFloat",
+    "xrGetActionStateVector2f",
+    "xrGetActionStatePose",
+    "xrSyncActions",
+    "xrEnumerateBoundSourcesForAction",
+    "xrGetInputSourceLocalizedName",
+    "xrApplyHapticFeedback",
+    "xrStopHapticFeedback",
+};
+
+TEST_F(LoaderInterface, WithoutAnInstanceServesWhatTheLoaderNeedsFirstOnly) {
+  const PFN_xrGetInstanceProcAddr gipa = negotiated();
   PFN_xrVoidFunction f = nullptr;
-  // Without an instance: the three the loader needs first, and nothing else.
   for (const char* name : {"xrCreateInstance", "xrEnumerateInstanceExtensionProperties",
                            "xrEnumerateApiLayerProperties"}) {
     EXPECT_EQ(gipa(XR_NULL_HANDLE, name, &f), XR_SUCCESS) << name;
@@ -94,69 +175,13 @@ TEST_F(LoaderInterface, ServesEveryCoreFunctionAndNothingElse) {
   ::testing::internal::GetCapturedStderr();
   EXPECT_EQ(gipa(XR_NULL_HANDLE, "xrFrobnicateVDFX", &f), XR_ERROR_FUNCTION_UNSUPPORTED);
   EXPECT_EQ(f, nullptr);
-  // An instance without OpenGL.
-  ASSERT_EQ(gipa(XR_NULL_HANDLE, "xrCreateInstance", &f), XR_SUCCESS);
-  XrInstanceCreateInfo create{};
-  create.type = XR_TYPE_INSTANCE_CREATE_INFO;
-  std::strcpy(create.applicationInfo.applicationName, "loader interface test");
-  create.applicationInfo.apiVersion = XR_CURRENT_API_VERSION;
-  XrInstance instance = XR_NULL_HANDLE;
-  ASSERT_EQ(reinterpret_cast<PFN_xrCreateInstance>(f)(&create, &instance), XR_SUCCESS);
-  for (const char* name : {"xrGetInstanceProcAddr",
-                           "xrEnumerateApiLayerProperties",
-                           "xrEnumerateInstanceExtensionProperties",
-                           "xrCreateInstance",
-                           "xrDestroyInstance",
-                           "xrGetInstanceProperties",
-                           "xrPollEvent",
-                           "xrResultToString",
-                           "xrStructureTypeToString",
-                           "xrGetSystem",
-                           "xrGetSystemProperties",
-                           "xrEnumerateEnvironmentBlendModes",
-                           "xrCreateSession",
-                           "xrDestroySession",
-                           "xrEnumerateReferenceSpaces",
-                           "xrCreateReferenceSpace",
-                           "xrGetReferenceSpaceBoundsRect",
-                           "xrCreateActionSpace",
-                           "xrLocateSpace",
-                           "xrDestroySpace",
-                           "xrEnumerateViewConfigurations",
-                           "xrGetViewConfigurationProperties",
-                           "xrEnumerateViewConfigurationViews",
-                           "xrEnumerateSwapchainFormats",
-                           "xrCreateSwapchain",
-                           "xrDestroySwapchain",
-                           "xrEnumerateSwapchainImages",
-                           "xrAcquireSwapchainImage",
-                           "xrWaitSwapchainImage",
-                           "xrReleaseSwapchainImage",
-                           "xrBeginSession",
-                           "xrEndSession",
-                           "xrRequestExitSession",
-                           "xrWaitFrame",
-                           "xrBeginFrame",
-                           "xrEndFrame",
-                           "xrLocateViews",
-                           "xrStringToPath",
-                           "xrPathToString",
-                           "xrCreateActionSet",
-                           "xrDestroyActionSet",
-                           "xrCreateAction",
-                           "xrDestroyAction",
-                           "xrSuggestInteractionProfileBindings",
-                           "xrAttachSessionActionSets",
-                           "xrGetCurrentInteractionProfile",
-                           "xrGetActionStateBoolean",
-                           "xrGetActionStateFloat",
-                           "xrGetActionStateVector2f",
-                           "xrGetActionStatePose",
-                           "xrSyncActions",
-                           "xrEnumerateBoundSourcesForAction",
-                           "xrGetInputSourceLocalizedName",
-                           "xrApplyHapticFeedback",
-                           "xrStopHapticFeedback"}) {
+}
+
+TEST_F(LoaderInterface, ServesEveryCoreFunctionAndNothingElse) {
+  const PFN_xrGetInstanceProcAddr gipa = negotiated();
+  const XrInstance instance = create_instance(gipa);
+  PFN_xrVoidFunction f = nullptr;
+  for (const char* name : kCoreFunctions) {
     f = nullptr;
     EXPECT_EQ(gipa(instance, name, &f), XR_SUCCESS) << name;
     EXPECT_NE(f, nullptr) << name;
@@ -165,15 +190,21 @@ TEST_F(LoaderInterface, ServesEveryCoreFunctionAndNothingElse) {
   EXPECT_EQ(gipa(instance, "xrGetOpenGLGraphicsRequirementsKHR", &f),
             XR_ERROR_FUNCTION_UNSUPPORTED);
   EXPECT_EQ(gipa(instance, "xrGetVisibilityMaskKHR", &f), XR_ERROR_FUNCTION_UNSUPPORTED);
-  // xrResultToString names results as the headers do, and unknown ones by number.
+  destroy_instance(gipa, instance);
+}
+
+TEST_F(LoaderInterface, ResultToStringNamesResultsAsTheHeadersDo) {
+  const PFN_xrGetInstanceProcAddr gipa = negotiated();
+  const XrInstance instance = create_instance(gipa);
+  PFN_xrVoidFunction f = nullptr;
+  // As the headers name them, and unknown ones by number.
   ASSERT_EQ(gipa(instance, "xrResultToString", &f), XR_SUCCESS);
   char text[XR_MAX_RESULT_STRING_SIZE];
   reinterpret_cast<PFN_xrResultToString>(f)(instance, XR_ERROR_SESSION_LOST, text);
   EXPECT_STREQ(text, "XR_ERROR_SESSION_LOST");
   reinterpret_cast<PFN_xrResultToString>(f)(instance, XrResult(-999), text);
   EXPECT_STREQ(text, "XR_UNKNOWN_FAILURE_-999");
-  ASSERT_EQ(gipa(instance, "xrDestroyInstance", &f), XR_SUCCESS);
-  EXPECT_EQ(reinterpret_cast<PFN_xrDestroyInstance>(f)(instance), XR_SUCCESS);
+  destroy_instance(gipa, instance);
 }
 
 }  // namespace

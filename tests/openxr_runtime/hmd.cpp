@@ -20,7 +20,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 std::filesystem::path profile_dir() {
   if (const char* env = std::getenv("VDFX_HMD_PROFILE_DIR"); env && *env) return env;
-  return std::filesystem::path(VDFX_SOURCE_DIR) / "xr" / "profiles";
+  return std::filesystem::path(VDFX_SOURCE_DIR) / "xr" / "headset" / "profiles";
 }
 
 [[noreturn]] void fail(const std::string& source, const std::string& pointer,
@@ -90,7 +90,7 @@ Hmd load_hmd(const std::string& name_or_path) {
     throw std::runtime_error("HMD profile '" + name_or_path + "': cannot read " + source +
                              (is_path ? ""
                                       : " (names are looked up in $VDFX_HMD_PROFILE_DIR, "
-                                        "else the source tree's xr/profiles)"));
+                                        "else the source tree's xr/headset/profiles)"));
   }
   std::stringstream text;
   text << in.rdbuf();

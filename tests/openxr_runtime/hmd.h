@@ -1,6 +1,7 @@
 /// @file
 /// @brief The headset the runtime simulates: what it reads of a vdfx HMD profile
-/// (xr/profiles/*.json, docs/hmd-profiles.md): views, their FOVs and sizes, IPD, refresh rate.
+/// (xr/headset/profiles/*.json, docs/hmd-profiles.md): views, their FOVs and sizes, IPD, refresh
+/// rate.
 #pragma once
 
 #include <array>
@@ -29,7 +30,7 @@ struct Hmd {
 
 /// Loads a profile as vdfx's --hmd does: a value naming an existing file, containing '/' or
 /// ending in ".json" is a path; anything else a name in $VDFX_HMD_PROFILE_DIR, else the source
-/// tree's xr/profiles. Throws std::runtime_error "FILE: /json/pointer: what" on a bad file.
+/// tree's xr/headset/profiles. Throws std::runtime_error "FILE: /json/pointer: what" on a bad file.
 Hmd load_hmd(const std::string& name_or_path);
 
 }  // namespace vdfx::test_runtime

@@ -1,15 +1,18 @@
 // What the page tests need around a headless Chromium, with node's own modules only (no npm):
 //  - serve(dir): a static HTTP server on a free localhost port, with byte ranges (the browser's
 //    media stack seeks through them) and the MIME types the page needs (application/wasm);
+//    serve(dir, { ranges: false }) answers as `python3 -m http.server` does (docs/publish.md's
+//    server): every file whole (200, no Accept-Ranges), cacheable (Last-Modified);
 //  - Browser: Debian's chromium, headless, WebGL2 through SwiftShader, driven over the DevTools
 //    protocol on a pipe (--remote-debugging-pipe: JSON messages ended by NUL on fds 3 and 4);
-//  - decodePng / diff: the screenshot's and vdfx render's pixels.
+//  - decodePng / diff: the screenshot's and vdfx render's pixels;
+//  - pageTest (a test's arguments, checks and exit status), vdfxRunner (vdfx ARGS, checked).
 'use strict';
 const fs = require('fs');
 const http = require('http');
 const path = require('path');
 const zlib = require('zlib');
-const { spawn } = require('child_process');
+const { spawn, spawnSync } = require('child_process');
 
 const MIME = {
   '.html': 'text/html', '.js': 'text/javascript', '.json': 'application/json',
@@ -17,7 +20,7 @@ const MIME = {
   '.m4v': 'video/mp4', '.frag': 'text/plain', '.vert': 'text/plain',
 };
 
-function serve(root) {
+function serve(root, { ranges = true } = {}) {
   const server = http.createServer((req, res) => {
     const rel = decodeURIComponent(new URL(req.url, 'http://x').pathname).replace(/^\/+/, '');
     const file = path.join(root, rel || 'index.html');
@@ -26,10 +29,12 @@ function serve(root) {
       res.end();
       return;
     }
-    const size = fs.statSync(file).size;
-    const headers = { 'Content-Type': MIME[path.extname(file)] || 'application/octet-stream',
-                      'Accept-Ranges': 'bytes', 'Cache-Control': 'no-store' };
-    const m = /^bytes=(\d*)-(\d*)$/.exec(req.headers.range || '');
+    const { size, mtime } = fs.statSync(file);
+    const type = MIME[path.extname(file)] || 'application/octet-stream';
+    const headers = ranges
+      ? { 'Content-Type': type, 'Accept-Ranges': 'bytes', 'Cache-Control': 'no-store' }
+      : { 'Content-Type': type, 'Last-Modified': mtime.toUTCString() };
+    const m = ranges && /^bytes=(\d*)-(\d*)$/.exec(req.headers.range || '');
     if (m) {
       const start = m[1] ? Number(m[1]) : size - Number(m[2]);
       const end = m[1] && m[2] ? Math.min(Number(m[2]), size - 1) : size - 1;
@@ -231,4 +236,15 @@ function pageTest(name, argNames) {
   return { args, check, runTest: run };
 }
 
-module.exports = { serve, Browser, decodePng, diff, pageTest };
+// `vdfx ARGS` for a test: run(args, { allowFail, cwd, ... }) returns spawnSync's result and
+// throws (with vdfx's output) on a non-zero exit unless allowFail.
+function vdfxRunner(vdfx) {
+  return (args, options = {}) => {
+    const r = spawnSync(vdfx, args, { encoding: 'utf8', ...options });
+    if (r.status !== 0 && !options.allowFail)
+      throw new Error(`vdfx ${args.join(' ')}: exit ${r.status}\n${r.stderr}${r.stdout}`);
+    return r;
+  };
+}
+
+module.exports = { serve, Browser, decodePng, diff, pageTest, vdfxRunner };

@@ -116,7 +116,7 @@ const median = (a) => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
                 `draw median ${median(s.drawMs).toFixed(1)} ms (${W}x${H}, SwiftShader), ` +
                 `conversion ${s.conversion}, frame upload median ${median(s.uploadMs).toFixed(1)} ms ` +
                 `(${VW}x${VH}: WebCodecs copy, chroma split, three texture uploads with mipmaps)`);
-    console.log(`folder ${(bytes / 1e6).toFixed(2)} MB, of which the video ${(fs.statSync(path.join(site, 'clip.mp4')).size / 1e6).toFixed(2)} MB`);
+    console.log(`folder ${(bytes / 1e6).toFixed(2)} MB, of which the video ${(fs.statSync(path.join(site, 'video.mp4')).size / 1e6).toFixed(2)} MB`);
   } finally {
     browser.close();
     server.close();

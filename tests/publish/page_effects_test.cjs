@@ -11,13 +11,13 @@
 //    display time, as vdfx render picks it).
 // player.json's left_out names nothing for these, and a volumetric grain stays named there.
 // WebXR (a fake XRSystem, fake_xr.cjs): the flares and the headset grain drawn per eye, the eyes
-// half the IPD to the head's sides with the asymmetric frusta of xr/profiles/offcentre.json; each
+// half the IPD to the head's sides with the asymmetric frusta of xr/headset/profiles/offcentre.json; each
 // half of the canvas matches `vdfx render --hmd offcentre.json --eye left|right` (no distortion).
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const { execFileSync, spawnSync } = require('child_process');
-const { serve, Browser, decodePng, diff, pageTest } = require('./browser.cjs');
+const { execFileSync } = require('child_process');
+const { serve, Browser, decodePng, diff, pageTest, vdfxRunner } = require('./browser.cjs');
 const { fakeXr, viewQuaternion, projectionOf, half } = require('./fake_xr.cjs');
 
 const { args, check, runTest } =
@@ -25,12 +25,7 @@ const { args, check, runTest } =
 const [vdfx, sourceDir, outDir] = args;
 const W = 320, H = 180, MAX = 3, MEAN = 1;
 
-function run(args, options = {}) {
-  const r = spawnSync(vdfx, args, { encoding: 'utf8', ...options });
-  if (r.status !== 0 && !options.allowFail)
-    throw new Error(`vdfx ${args.join(' ')}: exit ${r.status}\n${r.stderr}${r.stdout}`);
-  return r;
-}
+const run = vdfxRunner(vdfx);
 
 // 512 x 256, 8 frames at 24 fps, H.264 4:2:0 BT.709 limited range (as page_test.cjs). `spot`:
 // a dim frame with a white spot (a Gaussian of 4 px sigma reaching full white) that moves right
@@ -110,7 +105,7 @@ function publishSites() {
     site.sidecar = path.join(outDir, `${name}.vdfx.json`);
     fs.writeFileSync(site.sidecar, JSON.stringify(sidecarOf(site), null, 1));
     run(['publish', clips[site.clip], '--sidecar', site.sidecar, '--out', path.join(outDir, name)]);
-    site.video = path.join(outDir, name, path.basename(clips[site.clip]));
+    site.video = path.join(outDir, name, 'video.mp4');
     const manifest = JSON.parse(fs.readFileSync(path.join(outDir, name, 'player.json')));
     check(manifest.left_out.length === 0, `${name}: left_out ${JSON.stringify(manifest.left_out)}`);
   }
@@ -169,7 +164,7 @@ async function comparePixels(browser, port) {
   console.log(rows.join('\n'));
 }
 
-// The eyes of xr/profiles/offcentre.json: tangents of its fov_deg (left, right, down, up) and
+// The eyes of xr/headset/profiles/offcentre.json: tangents of its fov_deg (left, right, down, up) and
 // its IPD. The canvas is 640 x 360, each eye 320 x 360: at 160 px across its 90 degrees the
 // grain's lattice would be finer than a pixel, and the band limit would leave no grain to test.
 const XW = 640, XH = 360;
@@ -179,7 +174,7 @@ const OFFCENTRE = { ipd: 0.064, eyes: [
 // One XR frame of `site` with the head at (az, alt) at the origin: each eye at
 // head.orientation * (-+ipd/2, 0, 0), parallel to the head, its own projection.
 async function checkXr(browser, port, name, [az, alt, frame]) {
-  const profile = path.join(sourceDir, 'xr', 'profiles', 'offcentre.json');
+  const profile = path.join(sourceDir, 'xr', 'headset', 'profiles', 'offcentre.json');
   const q = viewQuaternion(az, alt);
   // The head's x axis (right) in LOCAL: the first column of its rotation (renderer.js,
   // viewRotation), which the altitude does not tilt.

@@ -15,20 +15,15 @@
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const { execFileSync, spawnSync } = require('child_process');
-const { serve, Browser, decodePng, diff, pageTest } = require('./browser.cjs');
+const { execFileSync } = require('child_process');
+const { serve, Browser, decodePng, diff, pageTest, vdfxRunner } = require('./browser.cjs');
 const { fakeXr, viewQuaternion, projection } = require('./fake_xr.cjs');
 
 const { args, check, runTest } = pageTest('page_stereo_test.cjs', ['VDFX_BINARY', 'OUTPUT_DIR']);
 const [vdfx, outDir] = args;
 const W = 256, H = 160, MAX = 3, MEAN = 1, FPS = 24, FRAMES = 4;
 
-function run(args, options = {}) {
-  const r = spawnSync(vdfx, args, { encoding: 'utf8', ...options });
-  if (r.status !== 0 && !options.allowFail)
-    throw new Error(`vdfx ${args.join(' ')}: exit ${r.status}\n${r.stderr}${r.stdout}`);
-  return r;
-}
+const run = vdfxRunner(vdfx);
 
 // A frame of two eyes' images, each with its own pattern in its own coordinates (x, y over
 // w x h: the eye's image), moving with the frame N; both wrap at the eye's seam.
@@ -117,7 +112,7 @@ function pageUrl(port, site, [az, alt, frame, fov], eye) {
 }
 
 function render(site, [az, alt, frame, fov], eye, size, out) {
-  run(['render', path.join(outDir, site.name, `${site.name}.mp4`), '--sidecar', site.sidecar,
+  run(['render', path.join(outDir, site.name, 'video.mp4'), '--sidecar', site.sidecar,
        ...site.args, '--view', `${az},${alt}`, '--frame', String(frame), '--fov', String(fov),
        '--size', size, '--mode', 'view', '--eye', eye, '--out', out]);
   return decodePng(fs.readFileSync(out));

@@ -12,8 +12,8 @@
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const { execFileSync, spawnSync } = require('child_process');
-const { serve, Browser, decodePng, diff, pageTest } = require('./browser.cjs');
+const { execFileSync } = require('child_process');
+const { serve, Browser, decodePng, diff, pageTest, vdfxRunner } = require('./browser.cjs');
 const { fakeXr, viewQuaternion, projection } = require('./fake_xr.cjs');
 
 const { args, check, runTest } =
@@ -57,12 +57,7 @@ function sidecarOf(type) {
            effects: [{ type, keyframes }] };
 }
 
-function run(args, options = {}) {
-  const r = spawnSync(vdfx, args, { encoding: 'utf8', ...options });
-  if (r.status !== 0 && !options.allowFail)
-    throw new Error(`vdfx ${args.join(' ')}: exit ${r.status}\n${r.stderr}${r.stdout}`);
-  return r;
-}
+const run = vdfxRunner(vdfx);
 
 // The folders the browser loads: one per effect, the demo, and two broken ones.
 function publishSites() {
@@ -73,7 +68,7 @@ function publishSites() {
     const sidecar = path.join(outDir, `${type}.vdfx.json`);
     fs.writeFileSync(sidecar, JSON.stringify(sidecarOf(type), null, 1));
     run(['publish', clip, '--sidecar', sidecar, '--out', path.join(outDir, type)]);
-    sites.push({ name: type, video: path.join(outDir, type, 'clip.mp4'), sidecar, views: VIEWS });
+    sites.push({ name: type, video: path.join(outDir, type, 'video.mp4'), sidecar, views: VIEWS });
   }
   // The demo's sidecar (tint, exposure, saturation, vignette together) on the same clip.
   const demo = JSON.parse(fs.readFileSync(path.join(sourceDir, 'app/demo/interior.vdfx.json')));
@@ -81,7 +76,7 @@ function publishSites() {
   const demoSidecar = path.join(outDir, 'demo.vdfx.json');
   fs.writeFileSync(demoSidecar, JSON.stringify(demo, null, 1));
   run(['publish', clip, '--sidecar', demoSidecar, '--out', path.join(outDir, 'demo')]);
-  sites.push({ name: 'demo', video: path.join(outDir, 'demo', 'clip.mp4'), sidecar: demoSidecar,
+  sites.push({ name: 'demo', video: path.join(outDir, 'demo', 'video.mp4'), sidecar: demoSidecar,
                views: [[31, 5, 0, 90], [-75, -10, 5, 80], [-150, 0, 2, 100]] });
   return sites;
 }
@@ -132,8 +127,8 @@ function brokenSite(from, name, file, bytes) {
 async function checkErrors(browser, port) {
   const text = '{"format": "vdfx.sidecar", "version": 1,\n "video": {"path": "clip.mp4", ' +
     '"fps": 0, "frames": 8, "width": 512, "height": 256},\n "effects": [{"type": "glow"}]}\n';
-  const dir = brokenSite('exposure', 'broken_sidecar', 'exposure.vdfx.json', text);
-  const v = run(['validate', 'exposure.vdfx.json'], { cwd: dir, allowFail: true });
+  const dir = brokenSite('exposure', 'broken_sidecar', 'sidecar.vdfx.json', text);
+  const v = run(['validate', 'sidecar.vdfx.json'], { cwd: dir, allowFail: true });
   const lines = v.stderr.trim().split('\n').filter((l) => !/: \d+ problems?$/.test(l));
   check(v.status === 1 && lines.length >= 2, `vdfx validate on the broken sidecar: ${v.stderr}`);
   const title = await browser.open(`http://127.0.0.1:${port}/broken_sidecar/index.html`, W, H);
@@ -142,7 +137,7 @@ async function checkErrors(browser, port) {
   check(shown === lines.join('\n'), `broken sidecar: the page shows\n${shown}\n` +
         `and vdfx validate prints\n${lines.join('\n')}`);
 
-  brokenSite('exposure', 'broken_video', 'clip.mp4', Buffer.alloc(4096, 7));
+  brokenSite('exposure', 'broken_video', 'video.mp4', Buffer.alloc(4096, 7));
   const t2 = await browser.open(`http://127.0.0.1:${port}/broken_video/index.html`, W, H);
   check(t2.startsWith('vdfx-error: ') && t2.includes('codec h264') &&
         t2.includes('--transcode'), `undecodable video: title ${t2}`);
@@ -186,7 +181,7 @@ async function checkXr(browser, port) {
                                       path.join(outDir, 'xr_head.vdfx.json'));
   for (const [i, e] of eyes.entries()) {
     const ref = path.join(outDir, `xr_${e.eye}_render.png`);
-    run(['render', path.join(outDir, 'demo', 'clip.mp4'), '--sidecar', headSidecar, '--view',
+    run(['render', path.join(outDir, 'demo', 'video.mp4'), '--sidecar', headSidecar, '--view',
          `${e.az},${head[1]}`, '--frame', String(frame), '--fov', String(e.fov), '--size',
          `${w}x${H}`, '--mode', 'view', '--out', ref]);
     const half = { width: w, height: H, rgb: Buffer.alloc(w * H * 3) };

@@ -1,4 +1,4 @@
-// The flare layer of the page: xr/flare_gl.cpp's draw in WebGL2, from the same GLSL
+// The flare layer of the page: xr/render/flare_gl.cpp's draw in WebGL2, from the same GLSL
 // (shaders/flare.vert and flare.frag, effects/flare_shaders.h with the ES prelude). The layout
 // (effects::FlareSet::layouts: every element's centre, plane axes, extent, colour) comes from
 // the module once per frame for the head's pose; each eye draws it from its own position, rotation
@@ -6,7 +6,7 @@
 import { program } from './renderer.js';
 
 // The near plane: the headset style's plane sits a few centimetres from the eyes. Infinite far
-// plane; no depth test (xr/flare_gl.cpp, kNear).
+// plane; no depth test (xr/render/flare_gl.cpp, kNear).
 const NEAR = 1e-3;
 // Values per element in the module's list (app/publish/wasm/player_api.cpp, vdfx_flare_elements).
 export const ELEMENT_VALUES = 16;

@@ -1,4 +1,4 @@
-// The shader grain styles (headset, surface) on the page: xr/grain_gl.cpp's shader pass in
+// The shader grain styles (headset, surface) on the page: xr/render/grain_gl.cpp's shader pass in
 // WebGL2, from the same GLSL (shaders/grain.frag, effects/grain_shaders.h with the ES prelude).
 // The layers are laid out by the module once per frame from the head's pose
 // (effects::GrainSet::layout at the frame's display time); each eye's uniforms come from the

@@ -2,18 +2,21 @@
 // parameters evaluated each frame at the view direction by vdfx's own interpolation compiled
 // to WebAssembly (vdfx_player.wasm), drawn by the GL compositor's GLSL (renderer.js).
 //
-// Test hooks (URL query): view=AZ,ALT  frame=N  fov=DEG  size=WxH  paused=1. With size= the
-// canvas is exactly W x H CSS pixels at device pixel ratio 1, nothing drawn over it; with
-// frame= or paused=1 the page shows that one frame paused and sets document.title to
-// "vdfx-ready" once it is drawn; xr=1 draws that frame in an immersive session entered at once
-// (for a test's injected XRSystem); eye=left|right picks the eye a stereo video shows on the
-// canvas (default left; key 5 switches). Any error sets document.title to "vdfx-error: MESSAGE".
+// URL query (docs/publish.md): t=SECONDS or frame=N (where to start, as a link to a moment says
+// it), view=AZ,ALT, fov=DEG, paused=1 (hold that frame: a still), eye=left|right (the eye a
+// stereo video shows on the canvas; key 5 switches). Test hooks: size=WxH (the canvas exactly
+// W x H CSS pixels at device pixel ratio 1, nothing drawn over it), xr=1 (that frame in an
+// immersive session entered at once, for a test's injected XRSystem). Once the starting frame is
+// decoded, uploaded and drawn, window.vdfxStats.ready holds it, and with paused=1, size= or
+// xr=1 document.title becomes "vdfx-ready"; any error sets "vdfx-error: MESSAGE".
 import { Renderer, viewRotation } from './renderer.js';
 import { effectLayers } from './layers.js';
 import { attachControls } from './controls.js';
 import { enterVr, startXr } from './xr.js';
 
 const $ = (id) => document.getElementById(id);
+// How long the page waits for a seeked frame's picture before it says so.
+const kFrameWaitMs = 10000;
 
 function fail(message) {
   const box = $('message');
@@ -35,25 +38,65 @@ export function parseHooks(search) {
     return parts;
   };
   const view = numbers('view', 2), fov = numbers('fov', 1), frame = numbers('frame', 1);
-  const size = numbers('size', 2);
+  const size = numbers('size', 2), t = numbers('t', 1);
   if (size && !(size[0] >= 1 && size[1] >= 1 && size.every(Number.isInteger)))
     throw new Error(`the URL's size=${q.get('size')} must be whole pixels`);
   if (frame && !(Number.isInteger(frame[0]) && frame[0] >= 0))
     throw new Error(`the URL's frame=${q.get('frame')} must be a frame index`);
+  if (t && !(t[0] >= 0)) throw new Error(`the URL's t=${q.get('t')} must be seconds, 0 or more`);
+  if (t && frame) throw new Error('the URL gives both t= and frame=: give one');
   if (fov && !(fov[0] >= 1 && fov[0] <= 179)) throw new Error('the URL\'s fov= must be in 1..179');
   const eye = q.get('eye');
   if (eye !== null && eye !== 'left' && eye !== 'right')
     throw new Error(`the URL's eye=${eye} is not left or right`);
+  const paused = q.get('paused') === '1', xr = q.get('xr') === '1';
   return {
     eye: eye ?? 'left',
     view: view ? { az: view[0], alt: view[1] } : null, fov: fov ? fov[0] : null,
-    frame: frame ? frame[0] : null, size, paused: q.get('paused') === '1', xr: q.get('xr') === '1',
+    frame: frame ? frame[0] : null, seconds: t ? t[0] : null, size, paused, xr,
+    // A headless test's page: its title says when the frame is on the screen.
+    announce: paused || xr || size !== null,
   };
 }
 
-async function fetchText(url) {
-  const r = await fetch(url);
-  if (!r.ok) throw new Error(`${url}: ${r.status} ${r.statusText}`);
+// The frame the hooks start at (t= is seconds: the frame on screen at that time), checked
+// against the video's length.
+export function startFrame(hooks, fps, frames) {
+  const n = hooks.seconds !== null ? Math.floor(hooks.seconds * fps + 1e-6) : hooks.frame ?? 0;
+  if (n >= frames) {
+    const what = hooks.seconds !== null ? `t=${hooks.seconds}` : `frame=${hooks.frame}`;
+    throw new Error(`the URL's ${what} is past the video's end (${frames} frames at ${fps} fps: ` +
+                    `the last is frame ${frames - 1}, at ${((frames - 1) / fps).toFixed(3)} s)`);
+  }
+  return n;
+}
+
+// A file of the folder as a URL relative to the page: every path segment percent-encoded, so
+// that a name holding '#', '?', '%', spaces or non-ASCII letters reaches the server as it is.
+export function assetUrl(name) {
+  return name.split('/').map(encodeURIComponent).join('/');
+}
+
+// Why a file of the folder cannot be fetched ("HTTP 404 Not Found", "network error: ..."), or
+// null when it can (a one-byte range: nothing more is downloaded).
+async function fetchProblem(name) {
+  try {
+    const r = await fetch(assetUrl(name), { headers: { Range: 'bytes=0-0' }, cache: 'no-store' });
+    r.body?.cancel().catch(() => {});
+    return r.ok ? null : `HTTP ${r.status} ${r.statusText}`.trim();
+  } catch (e) {
+    return `network error: ${e.message}`;
+  }
+}
+
+async function fetchText(name) {
+  let r;
+  try {
+    r = await fetch(assetUrl(name));
+  } catch (e) {
+    throw new Error(`${name} could not be fetched (network error: ${e.message})`);
+  }
+  if (!r.ok) throw new Error(`${name} could not be fetched (HTTP ${r.status} ${r.statusText})`);
   return r.text();
 }
 
@@ -94,33 +137,72 @@ async function loadShaders() {
   return out;
 }
 
-// Resolves once the <video> can show a frame; rejects, naming the codec, when it cannot decode.
-function openVideo(video, config) {
-  return new Promise((resolve, reject) => {
-    video.addEventListener('loadeddata', () => resolve(), { once: true });
-    video.addEventListener('error', () => {
-      const codec = config.video.codec;
-      reject(new Error(`this browser cannot play ${config.video.file} (codec ${codec}` +
-        `${video.error ? `, ${video.error.message || `media error ${video.error.code}`}` : ''}); ` +
-        'publish it again with --transcode h264 (or vp9)'));
-    }, { once: true });
-    video.src = config.video.file;
-    video.load();
-  });
+// Where the <video> reads the file from: its URL when the server answers range requests (the
+// element then fetches what it plays, and seeks by asking for other ranges), else the whole file
+// as a Blob. A server that sends whole files only (python3 -m http.server) leaves the element
+// unable to seek (its seekable range stays [0, 0], whatever it has buffered): every seek lands on
+// frame 0, and a link to a moment opened on the wrong frame until a reload found the file in the
+// browser's cache. The one-byte range request tells them apart; from a server without ranges its
+// answer is the whole file, kept as the Blob (nothing is downloaded twice).
+async function videoSource(file, shown) {
+  let r;
+  try {
+    r = await fetch(assetUrl(file), { headers: { Range: 'bytes=0-0' }, cache: 'no-store' });
+  } catch (e) {
+    throw new Error(`the video ${shown} could not be fetched (network error: ${e.message})`);
+  }
+  if (!r.ok)
+    throw new Error(`the video ${shown} could not be fetched (HTTP ${r.status} ${r.statusText}): ` +
+                    'the folder is incomplete, or the server does not serve it');
+  if (r.status === 206) {
+    r.body?.cancel().catch(() => {});
+    return { src: assetUrl(file), kind: 'url' };
+  }
+  return { src: URL.createObjectURL(await r.blob()), kind: 'blob' };
 }
 
-// Seeks to frame n and waits until that frame can be drawn.
-async function seekFrame(video, n, fps) {
-  await new Promise((resolve) => {
-    video.addEventListener('seeked', resolve, { once: true });
-    video.currentTime = (n + 0.5) / fps;
+// Resolves once the <video> can show a frame. Rejects telling apart a file the browser could not
+// fetch (a 404, the network: publishing again with --transcode cannot help) from one it fetched
+// but cannot decode (naming the codec and --transcode). Returns where it reads from ('url' or
+// 'blob', above).
+async function openVideo(video, config) {
+  const { file, codec } = config.video;
+  const name = config.video.name;
+  const shown = name && name !== file ? `${file} (${name})` : file;
+  const source = await videoSource(file, shown);
+  await new Promise((resolve, reject) => {
+    video.addEventListener('loadeddata', () => resolve(), { once: true });
+    video.addEventListener('error', async () => {
+      const e = video.error;
+      const detail = e ? `, ${e.message || `media error ${e.code}`}` : '';
+      const problem = source.kind === 'url' ? await fetchProblem(file) : null;
+      if (problem)
+        reject(new Error(`the video ${shown} could not be fetched (${problem}): the folder is ` +
+                         'incomplete, or the server does not serve it'));
+      else
+        reject(new Error(`this browser cannot play ${shown} (codec ${codec}${detail}); ` +
+                         'publish it again with --transcode h264 (or vp9)'));
+    }, { once: true });
+    video.src = source.src;
+    video.load();
   });
-  if (video.requestVideoFrameCallback)
-    await new Promise((resolve) => {
-      video.requestVideoFrameCallback(resolve);
-      setTimeout(resolve, 500);
-    });
+  return source.kind;
 }
+
+// Seeks to frame n: resolves once the element has seeked there (Player.showFrame then checks
+// which frame its picture is); rejects when the element could not seek there.
+async function seekTo(video, n, fps) {
+  const t = (n + 0.5) / fps;
+  if (Math.abs(video.currentTime - t) > 1e-6 || video.seeking)
+    await new Promise((resolve) => {
+      video.addEventListener('seeked', resolve, { once: true });
+      video.currentTime = t;
+    });
+  if (Math.abs(video.currentTime - t) > 0.25 / fps)
+    throw new Error(`cannot seek to frame ${n}: the video stays at ${video.currentTime.toFixed(3)} s`);
+}
+
+const nextAnimationFrame = () => new Promise((r) => requestAnimationFrame(r));
 
 // A VideoFrame's Y', Cb, Cr planes ({ data, stride }, rows top first): I420 as it comes, NV12's
 // interleaved chroma split in two; null for any other layout.
@@ -150,12 +232,17 @@ class Player {
     this.video.playsInline = true;
     this.video.loop = true;
     this.view = { az: hooks.view?.az ?? 0, alt: hooks.view?.alt ?? 0, fov: hooks.fov ?? 90 };
-    this.frame = hooks.frame ?? 0;
+    // The frame the effects are evaluated at, and the frame the uploaded picture is (from the
+    // decoded frame's timestamp; null where the browser does not say): the same once shown.
+    this.frame = 0;
+    this.pictureFrame = null;
     // The eye a stereo video shows on the canvas (a headset draws each eye its own).
     this.eye = hooks.eye;
     renderer.setLayout(config.video);
-    this.stats = { evalMs: [], drawMs: [], uploadMs: [], conversion: null, view: this.view,
-                   eye: this.eye };
+    // frames: [evaluated frame, picture's frame] of each draw; ready: the same for the frame
+    // the page started at, once it is on the screen.
+    this.stats = { evalMs: [], drawMs: [], uploadMs: [], frames: [], conversion: null,
+                   view: this.view, eye: this.eye, ready: null };
     window.vdfxStats = this.stats;
   }
 
@@ -196,38 +283,91 @@ class Player {
     const t2 = performance.now();
     this.#record(this.stats.evalMs, t1 - t0);
     this.#record(this.stats.drawMs, t2 - t1);
+    this.#record(this.stats.frames, [this.frame, this.pictureFrame]);
   }
 
-  // The video's current frame into the renderer. An 8-bit 4:2:0 frame goes in as its decoded
-  // planes (WebCodecs), converted to R'G'B' by the shared shader with the stream's own matrix,
-  // range and chroma siting (player.json, from io/ycbcr.h), as vdfx converts it; otherwise (no
-  // WebCodecs, another layout) the browser's own conversion (texImage2D of the <video>).
+  // The video's current picture into the renderer; returns the index of the frame it is (the
+  // decoded frame's timestamp), or null where the browser does not say (no WebCodecs). An 8-bit
+  // 4:2:0 frame goes in as its decoded planes (WebCodecs), converted to R'G'B' by the shared
+  // shader with the stream's own matrix, range and chroma siting (player.json, from io/ycbcr.h),
+  // as vdfx converts it; otherwise (no WebCodecs, another layout) the browser's own conversion
+  // (texImage2D of the <video>).
   async uploadFrame() {
     const t0 = performance.now();
-    await this.#upload();
+    const index = await this.#upload();
     this.#record(this.stats.uploadMs, performance.now() - t0);
+    return index;
   }
 
   async #upload() {
-    const info = this.config.video.ycbcr;
-    if (info && info.bit_depth === 8 && typeof VideoFrame === 'function') {
-      let frame = null;
-      try {
-        frame = new VideoFrame(this.video);
-        const planes = await decodedPlanes(frame);
+    let frame = null;
+    try {
+      if (typeof VideoFrame === 'function') frame = new VideoFrame(this.video);
+    } catch (e) {
+      console.warn(`the decoded frame is not available (${e.message}); the browser converts`);
+    }
+    try {
+      // Frame k starts at k / fps; the timestamp is in microseconds, rounded.
+      const index = frame ? Math.floor(frame.timestamp * 1e-6 * this.fps() + 1e-3) : null;
+      const info = this.config.video.ycbcr;
+      if (frame && info && info.bit_depth === 8) {
+        const planes = await decodedPlanes(frame).catch((e) => {
+          console.warn(`decoded planes not available (${e.message}); the browser converts`);
+          return null;
+        });
         const r = frame.visibleRect;
         if (planes && this.renderer.uploadPlanes(planes, r.width, r.height, info)) {
           this.stats.conversion = 'vdfx';
-          return;
+          return index;
         }
-      } catch (e) {
-        console.warn(`decoded planes not available (${e.message}); the browser converts`);
-      } finally {
-        if (frame) frame.close();
       }
+      this.renderer.upload(this.video);
+      this.stats.conversion = 'browser';
+      return index;
+    } finally {
+      if (frame) frame.close();
     }
-    this.renderer.upload(this.video);
-    this.stats.conversion = 'browser';
+  }
+
+  // Seeks to frame n and puts that frame's picture into the renderer. 'seeked' can come before
+  // the element holds the new picture (on a cold load it does: the picture was still frame 0),
+  // so the decoded frame's own timestamp is checked and the upload repeated each animation frame
+  // until it is frame n. Without WebCodecs (no timestamp) it waits for the element's next frame.
+  async showFrame(n) {
+    await seekTo(this.video, n, this.fps());
+    const t0 = performance.now();
+    let got = await this.uploadFrame();
+    if (got === null) {
+      await this.#videoFrameSettled();
+      got = await this.uploadFrame();
+    }
+    while (got !== null && got !== n) {
+      if (performance.now() - t0 > kFrameWaitMs)
+        throw new Error(`frame ${n} did not arrive: the browser still shows frame ${got} ` +
+                        `${kFrameWaitMs / 1000} s after seeking to it`);
+      await nextAnimationFrame();
+      got = await this.uploadFrame();
+    }
+    this.frame = n;
+    this.pictureFrame = got;
+    this.shownTime = this.video.currentTime;
+  }
+
+  // The element's next frame (requestVideoFrameCallback, where it fires), else half a second.
+  #videoFrameSettled() {
+    return new Promise((resolve) => {
+      this.video.requestVideoFrameCallback?.(() => resolve());
+      setTimeout(resolve, 500);
+    });
+  }
+
+  // The starting frame is on the screen: said in the stats, and (a test's still) the title.
+  async #ready() {
+    // After the frame reached the screen (two animation frames: the next one composites it).
+    await nextAnimationFrame();
+    await nextAnimationFrame();
+    this.stats.ready = { frame: this.frame, picture: this.pictureFrame };
+    if (this.hooks.announce) document.title = 'vdfx-ready';
   }
 
   #record(list, ms) {
@@ -235,52 +375,58 @@ class Player {
     if (list.length > 240) list.shift();
   }
 
-  // A new frame of the playing (or seeked) video: uploaded, then drawn. Polled once per
+  // A new frame of the playing (or seeked) video: uploaded, then drawn at the frame the picture
+  // is (its timestamp; the element's time where the browser gives none). Polled once per
   // animation frame: requestVideoFrameCallback does not fire for a <video> that is not on the
   // page (this one is only a texture source).
+  // After a seek (the bar, the keys) the picture can come an animation frame or two after the
+  // element's time moved: while it is not yet the frame at that time, it is looked at again (a
+  // few dozen times at most, so a stream whose timestamps do not start at 0 costs nothing).
   #pollFrame() {
     const t = this.video.currentTime;
     if (this.uploading || t === this.shownTime) return;
+    if (t !== this.polledTime) this.retries = 0;
+    this.polledTime = t;
     this.uploading = true;
     this.shownTime = t;
-    this.uploadFrame().then(() => {
-      this.frame = Math.min(this.config.video.frames - 1, Math.floor(t * this.fps() + 1e-6));
+    this.uploadFrame().then((got) => {
+      const last = this.config.video.frames - 1;
+      const at = Math.min(last, Math.floor(t * this.fps() + 1e-6));
+      this.frame = Math.min(last, got ?? at);
+      this.pictureFrame = got;
+      if (got !== null && got !== at && this.retries++ < 30) this.shownTime = null;
       this.uploading = false;
       this.dirty = true;
     });
   }
 
-  // The xr=1 hook: the still frame in an immersive session entered at once (no button press:
-  // a test's injected XRSystem asks for none), "vdfx-ready" after its first XR frame is drawn.
-  async xrStill(button) {
+  // The xr=1 hook: frame n in an immersive session entered at once (no button press: a test's
+  // injected XRSystem asks for none), ready after its first XR frame is drawn.
+  async xrStill(button, n) {
     if (!button) throw new Error('xr=1: this browser offers no immersive-vr session');
     this.resize();
-    await seekFrame(this.video, this.frame, this.fps());
-    await this.uploadFrame();
+    await this.showFrame(n);
     const drawn = new Promise((resolve) => { this.onXrFrame = resolve; });
     await enterVr(this, button);
     await drawn;
     this.onXrFrame = null;
-    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-    document.title = 'vdfx-ready';
+    await this.#ready();
   }
 
-  async stillFrame() {
-    await seekFrame(this.video, this.frame, this.fps());
-    await this.uploadFrame();
+  // paused=1: frame n, held.
+  async stillFrame(n) {
+    await this.showFrame(n);
     this.draw();
-    // Title after the frame reached the screen (the next animation frame).
-    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-    document.title = 'vdfx-ready';
+    await this.#ready();
   }
 
-  // Plays from the first frame, muted (browsers allow that without a gesture; the bar's Sound
-  // button unmutes), drawing whenever a new frame arrives or the view changes.
-  async run() {
-    await seekFrame(this.video, 0, this.fps());
-    await this.uploadFrame();
-    this.shownTime = this.video.currentTime;
-    this.dirty = true;
+  // Plays from frame n, muted (browsers allow that without a gesture; the bar's Sound button
+  // unmutes), drawing whenever a new frame arrives or the view changes. Frame n is drawn (and
+  // ready) before the video moves on.
+  async run(n) {
+    await this.showFrame(n);
+    this.draw();
+    await this.#ready();
     this.video.play().catch(() => {});
     const loop = () => {
       this.#pollFrame();
@@ -303,6 +449,7 @@ async function start() {
     c.style.height = `${hooks.size[1]}px`;
   }
   const config = JSON.parse(await fetchText('player.json'));
+  const first = startFrame(hooks, config.video.fps, config.video.frames);
   const module = await loadModule();
   // A sidecar that fails validation: the validator's own lines (vdfx validate's), nothing played.
   if (!module.load(config.sidecar, await fetchText(config.sidecar)))
@@ -314,20 +461,20 @@ async function start() {
   renderer.layers = await effectLayers(gl, shaders, module, config, fetchText);
   const player = new Player(config, module, renderer, hooks);
   window.vdfxPlayer = player; // for benchmarks and debugging (docs/publish.md)
-  await openVideo(player.video, config);
+  player.stats.source = await openVideo(player.video, config);
   if (config.left_out.length)
     $('left-out').textContent = `not drawn here: ${config.left_out.join(', ')}`;
   if (hooks.xr) {
-    await player.xrStill(await startXr(player, fail));
+    await player.xrStill(await startXr(player, fail), first);
     return;
   }
-  if (hooks.frame !== null || hooks.paused) {
-    await player.stillFrame();
+  if (hooks.paused) {
+    await player.stillFrame(first);
     return;
   }
   attachControls(player);
   await startXr(player, fail);
-  await player.run();
+  await player.run(first);
 }
 
 start().catch((e) => fail(e && e.message ? e.message : String(e)));

@@ -4,7 +4,7 @@
 //   1. video layer: each pixel's ray into the eye's equirect image (shaders/video.frag), into a
 //      float target larger than the view by the blur's margin, so the blur sees real image
 //      beyond the border (effects/view_renderer.h). A stereo frame is uploaded as two images,
-//      one per eye with its own mipmaps, as xr/video_layer_gl.cpp does, so no sample, mip level
+//      one per eye with its own mipmaps, as xr/render/video_layer.cpp does, so no sample, mip level
 //      or blur tap reads the other eye's half; VR180 is black outside its coverage;
 //   2. with a blur: the horizontal Gaussian (shaders/blur_1d.frag);
 //   3. the stack (shaders/stack*.frag): the vertical Gaussian fused in, tint, exposure,
@@ -45,7 +45,7 @@ function columnMajor(m) {
   return new Float32Array([m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]]);
 }
 
-// The Gaussian's tap table as xr/blur_pyramid_gl.cpp builds it: the contract's weights
+// The Gaussian's tap table as xr/render/blur_pyramid_gl.cpp builds it: the contract's weights
 // exp(-i^2 / (2 sigma^2)) normalised over -radius..radius, texel k the pair (2k+1, 2k+2) read
 // with one bilinear fetch at its weighted mean offset.
 export function gaussianTaps(sigma, radius) {
@@ -64,7 +64,7 @@ export function gaussianTaps(sigma, radius) {
   return { centre: w[0], taps: new Float32Array(taps) };
 }
 
-// Blur sigma in pixels and the kernel radii of a centred view (xr/effect_stack_gl.cpp,
+// Blur sigma in pixels and the kernel radii of a centred view (xr/render/effect_stack_gl.cpp,
 // blur_pixels, with the optical centre at the image centre).
 export function blurPixels(sigmaDeg, tan, width, height) {
   const s = sigmaDeg * DEG;
@@ -243,7 +243,7 @@ export class Renderer {
     gl.pixelStorei(gl.UNPACK_SKIP_ROWS, 0);
     gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 0);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
-    // Luma (u, v) -> chroma (u, v) of this eye's planes, as xr/video_layer_gl.cpp maps it.
+    // Luma (u, v) -> chroma (u, v) of this eye's planes, as xr/render/video_layer.cpp maps it.
     const scale = [], offset = [];
     for (let a = 0; a < 2; ++a) {
       const step = 2 ** info.log2_chroma[a], chroma = sizes[1][a];
