@@ -22,6 +22,7 @@
 
 #include "app/bench/inputs.h"
 #include "app/bench/registry.h"
+#include "app/bench/timing.h"
 #include "effects/coords.h"
 #include "effects/keyframe_set.h"
 #include "effects/rbf_interpolator.h"
@@ -156,6 +157,14 @@ void describe(Row& row, const RbfInterpolator& rbf) {
       rbf.local() ? "local (reach " + std::to_string(rbf.layout().width / kFps) + " s)" : "global";
 }
 
+/// The subject's CPU time per unit beside the wall time of the same `runs` runs (columns cpu_s
+/// and cpu_wall_s): on the shared machine a wall time includes waits for a core.
+void add_cpu(Row& row, const Timed& subject, int runs) {
+  const CpuWall c = measure_cpu(subject, runs);
+  row.add("cpu_s", c.cpu_s);
+  row.add("cpu_wall_s", c.wall_s);
+}
+
 void add_film_solve(Registry& r, const std::vector<int>& ns) {
   r.knob({"rbf.film_solve",
           "one effect's cold solve against N keyframes over 20 minutes at 30 fps (time_scale 1; "
@@ -168,12 +177,15 @@ void add_film_solve(Registry& r, const std::vector<int>& ns) {
     r.add("rbf.film_solve", "N=" + std::to_string(n), [n](Row& row, const Context& ctx) {
       const auto& k = film(n);
       const auto& base = film(1000);
+      const Timed subject{
+          [&] { g_sink = RbfInterpolator(k, 1, {}, kFps).diagnostics().max_residual; }};
       const auto times = measure_pair(
-          {[&] { g_sink = RbfInterpolator(k, 1, {}, kFps).diagnostics().max_residual; }},
+          subject,
           {[&] { g_sink = RbfInterpolator(base, 1, {}, kFps).diagnostics().max_residual; }},
           ctx.budget);
       row.time = times.subject;
       row.peer_time = times.peer;
+      add_cpu(row, subject, 2);
       const RbfInterpolator rbf(k, 1, {}, kFps);
       row.error = reproduction(rbf, k);
       describe(row, rbf);
@@ -205,10 +217,11 @@ void add_film_eval(Registry& r, const std::vector<int>& ns) {
         g_sink = s;
       };
       const double per = static_cast<double>(units.size());
-      const auto times =
-          measure_pair({[&] { eval_all(rbf); }, per}, {[&] { eval_all(base); }, per}, ctx.budget);
+      const Timed subject{[&] { eval_all(rbf); }, per};
+      const auto times = measure_pair(subject, {[&] { eval_all(base); }, per}, ctx.budget);
       row.time = times.subject;
       row.peer_time = times.peer;
+      add_cpu(row, subject, 200);
       row.error = reproduction(rbf, k);
       describe(row, rbf);
     });
@@ -255,11 +268,14 @@ void add_film_edit(Registry& r, const std::vector<int>& ns, bool move) {
         const std::size_t at = (c * 7919) % s.keyframes().size();
         s.move(at, original[at].direction, original[at].frame);
       };
+      const Timed subject{[&] { edit(set, i); }, 1.0,
+                          [&] { undo(set, film(n).size(), film(n), i); }};
       const auto times = measure_pair(
-          {[&] { edit(set, i); }, 1.0, [&] { undo(set, film(n).size(), film(n), i); }},
-          {[&] { edit(base, j); }, 1.0, [&] { undo(base, 1000, film(1000), j); }}, ctx.budget);
+          subject, {[&] { edit(base, j); }, 1.0, [&] { undo(base, 1000, film(1000), j); }},
+          ctx.budget);
       row.time = times.subject;
       row.peer_time = times.peer;
+      add_cpu(row, subject, 20);
       edit(set, i);
       const RbfInterpolator fresh(set.keyframes(), 1, {}, kFps);
       row.error = deviation(*set.solution(), fresh, set.keyframes(), 256);

@@ -11,12 +11,16 @@ exit (reading and checking the sidecar, the solve, every view, the JSON printed)
 RBFInterpolator built on the same points (x, y, z of the unit direction and the frame times
 24 / fps * time_scale: the contract's chordal distance) with the linear kernel and a degree-1
 polynomial, then evaluated at the same views (inside Python: its start and imports not
-counted). Prints both medians, their ratio and the largest difference between the two results.
+counted). Prints both medians, their ratio and the largest difference between the two results,
+and beside each median wall time the median CPU time (every thread of the process: vdfx eval's
+two threads, SciPy's BLAS threads) with the load average before and after: on a shared machine
+the wall times include waits for a core.
 """
 import json
 import math
 import os
 import random
+import resource
 import statistics
 import subprocess
 import sys
@@ -70,28 +74,38 @@ values = np.array([k["params"]["stops"] for k in keyframes])
 targets = np.array([(*unit(az, alt), fr * step) for az, alt, fr in views])
 
 
+def children_cpu():
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
 def run_vdfx():
-    t0 = time.perf_counter()
+    c0, t0 = children_cpu(), time.perf_counter()
     out = subprocess.run(args, check=True, capture_output=True, text=True).stdout
-    return time.perf_counter() - t0, out
+    return time.perf_counter() - t0, children_cpu() - c0, out
 
 
 def run_scipy():
-    t0 = time.perf_counter()
+    c0, t0 = time.process_time(), time.perf_counter()
     got = RBFInterpolator(points, values, kernel="linear", degree=1)(targets)
-    return time.perf_counter() - t0, got
+    return time.perf_counter() - t0, time.process_time() - c0, got
 
 
-native, scipy = [], []
+load_before = os.getloadavg()[0]
+native, scipy, native_cpu, scipy_cpu = [], [], [], []
 for _ in range(runs):
-    t, out = run_vdfx()
+    t, c, out = run_vdfx()
     native.append(t)
-    t, got = run_scipy()
+    native_cpu.append(c)
+    t, c, got = run_scipy()
     scipy.append(t)
+    scipy_cpu.append(c)
 mine = np.array([json.loads(line)["effects"]["exposure"]["stops"] for line in out.splitlines()])
 a, b = statistics.median(native), statistics.median(scipy)
-print(f"N={n} views={view_count} runs={runs} load={os.getloadavg()[0]:.2f}")
-print(f"vdfx eval process: {a * 1e3:.1f} ms (median)")
-print(f"SciPy RBFInterpolator build + evaluate: {b * 1e3:.1f} ms (median)")
-print(f"ratio vdfx / SciPy: {a / b:.3f}")
+ac, bc = statistics.median(native_cpu), statistics.median(scipy_cpu)
+print(f"N={n} views={view_count} runs={runs} load={load_before:.2f} .. {os.getloadavg()[0]:.2f}")
+print(f"vdfx eval process: {a * 1e3:.1f} ms wall, {ac * 1e3:.1f} ms CPU (medians)")
+print(f"SciPy RBFInterpolator build + evaluate: {b * 1e3:.1f} ms wall, {bc * 1e3:.1f} ms CPU "
+      "(medians)")
+print(f"ratio vdfx / SciPy: {a / b:.3f} wall, {ac / bc:.3f} CPU")
 print(f"largest difference: {np.max(np.abs(mine - got)):.3g} stops")
