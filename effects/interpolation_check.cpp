@@ -46,9 +46,16 @@ std::optional<std::string> time_scale_problem(double time_scale) {
                       "(" + num(kTimeScaleMin) + ", " + num(kTimeScaleMax) + "]");
 }
 
+std::optional<std::string> reach_problem(double reach_s) {
+  if (reach_s > kReachMinS && reach_s <= kReachMaxS) return std::nullopt;
+  return out_of_range("reach_s", reach_s, "(" + num(kReachMinS) + ", " + num(kReachMaxS) + "]");
+}
+
 std::optional<std::string> interpolation_problem(const InterpolationSettings& s) {
   if (auto p = exponent_problem(s.exponent)) return p;
   if (auto p = time_scale_problem(s.time_scale)) return p;
+  if (s.reach_s)
+    if (auto p = reach_problem(*s.reach_s)) return p;
   if (s.distance != AngularDistance::Chordal && s.distance != AngularDistance::Geodesic)
     return "distance " + std::to_string(static_cast<int>(s.distance)) +
            " is neither chordal nor geodesic";

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "effects/anchor.h"
@@ -37,6 +38,10 @@ struct InterpolationSettings {
   double time_scale = 1.0;
   AngularDistance distance = AngularDistance::Chordal;  //!< sidecar extension "distance"
   TimeOutside outside = TimeOutside::Hold;              //!< sidecar extension "outside_span"
+  /// Local interpolation in time (sidecar extension "reach_s", effects/rbf_windows.h): how far
+  /// in time, in seconds, a keyframe acts. Absent: automatic, the global solve up to
+  /// kGlobalSolveMaxKeyframes keyframes and a reach chosen from the keyframes' density above.
+  std::optional<double> reach_s = std::nullopt;
   bool operator==(const InterpolationSettings&) const = default;
 };
 
@@ -46,6 +51,8 @@ inline constexpr double kExponentMin = 0.0;   //!< exclusive
 inline constexpr double kExponentMax = 4.0;   //!< exclusive
 inline constexpr double kTimeScaleMin = 0.0;  //!< exclusive: time must separate frames
 inline constexpr double kTimeScaleMax = 1000.0;
+inline constexpr double kReachMinS = 0.0;  //!< exclusive
+inline constexpr double kReachMaxS = 1e7;  //!< about 116 days: any film
 
 /// Time scale as an author reads it: dt for one second of video is 24 c whatever the frame
 /// rate, which weighs like an angle of 24 c radians (chord ~ angle for small angles). So

@@ -186,10 +186,15 @@ KeyframeSet::KeyframeSet(int dimension, const InterpolationSettings& settings, d
       keyframes_(std::move(keyframes)) {
   // RbfInterpolator validates dimension and neutral the same way.
   neutral_ = RbfInterpolator({}, dimension, settings, fps, std::move(neutral)).neutral();
-  auto st = solve_full(keyframes_, dimension_, kernel_, neutral_, 0);
-  publish(st->interpolator, 0);
-  if (!st->exact) st.reset();
-  state_ = std::move(st);
+  if (wants_local()) {
+    local_ = std::make_unique<KeyframeWindows>(keyframes_, dimension_, settings_, fps_, neutral_);
+    publish(local_->interpolator(), 0);
+  } else {
+    auto st = solve_full(keyframes_, dimension_, kernel_, neutral_, 0);
+    publish(st->interpolator, 0);
+    if (!st->exact) st.reset();
+    state_ = std::move(st);
+  }
   if (options_.async) start_worker();
 }
 
@@ -228,6 +233,13 @@ KeyframeSet::KeyframeSet(CloneTag, const KeyframeSet& source, KeyframeSetOptions
 
 std::unique_ptr<KeyframeSet> KeyframeSet::clone(KeyframeSetOptions options) const {
   std::unique_ptr<KeyframeSet> c(new KeyframeSet(CloneTag{}, *this, options));
+  if (local_) {  // the windows' solves are immutable: shared, nothing solved
+    c->local_ = std::make_unique<KeyframeWindows>(*local_);
+    c->publish(c->local_->interpolator(), version_);
+    c->stats_.cloned_exact = true;
+    if (c->options_.async) c->start_worker();
+    return c;
+  }
   std::unique_ptr<State> st;
   {
     // The exact state of the latest edit: ours, or one the worker published with it and no edit
@@ -433,8 +445,29 @@ KeyframeSetStats KeyframeSet::stats() const {
   return s;
 }
 
+bool KeyframeSet::wants_local() const {
+  return !keyframes_.empty() && (settings_.reach_s || keyframes_.size() > kGlobalSolveMaxKeyframes);
+}
+
+bool KeyframeSet::local_edit(const KeyframeChange& change) {
+  if (local_ && local_->update(keyframes_, change)) {
+    ++stats_.local_edits;
+    stats_.windows_solved += static_cast<std::uint64_t>(local_->last_solved());
+    publish(local_->interpolator(), version_);
+    return true;
+  }
+  full_solve();
+  return false;
+}
+
 void KeyframeSet::full_solve() {
   state_.reset();
+  local_.reset();
+  if (wants_local()) {  // inline: only a change of the windows' layout gets here
+    local_ = std::make_unique<KeyframeWindows>(keyframes_, dimension_, settings_, fps_, neutral_);
+    publish(local_->interpolator(), version_);
+    return;
+  }
   if (!worker_ || static_cast<int>(keyframes_.size()) <= options_.inline_full_solve_max) {
     auto st = solve_full(keyframes_, dimension_, kernel_, neutral_, version_);
     publish(st->interpolator, version_);
@@ -464,15 +497,24 @@ KeyframeSet::Edit KeyframeSet::add(Keyframe keyframe) {
   ++version_;
   Edit e;
   const auto hit = find_coincident(keyframe.direction, keyframe.frame, std::nullopt);
-  bool ok = state_ && state_->m() > 0;
+  KeyframeChange change{KeyframeChange::Added, keyframes_.size(), keyframe.frame, keyframe.frame};
   if (hit) {
     e.index = *hit;
     e.replaced = *hit;
+    change = {KeyframeChange::Moved, *hit, keyframes_[*hit].frame, keyframe.frame};
     keyframes_[*hit] = std::move(keyframe);
-    ok = ok && try_remove_centre(*hit) && try_add_centre(*hit);
   } else {
     e.index = keyframes_.size();
     keyframes_.push_back(std::move(keyframe));
+  }
+  if (local_ || wants_local()) {
+    e.incremental = local_edit(change);
+    return e;
+  }
+  bool ok = state_ && state_->m() > 0;
+  if (hit) {
+    ok = ok && try_remove_centre(*hit) && try_add_centre(*hit);
+  } else {
     if (state_) state_->centre_of_keyframe.push_back(-1);
     ok = ok && try_add_centre(e.index);
   }
@@ -486,6 +528,13 @@ void KeyframeSet::remove(std::size_t index) {
   if (index >= keyframes_.size()) throw std::out_of_range("KeyframeSet::remove: no such keyframe");
   adopt_worker_result();
   ++version_;
+  if (local_) {
+    const KeyframeChange change{KeyframeChange::Removed, index, keyframes_[index].frame,
+                                keyframes_[index].frame};
+    keyframes_.erase(keyframes_.begin() + static_cast<std::ptrdiff_t>(index));
+    local_edit(change);
+    return;
+  }
   bool ok = state_ && try_remove_centre(index);
   keyframes_.erase(keyframes_.begin() + static_cast<std::ptrdiff_t>(index));
   if (state_) {
@@ -510,13 +559,47 @@ KeyframeSet::Edit KeyframeSet::move(std::size_t index, const Direction& directio
   adopt_worker_result();
   ++version_;
   e.index = index;
+  const KeyframeChange change{KeyframeChange::Moved, index, keyframes_[index].frame, frame};
   keyframes_[index].direction = direction;
   keyframes_[index].frame = frame;
+  if (local_ || wants_local()) {
+    e.incremental = local_edit(change);
+    return e;
+  }
   bool ok = state_ && try_remove_centre(index) && try_add_centre(index);
   ok = ok && finish_incremental(state_->centre_of_keyframe[index]);
   if (!ok) full_solve();
   e.incremental = ok;
   return e;
+}
+
+void KeyframeSet::assign(std::vector<Keyframe> keyframes) {
+  for (const Keyframe& k : keyframes) check_params(k, dimension_);
+  adopt_worker_result();
+  std::swap(keyframes_, keyframes);  // `keyframes` now holds the old list
+  std::unique_ptr<KeyframeWindows> windows;
+  std::unique_ptr<State> st;
+  try {
+    if (wants_local())
+      windows = local_ ? std::make_unique<KeyframeWindows>(keyframes_, dimension_, settings_, fps_,
+                                                           neutral_, *local_, keyframes)
+                       : std::make_unique<KeyframeWindows>(keyframes_, dimension_, settings_, fps_,
+                                                           neutral_);
+    else
+      st = solve_full(keyframes_, dimension_, kernel_, neutral_, version_ + 1);
+  } catch (...) {
+    std::swap(keyframes_, keyframes);
+    throw;
+  }
+  ++version_;
+  local_ = std::move(windows);
+  state_.reset();
+  if (local_) {
+    publish(local_->interpolator(), version_);
+    return;
+  }
+  publish(st->interpolator, version_);
+  if (st->exact) state_ = std::move(st);
 }
 
 void KeyframeSet::set_params(std::size_t index, std::vector<double> params) {
@@ -528,6 +611,10 @@ void KeyframeSet::set_params(std::size_t index, std::vector<double> params) {
   adopt_worker_result();
   ++version_;
   keyframes_[index] = std::move(k);
+  if (local_) {
+    local_edit({KeyframeChange::Values, index, keyframes_[index].frame, keyframes_[index].frame});
+    return;
+  }
   bool ok = false;
   if (state_) {
     State& st = *state_;

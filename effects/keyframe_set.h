@@ -11,6 +11,12 @@
 /// swapped in when done: readers (the render thread) always get a complete solution via
 /// solution(), possibly one edit behind, and version numbers say which.
 ///
+/// Keyframes interpolated locally in time (a reach_s, or more than kGlobalSolveMaxKeyframes
+/// keyframes: effects/rbf_windows.h) are kept in windows instead (effects/keyframe_windows.h):
+/// an edit re-solves the few windows whose keyframes it changes, inline; the others are kept.
+/// Only a change of the windows' layout (the automatic reach moves by a factor of two, or the
+/// set crosses kGlobalSolveMaxKeyframes) solves every window again.
+///
 /// Threads: edits from one thread (the editor); solution(), solution_version() and
 /// wait_for_version() from any thread.
 #pragma once
@@ -25,6 +31,7 @@
 #include <vector>
 
 #include "effects/keyframe.h"
+#include "effects/keyframe_windows.h"
 #include "effects/rbf_interpolator.h"
 
 namespace vdfx::effects {
@@ -56,6 +63,8 @@ struct KeyframeSetStats {
   int capacity = 0;  //!< slots (terms + centres) the current matrices hold without reallocating
   //! Built by clone() from a copy of an exact incremental state (no solve ran).
   bool cloned_exact = false;
+  std::uint64_t local_edits = 0;     //!< edits that re-solved only the windows they changed
+  std::uint64_t windows_solved = 0;  //!< windows those edits solved
 };
 
 class KeyframeSet {
@@ -63,7 +72,9 @@ class KeyframeSet {
   struct Edit {
     std::size_t index = 0;                //!< where the keyframe now is
     std::optional<std::size_t> replaced;  //!< the keyframe it replaced (same index after add)
-    bool incremental = false;             //!< solved by an O(N^2) update (else a full solve)
+    //! Solved by an O(N^2) update, or (local interpolation) by re-solving only the windows the
+    //! edit changed; else a full solve.
+    bool incremental = false;
   };
 
   /// Solves the initial keyframes synchronously (load time). Throws std::invalid_argument like
@@ -75,7 +86,8 @@ class KeyframeSet {
   KeyframeSet(const KeyframeSet&) = delete;
 
   /// A new, independent set with the same keyframes, settings, neutral values, version numbers
-  /// and solution, with its own `options` (and its own worker when options.async). When this set
+  /// and solution, with its own `options` (and its own worker when options.async). Interpolated
+  /// locally, the clone shares the windows' solves (O(N) copying, no solve). When this set
   /// has its exact incremental state for its latest edit (also one a worker solved and has not
   /// handed over yet), the clone copies it: keyframes, centres, the saddle matrix and its inverse
   /// and the weights, O(N^2) memory traffic and no solve (stats().cloned_exact); the published
@@ -93,9 +105,15 @@ class KeyframeSet {
   Edit move(std::size_t index, const Direction& direction, std::int64_t frame);
   void remove(std::size_t index);
   void set_params(std::size_t index, std::vector<double> params);
+  /// Replaces every keyframe (undo, redo), solved synchronously like a new set of them with the
+  /// same settings; interpolated locally, the windows whose keyframes did not change keep their
+  /// solves. Throws std::invalid_argument like the constructor (the set is then unchanged).
+  void assign(std::vector<Keyframe> keyframes);
 
   const std::vector<Keyframe>& keyframes() const { return keyframes_; }
   int dimension() const { return dimension_; }
+  /// The keyframes are interpolated locally in time (their windows are kept).
+  bool local() const { return local_ != nullptr; }
   /// Number of edits so far (0 after construction).
   std::uint64_t version() const { return version_; }
   /// Incremental-path counters (editor thread).
@@ -127,6 +145,11 @@ class KeyframeSet {
   bool finish_incremental(int checked_centre);
   void flush_pending();
   void full_solve();
+  /// Whether the keyframes as they are now are interpolated locally (plan_windows would say so).
+  bool wants_local() const;
+  /// After an edit of a locally interpolated set (or one that now wants to be): the windows it
+  /// changed re-solved, or a full solve. Returns whether it stayed local and incremental.
+  bool local_edit(const KeyframeChange& change);
   /// Makes `s` the published solution; a worker also hands over its exact state (adopted by
   /// the next edit on the caller's thread).
   void publish(std::shared_ptr<const RbfInterpolator> s, std::uint64_t version,
@@ -140,7 +163,8 @@ class KeyframeSet {
   Eigen::VectorXd neutral_;
   std::vector<Keyframe> keyframes_;
   std::uint64_t version_ = 0;
-  std::unique_ptr<State> state_;  // null while no valid incremental state
+  std::unique_ptr<State> state_;            // null while no valid incremental state
+  std::unique_ptr<KeyframeWindows> local_;  // non-null while interpolated locally
   KeyframeSetStats stats_;
 
   mutable std::mutex pub_mu_;

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <vector>
 
+#include "effects/solve_threads.h"
+
 namespace vdfx::effects {
 namespace {
 
@@ -38,11 +40,17 @@ double saddle_residual_dot2(const Eigen::MatrixXd& a, const Eigen::MatrixXd& p,
   for (Eigen::Index k = 0; k < d; ++k) {
     std::copy_n(f.col(k).data(), m, sum.begin());
     std::fill(err.begin(), err.end(), 0.0);
-    // Column by column through A and P: contiguous, vectorisable sweeps.
-    for (Eigen::Index j = 0; j < m; ++j)
-      axpy_dot2(a.col(j).data(), -w(j, k), sum.data(), err.data(), m);
-    for (Eigen::Index q = 0; q < r; ++q)
-      axpy_dot2(p.col(q).data(), -c(q, k), sum.data(), err.data(), m);
+    // Column by column through A and P: contiguous, vectorisable sweeps. Rows are independent
+    // (each row's sum runs in the same order): split between the solve's threads.
+    parallel_parts(
+        m, kParallelSolveMin, [m](int part, int parts) { return m * part / parts; },
+        [&](std::ptrdiff_t lo, std::ptrdiff_t hi) {
+          const Eigen::Index len = hi - lo;
+          for (Eigen::Index j = 0; j < m; ++j)
+            axpy_dot2(a.col(j).data() + lo, -w(j, k), sum.data() + lo, err.data() + lo, len);
+          for (Eigen::Index q = 0; q < r; ++q)
+            axpy_dot2(p.col(q).data() + lo, -c(q, k), sum.data() + lo, err.data() + lo, len);
+        });
     for (Eigen::Index i = 0; i < m; ++i) rf(i, k) = sum[i] + err[i];
     for (Eigen::Index q = 0; q < r; ++q) {
       // g - P^T w: each row of P^T against w, as one (sum, error) pair.

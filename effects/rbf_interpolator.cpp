@@ -3,6 +3,8 @@
 #include "effects/rbf_interpolator.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +26,48 @@ RbfInterpolator::RbfInterpolator(std::span<const Keyframe> keyframes, int dimens
                                  std::vector<double> neutral)
     : kernel_(RbfKernel::from(settings, fps)),
       neutral_(neutral_vector(std::move(neutral), dimension)) {
+  if (settings.reach_s || keyframes.size() > kGlobalSolveMaxKeyframes) {
+    std::vector<std::size_t> order(keyframes.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return keyframes[a].frame < keyframes[b].frame;
+    });
+    std::vector<std::int64_t> frames(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) frames[i] = keyframes[order[i]].frame;
+    if (const auto layout = plan_windows(settings, fps, frames)) {
+      if (const auto why = window_problem(settings, fps, frames))
+        throw std::invalid_argument("RbfInterpolator: " + *why);
+      if (dimension > kMaxLocalDimension)
+        throw std::invalid_argument("RbfInterpolator: local interpolation of more than " +
+                                    std::to_string(kMaxLocalDimension) + " parameters");
+      layout_ = *layout;
+      const std::vector<WindowData> data = window_data(layout_, frames);
+      std::vector<WindowCore> cores;
+      for (std::size_t j = 0; j < data.size(); ++j) {
+        // Windows in a gap see the same keyframes: one solve serves them all.
+        if (j > 0 && data[j] == data[j - 1])
+          windows_.push_back(windows_.back());
+        else
+          windows_.push_back(
+              solve_window(keyframes, order, data[j], dimension, settings, fps, neutral_));
+        cores.push_back(core_counts(*windows_.back(), layout_, static_cast<int>(j)));
+      }
+      first_frame_ = frames.front();
+      last_frame_ = frames.back();
+      combine_window_diagnostics(cores);
+      return;
+    }
+  }
+  solve_global(keyframes, dimension);
+}
+
+RbfInterpolator::RbfInterpolator(GlobalTag, std::span<const Keyframe> keyframes, int dimension,
+                                 const RbfKernel& kernel, Eigen::VectorXd neutral)
+    : kernel_(kernel), neutral_(std::move(neutral)) {
+  solve_global(keyframes, dimension);
+}
+
+void RbfInterpolator::solve_global(std::span<const Keyframe> keyframes, int dimension) {
   points_ = merge_keyframes(keyframes, dimension);
   basis_ = select_polynomial_basis(points_);
   const RbfSolution s = solve_rbf(points_, kernel_, basis_);
@@ -31,6 +75,72 @@ RbfInterpolator::RbfInterpolator(std::span<const Keyframe> keyframes, int dimens
   coeffs_t_ = s.coefficients.transpose();
   diagnostics_ = s.diagnostics;
   find_frame_span();
+}
+
+std::shared_ptr<const RbfInterpolator> RbfInterpolator::solve_window(
+    std::span<const Keyframe> keyframes, std::span<const std::size_t> order, const WindowData& data,
+    int dimension, const InterpolationSettings& settings, double fps,
+    const Eigen::VectorXd& neutral) {
+  std::vector<Keyframe> own;
+  own.reserve(data.size());
+  for (std::size_t i = data.begin; i < data.end; ++i) own.push_back(keyframes[order[i]]);
+  InterpolationSettings local = settings;
+  local.outside = TimeOutside::Extrapolate;
+  local.reach_s.reset();
+  return std::shared_ptr<const RbfInterpolator>(
+      new RbfInterpolator(GlobalTag{}, own, dimension, RbfKernel::from(local, fps), neutral));
+}
+
+RbfInterpolator::RbfInterpolator(const WindowLayout& layout,
+                                 std::vector<std::shared_ptr<const RbfInterpolator>> windows,
+                                 std::span<const WindowCore> cores, const RbfKernel& kernel,
+                                 Eigen::VectorXd neutral, std::int64_t first_frame,
+                                 std::int64_t last_frame)
+    : kernel_(kernel),
+      neutral_(std::move(neutral)),
+      first_frame_(first_frame),
+      last_frame_(last_frame),
+      layout_(layout),
+      windows_(std::move(windows)) {
+  if (static_cast<int>(windows_.size()) != layout_.count ||
+      static_cast<int>(cores.size()) != layout_.count)
+    throw std::invalid_argument("RbfInterpolator: " + std::to_string(windows_.size()) +
+                                " windows and " + std::to_string(cores.size()) +
+                                " core counts for a layout of " + std::to_string(layout_.count));
+  combine_window_diagnostics(cores);
+}
+
+RbfInterpolator::WindowCore RbfInterpolator::core_counts(const RbfInterpolator& window,
+                                                         const WindowLayout& layout, int j) {
+  WindowCore core;
+  const RbfPoints& p = window.points_;
+  for (int c = 0; c < p.size(); ++c) {
+    const double f = static_cast<double>(p.frame[static_cast<std::size_t>(c)]);
+    // As blend_at counts a frame's window.
+    if (std::floor(f / layout.width) - static_cast<double>(layout.first) != j) continue;
+    core.keyframes += p.counts[static_cast<std::size_t>(c)];
+    ++core.centres;
+  }
+  return core;
+}
+
+void RbfInterpolator::combine_window_diagnostics(std::span<const WindowCore> cores) {
+  RbfDiagnostics d;
+  d.method = RbfSolveMethod::Polynomial;
+  d.condition_estimate = 0.0;
+  for (int j = 0; j < layout_.count; ++j) {
+    const RbfDiagnostics& wd = windows_[static_cast<std::size_t>(j)]->diagnostics_;
+    d.keyframes += cores[static_cast<std::size_t>(j)].keyframes;
+    d.centres += cores[static_cast<std::size_t>(j)].centres;
+    d.active_terms = std::max(d.active_terms, wd.active_terms);
+    d.method = std::max(d.method, wd.method);
+    d.max_residual = std::max(d.max_residual, wd.max_residual);
+    d.relative_residual = std::max(d.relative_residual, wd.relative_residual);
+    d.condition_estimate = std::max(d.condition_estimate, wd.condition_estimate);
+    d.refined = d.refined || wd.refined;
+  }
+  d.merged = d.keyframes - d.centres;
+  diagnostics_ = d;
 }
 
 RbfInterpolator::RbfInterpolator(RbfPoints points, const RbfKernel& kernel, PolynomialBasis basis,
@@ -53,7 +163,7 @@ void RbfInterpolator::find_frame_span() {
 }
 
 std::int64_t RbfInterpolator::effective_frame(std::int64_t frame) const {
-  if (kernel_.outside == TimeOutside::Extrapolate || points_.size() == 0) return frame;
+  if (kernel_.outside == TimeOutside::Extrapolate || empty()) return frame;
   return std::clamp(frame, first_frame_, last_frame_);
 }
 
@@ -71,6 +181,10 @@ void RbfInterpolator::evaluate_into(const Eigen::Vector3d& n, std::int64_t frame
                                     double* out_ptr) const {
   const int d = dimension();
   Eigen::Map<Eigen::VectorXd> out(out_ptr, d);
+  if (local()) {
+    evaluate_local(n, frame, out_ptr);
+    return;
+  }
   const int m = points_.size();
   if (m == 0) {
     out = neutral_;
@@ -113,6 +227,17 @@ void RbfInterpolator::evaluate_into(const Eigen::Vector3d& n, std::int64_t frame
       out.noalias() += weights_t_.middleCols(s, len) * d2.matrix();
     }
   }
+}
+
+void RbfInterpolator::evaluate_local(const Eigen::Vector3d& n, std::int64_t frame,
+                                     double* out) const {
+  const std::int64_t f = effective_frame(frame);
+  const WindowBlend b = blend_at(layout_, static_cast<double>(f));
+  windows_[static_cast<std::size_t>(b.a)]->evaluate_into(n, f, out);
+  if (b.b == b.a) return;
+  double other[kMaxLocalDimension];
+  windows_[static_cast<std::size_t>(b.b)]->evaluate_into(n, f, other);
+  for (int i = 0; i < dimension(); ++i) out[i] += b.weight * (other[i] - out[i]);
 }
 
 }  // namespace vdfx::effects

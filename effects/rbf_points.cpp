@@ -8,6 +8,7 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace vdfx::effects {
 
@@ -49,25 +50,39 @@ void RbfPoints::swap_remove(int i) {
   values.conservativeResize(last, Eigen::NoChange);
 }
 
-RbfPoints merge_keyframes(std::span<const Keyframe> keyframes, int dimension) {
+namespace {
+
+/// Each keyframe's unit direction, after checking its parameters' count and that every number is
+/// finite (std::invalid_argument naming the keyframe otherwise).
+std::vector<Eigen::Vector3d> checked_units(std::span<const Keyframe> keyframes, int dimension) {
   const int n = static_cast<int>(keyframes.size());
   std::vector<Eigen::Vector3d> units(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) {
     const Keyframe& kf = keyframes[static_cast<size_t>(k)];
-    std::ostringstream where;
-    where << "RBF keyframe " << k << " (az " << kf.direction.azimuth_deg << ", alt "
-          << kf.direction.altitude_deg << ", frame " << kf.frame << "): ";
-    if (static_cast<int>(kf.params.size()) != dimension) {
-      where << kf.params.size() << " parameters, expected " << dimension;
+    // The message is only composed for a bad keyframe (a stream per keyframe cost more than
+    // the rest of this loop).
+    const auto fail = [&](const std::string& what) {
+      std::ostringstream where;
+      where << "RBF keyframe " << k << " (az " << kf.direction.azimuth_deg << ", alt "
+            << kf.direction.altitude_deg << ", frame " << kf.frame << "): " << what;
       throw std::invalid_argument(where.str());
-    }
-    for (double v : kf.params) {
-      if (!std::isfinite(v)) throw std::invalid_argument(where.str() + "non-finite parameter");
-    }
+    };
+    if (static_cast<int>(kf.params.size()) != dimension)
+      fail(std::to_string(kf.params.size()) + " parameters, expected " + std::to_string(dimension));
+    for (double v : kf.params)
+      if (!std::isfinite(v)) fail("non-finite parameter");
     if (!std::isfinite(kf.direction.azimuth_deg) || !std::isfinite(kf.direction.altitude_deg))
-      throw std::invalid_argument(where.str() + "non-finite direction");
+      fail("non-finite direction");
     units[static_cast<size_t>(k)] = to_unit(kf.direction);
   }
+  return units;
+}
+
+}  // namespace
+
+RbfPoints merge_keyframes(std::span<const Keyframe> keyframes, int dimension) {
+  const int n = static_cast<int>(keyframes.size());
+  const std::vector<Eigen::Vector3d> units = checked_units(keyframes, dimension);
 
   // Sort by (frame, x) so coincident keyframes are found by a sweep, O(N log N) typically.
   std::vector<int> order(static_cast<size_t>(n));

@@ -2,7 +2,6 @@
 /// @brief Sidecar reading and writing (format 1).
 #include "io/sidecar.h"
 
-#include "effects/stack_interpolator.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/sidecar_anchor.h"
@@ -24,6 +23,7 @@ ordered interpolation_json(const effects::InterpolationSettings& s) {
   // it stay plain format 1 for readers that do not know it.
   if (s.distance == effects::AngularDistance::Geodesic) j["distance"] = "geodesic";
   if (s.outside == effects::TimeOutside::Extrapolate) j["outside_span"] = "extrapolate";
+  if (s.reach_s) j["reach_s"] = *s.reach_s;
   return j;
 }
 
@@ -112,17 +112,6 @@ nlohmann::ordered_json params_to_json(effects::EffectType type, std::span<const 
     offset += static_cast<std::size_t>(ps.size);
   }
   return params;
-}
-
-nlohmann::ordered_json stack_params_to_json(const effects::StackInterpolator& stack,
-                                            const effects::StackParams& params) {
-  ordered fx = ordered::object();
-  for (const effects::EffectSpec& spec : effects::all_effect_specs()) {
-    ordered e = params_to_json(spec.type, params.get(spec.type));
-    e["active"] = stack.active(spec.type);
-    fx[std::string(spec.name)] = std::move(e);
-  }
-  return fx;
 }
 
 Sidecar read_sidecar(const std::filesystem::path& path) {

@@ -17,10 +17,6 @@
 #include "effects/keyframe.h"
 #include "effects/stereo_layout.h"
 
-namespace vdfx::effects {
-class StackInterpolator;
-}
-
 namespace vdfx::io {
 
 /// The video a sidecar belongs to, as recorded when it was authored.
@@ -79,16 +75,16 @@ inline constexpr int kSidecarVersion = 1;
 inline constexpr double kMaxScaledTimeSpan = 1e60;
 inline constexpr double kMinScaledFrameStep = 1e-5;
 
-/// The most keyframes one effect may have (docs/reliability.md, "Limits"). The RBF solve takes
-/// O(N^2) memory and O(N^3) time: measured for one effect, 4096 keyframes evaluate in 1.2 s and
-/// 290 MB, 8192 in 8.4 s and 0.9 GB, and 100000 ended in std::bad_alloc. The editor's
-/// incremental solver keeps two N x N buffers per effect. Until the solver scales to film
-/// lengths this is checked when a sidecar is read.
-inline constexpr std::size_t kMaxKeyframesPerEffect = 4096;
+/// The most keyframes one effect may have (docs/reliability.md, "Limits"). Above
+/// effects::kGlobalSolveMaxKeyframes an effect is interpolated locally in time, in windows of at
+/// most effects::kMaxWindowKeyframes keyframes (effects/rbf_windows.h): time and memory grow
+/// linearly with the count (docs/interpolation.md measures 100000 keyframes).
+inline constexpr std::size_t kMaxKeyframesPerEffect = 100000;
 
-/// The largest sidecar file read (docs/reliability.md): far above what kMaxKeyframesPerEffect
-/// keyframes in every effect take, small enough to hold in memory several times over.
-inline constexpr std::uintmax_t kMaxSidecarBytes = std::uintmax_t{64} << 20;
+/// The largest sidecar file read (docs/reliability.md): room for several effects at
+/// kMaxKeyframesPerEffect keyframes (about 20 MB each as written), small enough to hold in memory
+/// as parsed JSON a few times over.
+inline constexpr std::uintmax_t kMaxSidecarBytes = std::uintmax_t{256} << 20;
 
 /// Reads and validates a sidecar. Throws io::InputError listing every problem (one per line:
 /// "FILE: POINTER: what is wrong") when the file is unreadable or invalid.
@@ -102,11 +98,6 @@ nlohmann::json to_json(const Sidecar& sidecar);
 /// {"gain": [r, g, b]}, ...), in the effect spec's order.
 nlohmann::ordered_json params_to_json(effects::EffectType type, std::span<const double> values);
 
-/// The "effects" object of `vdfx eval` (and of the web player's WebAssembly module): every stack
-/// effect's parameters under its name, in the contract's order, each with "active" (it has
-/// keyframes).
-nlohmann::ordered_json stack_params_to_json(const effects::StackInterpolator& stack,
-                                            const effects::StackParams& params);
 /// One keyframe as written: azimuth_deg, altitude_deg, frame, then `params`.
 nlohmann::ordered_json keyframe_to_json(const effects::Keyframe& keyframe,
                                         nlohmann::ordered_json params);

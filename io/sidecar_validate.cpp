@@ -4,12 +4,14 @@
 /// no change here.
 #include "io/sidecar_validate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
 
 #include "effects/interpolation_check.h"
+#include "effects/rbf_windows.h"
 #include "io/excerpt.h"
 #include "io/input_file.h"
 #include "io/json_text.h"
@@ -105,7 +107,7 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
                         effects::InterpolationSettings& out) {
   const json* obj = c.object(v, ptr);
   if (!obj) return;
-  c.only_keys(*obj, ptr, {"exponent", "time_scale", "distance", "outside_span"});
+  c.only_keys(*obj, ptr, {"exponent", "time_scale", "distance", "outside_span", "reach_s"});
   // The ranges are effects/interpolation_check.h's: the RBF kernel and the editor ask it too.
   if (const json* p = c.member(*obj, ptr, "exponent"))
     if (auto d = c.number(*p, ptr + "/exponent", kAnyNumber)) {
@@ -120,6 +122,14 @@ void read_interpolation(Checker& c, const json& v, const std::string& ptr,
         c.error(ptr + "/time_scale", *why);
       else
         out.time_scale = *d;
+    }
+  // Extension of format 1: optional, automatic when absent (docs/sidecar.md).
+  if (const json* p = c.member(*obj, ptr, "reach_s", /*required=*/false))
+    if (auto d = c.number(*p, ptr + "/reach_s", kAnyNumber)) {
+      if (auto why = effects::reach_problem(*d))
+        c.error(ptr + "/reach_s", *why);
+      else
+        out.reach_s = *d;
     }
   // Extension of format 1: optional, chordal when absent (docs/sidecar.md).
   if (const json* p = c.member(*obj, ptr, "distance", /*required=*/false)) {
@@ -313,6 +323,47 @@ void check_time_scaling(Checker& c, const Sidecar& s, const std::vector<Override
   for (const auto& [ptr, settings] : overrides) check(settings, ptr, true);
 }
 
+/// Where an entry is ("/effects/3") and what it is: 0 a stack effect, 1 a flare, 2 a grain.
+using KeyedAt = std::pair<std::string, int>;
+
+/// An entry with keyframes, where it is ("/effects/3") and its own settings, if any.
+struct KeyedEntry {
+  std::string ptr;
+  const std::vector<effects::Keyframe>* keyframes;
+  std::optional<effects::InterpolationSettings> own;
+};
+
+/// Each entry's keyframes must fit local interpolation's windows (effects/rbf_windows.h: no
+/// window holds more keyframes than one dense solve takes), once fps, the settings and the
+/// keyframes' frames are themselves valid.
+void check_windows(Checker& c, const Sidecar& s, const std::vector<KeyedAt>& keyed,
+                   const std::vector<Problem>& problems, std::size_t first) {
+  if (has_problem_at(problems, first, "/video/fps") ||
+      has_problem_at(problems, first, "/interpolation"))
+    return;
+  std::vector<KeyedEntry> entries;
+  std::size_t next[3] = {0, 0, 0};
+  for (const auto& [ptr, kind] : keyed) {
+    const std::size_t i = next[kind]++;
+    if (kind == 1)
+      entries.push_back({ptr, &s.flares[i].keyframes, s.flares[i].interpolation});
+    else if (kind == 2)
+      entries.push_back({ptr, &s.grains[i].keyframes, s.grains[i].interpolation});
+    else
+      entries.push_back({ptr, &s.effects[i].keyframes, s.effects[i].interpolation});
+  }
+  for (const KeyedEntry& e : entries) {
+    if (has_problem_at(problems, first, e.ptr)) continue;
+    std::vector<std::int64_t> frames;
+    frames.reserve(e.keyframes->size());
+    for (const effects::Keyframe& k : *e.keyframes) frames.push_back(k.frame);
+    std::sort(frames.begin(), frames.end());
+    if (const auto why =
+            effects::window_problem(e.own.value_or(s.interpolation), s.video.fps, frames))
+      c.error(e.ptr + "/keyframes", *why);
+  }
+}
+
 }  // namespace
 
 namespace detail {
@@ -320,9 +371,7 @@ namespace detail {
 bool keyframe_count_ok(Checker& c, const json& keyframes, const std::string& ptr) {
   if (keyframes.size() <= kMaxKeyframesPerEffect) return true;
   c.error(ptr, std::to_string(keyframes.size()) + " keyframes, more than the " +
-                   std::to_string(kMaxKeyframesPerEffect) +
-                   " an effect may have (the interpolation's memory grows with the square of the "
-                   "count, its solve time with the cube)");
+                   std::to_string(kMaxKeyframesPerEffect) + " an effect may have");
   return false;
 }
 
@@ -372,11 +421,56 @@ void read_scalar_keyframes(Checker& c, const json& v, const std::string& ptr,
 
 }  // namespace detail
 
+namespace {
+
+/// What reading the entries gathers for the checks across fields.
+struct EntryRefs {
+  std::vector<Override> overrides;
+  std::vector<KeyedAt> keyed;
+  std::vector<AnchorAt> anchors;
+};
+
+/// Reads /effects: stack effects, flares and grains, each by its own reader.
+void read_entries(Checker& c, const json& entries, std::optional<std::int64_t> frames, Sidecar& out,
+                  EntryRefs& refs) {
+  if (!entries.is_array()) {
+    c.error("/effects", std::string("expected an array, found ") + type_name(entries));
+    return;
+  }
+  std::map<effects::EffectType, std::string> seen;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const std::string ep = "/effects/" + std::to_string(i);
+    // Extension types (several may coexist) have readers of their own.
+    const std::optional<effects::InterpolationSettings>* own = nullptr;
+    const effects::Anchor* anchor = nullptr;
+    int kind = 0;
+    if (is_flare_entry(entries[i])) {
+      read_flare(c, entries[i], ep, frames, out.flares.emplace_back());
+      own = &out.flares.back().interpolation;
+      anchor = &out.flares.back().anchor;
+      kind = 1;
+    } else if (is_grain_entry(entries[i])) {
+      read_grain(c, entries[i], ep, frames, out.grains.emplace_back());
+      own = &out.grains.back().interpolation;
+      anchor = &out.grains.back().anchor;
+      kind = 2;
+    } else {
+      read_effect(c, entries[i], ep, frames, seen, out.effects.emplace_back());
+      own = &out.effects.back().interpolation;
+      anchor = &out.effects.back().anchor;
+    }
+    if (*own) refs.overrides.emplace_back(ep + "/interpolation", **own);
+    refs.keyed.emplace_back(ep, kind);
+    if (!anchor->is_video()) refs.anchors.emplace_back(ep + "/anchor", *anchor);
+  }
+}
+
+}  // namespace
+
 Sidecar parse_sidecar(const json& document, const std::string& file_for_messages,
                       std::vector<Problem>& problems) {
   Sidecar out;
   const std::size_t first_problem = problems.size();
-  std::vector<Override> overrides;
   Checker c(file_for_messages, problems);
   const json* root = c.object(document, "");
   if (!root) return out;
@@ -417,39 +511,13 @@ Sidecar parse_sidecar(const json& document, const std::string& file_for_messages
     read_camera(c, *p, frames, out.camera);
   if (const json* p = c.member(*root, "", "tracks", /*required=*/false))
     read_tracks(c, *p, frames, out.tracks);
-  std::vector<AnchorAt> anchors;
 
-  if (const json* p = c.member(*root, "", "effects")) {
-    if (!p->is_array()) {
-      c.error("/effects", std::string("expected an array, found ") + type_name(*p));
-    } else {
-      std::map<effects::EffectType, std::string> seen;
-      for (std::size_t i = 0; i < p->size(); ++i) {
-        const std::string ep = "/effects/" + std::to_string(i);
-        // Extension types (several may coexist) have readers of their own.
-        const std::optional<effects::InterpolationSettings>* own = nullptr;
-        const effects::Anchor* anchor = nullptr;
-        if (is_flare_entry((*p)[i])) {
-          read_flare(c, (*p)[i], ep, frames, out.flares.emplace_back());
-          own = &out.flares.back().interpolation;
-          anchor = &out.flares.back().anchor;
-        } else if (is_grain_entry((*p)[i])) {
-          read_grain(c, (*p)[i], ep, frames, out.grains.emplace_back());
-          own = &out.grains.back().interpolation;
-          anchor = &out.grains.back().anchor;
-        } else {
-          read_effect(c, (*p)[i], ep, frames, seen, out.effects.emplace_back());
-          own = &out.effects.back().interpolation;
-          anchor = &out.effects.back().anchor;
-        }
-        if (*own) overrides.emplace_back(ep + "/interpolation", **own);
-        if (!anchor->is_video()) anchors.emplace_back(ep + "/anchor", *anchor);
-      }
-    }
-  }
+  EntryRefs refs;
+  if (const json* p = c.member(*root, "", "effects")) read_entries(c, *p, frames, out, refs);
   // Checks across fields, each in a function of its own.
-  check_time_scaling(c, out, overrides, problems, first_problem);
-  check_anchors(c, out, anchors);
+  check_time_scaling(c, out, refs.overrides, problems, first_problem);
+  check_windows(c, out, refs.keyed, problems, first_problem);
+  check_anchors(c, out, refs.anchors);
   return out;
 }
 

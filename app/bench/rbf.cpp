@@ -129,7 +129,7 @@ void add_solve(Registry& r, bool quick) {
           "dense partial-pivot LU of the whole saddle system (textbook)", PlotError::Max, false,
           false});
   const std::vector<int> ns =
-      quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 300, 1000, 3000, 5000};
+      quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 300, 1000, 3000, 4096};
   for (const int n : ns) {
     r.add("rbf.solve", "N=" + std::to_string(n), [n](Row& row, const Context& ctx) {
       const auto k = random_keyframes(n, 1, 4);
@@ -159,7 +159,7 @@ void add_eval(Registry& r, bool quick) {
           "that reference's term-by-term evaluation (std::pow per centre)", PlotError::Max, false,
           false});
   const std::vector<int> ns =
-      quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 5000};
+      quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 4096};
   for (const int n : ns) {
     r.add("rbf.eval", "N=" + std::to_string(n), [n](Row& row, const Context& ctx) {
       const auto k = random_keyframes(n, 1, 4);

@@ -33,6 +33,7 @@ void Registry::add_gl(const std::string& knob_id, std::string setting, CaseFn ru
 Registry build_registry(bool quick) {
   Registry r;
   add_rbf_knobs(r, quick);
+  add_rbf_film_knobs(r, quick);
   add_lens_knobs(r, quick);
   add_lens_gl_knobs(r, quick);
   add_blur_knobs(r, quick);

@@ -54,6 +54,7 @@ class Registry {
 
 // One function per area, each in its own file; `quick` selects the smaller settings list.
 void add_rbf_knobs(Registry& r, bool quick);                 // app/bench/rbf.cpp
+void add_rbf_film_knobs(Registry& r, bool quick);            // app/bench/rbf_film.cpp
 void add_lens_knobs(Registry& r, bool quick);                // app/bench/lens.cpp
 void add_lens_gl_knobs(Registry& r, bool quick);             // app/bench/lens_gl.cpp
 void add_blur_knobs(Registry& r, bool quick);                // app/bench/blur.cpp

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 namespace vdfx::app::bench {
 
@@ -17,6 +18,27 @@ Budget full_budget() {
 
 double now_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double process_cpu_s() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+CpuWall measure_cpu(const Timed& t, int runs) {
+  CpuWall s;
+  for (int i = 0; i < runs; ++i) {
+    const double c0 = process_cpu_s(), w0 = now_s();
+    t.run();
+    s.cpu_s += process_cpu_s() - c0;
+    s.wall_s += now_s() - w0;
+    if (t.reset) t.reset();
+  }
+  const double units = t.units * std::max(runs, 1);
+  s.cpu_s /= units;
+  s.wall_s /= units;
+  return s;
 }
 
 double median_of(std::vector<double> v) {

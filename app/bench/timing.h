@@ -47,4 +47,14 @@ PairTimes measure_pair(const Timed& subject, const Timed& peer, const Budget& bu
 /// Seconds since an arbitrary start (steady clock).
 double now_s();
 
+/// CPU seconds this process has used (all its threads).
+double process_cpu_s();
+
+/// CPU and wall time of `t`, per unit, over `runs` runs (resets untimed): on a shared machine the
+/// wall time of a sample includes waits for a core, the CPU time does not.
+struct CpuWall {
+  double cpu_s = 0.0, wall_s = 0.0;
+};
+CpuWall measure_cpu(const Timed& t, int runs);
+
 }  // namespace vdfx::app::bench

@@ -1,17 +1,77 @@
 /// @file
 /// @brief `vdfx eval SIDECAR --at AZ,ALT,FRAME [--at ...]`: the interpolated parameters of every
 /// effect, one JSON object per --at and per line (JSON Lines), for scripts.
+#include <future>
 #include <iostream>
+#include <span>
+#include <string>
+#include <thread>
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
 #include "app/cli/finite_params.h"
+#include "effects/solve_threads.h"
 #include "effects/stack_interpolator.h"
 #include "io/input_error.h"
+#include "io/params_text.h"
 #include "io/sidecar.h"
 #include "io/sidecar_sets.h"
 
 namespace vdfx::app {
+
+namespace {
+
+/// Views up to which eval stays on one thread.
+constexpr std::size_t kParallelViews = 64;
+
+/// One JSON object per view and line: "at", "effects" (io::append_stack_params_json), then the
+/// flares' intensities and the grains' intensities and sizes, in file order.
+struct EvalLines {
+  const std::string& path;
+  const effects::StackInterpolator& stack;
+  const effects::FlareSet& flares;
+  const effects::GrainSet& grains;
+
+  std::string write(std::span<const EvalPoint> points) const {
+    std::string out;
+    for (const EvalPoint& p : points) write_one(p, out);
+    return out;
+  }
+
+  void write_one(const EvalPoint& p, std::string& out) const {
+    const effects::StackParams params = stack.evaluate(p.direction, p.frame);
+    require_finite(params, path, p.direction, p.frame);  // never print "null"
+    const Eigen::Vector3d unit = effects::to_unit(p.direction);
+    out += "{\"at\":{\"azimuth_deg\":";
+    io::append_json_number(out, p.direction.azimuth_deg);
+    out += ",\"altitude_deg\":";
+    io::append_json_number(out, p.direction.altitude_deg);
+    out += ",\"frame\":";
+    io::append_json_integer(out, p.frame);
+    out += "},\"effects\":";
+    io::append_stack_params_json(out, stack, params);
+    out += ",\"flares\":[";
+    for (std::size_t k = 0; k < flares.size(); ++k) {
+      out += k ? ",{\"intensity\":" : "{\"intensity\":";
+      io::append_json_number(out, flares.intensity(k, unit, p.frame));
+      out += '}';
+    }
+    out += "],\"grains\":[";
+    for (std::size_t k = 0; k < grains.size(); ++k) {
+      const effects::GrainParams g = grains.params(k, unit, p.frame);
+      out += k ? ",{\"style\":" : "{\"style\":";
+      io::append_json_name(out, effects::grain_style_name(grains.effect(k).style));
+      out += ",\"intensity\":";
+      io::append_json_number(out, g.intensity);
+      out += ",\"size\":";
+      io::append_json_number(out, g.size);
+      out += '}';
+    }
+    out += "]}\n";
+  }
+};
+
+}  // namespace
 
 int cmd_eval(const Args& args) {
   CLI::App cli{
@@ -42,33 +102,22 @@ int cmd_eval(const Args& args) {
                            " is beyond the video's " + std::to_string(sidecar.video.frames) +
                            " frames (/video/frames)");
   }
+  // Nothing else runs in this process: the solve's independent loops may use every core.
+  effects::set_solve_threads(static_cast<int>(std::thread::hardware_concurrency()));
   const effects::StackInterpolator stack = io::stack_of(sidecar);
   const effects::FlareSet flares = io::flare_set_of(sidecar);
   const effects::GrainSet grains = io::grain_set_of(sidecar);
-  for (const EvalPoint& p : points) {
-    const effects::StackParams params = stack.evaluate(p.direction, p.frame);
-    require_finite(params, path, p.direction, p.frame);  // never print "null"
-    nlohmann::ordered_json out;
-    out["at"] = {{"azimuth_deg", p.direction.azimuth_deg},
-                 {"altitude_deg", p.direction.altitude_deg},
-                 {"frame", p.frame}};
-    out["effects"] = io::stack_params_to_json(stack, params);
-    // Flares (any number, in file order): their keyframed intensity at the view.
-    nlohmann::ordered_json fl = nlohmann::ordered_json::array();
-    for (std::size_t k = 0; k < flares.size(); ++k)
-      fl.push_back({{"intensity", flares.intensity(k, effects::to_unit(p.direction), p.frame)}});
-    out["flares"] = std::move(fl);
-    // Grain effects (any number, in file order): keyframed intensity and size at the view.
-    nlohmann::ordered_json gr = nlohmann::ordered_json::array();
-    for (std::size_t k = 0; k < grains.size(); ++k) {
-      const effects::GrainParams g = grains.params(k, effects::to_unit(p.direction), p.frame);
-      gr.push_back({{"style", effects::grain_style_name(grains.effect(k).style)},
-                    {"intensity", g.intensity},
-                    {"size", g.size}});
-    }
-    out["grains"] = std::move(gr);
-    std::cout << out.dump() << "\n";
-  }
+  const EvalLines lines{path, stack, flares, grains};
+  // Many views: the second half on a second thread (the interpolators are immutable), the lines
+  // still printed in the order of the --at options, all at once.
+  const std::span<const EvalPoint> all(points);
+  const std::size_t half = points.size() >= kParallelViews ? points.size() / 2 : points.size();
+  std::future<std::string> rest;
+  if (half < points.size())
+    rest = std::async(std::launch::async, [&] { return lines.write(all.subspan(half)); });
+  std::string out = lines.write(all.first(half));
+  if (rest.valid()) out += rest.get();
+  std::cout << out << std::flush;
   return kExitOk;
 }
 

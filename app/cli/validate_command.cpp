@@ -1,12 +1,38 @@
 /// @file
 /// @brief `vdfx validate SIDECAR`: exit 0 when valid, 1 with every problem listed otherwise.
+#include <algorithm>
 #include <iostream>
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
+#include "effects/rbf_windows.h"
 #include "io/sidecar_validate.h"
 
 namespace vdfx::app {
+
+namespace {
+
+/// One line per effect interpolated locally in time (effects/rbf_windows.h): its reach and
+/// windows; effects solved globally print nothing.
+void print_local_interpolation(const io::Sidecar& s) {
+  const auto line = [&](const std::string& name, const std::vector<effects::Keyframe>& keyframes,
+                        const std::optional<effects::InterpolationSettings>& own) {
+    std::vector<std::int64_t> frames;
+    for (const effects::Keyframe& k : keyframes) frames.push_back(k.frame);
+    std::sort(frames.begin(), frames.end());
+    if (const auto summary =
+            effects::window_summary(own.value_or(s.interpolation), s.video.fps, frames))
+      std::cout << "  " << name << ": " << keyframes.size() << " keyframes " << *summary << "\n";
+  };
+  for (const auto& t : s.effects)
+    line(std::string(effects::effect_name(t.type)), t.keyframes, t.interpolation);
+  for (std::size_t i = 0; i < s.flares.size(); ++i)
+    line("flare " + std::to_string(i), s.flares[i].keyframes, s.flares[i].interpolation);
+  for (std::size_t i = 0; i < s.grains.size(); ++i)
+    line("grain " + std::to_string(i), s.grains[i].keyframes, s.grains[i].interpolation);
+}
+
+}  // namespace
 
 int cmd_validate(const Args& args) {
   CLI::App cli{
@@ -36,6 +62,7 @@ int cmd_validate(const Args& args) {
               << report.sidecar->effects.size() + report.sidecar->flares.size() +
                      report.sidecar->grains.size()
               << " effects, " << keyframes << " keyframes)\n";
+    print_local_interpolation(*report.sidecar);
   }
   return kExitOk;
 }

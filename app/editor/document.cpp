@@ -162,11 +162,23 @@ void Document::restore(EditTarget t, const EffectSnapshot& s) {
     anchors_[idx(t)] = s.anchor;
     resolve_anchors();
   }
+  const effects::InterpolationSettings before = interpolation(t);
   overrides_[idx(t)] = s.interpolation;
   params_[idx(t)] = s.params;
   if (t.is_flare()) flare_ = s.flare;
   if (t.is_grain()) grain_ = s.grain;
-  rebuild(t, s.keyframes);
+  if (!(interpolation(t) == before)) {
+    rebuild(t, s.keyframes);
+    return;
+  }
+  // The same settings: the set keeps what did not change (a locally interpolated effect
+  // re-solves only the windows the undone edit touched).
+  if (sets_[idx(t)]->keyframes() == s.keyframes) return;
+  try {
+    sets_[idx(t)]->assign(s.keyframes);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(std::string(t.name()) + ": " + e.what());
+  }
 }
 
 void Document::record(const std::string& label, EditTarget t, EffectSnapshot before) {

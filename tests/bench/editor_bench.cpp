@@ -15,6 +15,8 @@
 /// in update() (async 0) against handed to MinimapWorker (async 1); CPU time is the frame
 /// thread's only.
 ///
+/// At film scale (10000 and 100000 keyframes over 20 minutes): the preview's move per frame.
+///
 /// Report CPU-time medians (--benchmark_repetitions=N --benchmark_report_aggregates_only=true).
 #include <benchmark/benchmark.h>
 
@@ -93,6 +95,37 @@ void BM_EditorPreviewIncremental(benchmark::State& state) {
   state.counters["seeds"] = static_cast<double>(doc.pending_stats().seeds);
 }
 BENCHMARK(BM_EditorPreviewIncremental)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+/// The same preview at film scale: N keyframes over 20 minutes (interpolated locally in time,
+/// docs/interpolation.md), the playhead in the middle: each move re-solves the few windows the
+/// preview keyframe lies in.
+void BM_EditorPreviewFilm(benchmark::State& state) {
+  constexpr std::int64_t film_frames = 36000;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), stops(-3.0, 3.0);
+  std::uniform_int_distribution<std::int64_t> frame(0, film_frames - 1);
+  std::vector<Keyframe> ks;
+  for (int i = 0; i < state.range(0); ++i)
+    ks.push_back(
+        {{180.0 * u(rng), std::asin(u(rng)) * 57.29577951308232}, frame(rng), {stops(rng)}});
+  vdfx::io::Sidecar sc = sidecar_of(std::move(ks));
+  sc.video.frames = film_frames;
+  vdfx::app::Document doc(sc, {{.async = false}});
+  const auto at = [](int i) {
+    Keyframe k = preview_key(i);
+    k.frame = 18000;
+    return k;
+  };
+  auto& p = doc.begin_pending(EffectType::Exposure, std::nullopt, at(0));
+  p.interpolant();
+  int i = 1;
+  for (auto _ : state) {
+    p.set_key(at(i++));
+    auto v = p.interpolant()->evaluate(Direction{100.0, 10.0}, 18000);
+    benchmark::DoNotOptimize(v.data());
+  }
+}
+BENCHMARK(BM_EditorPreviewFilm)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 /// The first interpolant of a preview (placement: grab 0; grab: grab 1): the peer (source 0)
 /// solves the pending edit's keyframes from scratch; the pending edit (source 1) clones the

@@ -1,5 +1,7 @@
 /// @file
-/// @brief RBF interpolation speed: evaluation, the whole stack, incremental add, full solve.
+/// @brief RBF interpolation speed: evaluation, the whole stack, incremental add, full solve, and
+/// local interpolation at film scale (N keyframes over 20 minutes at 30 fps: solve, evaluation,
+/// an editor's add).
 #include <benchmark/benchmark.h>
 
 #include "app/bench/inputs.h"
@@ -70,6 +72,50 @@ void BM_RbfFullSolve(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_RbfFullSolve)->Arg(100)->Arg(1000)->Arg(3000)->Unit(benchmark::kMillisecond);
+
+constexpr std::int64_t kFilmFrames = 36000;
+
+void BM_RbfFilmSolve(benchmark::State& state) {
+  const auto k = random_keyframes(static_cast<int>(state.range(0)), 1, 5, kFilmFrames - 1);
+  for (auto _ : state) {
+    const RbfInterpolator rbf(k, 1, {}, 30.0);
+    benchmark::DoNotOptimize(rbf.diagnostics().max_residual);
+  }
+}
+BENCHMARK(BM_RbfFilmSolve)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+void BM_RbfFilmEvaluate(benchmark::State& state) {
+  const RbfInterpolator rbf(
+      random_keyframes(static_cast<int>(state.range(0)), 1, 6, kFilmFrames - 1), 1, {}, 30.0);
+  const auto views = random_keyframes(1024, 1, 7, kFilmFrames - 1);
+  double out = 0;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Keyframe& v = views[i++ % views.size()];
+    rbf.evaluate_into(to_unit(v.direction), v.frame, &out);
+    benchmark::DoNotOptimize(out);
+  }
+}
+BENCHMARK(BM_RbfFilmEvaluate)->Arg(1000)->Arg(10000)->Arg(100000);
+
+void BM_RbfFilmAdd(benchmark::State& state) {
+  KeyframeSetOptions opt;
+  opt.async = false;
+  const auto n = static_cast<std::size_t>(state.range(0));
+  KeyframeSet set(1, {}, 30.0, random_keyframes(static_cast<int>(n), 1, 8, kFilmFrames - 1), opt);
+  const auto extra = random_keyframes(512, 1, 9, kFilmFrames - 1);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    set.add(extra[i++ % extra.size()]);
+    state.PauseTiming();
+    if (set.keyframes().size() > n) set.remove(set.keyframes().size() - 1);  // untimed
+    state.ResumeTiming();
+  }
+  const KeyframeSetStats st = set.stats();
+  state.counters["windows_per_edit"] =
+      st.local_edits ? static_cast<double>(st.windows_solved) / st.local_edits : 0.0;
+}
+BENCHMARK(BM_RbfFilmAdd)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace vdfx::effects

@@ -44,6 +44,18 @@ TEST(InterpolationCheck, RejectsTheEndsAndNaNWithTheRangeInTheMessage) {
   EXPECT_EQ(*time_scale_problem(0.25e4), "time_scale 2500 is out of range (0, 1000]");
 }
 
+TEST(InterpolationCheck, ReachIsPositiveAndFiniteWhenSet) {
+  for (double r : {1e-9, 0.5, 3600.0, 1e7}) EXPECT_FALSE(reach_problem(r)) << r;
+  for (double r : {0.0, -1.0, 1.5e7, std::numeric_limits<double>::infinity(), std::nan("")})
+    EXPECT_TRUE(reach_problem(r)) << r;
+  EXPECT_EQ(*reach_problem(0.0), "reach_s 0 is out of range (0, 1e+07]");
+  InterpolationSettings s;
+  EXPECT_FALSE(interpolation_problem(s));  // absent: automatic
+  s.reach_s = -3.0;
+  EXPECT_EQ(*interpolation_problem(s), *reach_problem(-3.0));
+  EXPECT_THROW(RbfKernel::from(s, 30.0), std::invalid_argument);
+}
+
 TEST(InterpolationCheck, NamesTheFirstBadSettingAndEnumsOutsideTheirValues) {
   EXPECT_EQ(*interpolation_problem(with(4.0, 0.0)), *exponent_problem(4.0));
   EXPECT_EQ(*interpolation_problem(with(1.0, 0.0)), *time_scale_problem(0.0));

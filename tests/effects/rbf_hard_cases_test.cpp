@@ -1,10 +1,12 @@
 /// @file
 /// @brief numerics.md's hard-case table: every row must reproduce its keyframes (~1e-9 relative,
-/// merged duplicates: their mean) and give finite values everywhere.
+/// merged duplicates: their mean) and give finite values everywhere, solved globally and
+/// interpolated locally in time.
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <string>
+#include <tuple>
 
 #include "effects/rbf_interpolator.h"
 #include "tests/effects/rbf_test_util.h"
@@ -167,15 +169,19 @@ const std::vector<Row>& rows() {
   return r;
 }
 
-class RbfHardCases : public ::testing::TestWithParam<size_t> {};
+/// Each row globally (as the settings choose: n_5000 is above the automatic threshold and is
+/// interpolated locally) and locally in time with a short reach (windows of a fifth of a second).
+class RbfHardCases : public ::testing::TestWithParam<std::tuple<size_t, bool>> {};
 
 TEST_P(RbfHardCases, ReproducesKeyframesAndStaysFinite) {
-  const Row& row = rows()[GetParam()];
+  const Row& row = rows()[std::get<0>(GetParam())];
   const std::vector<Keyframe> k = row.make();
   InterpolationSettings s;
   s.exponent = row.alpha;
   s.distance = row.distance;
+  if (std::get<1>(GetParam())) s.reach_s = 0.2;
   const RbfInterpolator rbf(k, kDim, s, row.fps);
+  EXPECT_EQ(rbf.local(), s.reach_s || k.size() > kGlobalSolveMaxKeyframes);
   const RbfDiagnostics& dg = rbf.diagnostics();
   EXPECT_EQ(dg.keyframes, static_cast<int>(k.size()));
   EXPECT_EQ(dg.merged, row.merged);
@@ -210,12 +216,14 @@ TEST_P(RbfHardCases, ReproducesKeyframesAndStaysFinite) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Table, RbfHardCases, ::testing::Range<size_t>(0, rows().size()),
+INSTANTIATE_TEST_SUITE_P(Table, RbfHardCases,
+                         ::testing::Combine(::testing::Range<size_t>(0, rows().size()),
+                                            ::testing::Bool()),
                          [](const auto& info) {
-                           std::string n = rows()[info.param].name;
+                           std::string n = rows()[std::get<0>(info.param)].name;
                            for (char& c : n)
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return n;
+                           return n + (std::get<1>(info.param) ? "_local" : "");
                          });
 
 TEST(RbfInterpolator, NoKeyframesReturnsTheCallersNeutral) {

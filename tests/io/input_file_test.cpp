@@ -82,7 +82,7 @@ TEST(InputFile, EveryReaderTakesOnlyRegularFilesWithinItsLimit) {
   const SidecarReport big =
       validate_sidecar_file(sparse_file(dir / "big.vdfx.json", kMaxSidecarBytes + 1));
   ASSERT_EQ(big.problems.size(), 1u);
-  EXPECT_NE(big.problems[0].message.find("more than the 64 MiB a sidecar may be"),
+  EXPECT_NE(big.problems[0].message.find("more than the 256 MiB a sidecar may be"),
             std::string::npos)
       << big.problems[0].message;
   const std::string rec = error_of(

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "effects/rbf_windows.h"
 #include "effects/stack_interpolator.h"
 #include "io/sidecar.h"
 #include "io/sidecar_validate.h"
@@ -83,32 +84,63 @@ TEST(SidecarDerived, AtTheBoundsTheInterpolationIsFiniteAndReproducesKeyframes) 
   }
 }
 
-/// A document with one exposure effect of `n` keyframes on a spiral over the sphere.
-nlohmann::json keyframes_document(std::size_t n) {
-  nlohmann::json doc = nlohmann::json::parse(sidecar_text(30, 50, 1.0, 1.0));
+/// A document with one exposure effect of `n` keyframes on a spiral over the sphere, at frames
+/// 0 .. frames - 1 in turn (a clip of 40000 frames).
+nlohmann::json keyframes_document(std::size_t n, std::size_t frames = 40000) {
+  nlohmann::json doc = nlohmann::json::parse(sidecar_text(30, 40000, 1.0, 1.0));
   nlohmann::json& keys = doc["effects"][0]["keyframes"];
   keys = nlohmann::json::array();
   for (std::size_t i = 0; i < n; ++i) {
     const double z = 2.0 * (static_cast<double>(i) + 0.5) / static_cast<double>(n) - 1.0;
     keys.push_back({{"azimuth_deg", std::fmod(static_cast<double>(i) * 137.50776, 359.0) - 179.0},
                     {"altitude_deg", std::asin(z) * 180.0 / M_PI},
-                    {"frame", i % 50},
+                    {"frame", i % frames},
                     {"params", {{"stops", static_cast<double>(i % 17) / 4.0 - 2.0}}}});
   }
   return doc;
 }
 
 TEST(SidecarDerived, KeyframesPerEffectAreCheckedAtLoad) {
-  // 100k keyframes validated, then eval, render and play ended in std::bad_alloc (exit 3).
   std::vector<Problem> problems;
   (void)parse_sidecar(keyframes_document(kMaxKeyframesPerEffect), "s", problems);
   EXPECT_TRUE(problems.empty());
   (void)parse_sidecar(keyframes_document(kMaxKeyframesPerEffect + 1), "s", problems);
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_EQ(problems[0].pointer, "/effects/0/keyframes");
-  EXPECT_NE(problems[0].message.find("4097 keyframes, more than the 4096 an effect may have"),
+  EXPECT_NE(problems[0].message.find("100001 keyframes, more than the 100000 an effect may have"),
             std::string::npos)
       << problems[0].message;
+}
+
+TEST(SidecarDerived, KeyframesCrowdedIntoOneWindowAreRefused) {
+  // Local interpolation splits an effect in time; keyframes crowded into a few frames cannot be
+  // split: more than one window's dense solve takes is refused where they are.
+  std::vector<Problem> problems;
+  (void)parse_sidecar(keyframes_document(effects::kMaxWindowKeyframes + 4, 3), "s", problems);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].pointer, "/effects/0/keyframes");
+  EXPECT_NE(problems[0].message.find("4100 keyframes between frames"), std::string::npos)
+      << problems[0].message;
+  EXPECT_NE(problems[0].message.find("fall into one window"), std::string::npos)
+      << problems[0].message;
+  // The same keyframes spread over the clip are fine; so are 4096 in three frames (one global
+  // solve, as before local interpolation).
+  problems.clear();
+  (void)parse_sidecar(keyframes_document(effects::kMaxWindowKeyframes + 4), "s", problems);
+  EXPECT_TRUE(problems.empty());
+  (void)parse_sidecar(keyframes_document(effects::kMaxWindowKeyframes, 3), "s", problems);
+  EXPECT_TRUE(problems.empty());
+  // An explicit reach_s that makes a window too full is named in the message.
+  nlohmann::json doc = keyframes_document(effects::kMaxWindowKeyframes, 3);
+  doc["effects"][0]["interpolation"] = {{"exponent", 1}, {"time_scale", 1}, {"reach_s", 1.0}};
+  (void)parse_sidecar(doc, "s", problems);
+  EXPECT_TRUE(problems.empty());
+  doc = keyframes_document(8000, 3);
+  doc["effects"][0]["interpolation"] = {{"exponent", 1}, {"time_scale", 1}, {"reach_s", 1.0}};
+  (void)parse_sidecar(doc, "s", problems);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].message.find("(reach_s 1)"), std::string::npos) << problems[0].message;
+  EXPECT_NE(problems[0].message.find("lower reach_s"), std::string::npos) << problems[0].message;
 }
 
 TEST(SidecarDerived, FlareAndGrainEntriesKeepTheSameLimits) {
@@ -145,7 +177,7 @@ TEST(SidecarDerived, FlareAndGrainEntriesKeepTheSameLimits) {
   ASSERT_EQ(problems.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(problems[i].pointer, expected[i]) << problems[i].message;
-    EXPECT_NE(problems[i].message.find(i < 2 ? "4097 keyframes, more than the 4096"
+    EXPECT_NE(problems[i].message.find(i < 2 ? "100001 keyframes, more than the 100000"
                                              : "time_scale must be at least"),
               std::string::npos)
         << problems[i].message;

@@ -124,6 +124,12 @@ const BrokenCase kBroken[] = {
     {"outside_span_not_string",
      [](json& j) { j["effects"][1]["interpolation"]["outside_span"] = 1; },
      "/effects/1/interpolation/outside_span", "expected a string"},
+    {"reach_zero", [](json& j) { j["interpolation"]["reach_s"] = 0; }, "/interpolation/reach_s",
+     "reach_s 0 is out of range (0, 1e+07]"},
+    {"reach_negative", [](json& j) { j["effects"][1]["interpolation"]["reach_s"] = -2.5; },
+     "/effects/1/interpolation/reach_s", "out of range"},
+    {"reach_not_number", [](json& j) { j["interpolation"]["reach_s"] = "auto"; },
+     "/interpolation/reach_s", "expected a number"},
     {"effect_interp_bad", [](json& j) { j["effects"][1]["interpolation"]["exponent"] = -1; },
      "/effects/1/interpolation/exponent", "out of range"},
     {"effects_not_array", [](json& j) { j["effects"] = json::object(); }, "/effects",
@@ -366,6 +372,21 @@ TEST(Sidecar, DefaultHoldIsNotWrittenExtrapolateIs) {
   EXPECT_FALSE(to_json(s)["interpolation"].contains("outside_span"));
   s.interpolation.outside = effects::TimeOutside::Extrapolate;
   EXPECT_EQ(to_json(s)["interpolation"]["outside_span"], "extrapolate");
+}
+
+TEST(Sidecar, ReachIsWrittenOnlyWhenSetAndReadsBack) {
+  Sidecar s;
+  s.video = {"clip.mp4", 30.0, 900, 64, 32};
+  EXPECT_FALSE(to_json(s)["interpolation"].contains("reach_s"));
+  s.interpolation.reach_s = 2.5;
+  EXPECT_EQ(to_json(s)["interpolation"]["reach_s"], 2.5);
+  effects::InterpolationSettings own;
+  own.reach_s = 0.125;
+  s.effects.push_back({effects::EffectType::Exposure, own, {{{30.0, 0.0}, 75, {1.0}}}});
+  const SidecarReport r = validate_sidecar_text(format_sidecar(s), "t");
+  ASSERT_TRUE(r.ok()) << r.to_string();
+  EXPECT_EQ(*r.sidecar, s);
+  EXPECT_EQ(r.sidecar->effects[0].interpolation->reach_s, 0.125);
 }
 
 TEST(Sidecar, NewSidecarUsesTheAuthorTimeScale) {

@@ -1,7 +1,8 @@
 // The page's per-frame cost in Chromium (docs/publish.md, "Measured"), by hand:
-//   node page_bench.cjs VDFX_BINARY OUTPUT_DIR
-// Publishes a clip (ffmpeg's testsrc2, 512 x 256 or VIDEO_WxH) with a sidecar of 8 effects keyed
-// 1000 times each (the six stack effects, a directional flare and a surface grain), plays the
+//   node page_bench.cjs VDFX_BINARY OUTPUT_DIR [VIDEO_WxH] [KEYFRAMES] [FRAMES]
+// Publishes a clip (ffmpeg's testsrc2, 512 x 256 or VIDEO_WxH, 48 frames or FRAMES at 24 fps)
+// with a sidecar of 8 effects keyed 1000 (or KEYFRAMES) times each (the six stack effects, a
+// directional flare and a surface grain; above 4096 keyframes interpolated locally), plays the
 // page in headless Chromium (SwiftShader) at 1280 x 720 for a few seconds, and prints the medians
 // of window.vdfxStats: the module's evaluation (vdfx_eval and the flare and grain layout, once
 // per drawn frame) and the draw (the GL calls; SwiftShader renders on the CPU), the load and
@@ -15,7 +16,7 @@ const { serve, Browser } = require('./browser.cjs');
 const [vdfx, outDir] = process.argv.slice(2, 4).map((p) => p && path.resolve(p));
 const [VW, VH] = (process.argv[4] || '512x256').split('x').map(Number);
 if (!vdfx || !outDir) {
-  console.error('usage: node page_bench.cjs VDFX_BINARY OUTPUT_DIR [VIDEO_WxH]');
+  console.error('usage: node page_bench.cjs VDFX_BINARY OUTPUT_DIR [VIDEO_WxH] [KEYFRAMES] [FRAMES]');
   process.exit(2);
 }
 fs.rmSync(outDir, { recursive: true, force: true });
@@ -23,8 +24,9 @@ fs.mkdirSync(outDir, { recursive: true });
 let seed = 11;
 const rand = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
 const uniform = (lo, hi) => lo + (hi - lo) * rand();
-const frames = 48;
-const kf = (params) => Array.from({ length: 1000 }, () => ({
+const keyframes = Number(process.argv[5] || 1000);
+const frames = Number(process.argv[6] || 48);
+const kf = (params) => Array.from({ length: keyframes }, () => ({
   azimuth_deg: uniform(-179, 180), altitude_deg: uniform(-85, 85),
   frame: Math.floor(uniform(0, frames)), params: params() }));
 const sidecar = {
@@ -104,8 +106,8 @@ const median = (a) => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
     // Alternated, the better of two each: the shared machine's load moves between runs.
     const eightA = await perCall(true), six = Math.min(await perCall(false), await perCall(false));
     const eight = Math.min(eightA, await perCall(true));
-    console.log(`first frame after ${firstMs} ms (module, sidecar load and solve of 8 x 1000 ` +
-                `keyframes, shaders, video)`);
+    console.log(`first frame after ${firstMs} ms (module, sidecar load and solve of 8 x ` +
+                `${keyframes} keyframes, shaders, video)`);
     console.log(`one evaluation, median of 21 runs of 2000 random views and frames: the 6 stack ` +
                 `effects ${(six * 1000).toFixed(1)} us; all 8 (the page's per-frame calls: the ` +
                 `stack, the flare and grain layout, the grain's uniforms) ` +

@@ -108,9 +108,19 @@ async function loadModule() {
   if (typeof createVdfxPlayer !== 'function') throw new Error('vdfx_player.js did not load');
   const m = await createVdfxPlayer(); // eslint-disable-line no-undef
   const out = m._malloc(9 * 8);
+  const loadText = m.cwrap('vdfx_load', 'number', ['string', 'number']);
   return {
     raw: m, // for layers.js's calls
-    load: m.cwrap('vdfx_load', 'number', ['string', 'string']),
+    // The sidecar's text goes on the module's heap: as a 'string' argument it would be copied
+    // onto its stack (5 MB), which a film's keyframes overflow.
+    load(name, text) {
+      const p = m.allocateUTF8(text);
+      try {
+        return loadText(name, p);
+      } finally {
+        m._free(p);
+      }
+    },
     message: m.cwrap('vdfx_message', 'string', []),
     evalRaw: m.cwrap('vdfx_eval', 'number', ['number', 'number', 'number', 'number']),
     // The 9 stack parameters at a view and frame; null for a frame outside the video.

@@ -22,6 +22,7 @@
 #include "effects/grain_layout.h"
 #include "effects/grain_uniforms.h"
 #include "effects/stack_interpolator.h"
+#include "io/params_text.h"
 #include "io/sidecar.h"
 #include "io/sidecar_sets.h"
 #include "io/sidecar_validate.h"
@@ -186,12 +187,14 @@ EMSCRIPTEN_KEEPALIVE int vdfx_eval(double az, double alt, double frame, double* 
   return mask;
 }
 
-/// The same as JSON, the "effects" object `vdfx eval` prints (io::stack_params_to_json), or
-/// null when vdfx_eval would return -1.
+/// The same as JSON, the "effects" object `vdfx eval` prints (io::append_stack_params_json),
+/// or null when vdfx_eval would return -1.
 EMSCRIPTEN_KEEPALIVE const char* vdfx_eval_json(double az, double alt, double frame) {
   const std::optional<vdfx::effects::StackParams> p = evaluate(az, alt, frame);
   if (!p) return nullptr;
-  return hand_out(vdfx::io::stack_params_to_json(g_loaded->stack, *p).dump());
+  std::string text;
+  vdfx::io::append_stack_params_json(text, g_loaded->stack, *p);
+  return hand_out(std::move(text));
 }
 
 /// The auto lights `vdfx publish` tracked over the video (lights.json's text): from now on a

@@ -1,0 +1,33 @@
+/// @file
+/// @brief How many threads the dense RBF solve may use for its independent loops (the kernel
+/// matrix, the projected block, the exact residual): 1 unless a command asks for more. Batch
+/// commands whose process does nothing else meanwhile (`vdfx eval`) use both cores; the editor,
+/// the player and the benchmarks stay on one (beside them the other core renders, or times a
+/// peer). The split never changes a result: every entry and every row's sum is computed in the
+/// same order whatever the thread count.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace vdfx::effects {
+
+/// Loops shorter than this stay on one thread (a thread's start costs more than their work).
+inline constexpr std::ptrdiff_t kParallelSolveMin = 384;
+
+/// Sets the thread count (clamped to [1, 8]); process-wide, read at the start of each solve.
+void set_solve_threads(int threads);
+int solve_threads();
+
+/// Runs fn(begin, end) over [0, n) in solve_threads() parts, the first on the calling thread;
+/// parts end at `cut(k, parts)` (k = 1 .. parts - 1, ascending), so the caller can balance
+/// uneven work. One part (n below `min_n`, or one thread) runs inline.
+void parallel_parts(std::ptrdiff_t n, std::ptrdiff_t min_n,
+                    const std::function<std::ptrdiff_t(int k, int parts)>& cut,
+                    const std::function<void(std::ptrdiff_t begin, std::ptrdiff_t end)>& fn);
+
+/// The cut for columns j = 0 .. n - 1 whose work is proportional to n - j (a lower triangle):
+/// equal shares of the triangle.
+std::ptrdiff_t triangle_cut(std::ptrdiff_t n, int k, int parts);
+
+}  // namespace vdfx::effects

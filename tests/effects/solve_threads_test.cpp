@@ -1,0 +1,72 @@
+/// @file
+/// @brief The solve's thread split (effects/solve_threads.h): any thread count gives the same
+/// numbers, bit for bit, and the split covers every column and row exactly once.
+#include "effects/solve_threads.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include "effects/rbf_interpolator.h"
+#include "tests/effects/rbf_test_util.h"
+
+namespace vdfx::effects {
+namespace {
+
+/// Restores one thread when a test ends, whatever it set.
+struct ThreadsScope {
+  explicit ThreadsScope(int n) { set_solve_threads(n); }
+  ~ThreadsScope() { set_solve_threads(1); }
+};
+
+TEST(SolveThreads, PartsCoverTheRangeOnceAndBalanceATriangle) {
+  const ThreadsScope scope(3);
+  std::vector<std::atomic<int>> seen(1000);
+  parallel_parts(
+      1000, 10, [](int k, int parts) { return triangle_cut(1000, k, parts); },
+      [&](std::ptrdiff_t b, std::ptrdiff_t e) {
+        for (std::ptrdiff_t i = b; i < e; ++i) seen[static_cast<std::size_t>(i)]++;
+      });
+  for (const auto& s : seen) ASSERT_EQ(s.load(), 1);
+  // Each part holds a third of the triangle's work (sum of n - j over its columns).
+  const auto work = [](std::ptrdiff_t b, std::ptrdiff_t e) {
+    double w = 0.0;
+    for (std::ptrdiff_t j = b; j < e; ++j) w += static_cast<double>(1000 - j);
+    return w;
+  };
+  const std::ptrdiff_t c1 = triangle_cut(1000, 1, 3), c2 = triangle_cut(1000, 2, 3);
+  EXPECT_NEAR(work(0, c1) / work(0, 1000), 1.0 / 3.0, 0.01);
+  EXPECT_NEAR(work(c1, c2) / work(0, 1000), 1.0 / 3.0, 0.01);
+  // A part's exception reaches the caller after every part has ended.
+  EXPECT_THROW(parallel_parts(
+                   100, 10, [](int k, int parts) { return 100 * k / parts; },
+                   [](std::ptrdiff_t b, std::ptrdiff_t) {
+                     if (b > 0) throw std::runtime_error("part");
+                   }),
+               std::runtime_error);
+}
+
+TEST(SolveThreads, TwoThreadsGiveTheSameSolveBitForBit) {
+  std::mt19937_64 rng(4);
+  std::vector<Keyframe> k;
+  for (int i = 0; i < 900; ++i) k.push_back(test::random_keyframe(rng, 2, 0, 600));
+  const RbfInterpolator one(k, 2, {}, 30.0);
+  std::unique_ptr<RbfInterpolator> two;
+  {
+    const ThreadsScope scope(2);
+    two = std::make_unique<RbfInterpolator>(k, 2, InterpolationSettings{}, 30.0);
+  }
+  EXPECT_EQ(one.diagnostics().max_residual, two->diagnostics().max_residual);
+  EXPECT_EQ(one.diagnostics().condition_estimate, two->diagnostics().condition_estimate);
+  for (int i = 0; i < 50; ++i) {
+    const Direction d = test::random_direction(rng);
+    const auto f = static_cast<std::int64_t>(rng() % 601);
+    ASSERT_EQ(one.evaluate(d, f), two->evaluate(d, f)) << i;
+  }
+}
+
+}  // namespace
+}  // namespace vdfx::effects
