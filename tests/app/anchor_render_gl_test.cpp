@@ -37,8 +37,8 @@ TEST(AnchorRenderGl, TheGpuAppliesTheWindowsExposureAtEveryFrameInBothModes) {
       const cv::Mat plain = render_window_gpu(c.plain, f, mode);
       EXPECT_NEAR(testing::applied_stops(render_window_gpu(c.anchored, f, mode), plain),
                   bench::kWindowStops, 0.05);
-      // Fixed in the picture, the keyframe has left the window once the camera turned.
-      if (f >= 3) {
+      // Fixed in the picture, the keyframe has left the window once the camera turned away.
+      if (f == 3 || f == 5) {  // 135 and 225 degrees on; at 315 it is back within 45 of it
         EXPECT_GT(std::abs(testing::applied_stops(render_window_gpu(c.fixed, f, mode), plain) -
                            bench::kWindowStops),
                   0.5);

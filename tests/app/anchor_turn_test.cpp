@@ -67,7 +67,7 @@ TEST(AnchorTurn, EvalAtTheWindowStaysOnTheKeyframeWhileTheCameraTurns) {
   ASSERT_EQ(world.size(), static_cast<std::size_t>(kTurnFrames));
   ASSERT_EQ(video.size(), static_cast<std::size_t>(kTurnFrames));
   for (int f = 0; f < kTurnFrames; ++f) EXPECT_NEAR(world[f], kWindowStops, 1e-9) << "frame " << f;
-  EXPECT_NEAR(video[4], 0.0, 1e-9) << "fixed in the picture, half a turn on: neutral";
+  EXPECT_NEAR(video[4], 0.0, 0.1) << "fixed in the picture, half a turn on: near the neutral key";
 }
 
 cv::Mat render_window(const fs::path& sidecar, int f, effects::RenderMode mode) {
