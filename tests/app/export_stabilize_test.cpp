@@ -39,7 +39,7 @@ std::string sidecar(const std::string& effects, bool camera) {
   std::ostringstream s;
   s << R"({"format": "vdfx.sidecar", "version": 1, "video": {"path": "turn.mp4", "fps": 30.0, )"
     << R"("frames": )" << kFrames << R"(, "width": )" << kW << R"(, "height": )" << kH
-    << R"(}, "effects": )" << effects;
+    << R"(}, "interpolation": {"exponent": 1.0, "time_scale": 1.0}, "effects": )" << effects;
   if (camera) {
     s << R"(, "camera": {"source": "given", "orientation": [)";
     for (int f = 0; f < kFrames; ++f) {

@@ -40,10 +40,10 @@ io::Sidecar blank_sidecar(const fs::path& clip) {
   return io::new_sidecar({clip.string(), static_cast<double>(kFps), kFrames, 256, 128});
 }
 
-/// The subject's true direction: from azimuth -90 at frame 0 across the front at 6 degrees a
+/// The subject's true direction: from azimuth -90 at frame 0 across the front at 2 degrees a
 /// frame.
 double subject_az(std::int64_t f) {
-  return -90.0 + 6.0 * static_cast<double>(f);
+  return -90.0 + 2.0 * static_cast<double>(f);
 }
 
 /// A track "actor" following subject_az, lost from frame 20 on (confidence 0, a direction that is
