@@ -18,16 +18,20 @@ constexpr double kMinDrawnIntensity = 1e-4;
 }  // namespace
 
 FlareSet::FlareSet(std::vector<FlareEffect> flares, const InterpolationSettings& defaults,
-                   double fps, AutoLightOptions auto_options)
+                   double fps, const AnchorSources& anchors, AutoLightOptions auto_options)
     : tracker_(auto_options) {
-  replace_flares(std::move(flares), defaults, fps);
+  replace_flares(std::move(flares), defaults, fps, anchors);
 }
 
 void FlareSet::replace_flares(std::vector<FlareEffect> flares,
-                              const InterpolationSettings& defaults, double fps) {
+                              const InterpolationSettings& defaults, double fps,
+                              const AnchorSources& anchors) {
   std::vector<std::shared_ptr<const RbfInterpolator>> intensity;
+  std::vector<AnchorFrames> frames;
+  AnchorResolver resolve(anchors);
   bool uses_auto = false;
   for (const FlareEffect& f : flares) {
+    frames.push_back(resolve.resolve(f.anchor).frames);
     intensity.push_back(std::make_shared<const RbfInterpolator>(
         f.keyframes, 1, f.interpolation.value_or(defaults), fps,
         std::vector<double>{kFlareIntensitySpec.neutral}));
@@ -35,6 +39,7 @@ void FlareSet::replace_flares(std::vector<FlareEffect> flares,
   }
   flares_ = std::move(flares);
   intensity_ = std::move(intensity);
+  anchors_ = std::move(frames);
   uses_auto_ = uses_auto;
 }
 
@@ -56,14 +61,15 @@ double FlareSet::intensity(std::size_t k, const Eigen::Vector3d& gaze, std::int6
   const RbfInterpolator& rbf = *intensity_.at(k);
   if (rbf.empty()) return kFlareIntensitySpec.neutral;
   double v = 0.0;
-  rbf.evaluate_into(gaze, frame, &v);
+  rbf.evaluate_into(anchors_[k].apply(gaze, frame), frame, &v);
   // The RBF may overshoot between keyframes; the sidecar's range holds for what is drawn.
   return std::clamp(v, kFlareIntensitySpec.min, kFlareIntensitySpec.max);
 }
 
 std::optional<Eigen::Vector3d> FlareSet::light(std::size_t k, std::int64_t frame) const {
   const FlareLight& l = flares_.at(k).light;
-  if (const auto* d = std::get_if<Direction>(&l)) return to_unit(*d);
+  // A fixed light is a direction of the flare's anchor's frame.
+  if (const auto* d = std::get_if<Direction>(&l)) return anchors_[k].unapply(to_unit(*d), frame);
   if (const auto* t = std::get_if<std::vector<LightSample>>(&l)) return light_on_track(*t, frame);
   if (!given_lights_) return tracker_.light(frame);
   if (frame < 0 || frame >= static_cast<std::int64_t>(given_lights_->size())) return std::nullopt;

@@ -14,6 +14,7 @@
 #include <optional>
 #include <vector>
 
+#include "effects/anchor_sources.h"
 #include "effects/flare.h"
 #include "effects/flare_layout.h"
 #include "effects/light_track.h"
@@ -23,10 +24,11 @@ namespace vdfx::effects {
 
 class FlareSet {
  public:
-  /// Solves each flare's intensity keyframes (its own interpolation settings, else `defaults`).
-  /// Throws std::invalid_argument like RbfInterpolator.
+  /// Solves each flare's intensity keyframes (its own interpolation settings, else `defaults`)
+  /// and resolves its anchor against `anchors`. Throws std::invalid_argument like
+  /// RbfInterpolator, or when an anchor names what `anchors` lack.
   FlareSet(std::vector<FlareEffect> flares, const InterpolationSettings& defaults, double fps,
-           AutoLightOptions auto_options = {});
+           const AnchorSources& anchors = {}, AutoLightOptions auto_options = {});
 
   bool empty() const { return flares_.empty(); }
   std::size_t size() const { return flares_.size(); }
@@ -49,14 +51,18 @@ class FlareSet {
   /// New flares (an editor's edit), solved like the constructor's. The auto-light tracker keeps
   /// what it measured: it is about the video, not the flares.
   void replace_flares(std::vector<FlareEffect> flares, const InterpolationSettings& defaults,
-                      double fps);
+                      double fps, const AnchorSources& anchors = {});
   /// Flare k's intensity from another solution of its keyframes (an editor's pending edit);
-  /// dimension 1.
+  /// dimension 1, keyframes in the flare's anchor's frame.
   void set_intensity(std::size_t k, std::shared_ptr<const RbfInterpolator> intensity);
 
-  /// Flare k's intensity at a gaze direction (unit) and frame, clamped to 0..4.
+  /// Flare k's intensity at a gaze direction (unit, of the video frame) and frame, clamped to
+  /// 0..4.
   double intensity(std::size_t k, const Eigen::Vector3d& gaze, std::int64_t frame) const;
-  /// Flare k's light direction (unit) at a frame; nullopt when an auto light finds none.
+  /// Flare k's anchor.
+  const AnchorFrames& anchor(std::size_t k) const { return anchors_.at(k); }
+  /// Flare k's light direction (unit, of the video frame) at a frame; nullopt when an auto light
+  /// finds none.
   std::optional<Eigen::Vector3d> light(std::size_t k, std::int64_t frame) const;
   /// The layouts of every flare that adds light for this head pose at this frame.
   std::vector<FlareLayout> layouts(const HeadPose& head, std::int64_t frame) const;
@@ -64,6 +70,7 @@ class FlareSet {
  private:
   std::vector<FlareEffect> flares_;
   std::vector<std::shared_ptr<const RbfInterpolator>> intensity_;
+  std::vector<AnchorFrames> anchors_;  //!< one per flare
   LightTrack tracker_;
   std::optional<std::vector<std::optional<Eigen::Vector3d>>> given_lights_;
   bool uses_auto_ = false;

@@ -25,16 +25,19 @@ std::int64_t frame_display_time_ns(std::int64_t frame, double fps) {
 }
 
 GrainSet::GrainSet(std::vector<GrainEffect> effects, const InterpolationSettings& defaults,
-                   double fps) {
+                   double fps, const AnchorSources& anchors) {
+  AnchorResolver resolve(anchors);
   for (GrainEffect& e : effects) {
     GrainInterpolator interp(e, defaults, fps);
     auto noise = std::make_shared<const PerlinNoise>(e.seed);
-    effects_.push_back({std::move(e), std::move(interp), std::move(noise)});
+    AnchorFrames anchor = resolve.resolve(e.anchor).frames;
+    effects_.push_back({std::move(e), std::move(interp), std::move(noise), std::move(anchor)});
   }
 }
 
 GrainParams GrainSet::params(std::size_t i, const Eigen::Vector3d& unit, std::int64_t frame) const {
-  return effects_.at(i).interp.evaluate(unit, frame);
+  const Entry& en = effects_.at(i);
+  return en.interp.evaluate(en.anchor.apply(unit, frame), frame);
 }
 
 void GrainSet::set_interpolant(std::size_t i, std::shared_ptr<const RbfInterpolator> rbf) {
@@ -49,7 +52,7 @@ std::vector<GrainFrame> GrainSet::layout(const HeadPose& head, std::int64_t disp
     Entry& en = effects_[i];
     const GrainEffect& e = en.effect;
     GrainFrame f;
-    f.params = en.interp.evaluate(forward, video_frame);
+    f.params = en.interp.evaluate(en.anchor.apply(forward, video_frame), video_frame);
     if (!(f.params.intensity > 0.0)) continue;  // neutral: no layer, no cost
     f.effect = i;
     f.style = e.style;

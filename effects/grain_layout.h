@@ -10,6 +10,11 @@
 /// particles with the effect's settings (volumetric styles: the GPU generates the particles from
 /// them, effects/grain_particles.h; no CPU sampling). An effect at intensity 0 yields no layer:
 /// nothing is drawn.
+///
+/// Anchors (effects/anchor.h): an effect's intensity and size keyframes are interpolated at the
+/// head's forward direction turned into the effect's anchor's frame. The grain itself (its
+/// lattice, its particles) stays where its style puts it, about the head: an anchor says where
+/// the keyframes are, not where the grains are.
 #pragma once
 
 #include <Eigen/Core>
@@ -18,6 +23,7 @@
 #include <memory>
 #include <vector>
 
+#include "effects/anchor_sources.h"
 #include "effects/grain.h"
 #include "effects/grain_interpolator.h"
 #include "effects/grain_particles.h"
@@ -57,15 +63,19 @@ struct GrainFrame {
 class GrainSet {
  public:
   GrainSet() = default;
-  /// Throws std::invalid_argument when an effect's keyframes cannot be interpolated.
-  GrainSet(std::vector<GrainEffect> effects, const InterpolationSettings& defaults, double fps);
+  /// Throws std::invalid_argument when an effect's keyframes cannot be interpolated or its
+  /// anchor names what `anchors` lack.
+  GrainSet(std::vector<GrainEffect> effects, const InterpolationSettings& defaults, double fps,
+           const AnchorSources& anchors = {});
 
   bool empty() const { return effects_.empty(); }
   std::size_t size() const { return effects_.size(); }
   const GrainEffect& effect(std::size_t i) const { return effects_.at(i).effect; }
+  /// Effect i's parameters at a direction (unit, of the video frame) and frame.
   GrainParams params(std::size_t i, const Eigen::Vector3d& unit, std::int64_t frame) const;
+  const AnchorFrames& anchor(std::size_t i) const { return effects_.at(i).anchor; }
   /// Effect i's intensity and size from another solution of its keyframes (an editor's pending
-  /// edit).
+  /// edit; keyframes in the effect's anchor's frame).
   void set_interpolant(std::size_t i, std::shared_ptr<const RbfInterpolator> rbf);
 
   /// The visible layers at a display time (file order). Parameters are interpolated at the
@@ -78,6 +88,7 @@ class GrainSet {
     GrainEffect effect;
     GrainInterpolator interp;
     std::shared_ptr<const PerlinNoise> noise;
+    AnchorFrames anchor;
   };
   std::vector<Entry> effects_;
 };

@@ -1,5 +1,6 @@
 /// @file
-/// @brief FlareSet and GrainSet construction with the sidecar's errors as input errors.
+/// @brief StackInterpolator, FlareSet and GrainSet construction with the sidecar's anchors and its
+/// errors as input errors.
 #include "io/sidecar_sets.h"
 
 #include <stdexcept>
@@ -9,20 +10,41 @@
 
 namespace vdfx::io {
 
-effects::FlareSet flare_set_of(const Sidecar& sidecar) {
+namespace {
+
+/// make(), its std::invalid_argument an InputError saying which of the sidecar's entries (`what`)
+/// cannot be interpolated.
+template <class Make>
+auto built(const char* what, const Make& make) {
   try {
-    return effects::FlareSet(sidecar.flares, sidecar.interpolation, sidecar.video.fps);
+    return make();
   } catch (const std::invalid_argument& e) {
-    throw InputError(std::string("sidecar flares cannot be interpolated: ") + e.what());
+    throw InputError(std::string("sidecar ") + what + " cannot be interpolated: " + e.what());
   }
 }
 
-effects::GrainSet grain_set_of(const Sidecar& sidecar) {
-  try {
-    return effects::GrainSet(sidecar.grains, sidecar.interpolation, sidecar.video.fps);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(std::string("sidecar grain cannot be interpolated: ") + e.what());
-  }
+}  // namespace
+
+effects::AnchorSources anchor_sources(const Sidecar& sidecar) {
+  return {sidecar.camera ? &*sidecar.camera : nullptr, sidecar.tracks};
+}
+
+effects::StackInterpolator stack_of(const Sidecar& s) {
+  return built("effects", [&] {
+    return effects::StackInterpolator(s.effects, s.interpolation, s.video.fps, anchor_sources(s));
+  });
+}
+
+effects::FlareSet flare_set_of(const Sidecar& s) {
+  return built("flares", [&] {
+    return effects::FlareSet(s.flares, s.interpolation, s.video.fps, anchor_sources(s));
+  });
+}
+
+effects::GrainSet grain_set_of(const Sidecar& s) {
+  return built("grain", [&] {
+    return effects::GrainSet(s.grains, s.interpolation, s.video.fps, anchor_sources(s));
+  });
 }
 
 }  // namespace vdfx::io

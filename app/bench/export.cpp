@@ -15,6 +15,7 @@
 #include "app/bench/media.h"
 #include "app/bench/registry.h"
 #include "app/export/baked_export.h"
+#include "io/sidecar_sets.h"
 
 namespace vdfx::app::bench {
 namespace {
@@ -40,7 +41,7 @@ void add_depth_row(Registry& r, int w, int frames) {
                                          "_" + std::to_string(frames) + "_h264.mp4",
                                      w, h, frames);
     const io::Sidecar sc = media_sidecar(false);
-    const effects::StackInterpolator stack(sc.effects, sc.interpolation, sc.video.fps);
+    const effects::StackInterpolator stack = io::stack_of(sc);
     const fs::path out = fs::temp_directory_path() / "vdfx_bench_export.mp4";
     const FrameRenderer ten = baked_renderer(stack, {}, 10), eight = baked_renderer(stack, {}, 8);
     const auto t = measure_pair(Timed(
@@ -96,7 +97,7 @@ void add_export_knobs(Registry& r, bool quick) {
                                            "_" + std::to_string(frames) + "_h264.mp4",
                                        w, h, frames);
       const io::Sidecar sc = media_sidecar(c.blur);
-      const effects::StackInterpolator stack(sc.effects, sc.interpolation, sc.video.fps);
+      const effects::StackInterpolator stack = io::stack_of(sc);
       const fs::path out = fs::temp_directory_path() / "vdfx_bench_export.mp4";
       const effects::StereoLayout layout{
           c.stereo ? effects::StereoMode::TopBottom : effects::StereoMode::Mono, 360};

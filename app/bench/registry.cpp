@@ -44,6 +44,7 @@ Registry build_registry(bool quick) {
   add_export_knobs(r, quick);
   add_openxr_knobs(r, quick);
   add_suggest_knobs(r, quick);
+  add_anchor_knobs(r, quick);
   add_track_knobs(r, quick);
   // A new area registers here: one line, its function in its own file (app/bench/registry.h).
   return r;

@@ -65,6 +65,7 @@ void add_decode_knobs(Registry& r, bool quick);      // app/bench/decode.cpp
 void add_export_knobs(Registry& r, bool quick);      // app/bench/export.cpp
 void add_openxr_knobs(Registry& r, bool quick);      // app/bench/openxr_gl.cpp
 void add_suggest_knobs(Registry& r, bool quick);     // app/bench/suggest.cpp
+void add_anchor_knobs(Registry& r, bool quick);      // app/bench/anchor.cpp
 void add_track_knobs(Registry& r, bool quick);       // app/bench/track.cpp
 
 /// Every knob with the settings of a quick or a full run, in report order.

@@ -42,7 +42,7 @@ int cmd_eval(const Args& args) {
                            " is beyond the video's " + std::to_string(sidecar.video.frames) +
                            " frames (/video/frames)");
   }
-  const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+  const effects::StackInterpolator stack = io::stack_of(sidecar);
   const effects::FlareSet flares = io::flare_set_of(sidecar);
   const effects::GrainSet grains = io::grain_set_of(sidecar);
   for (const EvalPoint& p : points) {

@@ -15,33 +15,42 @@ using effects::EffectType;
 
 namespace {
 
-// A flare or grain entry without what the document keeps in its keyframe sets.
+// A flare or grain entry without what the document keeps beside its other targets' (keyframe
+// sets, overrides, anchors).
 template <class Layer>
 Layer head_of(Layer layer) {
   layer.keyframes.clear();
   layer.interpolation.reset();
+  layer.anchor = {};
   return layer;
 }
 
 }  // namespace
 
 Document::Document(io::Sidecar sidecar, DocumentOptions options)
-    : video_(sidecar.video), defaults_(sidecar.interpolation), options_(options) {
+    : video_(sidecar.video),
+      defaults_(sidecar.interpolation),
+      camera_(std::move(sidecar.camera)),
+      tracks_(std::move(sidecar.tracks)),
+      options_(options) {
   std::array<std::vector<effects::Keyframe>, EditTarget::kCount> loaded;
   for (auto& track : sidecar.effects) {
     overrides_[idx(track.type)] = track.interpolation;
+    anchors_[idx(track.type)] = track.anchor;
     loaded[idx(track.type)] = std::move(track.keyframes);
   }
   // The first flare and grain are edited; the others ride along.
   const auto take_first = [&](auto& from, auto& first, auto& more, EditTarget t) {
     if (from.empty()) return;
     overrides_[idx(t)] = from.front().interpolation;
+    anchors_[idx(t)] = from.front().anchor;
     loaded[idx(t)] = from.front().keyframes;
     first = head_of(std::move(from.front()));
     more.assign(std::make_move_iterator(from.begin() + 1), std::make_move_iterator(from.end()));
   };
   take_first(sidecar.flares, flare_, more_flares_, EditTarget::flare());
   take_first(sidecar.grains, grain_, more_grains_, EditTarget::grain());
+  resolve_anchors();
   for (const EditTarget t : all_edit_targets()) {
     params_[idx(t)] = t.neutral();
     rebuild(t, std::move(loaded[idx(t)]));
@@ -60,19 +69,22 @@ io::Sidecar Document::sidecar() const {
   io::Sidecar s;
   s.video = video_;
   s.interpolation = defaults_;
+  s.camera = camera_;
+  s.tracks = tracks_;
   for (const auto& spec : effects::all_effect_specs()) {
     const auto i = idx(spec.type);
-    if (sets_[i]->keyframes().empty() && !overrides_[i]) continue;
-    s.effects.push_back({spec.type, overrides_[i], sets_[i]->keyframes()});
+    if (sets_[i]->keyframes().empty() && !overrides_[i] && anchors_[i].is_video()) continue;
+    s.effects.push_back({spec.type, overrides_[i], sets_[i]->keyframes(), anchors_[i]});
   }
   // The edited entry first, when there is one to write, then the rest as read.
   const auto put = [&](auto& out, const auto& head, const auto& fresh, const auto& more,
                        EditTarget t) {
     const auto i = idx(t);
-    if (head || !sets_[i]->keyframes().empty() || overrides_[i]) {
+    if (head || !sets_[i]->keyframes().empty() || overrides_[i] || !anchors_[i].is_video()) {
       auto& e = out.emplace_back(head.value_or(fresh));
       e.keyframes = sets_[i]->keyframes();
       e.interpolation = overrides_[i];
+      e.anchor = anchors_[i];
     }
     out.insert(out.end(), more.begin(), more.end());
   };
@@ -87,11 +99,28 @@ effects::InterpolationSettings Document::interpolation(EditTarget t) const {
 
 effects::StackInterpolator Document::interpolator() const {
   effects::StackInterpolator::Solutions solutions;
+  effects::StackInterpolator::Anchors anchors;
   for (std::size_t i = 0; i < solutions.size(); ++i) {
     auto s = sets_[i]->solution();
     if (s && !s->empty()) solutions[i] = std::move(s);
+    anchors[i] = {anchors_[i], frames_[i]};  // a stack effect's EditTarget index is its type's
   }
-  return effects::StackInterpolator(std::move(solutions));
+  return effects::StackInterpolator(std::move(solutions), std::move(anchors));
+}
+
+effects::AnchorSources Document::anchor_sources() const {
+  return {camera_ ? &*camera_ : nullptr, tracks_};
+}
+
+void Document::resolve_anchors() {
+  effects::AnchorResolver resolve(anchor_sources());
+  for (const EditTarget t : all_edit_targets()) {
+    try {
+      frames_[idx(t)] = resolve.resolve(anchors_[idx(t)]).frames;
+    } catch (const std::invalid_argument& e) {
+      throw io::InputError(std::string(t.name()) + ": " + e.what());
+    }
+  }
 }
 
 std::vector<double> Document::clamp_params(EditTarget t, std::vector<double> params) {
@@ -110,8 +139,9 @@ std::vector<double> Document::clamp_params(EditTarget t, std::vector<double> par
 }
 
 EffectSnapshot Document::snapshot(EditTarget t) const {
-  EffectSnapshot s{overrides_[idx(t)], sets_[idx(t)]->keyframes(), params_[idx(t)], std::nullopt,
-                   std::nullopt};
+  EffectSnapshot s{overrides_[idx(t)], sets_[idx(t)]->keyframes(),
+                   params_[idx(t)],    anchors_[idx(t)],
+                   std::nullopt,       std::nullopt};
   if (t.is_flare()) s.flare = flare_;
   if (t.is_grain()) s.grain = grain_;
   return s;
@@ -128,6 +158,10 @@ void Document::rebuild(EditTarget t, std::vector<effects::Keyframe> keyframes) {
 }
 
 void Document::restore(EditTarget t, const EffectSnapshot& s) {
+  if (!(anchors_[idx(t)] == s.anchor)) {
+    anchors_[idx(t)] = s.anchor;
+    resolve_anchors();
+  }
   overrides_[idx(t)] = s.interpolation;
   params_[idx(t)] = s.params;
   if (t.is_flare()) flare_ = s.flare;
@@ -242,6 +276,28 @@ void Document::set_grain_style(effects::GrainStyle style) {
   g.style = style;
   grain_ = std::move(g);
   record("grain style", EditTarget::grain(), std::move(before));
+}
+
+void Document::set_anchor(EditTarget t, const effects::Anchor& anchor) {
+  if (anchor == anchors_[idx(t)]) return;
+  effects::AnchorFrames to;
+  try {
+    to = effects::anchor_frames(anchor, camera_ ? &*camera_ : nullptr, tracks_);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(std::string(t.name()) + ": " + e.what());
+  }
+  auto before = snapshot(t);
+  const effects::AnchorFrames from = frames_[idx(t)];
+  std::vector<effects::Keyframe> keyframes = sets_[idx(t)]->keyframes();
+  for (effects::Keyframe& k : keyframes)
+    k.direction = to.apply(from.unapply(k.direction, k.frame), k.frame);
+  if (t.is_flare() && flare_)
+    if (auto* light = std::get_if<effects::Direction>(&flare_->light))
+      *light = to.apply(from.unapply(*light, 0), 0);
+  anchors_[idx(t)] = anchor;
+  resolve_anchors();
+  rebuild(t, std::move(keyframes));
+  record(std::string(t.name()) + " anchor", t, std::move(before));
 }
 
 PendingEdit& Document::begin_pending(EditTarget t, std::optional<std::size_t> moved,

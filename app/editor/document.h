@@ -10,6 +10,12 @@
 /// flare and first grain are edited (keyframes, interpolation, flare style and light, grain
 /// style); one is written when it existed, has keyframes or its own settings, or was given a
 /// style or light; further flares and grains are carried through unchanged, after it.
+///
+/// Anchors (effects/anchor.h): each target's keyframe directions are stored in its anchor's
+/// frame, resolved against the sidecar's camera and tracks (carried through unchanged). The
+/// editor turns the view into that frame before it places, moves or picks a keyframe
+/// (anchor_frames(t).apply) and back to show one (unapply); interpolator() evaluates each stack
+/// effect at the view turned by its anchor.
 #pragma once
 
 #include <array>
@@ -23,6 +29,7 @@
 #include "app/editor/edit_target.h"
 #include "app/editor/pending_edit.h"
 #include "app/editor/undo_stack.h"
+#include "effects/anchor_sources.h"
 #include "effects/keyframe_set.h"
 #include "effects/stack_interpolator.h"
 #include "io/sidecar.h"
@@ -56,11 +63,19 @@ class Document {
   /// The tool's chosen values for a target (flat vector, EditTarget::params() layout; neutral
   /// at start).
   const std::vector<double>& params(EditTarget t) const { return params_[idx(t)]; }
-  /// The latest solutions of the six stack effects (possibly one edit behind while async).
+  /// The latest solutions of the six stack effects (possibly one edit behind while async), each
+  /// with its anchor.
   effects::StackInterpolator interpolator() const;
+  /// A target's anchor ("video" unless the sidecar or set_anchor said otherwise) and its
+  /// rotation at every frame.
+  const effects::Anchor& anchor(EditTarget t) const { return anchors_[idx(t)]; }
+  const effects::AnchorFrames& anchor_frames(EditTarget t) const { return frames_[idx(t)]; }
+  /// The sidecar's camera and tracks, as anchors resolve them.
+  effects::AnchorSources anchor_sources() const;
 
-  /// The flare being edited (the sidecar's first) without its keyframes and interpolation (those
-  /// are keyframes(EditTarget::flare()) and its override): style, light, settings. While the
+  /// The flare being edited (the sidecar's first) without its keyframes, interpolation and anchor
+  /// (those are keyframes(EditTarget::flare()), its override and anchor()): style, light (a fixed
+  /// one is a direction of the anchor's frame), settings. While the
   /// sidecar has none, the flare a first edit makes: directional, auto light, default settings.
   effects::FlareEffect flare() const { return flare_.value_or(new_flare()); }
   /// The grain effect being edited, likewise (a new one: surface style, seed 0).
@@ -87,6 +102,11 @@ class Document {
   /// The flare's light: a fixed direction ("Set light here") or auto.
   void set_flare_light(const effects::FlareLight& light);
   void set_grain_style(effects::GrainStyle style);
+  /// What a target's keyframes are fixed to. Each keyframe keeps where it shows at its own frame
+  /// (its direction is turned from the old anchor's frame into the new one's there), and so does
+  /// a fixed flare light at frame 0. Throws io::InputError when the anchor names a camera or track
+  /// the sidecar lacks.
+  void set_anchor(EditTarget t, const effects::Anchor& anchor);
 
   // ---- the edit being made (app/editor/pending_edit.h): at most one at a time
   /// Starts one (a new keyframe, or keyframe `moved` held) and returns it; replaces any other.
@@ -123,11 +143,19 @@ class Document {
   EffectSnapshot snapshot(EditTarget t) const;
   void restore(EditTarget t, const EffectSnapshot& s);
   void rebuild(EditTarget t, std::vector<effects::Keyframe> keyframes);
+  /// frames_ from anchors_ (throws io::InputError naming the target whose anchor names what the
+  /// sidecar lacks).
+  void resolve_anchors();
   void record(const std::string& label, EditTarget t, EffectSnapshot before);
   void changed();
 
   io::VideoInfo video_;
   effects::InterpolationSettings defaults_;
+  /// The sidecar's camera and tracks (what anchors turn by), each target's anchor and its frames.
+  std::optional<effects::CameraMotion> camera_;
+  std::vector<effects::SubjectTrack> tracks_;
+  std::array<effects::Anchor, EditTarget::kCount> anchors_{};
+  std::array<effects::AnchorFrames, EditTarget::kCount> frames_{};
   /// The edited flare's style, light and settings (nullopt: the sidecar has none yet) and the
   /// sidecar's further flares, written back unchanged after it. Likewise the grain effects.
   std::optional<effects::FlareEffect> flare_;

@@ -164,15 +164,19 @@ effects::StackParams Editor::params_for_view(const Direction& direction, std::in
   const PendingEdit* p = doc_.pending();
   const auto type = p ? p->target().stack_effect() : std::nullopt;
   if (!type) return sp;  // a flare's or grain's pending edit is drawn by their layers
+  // The pending keyframe is stored in the effect's anchor's frame: so is the view there.
+  const Eigen::Vector3d turned =
+      doc_.anchor_frames(p->target()).apply(effects::to_unit(direction), frame);
   // At a new keyframe itself its values are exact; elsewhere interpolate with it.
   if (!p->moved() && frame == p->key().frame &&
-      effects::angle_between_deg(direction, p->key().direction) < 1e-9) {
+      effects::angle_between(turned, effects::to_unit(p->key().direction)) * effects::kRadToDeg <
+          1e-9) {
     sp.set(*type, p->key().params);
     return sp;
   }
   const auto rbf = p->interpolant();  // a grab that has not moved changes nothing
   if (!rbf) return sp;
-  const Eigen::VectorXd v = rbf->evaluate(direction, frame);
+  const Eigen::VectorXd v = rbf->evaluate(turned, frame);
   sp.set(*type, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())));
   return sp;
 }
@@ -234,7 +238,8 @@ void Editor::set_flare_style(effects::FlareStyle style) {
 }
 
 void Editor::set_light_here() {
-  doc_.set_flare_light(view_);
+  // A fixed light is a direction of the flare's anchor's frame (effects/flare_set.h).
+  doc_.set_flare_light(doc_.anchor_frames(EditTarget::flare()).apply(view_, play_.frame));
   say("flare light set at az " + std::to_string(static_cast<int>(std::lround(view_.azimuth_deg))) +
       " alt " + std::to_string(static_cast<int>(std::lround(view_.altitude_deg))));
 }
@@ -311,13 +316,14 @@ void Editor::seek(std::int64_t frame) {
 
 std::optional<Direction> Editor::jump_to_keyframe(int step) {
   const auto& ks = doc_.keyframes(effect_);
-  const auto i = adjacent_keyframe(ks, view_, play_.frame, step);
+  const effects::AnchorFrames& anchor = doc_.anchor_frames(effect_);
+  const auto i = adjacent_keyframe(ks, view_, play_.frame, step, anchor);
   if (!i) {
     say(step > 0 ? "no keyframe after this frame" : "no keyframe before this frame");
     return std::nullopt;
   }
   seek(ks[*i].frame);
-  status_.look_target = ks[*i].direction;
+  status_.look_target = anchor.unapply(ks[*i].direction, ks[*i].frame);  // where it shows there
   say({});
   // The keyframe jumped to becomes the selection (its values in the widget, ready to grab); a
   // grab in progress keeps its keyframe, which follows the playhead instead.
@@ -352,13 +358,15 @@ void Editor::place_keyframe() {
         " to " + std::to_string(stereo.coverage_deg / 2) + "): no keyframe placed");
     return;
   }
-  const auto edit = doc_.add_keyframe(effect_, {view_, play_.frame, doc_.params(effect_)});
+  const Direction at = doc_.anchor_frames(effect_).apply(view_, play_.frame);
+  const auto edit = doc_.add_keyframe(effect_, {at, play_.frame, doc_.params(effect_)});
   say(edit.replaced ? "replaced a keyframe" : "placed a keyframe");
 }
 
 void Editor::begin_preview() {
   deselect();  // the widget goes back to the chosen values that will be placed
-  doc_.begin_pending(effect_, std::nullopt, {view_, play_.frame, doc_.params(effect_)});
+  const Direction at = doc_.anchor_frames(effect_).apply(view_, play_.frame);
+  doc_.begin_pending(effect_, std::nullopt, {at, play_.frame, doc_.params(effect_)});
 }
 
 bool Editor::undo() {

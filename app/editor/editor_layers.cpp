@@ -3,6 +3,7 @@
 #include "app/editor/editor_layers.h"
 
 #include "app/editor/editor.h"
+#include "io/sidecar_sets.h"
 
 namespace vdfx::app {
 
@@ -21,12 +22,19 @@ void EditorLayers::update(const Editor& editor) {
     io::Sidecar s = doc.sidecar();
     // The document writes its edited flare first, and writes the others only after one; while
     // the first keyframe of a new flare is being placed the sidecar has none yet: show it.
-    if (s.flares.empty() && pending_flare) s.flares.push_back(doc.flare());
-    if (s.grains.empty() && pending_grain) s.grains.push_back(doc.grain());
+    if (s.flares.empty() && pending_flare) {
+      s.flares.push_back(doc.flare());
+      s.flares.back().anchor = doc.anchor(EditTarget::flare());
+    }
+    if (s.grains.empty() && pending_grain) {
+      s.grains.push_back(doc.grain());
+      s.grains.back().anchor = doc.anchor(EditTarget::grain());
+    }
     edited_flare_ = !s.flares.empty();
     edited_grain_ = !s.grains.empty();
-    flares_.replace_flares(std::move(s.flares), s.interpolation, s.video.fps);
-    grains_ = effects::GrainSet(std::move(s.grains), s.interpolation, s.video.fps);
+    const effects::AnchorSources anchors = io::anchor_sources(s);
+    flares_.replace_flares(std::move(s.flares), s.interpolation, s.video.fps, anchors);
+    grains_ = effects::GrainSet(std::move(s.grains), s.interpolation, s.video.fps, anchors);
   }
   // The editor's interpolants: the pending edit's while there is one, else the solutions.
   if (edited_flare_)

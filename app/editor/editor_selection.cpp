@@ -21,7 +21,9 @@ void Editor::validate_selection() {
 }
 
 std::optional<std::size_t> Editor::nearest_to_view() const {
-  return nearest_keyframe(doc_.keyframes(effect_), view_, play_.frame,
+  // Measured where the keyframes are stored: the view turned into the effect's anchor's frame.
+  return nearest_keyframe(doc_.keyframes(effect_),
+                          doc_.anchor_frames(effect_).apply(view_, play_.frame), play_.frame,
                           doc_.interpolation(effect_).time_scale, doc_.video().fps);
 }
 

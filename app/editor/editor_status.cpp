@@ -34,7 +34,10 @@ std::string Editor::status_text() const {
   if (const auto p = suggestion_progress()) s += fmt(" | suggesting %.0f %%", 100.0 * *p);
   if (previewing()) s += " | PREVIEW: release to place";
   if (const auto k = selected_preview()) {
-    const std::string where = fmt("az %.0f", k->direction.azimuth_deg) +
+    // Stored directions are in the effect's anchor's frame: say which, unless it is the video's.
+    const effects::Anchor& anchor = doc_.anchor(effect_);
+    const std::string frame_of = anchor.is_video() ? "" : effects::anchor_name(anchor) + " ";
+    const std::string where = frame_of + fmt("az %.0f", k->direction.azimuth_deg) +
                               fmt(" alt %.0f", k->direction.altitude_deg) + " frame " +
                               std::to_string(k->frame);
     const std::string which =

@@ -84,6 +84,7 @@ void Editor::apply_suggestion(EditTarget target, const std::string& label,
       if (track.type == e.type && track.interpolation && !doc_.interpolation_override(t) &&
           doc_.keyframes(t).empty())
         doc_.set_interpolation(t, *track.interpolation);
+    // In the effect's anchor's frame already: the suggestion read the document's anchors.
     for (const effects::Keyframe& k : e.fit.added) doc_.add_keyframe(t, k);
     added += e.fit.added.size();
   }

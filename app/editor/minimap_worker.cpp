@@ -9,7 +9,7 @@ namespace vdfx::app {
 MinimapWorker::MinimapWorker(Compute compute) : compute_(std::move(compute)) {
   if (!compute_)
     compute_ = [](const MinimapJob& j, const std::atomic<bool>& cancel) {
-      return effect_minimap(j.rbf.get(), j.type, j.frame, j.width, j.height, &cancel);
+      return effect_minimap(j.rbf.get(), j.type, j.frame, j.width, j.height, &cancel, j.anchor);
     };
   thread_ = std::thread([this] { run(); });
 }

@@ -24,6 +24,7 @@
 #include <thread>
 
 #include "app/editor/edit_target.h"
+#include "effects/anchor.h"
 #include "effects/rbf_interpolator.h"
 
 namespace vdfx::app {
@@ -45,6 +46,7 @@ struct MinimapJob {
   EditTarget type = effects::EffectType::Exposure;
   std::int64_t frame = 0;
   int width = 128, height = 64;
+  effects::AnchorFrames anchor;  //!< the effect's: turns each cell's direction at `frame`
 };
 
 struct MinimapResult {

@@ -49,15 +49,23 @@ void PendingEdit::hold_from(const effects::Direction& view, std::int64_t frame) 
 }
 
 effects::Keyframe PendingEdit::placed_at(const effects::Direction& view, std::int64_t frame) const {
-  if (!moved_) return {view, frame, doc_.params(target_)};
+  // The view is a direction of the video frame at `frame`; the key is stored in the anchor's.
+  const effects::AnchorFrames& anchor = doc_.anchor_frames(target_);
+  if (!moved_) return {anchor.apply(view, frame), frame, doc_.params(target_)};
   const auto& ks = doc_.keyframes(target_);
   if (!hold_ || *moved_ >= ks.size()) return key_;
   effects::Keyframe k = ks[*moved_];
   const effects::Keyframe& k0 = hold_->key;
-  k.direction.azimuth_deg = effects::wrap_azimuth_deg(k0.direction.azimuth_deg +
-                                                      (view.azimuth_deg - hold_->view.azimuth_deg));
-  k.direction.altitude_deg = std::clamp(
-      k0.direction.altitude_deg + (view.altitude_deg - hold_->view.altitude_deg), -90.0, 90.0);
+  // The offsets apply where the held keyframe showed when the hold began (the video frame at
+  // the playhead then), and the result is stored as the video frame at the playhead now shows
+  // it: held while looked at, it stays at the view centre whatever the camera does.
+  const effects::Direction shown = anchor.unapply(k0.direction, hold_->frame);
+  effects::Direction d;
+  d.azimuth_deg =
+      effects::wrap_azimuth_deg(shown.azimuth_deg + (view.azimuth_deg - hold_->view.azimuth_deg));
+  d.altitude_deg =
+      std::clamp(shown.altitude_deg + (view.altitude_deg - hold_->view.altitude_deg), -90.0, 90.0);
+  k.direction = anchor.apply(d, frame);
   k.frame = std::clamp<std::int64_t>(k0.frame + (frame - hold_->frame), 0, doc_.video().frames - 1);
   return k;
 }

@@ -63,6 +63,8 @@ class PendingEdit {
   /// the view (in azimuth and altitude, clamped to +-90) and from the playhead (in frames,
   /// clamped to the clip), with the held keyframe's values as the document has them now. So
   /// holding alone moves nothing, and a keyframe held while looked at stays at the view centre.
+  /// The view is a direction of the video frame at `frame`; the key's direction is stored in the
+  /// target's anchor's frame (Document::anchor_frames: the view turned at `frame`).
   effects::Keyframe placed_at(const effects::Direction& view, std::int64_t frame) const;
   /// set_key(placed_at(view, frame)).
   void follow(const effects::Direction& view, std::int64_t frame) {

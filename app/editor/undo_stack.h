@@ -24,6 +24,7 @@ struct EffectSnapshot {
   std::optional<effects::InterpolationSettings> interpolation;  //!< the effect's override
   std::vector<effects::Keyframe> keyframes;
   std::vector<double> params;  //!< the tool's chosen values for this effect
+  effects::Anchor anchor;      //!< the frame the keyframes' directions are in
   /// The flare target: its entry's style, light and settings (keyframes and interpolation empty:
   /// they are the fields above); nullopt while the sidecar has no flare. Likewise the grain.
   std::optional<effects::FlareEffect> flare;

@@ -27,15 +27,19 @@ VisualizationCache::VisualizationCache(VisualizationOptions options, std::int64_
 VisualizationCache::~VisualizationCache() = default;
 
 void VisualizationCache::refresh_markers(const Document& doc, const VisualizationInput& in) {
-  // Markers follow the view: recomputed when it moved by a degree, or the keyframes changed.
+  // Markers follow the view: recomputed when it moved by a degree, the keyframes changed, or an
+  // anchored effect's rotation did (the playhead moved).
   const auto& ks = doc.keyframes(in.effect);
   const int eff = in.effect.index();
   const std::int64_t held_frame = in.held ? in.held->frame : -1;
+  const effects::AnchorFrames& anchor = doc.anchor_frames(in.effect);
+  const std::int64_t anchor_frame = anchor.identity() ? 0 : in.frame;
   if (markers_.revision == doc.revision() && markers_.effect == eff &&
       effects::angle_between_deg(markers_.view, in.view) <= 1.0 &&
-      markers_.held_frame == held_frame)
+      markers_.held_frame == held_frame && markers_.anchor_frame == anchor_frame)
     return;
-  markers_.near = keyframes_near_view(ks, in.view, options_.marker_cone_deg);
+  markers_.near =
+      keyframes_near_view(ks, anchor.apply(in.view, in.frame), options_.marker_cone_deg);
   out_.marker_frames.clear();
   out_.highlighted_frames.clear();
   for (std::size_t i = 0; i < ks.size(); ++i)
@@ -48,12 +52,14 @@ void VisualizationCache::refresh_markers(const Document& doc, const Visualizatio
   markers_.effect = eff;
   markers_.view = in.view;
   markers_.held_frame = held_frame;
+  markers_.anchor_frame = anchor_frame;
 }
 
 void VisualizationCache::refresh_track(const VisualizationInput& in,
                                        std::span<const effects::Keyframe> ks, const MinimapKey& key,
-                                       const effects::RbfInterpolator* rbf) {
-  out_.track = effect_track(rbf, in.effect, in.view, track_.frames);
+                                       const effects::RbfInterpolator* rbf,
+                                       const effects::AnchorFrames& anchor) {
+  out_.track = effect_track(rbf, in.effect, in.view, track_.frames, anchor);
   std::tie(out_.track_lo, out_.track_hi) = display_range(in.effect);
   // Keyframe marks: the held keyframe where it is held, a placed one at the playhead.
   std::vector<std::int64_t> key_frames;
@@ -73,17 +79,19 @@ void VisualizationCache::refresh_minimap(
     const Document& doc, const VisualizationInput& in, const MinimapKey& key,
     const std::function<std::shared_ptr<const effects::RbfInterpolator>()>& rbf) {
   const auto& ks = doc.keyframes(in.effect);
+  const effects::AnchorFrames& anchor = doc.anchor_frames(in.effect);
   if (!(minimap_.requested == key)) {
     const auto s = doc.interpolation(in.effect);
-    minimap_.nearest = nearest_keyframe(ks, in.view, in.frame, s.time_scale, doc.video().fps);
+    minimap_.nearest = nearest_keyframe(ks, anchor.apply(in.view, in.frame), in.frame, s.time_scale,
+                                        doc.video().fps);
     minimap_.requested = key;
     if (worker_)
-      worker_->request(
-          {key, rbf(), in.effect, in.frame, options_.minimap_width, options_.minimap_height});
+      worker_->request({key, rbf(), in.effect, in.frame, options_.minimap_width,
+                        options_.minimap_height, anchor});
     else
       take_field(key,
                  effect_minimap(rbf().get(), in.effect, in.frame, options_.minimap_width,
-                                options_.minimap_height),
+                                options_.minimap_height, nullptr, anchor),
                  in.effect);
   }
   // A field finished for an earlier frame or edit is shown until the current one is ready (a
@@ -91,9 +99,11 @@ void VisualizationCache::refresh_minimap(
   if (worker_)
     if (auto r = worker_->take(); r && r->key.effect == in.effect.index())
       take_field(r->key, std::move(r->field), in.effect);
-  // Keyframe dots: the selected one ringed (and carried along while held).
+  // Keyframe dots where the keyframes are at the playhead (turned back from the anchor's
+  // frame): the selected one ringed (and carried along while held).
   out_.dots.clear();
-  for (std::size_t i = 0; i < ks.size(); ++i) out_.dots.push_back(in.shown(ks, i).direction);
+  for (std::size_t i = 0; i < ks.size(); ++i)
+    out_.dots.push_back(anchor.unapply(in.shown(ks, i).direction, in.frame));
   out_.nearest = minimap_.nearest ? static_cast<int>(*minimap_.nearest) : -1;
   out_.selected = in.selected ? static_cast<int>(*in.selected) : -1;
   out_.view = in.view;
@@ -117,7 +127,8 @@ const Visualizations& VisualizationCache::refresh(const Document& doc,
   const MinimapKey base{doc.revision(), doc.keyframe_set(in.effect).solution_version(),
                         in.effect.index(), -1, shows_pending ? pending->version() : 0};
   if (!(track_.key == base) || effects::angle_between_deg(track_.view, in.view) > 1.0)
-    refresh_track(in, doc.keyframes(in.effect), base, interpolant().get());
+    refresh_track(in, doc.keyframes(in.effect), base, interpolant().get(),
+                  doc.anchor_frames(in.effect));
   out_.track_playhead = static_cast<int>(std::min(
       sample_at(track_.frames, in.frame), static_cast<std::ptrdiff_t>(track_.frames.size()) - 1));
   MinimapKey key = base;

@@ -1,11 +1,13 @@
 /// @file
 /// @brief What the editor shows about the current effect's keyframes, as data for its panels:
 /// the track plot (the value over time at the view), the minimap (over the sphere at the playhead,
-/// with the keyframes as dots and the view's footprint) and the timeline's markers. Each is
-/// recomputed only when what it shows changed (the document's revision and solution, the pending
-/// edit's version, the effect, the frame, the view by a degree), so a frame that changes nothing
-/// costs nothing. While a keyframe is placed or held away from its place they show the pending
-/// edit's interpolant, the one the view shows.
+/// with the keyframes as dots and the view's footprint) and the timeline's markers. Keyframes
+/// are stored in their effect's anchor's frame: the plot, the field and the markers turn the
+/// view into it at each frame, and the dots are drawn where the keyframes are at the playhead.
+/// Each is recomputed only when what it shows changed (the document's revision and solution, the
+/// pending edit's version, the effect, the frame, the view by a degree), so a frame that changes
+/// nothing costs nothing. While a keyframe is placed or held away from its place they show the
+/// pending edit's interpolant, the one the view shows.
 ///
 /// The minimap is the costly one (8192 evaluations, 30 ms at N = 1000): with `async` (live
 /// `vdfx edit`) a MinimapWorker computes it and the newest finished field is shown a frame or two
@@ -106,7 +108,8 @@ class VisualizationCache {
  private:
   void refresh_markers(const Document& doc, const VisualizationInput& in);
   void refresh_track(const VisualizationInput& in, std::span<const effects::Keyframe> ks,
-                     const MinimapKey& key, const effects::RbfInterpolator* rbf);
+                     const MinimapKey& key, const effects::RbfInterpolator* rbf,
+                     const effects::AnchorFrames& anchor);
   void refresh_minimap(const Document& doc, const VisualizationInput& in, const MinimapKey& key,
                        const std::function<std::shared_ptr<const effects::RbfInterpolator>()>& rbf);
   void take_field(const MinimapKey& key, cv::Mat field, EditTarget effect);
@@ -115,7 +118,8 @@ class VisualizationCache {
     std::uint64_t revision = ~0ull;
     int effect = -1;
     effects::Direction view{};
-    std::int64_t held_frame = -1;  //!< the selected keyframe's (held) frame at the last update
+    std::int64_t held_frame = -1;   //!< the selected keyframe's (held) frame at the last update
+    std::int64_t anchor_frame = 0;  //!< the playhead then, for an anchored effect (else 0)
     std::vector<std::size_t> near;
   };
   struct Track {

@@ -54,11 +54,12 @@ double value_at(const effects::RbfInterpolator* rbf, EditTarget target, const Ei
 
 std::vector<double> effect_track(const effects::RbfInterpolator* rbf, EditTarget target,
                                  const effects::Direction& direction,
-                                 std::span<const std::int64_t> frames) {
+                                 std::span<const std::int64_t> frames,
+                                 const effects::AnchorFrames& anchor) {
   const Eigen::Vector3d unit = effects::to_unit(direction);
   std::vector<double> out;
   out.reserve(frames.size());
-  for (const auto f : frames) out.push_back(value_at(rbf, target, unit, f));
+  for (const auto f : frames) out.push_back(value_at(rbf, target, anchor.apply(unit, f), f));
   return out;
 }
 
@@ -67,13 +68,16 @@ effects::Direction minimap_cell_direction(int x, int y, int width, int height) {
 }
 
 cv::Mat effect_minimap(const effects::RbfInterpolator* rbf, EditTarget target, std::int64_t frame,
-                       int width, int height, const std::atomic<bool>* cancel) {
+                       int width, int height, const std::atomic<bool>* cancel,
+                       const effects::AnchorFrames& anchor) {
   cv::Mat field(height, width, CV_32FC1);
   for (int y = 0; y < height; ++y) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return {};
-    for (int x = 0; x < width; ++x)
-      field.at<float>(y, x) = static_cast<float>(value_at(
-          rbf, target, effects::to_unit(minimap_cell_direction(x, y, width, height)), frame));
+    for (int x = 0; x < width; ++x) {
+      const Eigen::Vector3d cell = effects::to_unit(minimap_cell_direction(x, y, width, height));
+      field.at<float>(y, x) =
+          static_cast<float>(value_at(rbf, target, anchor.apply(cell, frame), frame));
+    }
   }
   return field;
 }
@@ -107,7 +111,7 @@ std::optional<std::size_t> nearest_keyframe(std::span<const effects::Keyframe> k
 
 std::optional<std::size_t> adjacent_keyframe(std::span<const effects::Keyframe> keyframes,
                                              const effects::Direction& view, std::int64_t frame,
-                                             int step) {
+                                             int step, const effects::AnchorFrames& anchor) {
   std::optional<std::int64_t> target;
   for (const auto& k : keyframes) {
     const bool ahead = step > 0 ? k.frame > frame : k.frame < frame;
@@ -115,7 +119,7 @@ std::optional<std::size_t> adjacent_keyframe(std::span<const effects::Keyframe> 
     if (!target || (step > 0 ? k.frame < *target : k.frame > *target)) target = k.frame;
   }
   if (!target) return std::nullopt;
-  const Eigen::Vector3d v = effects::to_unit(view);
+  const Eigen::Vector3d v = anchor.apply(effects::to_unit(view), *target);
   std::optional<std::size_t> best;
   double best_a = 0.0;
   for (std::size_t i = 0; i < keyframes.size(); ++i) {

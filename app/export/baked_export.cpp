@@ -169,15 +169,18 @@ BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int
 }
 
 /// The parameters at the grid's pixels (BakedGrid), from the cache when the frame every active
-/// effect evaluates at is the one it was computed for.
+/// effect evaluates at is the one it was computed for (an anchored effect turns by its frame's
+/// rotation: its frame itself).
 BakedGridCache::Grid parameter_grid(const effects::StackInterpolator& stack, std::int64_t frame,
                                     int w, int h, int step, const std::vector<int>& gx,
                                     const std::vector<int>& gy, const Axis& ax, int coverage,
                                     BakedGridCache* cache) {
   std::vector<std::int64_t> key{w, h, step, coverage};
   for (int t = 0; t < effects::kEffectCount; ++t)
-    if (const auto* rbf = stack.interpolator(static_cast<EffectType>(t)))
+    if (const auto* rbf = stack.interpolator(static_cast<EffectType>(t))) {
       key.push_back(rbf->effective_frame(frame));
+      if (!stack.anchor(static_cast<EffectType>(t)).identity()) key.push_back(frame);
+    }
   if (cache)
     return cache->get_or_make(key,
                               [&] { return make_grid(stack, frame, w, h, gx, gy, ax, coverage); });

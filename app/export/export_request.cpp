@@ -26,6 +26,7 @@
 #include "io/output_path.h"
 #include "io/recording.h"
 #include "io/sidecar.h"
+#include "io/sidecar_sets.h"
 #include "io/video_encoder.h"
 #include "io/ycbcr.h"
 
@@ -314,7 +315,7 @@ ExportResult run_export(const ExportRequest& req) {
                          ": --stereo left-right needs a stereo video (this one is mono; --layout "
                          "says otherwise)");
   const io::Sidecar& sidecar = in.sidecar;
-  const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+  const effects::StackInterpolator stack = io::stack_of(sidecar);
   const Encoding enc = encoding(req, in);
   announce(req, in, enc.settings);
   int threads = req.threads;

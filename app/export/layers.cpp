@@ -11,7 +11,7 @@ namespace vdfx::app {
 
 PathLayers::PathLayers(const io::Sidecar& sidecar)
     : flares_(io::flare_set_of(sidecar)),
-      grains_(sidecar.grains, sidecar.interpolation, sidecar.video.fps),
+      grains_(io::grain_set_of(sidecar)),
       fps_(sidecar.video.fps) {}
 
 std::vector<std::string> PathLayers::left_out() const {

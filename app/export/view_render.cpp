@@ -364,7 +364,7 @@ cv::Mat render_request(const std::filesystem::path& input, const io::Sidecar& si
   const EyeImage eye = eye_image_of(video, sidecar, r);
   // Each eye's image converted from its own planes (no chroma from the other eye's half).
   const cv::Mat frame = io::to_rgb_by_eye(picture, eye.layout, io::PixelFormat::RgbF32);
-  const effects::StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+  const effects::StackInterpolator stack = io::stack_of(sidecar);
   ViewScene scene =
       view_scene(input, sidecar, stack, r, effects::eye_image(frame, eye.layout, eye.index), eye);
   scene.frame = frame;

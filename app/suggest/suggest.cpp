@@ -7,6 +7,7 @@
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "app/cli/command_registry.h"
 #include "app/cli/layout_options.h"
@@ -320,16 +321,38 @@ void fit_into(io::Sidecar& sidecar, EffectType type, const TargetField& field,
   report.effects.push_back(std::move(s));
 }
 
+/// The field's directions (of the video frame at each sample's frame) turned into the frame the
+/// sidecar's `type` effect stores its keyframes in (its anchor: docs/anchors.md), so that the fit
+/// measures and places keyframes where that effect's interpolant is evaluated. A new effect, or
+/// one fixed in the video, keeps the field as it is.
+TargetField in_anchor_frame(TargetField field, const io::Sidecar& sidecar, EffectType type) {
+  for (const effects::EffectTrack& t : sidecar.effects) {
+    if (t.type != type || t.anchor.is_video()) continue;
+    effects::AnchorFrames anchor;
+    try {
+      anchor = effects::anchor_frames(t.anchor, sidecar.camera ? &*sidecar.camera : nullptr,
+                                      sidecar.tracks);
+    } catch (const std::invalid_argument& e) {
+      throw io::InputError(std::string("sidecar: ") + e.what());
+    }
+    for (std::size_t i = 0; i < field.size(); ++i)
+      field.directions[i] = anchor.apply(field.directions[i], field.frames[i]);
+  }
+  return field;
+}
+
 /// One suggestion on `sidecar` (changed in place) from an opened clip.
 SuggestReport suggest_clip(const SuggestRequest& r, Clip& clip, io::Sidecar& sidecar) {
   SuggestReport report;
   report.frames = clip.frames;
   if (r.kind == Kind::Exposure) {
-    const TargetField field = exposure_field(r, clip, report);
+    const TargetField field =
+        in_anchor_frame(exposure_field(r, clip, report), sidecar, EffectType::Exposure);
     report.samples = field.size();
     fit_into(sidecar, EffectType::Exposure, field, r, clip, report);
   } else if (r.kind == Kind::Comfort) {
-    const TargetField field = comfort_field(r, clip, report);
+    const TargetField field =
+        in_anchor_frame(comfort_field(r, clip, report), sidecar, EffectType::Vignette);
     report.samples = field.size();
     fit_into(
         sidecar, EffectType::Vignette, field, r, clip, report,
@@ -340,7 +363,7 @@ SuggestReport suggest_clip(const SuggestRequest& r, Clip& clip, io::Sidecar& sid
     if (r.guide_effect != GuideEffect::Exposure) types.push_back(EffectType::Saturation);
     if (r.guide_effect != GuideEffect::Saturation) types.push_back(EffectType::Exposure);
     for (const EffectType type : types) {
-      const TargetField field = guide_field(r, clip, type);
+      const TargetField field = in_anchor_frame(guide_field(r, clip, type), sidecar, type);
       report.samples = field.size();
       const std::int64_t frames = sidecar.video.frames;
       const bool moves = clip.frames.size() > 1 &&

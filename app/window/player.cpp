@@ -5,29 +5,16 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <stdexcept>
 
 #include "app/window/flare_layouts.h"
 #include "effects/effect_shaders.h"
-#include "io/input_error.h"
 #include "io/sidecar_sets.h"
 #include "io/ycbcr.h"
 
 namespace vdfx::app {
-namespace {
-
-effects::StackInterpolator make_interpolator(const io::Sidecar& s) {
-  try {
-    return effects::StackInterpolator(s.effects, s.interpolation, s.video.fps);
-  } catch (const std::invalid_argument& e) {
-    throw io::InputError(std::string("sidecar effects cannot be interpolated: ") + e.what());
-  }
-}
-
-}  // namespace
 
 Player::Player(const io::Sidecar& sidecar, const io::VideoProperties& video, PlayerOptions options)
-    : interp_(make_interpolator(sidecar)),
+    : interp_(io::stack_of(sidecar)),
       flares_(io::flare_set_of(sidecar)),
       grains_(io::grain_set_of(sidecar)),
       playhead_(video.fps, std::max<std::int64_t>(video.frames, 1), options.loop),

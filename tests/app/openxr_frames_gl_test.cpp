@@ -16,6 +16,7 @@
 #include "app/window/player.h"
 #include "io/sidecar.h"
 #include "io/video_source.h"
+#include "tests/app/openxr_editor_loop.h"
 #include "tests/app/openxr_test_support.h"
 #include "xr/input/input_backend.h"
 #include "xr/openxr/gl/openxr_runtime.h"
@@ -214,19 +215,10 @@ TEST_F(OpenXrFrames, QuadLayersCarryTheEditorsPanelsAtTheirPoses) {
 
   auto video = io::VideoSource::open(pano_, {});
   io::Sidecar sidecar = io::read_sidecar(sidecar_);
-  DocumentOptions dopts;
-  dopts.keyframes.async = false;
-  EditorOptions eo;
-  eo.layout = PanelLayout::Hands;
-  eo.visuals.async = false;
-  Editor editor(sidecar, dopts, eo);
-  EditorClient inner(editor, create_gl_panel_textures());
+  const std::unique_ptr<Editor> editor = testing::headset_test_editor(sidecar);
+  EditorClient inner(*editor, create_gl_panel_textures());
   RecordingClient client(inner);
-  FrameLoopOptions o;
-  o.profile = xr::load_hmd_profile("generic90");
-  o.visible = false;
-  o.eye_scale = 0.1;
-  o.openxr = xr::OpenXrRuntime::create();
+  FrameLoopOptions o = testing::openxr_loop_options();
   auto input = o.openxr->create_input_backend();
   std::vector<xr::QuadLayer> quads_25;
   std::vector<cv::Mat> images_25;

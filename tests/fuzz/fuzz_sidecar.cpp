@@ -13,6 +13,7 @@
 #include "effects/stack_interpolator.h"
 #include "fuzz_check.h"
 #include "io/sidecar.h"
+#include "io/sidecar_sets.h"
 #include "io/sidecar_validate.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -25,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const io::SidecarReport again = io::validate_sidecar_text(io::format_sidecar(s), "again");
   VDFX_FUZZ_CHECK(again.ok() && *again.sidecar == s);
   // Cheap enough for a fuzzer's inputs (a few kilobytes: a few dozen keyframes at most).
-  const effects::StackInterpolator stack(s.effects, s.interpolation, s.video.fps);
+  const effects::StackInterpolator stack = io::stack_of(s);
   for (const effects::EffectTrack& track : s.effects) {
     for (const effects::Keyframe& k : track.keyframes) {
       const effects::StackParams p = stack.evaluate(k.direction, k.frame);
@@ -37,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   VDFX_FUZZ_CHECK(std::isfinite(far.exposure_stops) && std::isfinite(far.blur_sigma_deg) &&
                   std::isfinite(far.tint_gain.sum()) && std::isfinite(far.vignette_radius_deg));
   // The extension types: a valid file's keyframes interpolate (no exception) to finite values.
-  const effects::FlareSet flares(s.flares, s.interpolation, s.video.fps);
+  const effects::FlareSet flares = io::flare_set_of(s);
   for (std::size_t i = 0; i < s.flares.size(); ++i)
     for (const effects::Keyframe& k : s.flares[i].keyframes)
       VDFX_FUZZ_CHECK(std::isfinite(flares.intensity(i, effects::to_unit(k.direction), k.frame)));

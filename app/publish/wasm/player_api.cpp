@@ -138,7 +138,7 @@ EMSCRIPTEN_KEEPALIVE int vdfx_load(const char* name, const char* text) {
       return 0;
     }
     vdfx::io::Sidecar sidecar = std::move(*report.sidecar);
-    StackInterpolator stack(sidecar.effects, sidecar.interpolation, sidecar.video.fps);
+    StackInterpolator stack = vdfx::io::stack_of(sidecar);
     fx::FlareSet flares = vdfx::io::flare_set_of(sidecar);
     fx::GrainSet grains = vdfx::io::grain_set_of(sidecar);
     g_loaded = std::make_unique<Loaded>(
