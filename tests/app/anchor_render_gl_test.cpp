@@ -38,10 +38,11 @@ TEST(AnchorRenderGl, TheGpuAppliesTheWindowsExposureAtEveryFrameInBothModes) {
       EXPECT_NEAR(testing::applied_stops(render_window_gpu(c.anchored, f, mode), plain),
                   bench::kWindowStops, 0.05);
       // Fixed in the picture, the keyframe has left the window once the camera turned.
-      if (f >= 3)
+      if (f >= 3) {
         EXPECT_GT(std::abs(testing::applied_stops(render_window_gpu(c.fixed, f, mode), plain) -
                            bench::kWindowStops),
                   0.5);
+      }
     }
   }
 }

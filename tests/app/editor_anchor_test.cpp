@@ -187,7 +187,8 @@ TEST_F(AnchoredEditor, LightHereOnAWorldAnchoredFlareIsALightOfTheWorld) {
   ed_.seek(20);
   frame(-30.0, 10.0);
   ed_.set_light_here();
-  const auto* light = std::get_if<Direction>(&ed_.document().flare().light);
+  const effects::FlareEffect flare = ed_.document().flare();
+  const auto* light = std::get_if<Direction>(&flare.light);
   ASSERT_NE(light, nullptr);
   EXPECT_LT(angle_deg(*light, world_of({-30.0, 10.0}, 20)), 1e-9);
 }
