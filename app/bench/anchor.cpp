@@ -62,8 +62,7 @@ void add_cost(Registry& r, bool quick) {
   r.knob({"anchor.cost",
           "a frame's evaluation (256 x 128 cells) with every effect anchored to the world", "frame",
           "parameter units", "none: a time only", "the same stack without anchors (video)",
-          PlotError::Max, false,
-          false});
+          PlotError::Max, false, false});
   struct Setting {
     int effects, keyframes;
   };

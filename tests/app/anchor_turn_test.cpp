@@ -16,10 +16,10 @@
 
 #include "app/export/view_render.h"
 #include "app/suggest/suggest.h"
-#include "io/sidecar_sets.h"
 #include "command_test_util.h"
-#include "tests/app/turning_clip_files.h"
 #include "io/sidecar.h"
+#include "io/sidecar_sets.h"
+#include "tests/app/turning_clip_files.h"
 
 namespace vdfx::app {
 namespace {
@@ -102,7 +102,8 @@ TEST(AnchorTurn, RenderAppliesTheWindowsExposureAtEveryFrameInBothModes) {
 /// The pixels of an equirect image within a 16 x 8 patch around `d` (wrapping in azimuth).
 cv::Mat patch(const cv::Mat& equirect, const effects::Direction& d) {
   const Eigen::Vector2d uv = effects::to_equirect_uv(d);
-  const int cx = static_cast<int>(uv.x() * equirect.cols), cy = static_cast<int>(uv.y() * equirect.rows);
+  const int cx = static_cast<int>(uv.x() * equirect.cols),
+            cy = static_cast<int>(uv.y() * equirect.rows);
   cv::Mat out(8, 16, equirect.type());
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 16; ++x)
@@ -117,8 +118,9 @@ TEST(AnchorTurn, TheBakedExportDarkensTheWindowWhereverTheCameraHasTurned) {
   // must still bake a new grid for every frame, whose rotation differs.
   const Clip& c = turning_clip();
   const fs::path out = c.dir / "baked.mp4";
-  const testing::CommandResult r = testing::run_vdfx(
-      "export " + c.video.string() + " --sidecar " + c.anchored.string() + " --baked " + out.string());
+  const testing::CommandResult r =
+      testing::run_vdfx("export " + c.video.string() + " --sidecar " + c.anchored.string() +
+                        " --baked " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (int f = 0; f < kTurnFrames; ++f) {
     SCOPED_TRACE("frame " + std::to_string(f));
