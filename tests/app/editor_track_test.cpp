@@ -5,6 +5,8 @@
 /// clicks and a headset's left trigger.
 #include <gtest/gtest.h>
 
+#include <thread>
+
 #include "app/editor/editor.h"
 #include "editor_scripts.h"
 #include "editor_test_util.h"
@@ -223,8 +225,11 @@ TEST(EditorTrack, ACorrectionReTracksFromThePointDroppedAsOneUndoStep) {
   ASSERT_NE(fixed, nullptr);
   for (int f = 12; f < kFrames; ++f)
     EXPECT_LT(effects::angle_between_deg(fixed->points[f].direction, seam_clip().at(f)), 2.0) << f;
-  for (int f = 0; f < 12; ++f)
-    if (first.points[f].confidence > 0.0) EXPECT_EQ(fixed->points[f], first.points[f]) << f;
+  for (int f = 0; f < 12; ++f) {
+    if (first.points[f].confidence > 0.0) {
+      EXPECT_EQ(fixed->points[f], first.points[f]) << f;
+    }
+  }
   EXPECT_EQ(ed.document().undo_stack().undo_size(), 2u);
   EXPECT_EQ(ed.document().undo_stack().next_undo_label(), "re-track subject1");
   ASSERT_TRUE(ed.undo());
