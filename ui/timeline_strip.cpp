@@ -84,6 +84,24 @@ void TimelineStrip::set_highlighted(std::vector<int> frames) {
   set(highlighted_, frames);
 }
 
+void TimelineStrip::set_track_band(TrackBand band) {
+  set(band_, band);
+}
+
+void TimelineStrip::draw_track_band(Canvas& c, const Theme& t) const {
+  if (band_.first < 0 || band_.last < band_.first) return;
+  constexpr double kBand = 16.0;
+  const Rect tr = track();
+  const double half = frame_count_ > 1 ? 0.5 * tr.w / (frame_count_ - 1.0) : 0.5 * tr.w;
+  const double y = tr.bottom() - kBand - 4.0;
+  const double x0 = std::max(tr.x, x_of(band_.first) - half);
+  const double x1 = std::min(tr.right(), x_of(band_.last) + half);
+  c.fill_rounded_rect({x0, y, x1 - x0, kBand}, 4.0, t.accent);
+  // Lost frames in red, at least a few pixels wide so one frame of a long clip still shows.
+  const double w = std::max(2.0 * half, 6.0);
+  for (const int f : band_.held) c.fill_rect({x_of(f) - 0.5 * w, y, w, kBand}, Rgba::hex(0xe0483c));
+}
+
 Rect TimelineStrip::track() const {
   const Rect r = rect();
   return {r.x + kSide, r.y, r.w - 2 * kSide, r.h - kMarkerBand - kLabelBand};
@@ -133,6 +151,7 @@ void TimelineStrip::draw(DrawContext& ctx) const {
     }
     c.pop_clip();
   }
+  draw_track_band(c, t);
   if (focused()) c.stroke_rounded_rect(tr.inset(-6.0), 12.0, t.focus_width, t.accent);
   // Keyframe diamonds on a rail below the thumbnails, over the playhead line.
   const double my = tr.bottom() + 0.5 * kMarkerBand;

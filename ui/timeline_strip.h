@@ -29,6 +29,15 @@ class TimelineStrip : public Widget {
   const std::vector<int>& keyframes() const { return keyframes_; }
   /// Keyframes drawn highlighted (selected); keyframes at the playhead are highlighted too.
   void set_highlighted(std::vector<int> frames);
+  /// A subject track's span, drawn as a band along the thumbnails' bottom edge, with the frames
+  /// where the subject was lost (its direction held) marked on it.
+  struct TrackBand {
+    int first = -1, last = -1;  //!< -1: no track
+    std::vector<int> held;
+    bool operator==(const TrackBand&) const = default;
+  };
+  void set_track_band(TrackBand band);
+  const TrackBand& track_band() const { return band_; }
 
   /// Frame under a panel x (nearest), clamped to [0, frame_count - 1].
   int frame_at(double x) const;
@@ -54,11 +63,13 @@ class TimelineStrip : public Widget {
   Rect playhead_area(int frame) const;
   /// The playhead's frame label box at a frame (needs the font of the last draw).
   Rect frame_label_rect(int frame) const;
+  void draw_track_band(Canvas& c, const Theme& t) const;
   int frame_count_;
   int playhead_ = 0;
   std::vector<cv::Mat> thumbs_;
   mutable std::vector<ScaledImage> scaled_;  //!< thumbs_ scaled to their cells, per thumbnail
   std::vector<int> keyframes_, highlighted_;
+  TrackBand band_;
   double pending_ = 0.0;
   //! The label font and size of the last draw, so a playhead move can bound its new label.
   mutable const Font* label_font_ = nullptr;

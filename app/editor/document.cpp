@@ -339,6 +339,7 @@ bool Document::undo() {
   if (!step) return false;
   for (auto it = step->changes.rbegin(); it != step->changes.rend(); ++it)
     restore(it->target, it->before);
+  if (step->sources) restore(step->sources->before);
   changed();
   return true;
 }
@@ -346,6 +347,7 @@ bool Document::undo() {
 bool Document::redo() {
   const auto step = undo_.redo();
   if (!step) return false;
+  if (step->sources) restore(step->sources->after);
   for (const auto& c : step->changes) restore(c.target, c.after);
   changed();
   return true;

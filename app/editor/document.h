@@ -24,6 +24,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/editor/edit_target.h"
@@ -108,6 +109,18 @@ class Document {
   /// the sidecar lacks.
   void set_anchor(EditTarget t, const effects::Anchor& anchor);
 
+  // ---- the camera and the subject tracks (app/editor/document_sources.cpp): one undo step each
+  const std::optional<effects::CameraMotion>& camera() const { return camera_; }
+  const std::vector<effects::SubjectTrack>& tracks() const { return tracks_; }
+  /// The track of that name, or null.
+  const effects::SubjectTrack* track(std::string_view name) const;
+  /// Sets the camera's orientation at every frame (replacing one there was). Throws
+  /// io::InputError when it has not one orientation per video frame.
+  void set_camera(effects::CameraMotion camera);
+  /// Adds the track, or replaces the one of its name; effects anchored to it follow the new one.
+  /// Throws io::InputError for an invalid name, no points, or points outside the video's frames.
+  void put_track(effects::SubjectTrack track);
+
   // ---- the edit being made (app/editor/pending_edit.h): at most one at a time
   /// Starts one (a new keyframe, or keyframe `moved` held) and returns it; replaces any other.
   PendingEdit& begin_pending(EditTarget t, std::optional<std::size_t> moved, effects::Keyframe key);
@@ -147,6 +160,10 @@ class Document {
   /// sidecar lacks).
   void resolve_anchors();
   void record(const std::string& label, EditTarget t, EffectSnapshot before);
+  SourcesSnapshot sources() const { return {camera_, tracks_}; }
+  /// Puts the camera and tracks back and re-resolves the anchors (undo, redo).
+  void restore(const SourcesSnapshot& s);
+  void record(const std::string& label, SourcesSnapshot before);
   void changed();
 
   io::VideoInfo video_;

@@ -31,6 +31,7 @@
 #include "app/editor/editor_panels.h"
 #include "app/editor/editor_view.h"
 #include "app/editor/suggest_worker.h"
+#include "app/editor/track_worker.h"
 #include "app/editor/visualization_cache.h"
 #include "effects/effect_types.h"
 #include "io/frame_time.h"
@@ -182,6 +183,32 @@ class Editor {
   std::optional<double> suggestion_progress() const;
   /// Waits for the running suggestion and adds its keyframes (tests); false on timeout.
   bool wait_for_suggestion(std::chrono::milliseconds timeout);
+  // ---- tracking (app/editor/editor_track.cpp; docs/editor.md, "Tracking"). Each runs off the
+  // frame thread; while one runs, any of them cancels it (the document stays as it was); when
+  // done its result is one undo step.
+  /// "Track subject": follows what is at the view centre at the current frame through the clip,
+  /// as a new track ("subject1", "subject2", ...), which becomes the shown track.
+  void track_subject();
+  /// "Track camera": the camera's orientation at every frame (the world anchor's rotations).
+  void track_camera();
+  /// "Correct here": the shown track's subject is at the view centre at the current frame; it is
+  /// tracked again from there (merge_correction keeps the earlier frames it saw).
+  void correct_track();
+  /// The current effect's anchor (one undo step); false, with the reason said, when refused (a
+  /// world anchor without the camera's motion, a track that is not there, during a grab).
+  bool set_anchor(const effects::Anchor& anchor);
+  /// The anchor button: the next anchor the current effect may take (video, world when the
+  /// camera was tracked, each track).
+  void next_anchor();
+  /// The run in progress: how far it is (0..1); nullopt when none runs.
+  std::optional<double> tracking_progress() const;
+  /// Waits for the running job and puts its result into the document (tests); false on timeout.
+  bool wait_for_tracking(std::chrono::milliseconds timeout);
+  /// The track drawn and corrected: the current effect's anchor track, else the last tracked or
+  /// chosen, else the first; null when the sidecar has none.
+  const effects::SubjectTrack* shown_track() const;
+  TrackView track_view() const;
+
   /// Locks the timeline panel in the world, or back on its anchor.
   void lock_timeline(bool locked);
   /// Shows or hides the track plot / the minimap.
@@ -226,6 +253,10 @@ class Editor {
   /// Takes a finished suggestion's keyframes into the document (one undo step) or says why not.
   void poll_suggestion();
   void apply_suggestion(EditTarget target, const std::string& label, const SuggestOutcome& outcome);
+  /// Starts a tracking job (or cancels the one running) on a copy of the document's sidecar.
+  void start_tracking(TrackJob job);
+  /// Takes a finished tracking job's camera or track into the document (one undo step).
+  void poll_tracking();
   /// After undo/redo: drops the selection when the keyframe count changed (indices renumbered).
   void keep_selection_if_stable(std::size_t count_before);
   void validate_selection();
@@ -278,6 +309,8 @@ class Editor {
   std::unique_ptr<SuggestWorker> suggesting_;                  //!< the suggestion running, if any
   EditTarget suggest_target_ = effects::EffectType::Exposure;  //!< what it is for
   double suggest_strength_ = 1.0;  //!< inside update(): the panels are shown once, at its end
+  std::unique_ptr<TrackWorker> tracking_;  //!< the tracking job running, if any
+  std::string track_name_;                 //!< the track last tracked or chosen
 };
 
 }  // namespace vdfx::app

@@ -50,7 +50,7 @@ std::string grain_style_title(effects::GrainStyle s) {
 
 EditorPanels::EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frame_count,
                            PanelLayout layout, DesktopViewport viewport)
-    : layout_(layout), viewport_(viewport) {
+    : layout_(layout), marker_(std::make_unique<TrackMarker>(fonts)), viewport_(viewport) {
   if (layout_ == PanelLayout::Hands) {
     build_effect_panel(fonts, kEffectW, kEffectH, glm::dvec2(0.25, 0.25 * kEffectH / kEffectW));
     build_hands_timeline(fonts, frame_count);
@@ -197,11 +197,13 @@ void EditorPanels::build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts
   add_transport_row(p, col);
   strip_ = &p.add<TimelineStrip>("strip", static_cast<int>(frames));
   strip_->set_rect(col.next(220));
+  track_.build(p, col, false);
   add_visualizations(p, col, t.row_height, false);
 }
 
 PanelControl EditorPanels::control_of(const ui::Widget* w, EditTarget target) const {
   if (!w) return PanelControl::None;
+  if (const PanelControl c = track_.control_of(w); c != PanelControl::None) return c;
   if (w == effect_widgets_[static_cast<std::size_t>(target.index())] ||
       (target.is_grain() && w == grain_size_))
     return PanelControl::EffectValues;
@@ -284,6 +286,7 @@ std::vector<ui::Panel*> EditorPanels::all() {
   std::vector<ui::Panel*> out{effect_.get(), timeline_.get()};
   if (views_) out.push_back(views_.get());
   if (hud_) out.push_back(hud_.get());
+  out.push_back(&marker_->panel());
   return out;
 }
 
@@ -313,6 +316,7 @@ void EditorPanels::place(const xr::InputState& input) {
   put(timeline_.get(), timeline_place_);
   put(views_.get(), views_place_);
   put(hud_.get(), hud_place_);
+  marker_->set_head(input.head);
 }
 
 std::vector<ui::Panel*> EditorPanels::reachable_by(xr::Hand hand) {

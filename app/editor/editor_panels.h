@@ -34,6 +34,8 @@
 
 #include "app/editor/edit_target.h"
 #include "app/editor/editor_view.h"
+#include "app/editor/track_marker.h"
+#include "app/editor/track_section.h"
 #include "effects/effect_types.h"
 #include "effects/flare.h"
 #include "effects/grain.h"
@@ -114,6 +116,10 @@ enum class PanelControl {
   LockTimeline,
   Suggest,          //!< "Suggest ..." (or, while one runs, its cancel)
   SuggestStrength,  //!< the strength beside it
+  TrackSubject,     //!< "Track subject" (app/editor/track_section.h), or its cancel
+  TrackCamera,      //!< "Track camera", or its cancel
+  TrackCorrect,     //!< "Correct here": the shown track re-tracked from the view centre
+  TrackAnchor,      //!< the current effect's anchor: the next one
 };
 
 class EditorPanels {
@@ -167,6 +173,8 @@ class EditorPanels {
   const ui::Button& deselect_button() const { return *deselect_; }
   const ui::Button& suggest_button() const { return *suggest_; }
   const ui::TimelineStrip& strip() const { return *strip_; }
+  const TrackSection& track_section() const { return track_; }
+  const TrackMarker& track_marker() const { return *marker_; }
   const ui::Plot& plot() const { return *plot_; }
   const ui::Minimap& minimap() const { return *minimap_; }
   const ui::Toggle& minimap_toggle() const { return *show_minimap_; }
@@ -222,6 +230,9 @@ class EditorPanels {
       nullptr;                     //!< 0..1, beside "Suggest" (app/editor/suggest_worker.h)
   ui::Button* suggest_ = nullptr;  //!< "Suggest exposure" / guidance / comfort; cancel
   ui::Label* status_ = nullptr;
+
+  TrackSection track_;  //!< Desktop: on the views panel; Hands: on the timeline panel
+  std::unique_ptr<TrackMarker> marker_;  //!< the shown track in the view (no input)
 
   // timeline panel
   ui::Button* play_ = nullptr;

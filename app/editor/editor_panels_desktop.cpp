@@ -14,7 +14,7 @@ namespace {
 // Desktop layout (layout pixels, drawn at desktop_ui_scale()).
 constexpr int kDeskEffectW = 800, kDeskEffectH = 1600;
 constexpr int kDeskTimelineW = 2310, kDeskTimelineH = 560;
-constexpr int kDeskViewsW = 800, kDeskViewsH = 1040;
+constexpr int kDeskViewsW = 800, kDeskViewsH = 1140;
 constexpr int kDeskHudW = 1500, kDeskHudH = 110;
 constexpr int kDeskMargin = 12;         //!< screen pixels between panels and the window edge
 constexpr double kDeskDistanceM = 1.0;  //!< head-locked quads at this depth
@@ -61,6 +61,7 @@ void EditorPanels::build_desktop_panels(std::shared_ptr<const ui::FontSet> fonts
   {
     Panel& p = *views_;
     Stack col(Rect{0, 0, kDeskViewsW, kDeskViewsH}.inset(40.0), p.theme().gap);
+    track_.build(p, col, true);
     add_visualizations(p, col, p.theme().row_height, true);
   }
   hud_ = std::make_unique<Panel>(kHudPanelId, kDeskHudW, kDeskHudH, glm::dvec2(0.4, 0.03), fonts);

@@ -32,6 +32,7 @@ std::string Editor::status_text() const {
   s += " | " + std::to_string(doc_.keyframes(effect_).size()) + " keyframes";
   if (play_.playing) s += " | playing";
   if (const auto p = suggestion_progress()) s += fmt(" | suggesting %.0f %%", 100.0 * *p);
+  if (const auto p = tracking_progress()) s += fmt(" | tracking %.0f %%", 100.0 * *p);
   if (previewing()) s += " | PREVIEW: release to place";
   if (const auto k = selected_preview()) {
     // Stored directions are in the effect's anchor's frame: say which, unless it is the video's.
@@ -76,6 +77,7 @@ std::string Editor::hud_message() const {
   if (const auto p = suggestion_progress())
     return suggestion_title(suggesting_->request().kind) +
            fmt(": %.0f %% done (press it again to cancel)", 100.0 * *p);
+  if (tracking_) return track_view().line;
   // Until a save succeeds again, or a file changed under the editor: where the work is.
   if (autosave_ && (autosave_->failing() || autosave_->diverted_to())) return autosave_->status();
   if (!options_.read_only_note.empty()) return "READ-ONLY: " + options_.read_only_note;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/editor/edit_target.h"
+#include "app/editor/track_view.h"
 #include "app/editor/visualization_cache.h"
 #include "effects/flare.h"
 #include "effects/grain.h"
@@ -57,6 +58,8 @@ struct EditorView {
   /// The plot, the minimap and the strip's markers (VisualizationCache's latest); null: none
   /// yet. Lives as long as the editor.
   const Visualizations* visuals = nullptr;
+  // ---- tracking: the section's buttons, the strip's track band, the marker in the view
+  TrackView track;
 };
 
 }  // namespace vdfx::app

@@ -33,6 +33,10 @@ void clicked(Editor& ed, PanelControl control) {
     case PanelControl::Play: ed.set_playing(!ed.playing()); break;
     case PanelControl::PreviousKey: ed.jump_to_keyframe(-1); break;
     case PanelControl::NextKey: ed.jump_to_keyframe(+1); break;
+    case PanelControl::TrackSubject: ed.track_subject(); break;
+    case PanelControl::TrackCamera: ed.track_camera(); break;
+    case PanelControl::TrackCorrect: ed.correct_track(); break;
+    case PanelControl::TrackAnchor: ed.next_anchor(); break;
     default: break;
   }
 }

@@ -21,7 +21,23 @@ void UndoStack::push(const std::string& label, EffectChange change) {
   }
   if (change.before == change.after) return;
   undone_.clear();
-  done_.push_back(UndoStep{label, {std::move(change)}});
+  done_.push_back(UndoStep{label, {std::move(change)}, std::nullopt});
+  if (group_depth_ > 0) group_has_step_ = true;
+}
+
+void UndoStack::push(const std::string& label, SourcesChange change) {
+  if (group_depth_ > 0 && group_has_step_) {
+    auto& step = done_.back();
+    if (step.sources)
+      step.sources->after = std::move(change.after);
+    else
+      step.sources = std::move(change);
+    if (step.sources->before == step.sources->after) step.sources.reset();
+    return;
+  }
+  if (change.before == change.after) return;
+  undone_.clear();
+  done_.push_back(UndoStep{label, {}, std::move(change)});
   if (group_depth_ > 0) group_has_step_ = true;
 }
 
@@ -33,7 +49,7 @@ void UndoStack::begin_group(const std::string& label) {
 void UndoStack::end_group() {
   if (group_depth_ == 0) return;
   if (--group_depth_ > 0) return;
-  if (group_has_step_ && done_.back().changes.empty()) done_.pop_back();
+  if (group_has_step_ && done_.back().changes.empty() && !done_.back().sources) done_.pop_back();
   group_has_step_ = false;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/editor/edit_target.h"
+#include "effects/anchor.h"
 #include "effects/flare.h"
 #include "effects/grain.h"
 #include "effects/keyframe.h"
@@ -38,10 +39,25 @@ struct EffectChange {
   EffectSnapshot after;
 };
 
+/// What anchors turn by: the sidecar's camera and subject tracks (the tracking panel edits them).
+struct SourcesSnapshot {
+  std::optional<effects::CameraMotion> camera;
+  std::vector<effects::SubjectTrack> tracks;
+  bool operator==(const SourcesSnapshot&) const = default;
+};
+
+struct SourcesChange {
+  SourcesSnapshot before;
+  SourcesSnapshot after;
+};
+
 /// One undo step.
 struct UndoStep {
   std::string label;
   std::vector<EffectChange> changes;  //!< in the order they were made; undo reverts backwards
+  /// The camera and tracks, when the step changed them: undo restores them after the effects
+  /// (an anchor naming a track goes before the track), redo before.
+  std::optional<SourcesChange> sources;
 };
 
 class UndoStack {
@@ -50,6 +66,8 @@ class UndoStack {
   /// group's step (the first "before" of an effect is kept, its "after" replaced). A change whose
   /// before equals its after is dropped.
   void push(const std::string& label, EffectChange change);
+  /// The same for a change of the camera or the tracks.
+  void push(const std::string& label, SourcesChange change);
   /// Opens a group; nested calls are counted. Changes until the matching end_group form one step.
   void begin_group(const std::string& label);
   void end_group();

@@ -1,0 +1,62 @@
+/// @file
+/// @brief Document: the sidecar's camera and subject tracks (what anchors turn by) as undo steps.
+#include <algorithm>
+#include <utility>
+
+#include "app/editor/document.h"
+#include "io/input_error.h"
+
+namespace vdfx::app {
+
+const effects::SubjectTrack* Document::track(std::string_view name) const {
+  for (const effects::SubjectTrack& t : tracks_)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+void Document::set_camera(effects::CameraMotion camera) {
+  if (static_cast<std::int64_t>(camera.orientation.size()) != video_.frames)
+    throw io::InputError("camera: " + std::to_string(camera.orientation.size()) +
+                         " orientations for a video of " + std::to_string(video_.frames) +
+                         " frames");
+  if (camera_ == camera) return;
+  SourcesSnapshot before = sources();
+  camera_ = std::move(camera);
+  resolve_anchors();
+  record("track camera", std::move(before));
+}
+
+void Document::put_track(effects::SubjectTrack track) {
+  if (!effects::valid_track_name(track.name))
+    throw io::InputError("tracks: '" + track.name + "' is not a track name ([A-Za-z0-9_-]{1,64})");
+  if (track.points.empty()) throw io::InputError("tracks/" + track.name + ": no points");
+  for (const effects::TrackPoint& p : track.points)
+    if (p.frame < 0 || p.frame >= video_.frames)
+      throw io::InputError("tracks/" + track.name + ": frame " + std::to_string(p.frame) +
+                           " is outside the video's " + std::to_string(video_.frames) + " frames");
+  SourcesSnapshot before = sources();
+  const auto same = [&](const effects::SubjectTrack& t) { return t.name == track.name; };
+  const auto it = std::find_if(tracks_.begin(), tracks_.end(), same);
+  const std::string label = (it == tracks_.end() ? "track " : "re-track ") + track.name;
+  if (it == tracks_.end())
+    tracks_.push_back(std::move(track));
+  else if (*it == track)
+    return;
+  else
+    *it = std::move(track);
+  resolve_anchors();
+  record(label, std::move(before));
+}
+
+void Document::restore(const SourcesSnapshot& s) {
+  camera_ = s.camera;
+  tracks_ = s.tracks;
+  resolve_anchors();
+}
+
+void Document::record(const std::string& label, SourcesSnapshot before) {
+  undo_.push(label, SourcesChange{std::move(before), sources()});
+  changed();
+}
+
+}  // namespace vdfx::app

@@ -1,0 +1,54 @@
+/// @file
+/// @brief TrackSection: building the tracking buttons and showing a TrackView on them.
+#include "app/editor/track_section.h"
+
+#include <cmath>
+#include <string>
+
+#include "app/editor/editor_panels.h"
+
+namespace vdfx::app {
+
+void TrackSection::build(ui::Panel& p, ui::Stack& col, bool two_rows) {
+  using namespace ui;
+  const double gap = p.theme().gap, row_h = p.theme().row_height;
+  subject_ = &p.add<Button>("track_subject", "Track subject");
+  camera_ = &p.add<Button>("track_camera", "Track camera");
+  correct_ = &p.add<Button>("track_correct", "Correct here");
+  anchor_ = &p.add<Button>("track_anchor", "Anchor: video");
+  Button* const order[] = {subject_, camera_, correct_, anchor_};
+  if (two_rows) {
+    const Rect a = col.next(row_h), b = col.next(row_h);
+    for (int i = 0; i < 4; ++i) order[i]->set_rect(split_cols(i < 2 ? a : b, 2, i % 2, gap));
+  } else {
+    const Rect row = col.next(row_h);
+    for (int i = 0; i < 4; ++i) order[i]->set_rect(split_cols(row, 4, i, gap));
+  }
+}
+
+void TrackSection::show(const TrackView& v) {
+  const std::string cancel =
+      "Cancel " + std::to_string(static_cast<int>(std::lround(100.0 * v.progress))) + " %";
+  const auto put = [&](ui::Button* b, const char* job, const std::string& label, bool can) {
+    const bool mine = v.running == job;
+    b->set_label(mine ? cancel : label);
+    b->set_enabled(mine || (v.running.empty() && v.available && can));
+  };
+  put(subject_, "subject", "Track subject", true);
+  put(camera_, "camera", "Track camera", true);
+  put(correct_, "correct", v.track.empty() ? "Correct here" : "Correct " + v.track,
+      !v.track.empty());
+  anchor_->set_label("Anchor: " + v.anchor);
+  anchor_->set_enabled(v.running.empty());
+}
+
+PanelControl TrackSection::control_of(const ui::Widget* w) const {
+  if (w == nullptr) return PanelControl::None;
+  if (w == subject_) return PanelControl::TrackSubject;
+  if (w == camera_) return PanelControl::TrackCamera;
+  if (w == correct_) return PanelControl::TrackCorrect;
+  if (w == anchor_) return PanelControl::TrackAnchor;
+  return PanelControl::None;
+}
+
+}  // namespace vdfx::app

@@ -1,0 +1,39 @@
+/// @file
+/// @brief TrackSection: the tracking buttons (docs/editor.md, "Tracking") as widgets of a panel
+/// (Desktop: the views panel; Hands: the timeline panel): Track subject, Track camera, Correct
+/// here and the current effect's anchor. A running job's button shows its progress and cancels
+/// it; the others wait.
+#pragma once
+
+#include "app/editor/track_view.h"
+#include "ui/button.h"
+#include "ui/panel.h"
+#include "ui/rect.h"
+
+namespace vdfx::app {
+
+enum class PanelControl;
+
+class TrackSection {
+ public:
+  /// Adds the buttons to `p`, taking their rows from `col`: two rows of two (narrow panels) or
+  /// one row of four.
+  void build(ui::Panel& p, ui::Stack& col, bool two_rows);
+  /// Writes the view onto the buttons (setters compare: an unchanged view redraws nothing).
+  void show(const TrackView& view);
+  /// What `w` is for (PanelControl::None when it is none of these buttons).
+  PanelControl control_of(const ui::Widget* w) const;
+
+  const ui::Button& subject_button() const { return *subject_; }
+  const ui::Button& camera_button() const { return *camera_; }
+  const ui::Button& correct_button() const { return *correct_; }
+  const ui::Button& anchor_button() const { return *anchor_; }
+
+ private:
+  ui::Button* subject_ = nullptr;
+  ui::Button* camera_ = nullptr;
+  ui::Button* correct_ = nullptr;
+  ui::Button* anchor_ = nullptr;  //!< "Anchor: video" / world / track:NAME; a press: the next
+};
+
+}  // namespace vdfx::app
