@@ -108,21 +108,6 @@ effects::StackInterpolator Document::interpolator() const {
   return effects::StackInterpolator(std::move(solutions), std::move(anchors));
 }
 
-effects::AnchorSources Document::anchor_sources() const {
-  return {camera_ ? &*camera_ : nullptr, tracks_};
-}
-
-void Document::resolve_anchors() {
-  effects::AnchorResolver resolve(anchor_sources());
-  for (const EditTarget t : all_edit_targets()) {
-    try {
-      frames_[idx(t)] = resolve.resolve(anchors_[idx(t)]).frames;
-    } catch (const std::invalid_argument& e) {
-      throw io::InputError(std::string(t.name()) + ": " + e.what());
-    }
-  }
-}
-
 std::vector<double> Document::clamp_params(EditTarget t, std::vector<double> params) {
   if (static_cast<int>(params.size()) != t.dimension())
     throw std::invalid_argument("Document: " + std::string(t.name()) + " takes " +
@@ -288,28 +273,6 @@ void Document::set_grain_style(effects::GrainStyle style) {
   g.style = style;
   grain_ = std::move(g);
   record("grain style", EditTarget::grain(), std::move(before));
-}
-
-void Document::set_anchor(EditTarget t, const effects::Anchor& anchor) {
-  if (anchor == anchors_[idx(t)]) return;
-  effects::AnchorFrames to;
-  try {
-    to = effects::anchor_frames(anchor, camera_ ? &*camera_ : nullptr, tracks_);
-  } catch (const std::invalid_argument& e) {
-    throw io::InputError(std::string(t.name()) + ": " + e.what());
-  }
-  auto before = snapshot(t);
-  const effects::AnchorFrames from = frames_[idx(t)];
-  std::vector<effects::Keyframe> keyframes = sets_[idx(t)]->keyframes();
-  for (effects::Keyframe& k : keyframes)
-    k.direction = to.apply(from.unapply(k.direction, k.frame), k.frame);
-  if (t.is_flare() && flare_)
-    if (auto* light = std::get_if<effects::Direction>(&flare_->light))
-      *light = to.apply(from.unapply(*light, 0), 0);
-  anchors_[idx(t)] = anchor;
-  resolve_anchors();
-  rebuild(t, std::move(keyframes));
-  record(std::string(t.name()) + " anchor", t, std::move(before));
 }
 
 PendingEdit& Document::begin_pending(EditTarget t, std::optional<std::size_t> moved,

@@ -1,5 +1,6 @@
 /// @file
-/// @brief Document: the sidecar's camera and subject tracks (what anchors turn by) as undo steps.
+/// @brief Document: the sidecar's camera and subject tracks (what anchors turn by) as undo steps,
+/// and each effect's anchor.
 #include <algorithm>
 #include <utility>
 
@@ -57,6 +58,43 @@ void Document::restore(const SourcesSnapshot& s) {
 void Document::record(const std::string& label, SourcesSnapshot before) {
   undo_.push(label, SourcesChange{std::move(before), sources()});
   changed();
+}
+
+effects::AnchorSources Document::anchor_sources() const {
+  return {camera_ ? &*camera_ : nullptr, tracks_};
+}
+
+void Document::resolve_anchors() {
+  effects::AnchorResolver resolve(anchor_sources());
+  for (const EditTarget t : all_edit_targets()) {
+    try {
+      frames_[idx(t)] = resolve.resolve(anchors_[idx(t)]).frames;
+    } catch (const std::invalid_argument& e) {
+      throw io::InputError(std::string(t.name()) + ": " + e.what());
+    }
+  }
+}
+
+void Document::set_anchor(EditTarget t, const effects::Anchor& anchor) {
+  if (anchor == anchors_[idx(t)]) return;
+  effects::AnchorFrames to;
+  try {
+    to = effects::anchor_frames(anchor, camera_ ? &*camera_ : nullptr, tracks_);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(std::string(t.name()) + ": " + e.what());
+  }
+  auto before = snapshot(t);
+  const effects::AnchorFrames from = frames_[idx(t)];
+  std::vector<effects::Keyframe> keyframes = sets_[idx(t)]->keyframes();
+  for (effects::Keyframe& k : keyframes)
+    k.direction = to.apply(from.unapply(k.direction, k.frame), k.frame);
+  if (t.is_flare() && flare_)
+    if (auto* light = std::get_if<effects::Direction>(&flare_->light))
+      *light = to.apply(from.unapply(*light, 0), 0);
+  anchors_[idx(t)] = anchor;
+  resolve_anchors();
+  rebuild(t, std::move(keyframes));
+  record(std::string(t.name()) + " anchor", t, std::move(before));
 }
 
 }  // namespace vdfx::app
