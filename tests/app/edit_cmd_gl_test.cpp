@@ -64,7 +64,8 @@ TEST(EditCmdGl, ReplayedSessionWritesTheReplaysKeyframesAndShowsPanels) {
   cv::cvtColor(diff, grey, cv::COLOR_BGR2GRAY);
   const double changed = cv::countNonZero(grey > 24) / static_cast<double>(grey.total());
   EXPECT_GT(changed, 0.05) << "panels cover part of the view";
-  EXPECT_LT(changed, 0.8) << "the video stays visible around the panels";
+  // (About 0.80 with the views panel's tracking rows: a whole-window cover would be 1.)
+  EXPECT_LT(changed, 0.85) << "the video stays visible around the panels";
   // Text: bright, near-white pixels on the dark panels, where the plain view has none.
   // Text and highlights: light grey pixels on the dark panels (small at this size, so a low bar).
   cv::Mat textish;
