@@ -38,6 +38,7 @@ TEST(Publish, WritesThePageTheModuleTheShadersTheVideoAndTheSidecar) {
                                           "layers.js",
                                           "flare.js",
                                           "grain.js",
+                                          "stabilize.js",
                                           "vdfx_player.js",
                                           "vdfx_player.wasm",
                                           "player.json",

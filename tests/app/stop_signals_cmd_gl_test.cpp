@@ -108,21 +108,28 @@ TEST(StopSignalsCmdGl, SigintEndsTheEditorWithEveryChangeSavedAndTheLockGone) {
 }
 
 TEST(StopSignalsCmdGl, ASecondSigintWithinTwoSecondsEndsAtOnceStillRemovingTheLock) {
-  EditRun run;
-  ASSERT_TRUE(run.start()) << run.edit->output();
-  run.edit->signal(SIGINT);
-  std::this_thread::sleep_for(std::chrono::milliseconds(20));  // two presses, not one
-  run.edit->signal(SIGINT);
-  const std::string out = run.ended_by(SIGINT);
-  EXPECT_NE(out.find("vdfx: SIGINT again within 2 s: stopped at once (its locks removed)"),
-            std::string::npos)
-      << out;
-  EXPECT_FALSE(fs::exists(io::lock_path(run.sidecar)));
+  // Two presses 20 ms apart. On a loaded machine the clean stop after the first may already be
+  // over when the second comes (then the process said "stopped by SIGINT" and ended): try again,
+  // up to three times, so the test is of the second press, not of the machine's load.
+  const std::string again = "vdfx: SIGINT again within 2 s: stopped at once (its locks removed)";
+  std::unique_ptr<EditRun> run;
+  std::string out;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    run = std::make_unique<EditRun>();
+    ASSERT_TRUE(run->start()) << run->edit->output();
+    run->edit->signal(SIGINT);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    run->edit->signal(SIGINT);
+    out = run->ended_by(SIGINT);
+    if (out.find(again) != std::string::npos) break;
+  }
+  EXPECT_NE(out.find(again), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(io::lock_path(run->sidecar)));
   // Every change was saved when made: the sidecar is whole and has them.
-  const io::Sidecar got = io::read_sidecar(run.sidecar);
+  const io::Sidecar got = io::read_sidecar(run->sidecar);
   ASSERT_EQ(got.effects.size(), 1u);
   EXPECT_FALSE(got.effects[0].keyframes.empty());
-  const std::string text = test_files::slurp(run.record);
+  const std::string text = test_files::slurp(run->record);
   ASSERT_FALSE(text.empty());
   EXPECT_EQ(text.back(), '\n') << "each sample is written whole, even when ended at once";
 }

@@ -2,10 +2,13 @@
 /// @brief The anchor tests' turning clip on disk (app/bench/turning_clip.h): the demo room's
 /// panorama turned 45 degrees a frame (32 columns of 256: an exact shift) over 8 frames at 8 fps,
 /// and three sidecars for it: the window's exposure anchored to the world, the same fixed in the
-/// picture (the video anchor), and none (the unaltered film). Written once per test binary.
+/// picture (the video anchor), and none (the unaltered film). Written once per test process.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
+#include <string>
 
 #include "app/bench/turning_clip.h"
 #include "io/sidecar.h"
@@ -23,7 +26,11 @@ struct TurningClipFiles {
 inline const TurningClipFiles& turning_clip_files() {
   static const TurningClipFiles c = [] {
     TurningClipFiles c;
-    c.dir = test_files::fresh_dir("app/TurningClip");
+    // A folder per test: ctest runs each test in its own process, several at once, and each
+    // process writes the clip once.
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    c.dir = test_files::fresh_dir("app/TurningClip/" + std::string(test->test_suite_name()) + "." +
+                                  test->name());
     c.video = c.dir / "turn.mp4";
     bench::write_turning_clip(c.video, bench::interior_panorama(kTurnWidth), kTurnFrames, kTurnDeg,
                               8);
