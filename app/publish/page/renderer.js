@@ -138,7 +138,7 @@ export class Renderer {
     this.video = program(gl, shaders.vert, shaders.video, 'video.frag');
     this.mip = program(gl, shaders.vert, shaders.mip, 'mip_level.frag');
     this.mipFb = gl.createFramebuffer();
-    this.mipSizes = new Map(); // texture -> "WxH format" its levels 1.. are allocated for
+    this.storage = new Map(); // texture -> "WxH format" of its immutable storage (#storage)
     this.blur = program(gl, shaders.vert, shaders.blur, 'blur_1d.frag');
     this.stack = program(gl, shaders.vert, shaders.stack, 'stack.frag');
     this.stackBlur = program(gl, shaders.vert, shaders.stackBlur, 'stack_blur.frag');
@@ -185,23 +185,33 @@ export class Renderer {
                      this.layout.coverage === 360 ? gl.REPEAT : gl.CLAMP_TO_EDGE);
   }
 
-  // Levels 1.. of `tex` (level 0 just uploaded, width x height) as the area-average chain of
-  // effects/mip_chain.h, one draw of shaders/mip_level.frag per level with only the level above
-  // readable, as xr/render/mip_chain_gl.cpp draws them (not generateMipmap, whose filter for odd
-  // sizes is the browser's choice). `format`: [internal format, format] of the levels.
-  #buildMips(tex, width, height, [internal, format]) {
+  // `tex`, or a new texture in its place (the caller keeps the one returned), with immutable
+  // storage for the full mip chain of a width x height image in `internal`, bound; level 0 is
+  // then written with texSubImage2D. Immutable as in xr/render/video_layer.cpp: a mutable
+  // texture's level outside [TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL] is an incomplete framebuffer
+  // attachment (OpenGL ES 3.0, 4.4.4.1), so #buildMips could draw none of its levels.
+  #storage(tex, width, height, internal) {
+    const gl = this.gl;
+    const key = `${width}x${height} ${internal}`;
+    if (this.storage.get(tex) !== key) {
+      this.storage.delete(tex);
+      gl.deleteTexture(tex);
+      tex = this.#videoTexture();
+      gl.texStorage2D(gl.TEXTURE_2D, mipLevels(width, height), internal, width, height);
+      this.storage.set(tex, key);
+    }
+    this.#setWrap(tex);
+    return tex;
+  }
+
+  // Levels 1.. of `tex` (#storage; level 0 just uploaded, width x height) as the area-average
+  // chain of effects/mip_chain.h, one draw of shaders/mip_level.frag per level with only the
+  // level above readable, as xr/render/mip_chain_gl.cpp draws them (not generateMipmap, whose
+  // filter for odd sizes is the browser's choice).
+  #buildMips(tex, width, height) {
     const gl = this.gl;
     const levels = mipLevels(width, height);
     gl.bindTexture(gl.TEXTURE_2D, tex);
-    const key = `${width}x${height} ${internal}`;
-    if (this.mipSizes.get(tex) !== key) {
-      for (let l = 1, w = width, h = height; l < levels; ++l) {
-        w = Math.max(1, w >> 1);
-        h = Math.max(1, h >> 1);
-        gl.texImage2D(gl.TEXTURE_2D, l, internal, w, h, 0, format, gl.UNSIGNED_BYTE, null);
-      }
-      this.mipSizes.set(tex, key);
-    }
     gl.useProgram(this.mip.p);
     gl.activeTexture(gl.TEXTURE0);
     gl.uniform1i(this.mip.u('u_src'), 0);
@@ -214,6 +224,9 @@ export class Renderer {
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_BASE_LEVEL, l - 1);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAX_LEVEL, l - 1);
       gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, l);
+      // Loud rather than a chain of blank levels (what the footprint taps would then read).
+      if (l === 1 && gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE)
+        throw new Error(`the mip chain's level 1 (${w} x ${h}) cannot be drawn`);
       gl.viewport(0, 0, w, h);
       gl.drawArrays(gl.TRIANGLES, 0, 3);
     }
@@ -237,17 +250,15 @@ export class Renderer {
   // conversion by the browser beyond Y'CbCr -> R'G'B').
   upload(source) {
     const gl = this.gl;
-    gl.bindTexture(gl.TEXTURE_2D, this.frameTex);
+    const w = source.videoWidth ?? source.width, h = source.videoHeight ?? source.height;
+    this.frameTex = this.#storage(this.frameTex, w, h, gl.RGBA8);
     gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, true);
     gl.pixelStorei(gl.UNPACK_COLORSPACE_CONVERSION_WEBGL, gl.NONE);
-    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, source);
+    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, source);
     gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
     for (const e of this.eyes) e.ycbcr = null;
-    const rgba = [gl.RGBA8, gl.RGBA];
     if (!this.layout.stereo) {
-      this.#setWrap(this.frameTex);
-      const w = source.videoWidth ?? source.width, h = source.videoHeight ?? source.height;
-      this.#buildMips(this.frameTex, w, h, rgba);
+      this.#buildMips(this.frameTex, w, h);
       return;
     }
     // Each eye's half copied into its own texture (rows bottom first, as uploaded).
@@ -256,13 +267,14 @@ export class Renderer {
     gl.framebufferTexture2D(gl.READ_FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D,
                             this.frameTex, 0);
     for (const [i, r] of this.layout.rects.entries()) {
-      this.#setWrap(this.eyes[i].rgb);
-      gl.copyTexImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, r.x, this.layout.height - r.y - r.height,
-                        r.width, r.height, 0);
+      const e = this.eyes[i];
+      e.rgb = this.#storage(e.rgb, r.width, r.height, gl.RGBA8);
+      gl.copyTexSubImage2D(gl.TEXTURE_2D, 0, 0, 0, r.x, this.layout.height - r.y - r.height,
+                           r.width, r.height);
     }
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
     for (const [i, r] of this.layout.rects.entries())
-      this.#buildMips(this.eyes[i].rgb, r.width, r.height, rgba);
+      this.#buildMips(this.eyes[i].rgb, r.width, r.height);
   }
 
   // A decoded 8-bit frame as its three planes (each { data, stride }, rows top first),
@@ -289,19 +301,19 @@ export class Renderer {
     const corners = [[r.x, r.y], [r.x >> sx, r.y >> sy], [r.x >> sx, r.y >> sy]];
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
     for (let i = 0; i < 3; ++i) {
-      this.#setWrap(eye.planes[i]);
+      eye.planes[i] = this.#storage(eye.planes[i], sizes[i][0], sizes[i][1], gl.R8);
       gl.pixelStorei(gl.UNPACK_ROW_LENGTH, planes[i].stride);
       gl.pixelStorei(gl.UNPACK_SKIP_PIXELS, corners[i][0]);
       gl.pixelStorei(gl.UNPACK_SKIP_ROWS, corners[i][1]);
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.R8, sizes[i][0], sizes[i][1], 0, gl.RED,
-                    gl.UNSIGNED_BYTE, planes[i].data);
+      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, sizes[i][0], sizes[i][1], gl.RED,
+                       gl.UNSIGNED_BYTE, planes[i].data);
     }
     gl.pixelStorei(gl.UNPACK_SKIP_PIXELS, 0);
     gl.pixelStorei(gl.UNPACK_SKIP_ROWS, 0);
     gl.pixelStorei(gl.UNPACK_ROW_LENGTH, 0);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
     for (let i = 0; i < 3; ++i)
-      this.#buildMips(eye.planes[i], sizes[i][0], sizes[i][1], [gl.R8, gl.RED]);
+      this.#buildMips(eye.planes[i], sizes[i][0], sizes[i][1]);
     // Luma (u, v) -> chroma (u, v) of this eye's planes, as xr/render/video_layer.cpp maps it.
     const scale = [], offset = [];
     for (let a = 0; a < 2; ++a) {
