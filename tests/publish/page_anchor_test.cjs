@@ -87,9 +87,13 @@ runTest('publish.page_anchor', async () => {
   run(['publish', clip, '--sidecar', anchored, '--out', path.join(outDir, 'site')]);
   const video = path.join(outDir, 'site', 'video.mp4');
   const server = await serve(outDir);
-  const browser = await Browser.launch(path.join(outDir, 'chromium-profile'), W, H);
+  // A browser per view: in one browser the second page load of this site stalls (Chromium idle,
+  // the DevTools call unanswered; each view alone passes) and the cause is not found yet.
+  let browser = null;
   try {
     for (const v of VIEWS) {
+      if (browser) browser.close();
+      browser = await Browser.launch(path.join(outDir, `chromium-profile-${v.join('_')}`), W, H);
       const label = `view ${v[0]},${v[1]} frame ${v[2]} fov ${v[3]}`;
       const title = await browser.open(`http://127.0.0.1:${server.address().port}/site/` +
         `index.html?view=${v[0]},${v[1]}&frame=${v[2]}&fov=${v[3]}&size=${W}x${H}&paused=1`, W, H);
@@ -111,7 +115,7 @@ runTest('publish.page_anchor', async () => {
             `${label}: the anchors change the picture (mean ${unanchored.mean.toFixed(2)})`);
     }
   } finally {
-    browser.close();
+    if (browser) browser.close();
     server.close();
   }
 });
