@@ -275,7 +275,7 @@ FitResult fit_greedy(const TargetField& field, const FitOptions& options,
                 options,
                 existing,
                 units,
-                {effects::RbfKernel::from(options.settings, options.fps).time_factor},
+                effects::RbfKernel::from(options.settings, options.fps).time_factor,
                 std::vector<bool>(n, true),
                 {}};
   Interpolant f(field.dimension, options, existing);
