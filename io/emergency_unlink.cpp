@@ -66,7 +66,8 @@ EmergencyUnlink::EmergencyUnlink(const std::filesystem::path& path, std::string_
     int expected = kFree;
     if (!s.state.compare_exchange_strong(expected, kFilling)) continue;
     std::memcpy(s.path, p.c_str(), p.size() + 1);
-    std::memcpy(s.content, content.data(), content.size());
+    // (An empty view's data() may be null, which memcpy may not be given even for 0 bytes.)
+    if (!content.empty()) std::memcpy(s.content, content.data(), content.size());
     s.content_size = content.size();
     s.check_content = !content.empty();
     s.state.store(kReady, std::memory_order_release);
