@@ -46,29 +46,15 @@ void SuggestWorker::run(io::Sidecar sidecar) {
   } catch (const std::exception& e) {  // an unreadable video, one that cannot be metered, ...
     out.problem = e.what();
   }
-  const std::lock_guard<std::mutex> lock(mutex_);
-  done_ = std::move(out);
-  finished_ = true;
+  result_.put(std::move(out));
 }
 
 std::optional<SuggestOutcome> SuggestWorker::take() {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  std::optional<SuggestOutcome> out = std::move(done_);
-  done_.reset();
-  return out;
+  return result_.take();
 }
 
 bool SuggestWorker::wait(std::chrono::milliseconds timeout) {
-  const auto end = std::chrono::steady_clock::now() + timeout;
-  while (std::chrono::steady_clock::now() < end) {
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      if (finished_) return true;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  const std::lock_guard<std::mutex> lock(mutex_);
-  return finished_;
+  return result_.wait(timeout);
 }
 
 }  // namespace vdfx::app

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "app/editor/edit_target.h"
+#include "app/editor/worker_result.h"
 #include "app/suggest/suggest.h"
 #include "io/sidecar.h"
 
@@ -58,9 +59,7 @@ class SuggestWorker {
 
   suggest::SuggestRequest request_;
   suggest::Progress progress_;
-  mutable std::mutex mutex_;
-  std::optional<SuggestOutcome> done_;
-  bool finished_ = false;
+  WorkerResult<SuggestOutcome> result_;
   std::thread thread_;
 };
 

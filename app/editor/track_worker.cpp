@@ -84,29 +84,15 @@ void TrackWorker::run(io::Sidecar sidecar) {
     out = {};
     out.problem = e.what();
   }
-  const std::lock_guard<std::mutex> lock(mutex_);
-  done_ = std::move(out);
-  finished_ = true;
+  result_.put(std::move(out));
 }
 
 std::optional<TrackOutcome> TrackWorker::take() {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  std::optional<TrackOutcome> out = std::move(done_);
-  done_.reset();
-  return out;
+  return result_.take();
 }
 
 bool TrackWorker::wait(std::chrono::milliseconds timeout) {
-  const auto end = std::chrono::steady_clock::now() + timeout;
-  while (std::chrono::steady_clock::now() < end) {
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      if (finished_) return true;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  const std::lock_guard<std::mutex> lock(mutex_);
-  return finished_;
+  return result_.wait(timeout);
 }
 
 }  // namespace vdfx::app

@@ -12,6 +12,7 @@
 #include <string>
 #include <thread>
 
+#include "app/editor/worker_result.h"
 #include "app/track/track.h"
 #include "io/sidecar.h"
 
@@ -68,9 +69,7 @@ class TrackWorker {
 
   TrackJob job_;
   track::Progress progress_;
-  mutable std::mutex mutex_;
-  std::optional<TrackOutcome> done_;
-  bool finished_ = false;
+  WorkerResult<TrackOutcome> result_;
   std::thread thread_;
 };
 
