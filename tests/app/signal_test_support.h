@@ -81,6 +81,19 @@ class VdfxProcess {
 
   void signal(int sig) const { ::kill(pid_, sig); }
 
+  /// Sends `sig` every `every` until the process has ended (at most `timeout`); the wait status.
+  /// Two signals sent back to back can merge into one pending signal; sent apart, the first one's
+  /// clean stop may be over before the second: a steady stream is sure to land during it.
+  int signal_until_ended(int sig, std::chrono::microseconds every = std::chrono::microseconds(500),
+                         std::chrono::milliseconds timeout = std::chrono::seconds(60)) {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    while (!reap(false) && std::chrono::steady_clock::now() < end) {
+      ::kill(pid_, sig);
+      std::this_thread::sleep_for(every);
+    }
+    return wait();
+  }
+
   /// Waits for the end (at most `timeout`; then SIGKILL) and returns the wait status.
   int wait(std::chrono::milliseconds timeout = std::chrono::seconds(60)) {
     const auto end = std::chrono::steady_clock::now() + timeout;
