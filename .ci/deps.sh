@@ -14,7 +14,7 @@ packages=(
   fonts-dejavu-core blender-data ffmpeg
   gnuplot-nox python3-jsonschema libimage-exiftool-perl
   glslang-tools emscripten chromium
-  xvfb xauth libgl1-mesa-dri mesa-utils
+  xvfb xauth libgl1-mesa-dri mesa-utils xdotool
   libopenxr-dev libopenxr-loader1 openxr-layer-corevalidation libopenxr-utils
   clang-14 libclang-rt-14-dev llvm-14 clang-format-14
   universal-ctags

@@ -58,6 +58,25 @@ double grid_sum(const xr::ParamGrid& g) {
   return s;
 }
 
+/// The unit directions of the grid's cells, as bake_param_grid visits them.
+std::vector<Eigen::Vector3d> grid_directions() {
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(static_cast<std::size_t>(kGridW) * kGridH);
+  for (int j = 0; j < kGridH; ++j)
+    for (int i = 0; i < kGridW; ++i)
+      out.push_back(
+          effects::to_unit(effects::from_equirect_uv({(i + 0.5) / kGridW, (j + 0.5) / kGridH})));
+  return out;
+}
+
+/// Every cell's direction turned into the anchor's frame at the cost frame, as an evaluation
+/// does; a sum so that the work cannot be optimised away.
+double turn_all(const effects::AnchorFrames& frames, const std::vector<Eigen::Vector3d>& cells) {
+  double s = 0.0;
+  for (const Eigen::Vector3d& u : cells) s += frames.apply(u, kCostFrame).x();
+  return s;
+}
+
 void add_cost(Registry& r, bool quick) {
   r.knob({"anchor.cost",
           "a frame's evaluation (256 x 128 cells) with every effect anchored to the world", "frame",
@@ -86,6 +105,15 @@ void add_cost(Registry& r, bool quick) {
             row.time = times.subject;
             row.peer_time = times.peer;
             row.add("overhead_pct", (row.ratio() - 1.0) * 100.0);
+            // The anchor's own step alone (the frame's rotation of every cell's direction), beside
+            // the whole frame without anchors in the same loop: a difference of two frames'
+            // times is lost in their spread when it is under a few percent, this is not.
+            const std::vector<Eigen::Vector3d> cells = grid_directions();
+            const effects::AnchorFrames& frames = a.anchor(anchored.effects.front().type);
+            const auto step = measure_pair({[&] { g_sink = turn_all(frames, cells); }},
+                                           {[&] { bake(p); }}, ctx.budget);
+            row.add("anchor_step_ms", step.subject.median_s * 1e3);
+            row.add("anchor_step_pct", step.subject.median_s / step.peer.median_s * 100.0);
             row.note = "the stack's per-pixel grid at frame " + std::to_string(kCostFrame) +
                        " of a camera turning once in 300 frames; random keyframes over the "
                        "frames, exponent 1";

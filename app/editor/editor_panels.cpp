@@ -283,10 +283,10 @@ void EditorPanels::show_effect(EditTarget target) {
 }
 
 std::vector<ui::Panel*> EditorPanels::all() {
-  std::vector<ui::Panel*> out{effect_.get(), timeline_.get()};
+  // Drawn in this order: the track's marker belongs to the scene, under the panels.
+  std::vector<ui::Panel*> out{&marker_->panel(), effect_.get(), timeline_.get()};
   if (views_) out.push_back(views_.get());
   if (hud_) out.push_back(hud_.get());
-  out.push_back(&marker_->panel());
   return out;
 }
 

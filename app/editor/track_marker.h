@@ -1,8 +1,8 @@
 /// @file
 /// @brief TrackMarker: the shown subject track drawn in the view (docs/editor.md, "Tracking"): a
-/// small quad (a ui::Panel with a ring and the track's name) placed in the direction where the
-/// track has its subject at the current frame, facing the head; hidden when the track has no
-/// point there. The ring is dashed where the subject was lost (its direction held).
+/// small quad (a ui::Panel with a ring and the track's name on a tag, no backdrop) placed in the
+/// direction where the track has its subject at the current frame, facing the head; hidden when the
+/// track has no point there. The ring is dashed where the subject was lost (its direction held).
 #pragma once
 
 #include <memory>
@@ -35,7 +35,7 @@ class TrackMarker {
 
   std::unique_ptr<ui::Panel> panel_;
   ui::Widget* ring_ = nullptr;
-  ui::Label* name_ = nullptr;
+  ui::Widget* name_ = nullptr;
   ui::Pose head_;
   std::optional<effects::Direction> at_;
 };

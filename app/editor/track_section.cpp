@@ -3,9 +3,11 @@
 #include "app/editor/track_section.h"
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "app/editor/editor_panels.h"
+#include "effects/anchor.h"
 
 namespace vdfx::app {
 
@@ -38,7 +40,10 @@ void TrackSection::show(const TrackView& v) {
   put(camera_, "camera", "Track camera", true);
   put(correct_, "correct", v.track.empty() ? "Correct here" : "Correct " + v.track,
       !v.track.empty());
-  anchor_->set_label("Anchor: " + v.anchor);
+  // A track by its name alone: "track:" would take the room the name needs on the button.
+  const std::optional<effects::Anchor> a = effects::parse_anchor(v.anchor);
+  const bool track = a && a->kind == effects::Anchor::Kind::Track;
+  anchor_->set_label("Anchor: " + (track ? a->track : v.anchor));
   anchor_->set_enabled(v.running.empty());
 }
 

@@ -95,7 +95,7 @@ TEST(TrackDocument, AnAnchorNeedsWhatItNames) {
   EXPECT_EQ(effects::anchor_name(ed.document().anchor(EffectType::Saturation)), "track:walker");
   EXPECT_EQ(ed.document().sidecar().effects.size(), 1u);  // its anchor is written
   ed.update(test::looking(0.0, 0.0, 1), 1);
-  EXPECT_EQ(ed.ui().track_section().anchor_button().label(), "Anchor: track:walker");
+  EXPECT_EQ(ed.ui().track_section().anchor_button().label(), "Anchor: walker");
   EXPECT_EQ(ed.shown_track(), ed.document().track("walker"));
   ed.next_anchor();
   EXPECT_TRUE(ed.document().anchor(EffectType::Saturation).is_video());
@@ -267,7 +267,7 @@ TEST(EditorTrackPanel, DesktopClicksTrackTheCameraAndASubjectAndSetTheAnchor) {
   EXPECT_EQ(effects::anchor_name(ed.document().anchor(EffectType::Exposure)), "world");
   click(s.anchor_button());  // world -> the track
   EXPECT_EQ(effects::anchor_name(ed.document().anchor(EffectType::Exposure)), "track:subject1");
-  EXPECT_EQ(s.anchor_button().label(), "Anchor: track:subject1");
+  EXPECT_EQ(s.anchor_button().label(), "Anchor: subject1");
   EXPECT_EQ(ed.document().undo_stack().undo_size(), 4u);
 }
 
