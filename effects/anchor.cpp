@@ -87,19 +87,12 @@ AnchorFrames AnchorFrames::track(const SubjectTrack& track) {
 
 Eigen::Matrix3d AnchorFrames::at(std::int64_t frame) const {
   if (!rotations_) return Eigen::Matrix3d::Identity();
-  const auto last = static_cast<std::int64_t>(rotations_->size()) - 1;
-  const std::int64_t i = std::clamp<std::int64_t>(frame - first_, 0, last);
-  return (*rotations_)[static_cast<std::size_t>(i)];
-}
-
-Eigen::Vector3d AnchorFrames::apply(const Eigen::Vector3d& unit, std::int64_t frame) const {
-  if (!rotations_) return unit;
-  return at(frame) * unit;
+  return stored(frame);
 }
 
 Eigen::Vector3d AnchorFrames::unapply(const Eigen::Vector3d& unit, std::int64_t frame) const {
   if (!rotations_) return unit;
-  return at(frame).transpose() * unit;
+  return stored(frame).transpose() * unit;
 }
 
 Direction AnchorFrames::apply(const Direction& d, std::int64_t frame) const {

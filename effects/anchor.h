@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -86,8 +87,11 @@ class AnchorFrames {
   bool identity() const { return rotations_ == nullptr; }
   /// The rotation at `frame` (frames outside the stored span take the nearest end's).
   Eigen::Matrix3d at(std::int64_t frame) const;
-  /// `unit` (a direction of the video frame at `frame`) in the anchor's frame.
-  Eigen::Vector3d apply(const Eigen::Vector3d& unit, std::int64_t frame) const;
+  /// `unit` (a direction of the video frame at `frame`) in the anchor's frame. Inline: it runs
+  /// once per evaluation (per pixel in the per-pixel grid), a 3 x 3 product of a stored matrix.
+  Eigen::Vector3d apply(const Eigen::Vector3d& unit, std::int64_t frame) const {
+    return rotations_ ? Eigen::Vector3d(stored(frame) * unit) : unit;
+  }
   /// The inverse: a direction of the anchor's frame as the video frame shows it at `frame`.
   Eigen::Vector3d unapply(const Eigen::Vector3d& unit, std::int64_t frame) const;
   Direction apply(const Direction& d, std::int64_t frame) const;
@@ -96,6 +100,12 @@ class AnchorFrames {
  private:
   AnchorFrames(std::shared_ptr<const std::vector<Eigen::Matrix3d>> rotations, std::int64_t first)
       : rotations_(std::move(rotations)), first_(first) {}
+  /// The stored rotation at `frame`, the nearest end's outside the span (rotations_ set).
+  const Eigen::Matrix3d& stored(std::int64_t frame) const {
+    const auto last = static_cast<std::int64_t>(rotations_->size()) - 1;
+    return (
+        *rotations_)[static_cast<std::size_t>(std::clamp<std::int64_t>(frame - first_, 0, last))];
+  }
   std::shared_ptr<const std::vector<Eigen::Matrix3d>> rotations_;
   std::int64_t first_ = 0;  //!< the frame of rotations_[0]
 };
