@@ -3,6 +3,7 @@
 /// poses, unaltered passes through, the parameters carry the trigger's preview.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include "app/window/editor_client.h"
@@ -67,6 +68,13 @@ std::vector<ui::Panel*> shown_panels(Editor& editor) {
   return shown;
 }
 
+// The client's slot of a panel (its texture is 100 + slot): its place among all the editor's
+// panels, the hidden ones included.
+std::size_t slot_of(Editor& editor, const ui::Panel* panel) {
+  const auto all = editor.panels();
+  return static_cast<std::size_t>(std::find(all.begin(), all.end(), panel) - all.begin());
+}
+
 TEST(EditClient, QuadsAtPanelPosesUploadOnlyWhenPanelsRerender) {
   Fixture f;
   f.step(test::looking(10.0, 5.0, 0));
@@ -82,7 +90,7 @@ TEST(EditClient, QuadsAtPanelPosesUploadOnlyWhenPanelsRerender) {
     EXPECT_EQ(q1[i].pose, panels[i]->pose());
     EXPECT_DOUBLE_EQ(q1[i].size_m.x(), panels[i]->size_m().x);
     EXPECT_DOUBLE_EQ(q1[i].size_m.y(), panels[i]->size_m().y);
-    EXPECT_EQ(q1[i].texture, 100 + i);
+    EXPECT_EQ(q1[i].texture, 100 + slot_of(f.editor, panels[i]));
   }
   // Uploads follow renders: one per panel whose render count moved, none without a render.
   const auto renders = [&] {
@@ -110,7 +118,10 @@ TEST(EditClient, QuadsAtPanelPosesUploadOnlyWhenPanelsRerender) {
   }
   // Whole or partial, the texture equals the panel's image.
   for (std::size_t i = 0; i < panels.size(); ++i)
-    EXPECT_EQ(cv::norm(f.fake->images[i], expected_texture(*panels[i]), cv::NORM_INF), 0.0) << i;
+    EXPECT_EQ(cv::norm(f.fake->images[slot_of(f.editor, panels[i])], expected_texture(*panels[i]),
+                       cv::NORM_INF),
+              0.0)
+        << i;
 }
 
 TEST(EditClient, PanelRenderedElsewhereIsUploadedWhole) {
@@ -128,7 +139,10 @@ TEST(EditClient, PanelRenderedElsewhereIsUploadedWhole) {
   EXPECT_EQ(last.regions[0].area(), f.fake->images[last.slot].total()) << "the whole panel";
   const auto panels = shown_panels(f.editor);
   for (std::size_t i = 0; i < panels.size(); ++i)
-    EXPECT_EQ(cv::norm(f.fake->images[i], expected_texture(*panels[i]), cv::NORM_INF), 0.0) << i;
+    EXPECT_EQ(cv::norm(f.fake->images[slot_of(f.editor, panels[i])], expected_texture(*panels[i]),
+                       cv::NORM_INF),
+              0.0)
+        << i;
 }
 
 TEST(EditClient, UnalteredPassesThrough) {
