@@ -30,7 +30,6 @@ class NameTag : public ui::Widget {
  public:
   explicit NameTag(std::string id) : Widget(std::move(id)) {}
   void set_text(std::string s) { set(text_, s); }
-  const std::string& text() const { return text_; }
   bool interactive() const override { return false; }
   void draw(ui::DrawContext& ctx) const override {
     if (text_.empty()) return;
