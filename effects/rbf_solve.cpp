@@ -6,42 +6,16 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <optional>
 #include <vector>
 
+#include "effects/huge_matrix.h"
 #include "effects/rbf_exact_residual.h"
 #include "effects/solve_threads.h"
 
-#if defined(__linux__)
-#include <sys/mman.h>
-
-#include <cstdint>
-#endif
-
 namespace vdfx::effects {
-
-namespace {
-
-/// Asks for transparent huge pages on a large matrix not touched yet, which will be written
-/// whole: its first touch then takes one page fault per 2 MiB instead of one per 4 KiB. The page
-/// faults of a solve's m x m matrices were a tenth of `vdfx eval` at N = 1000 (the kernel's
-/// "madvise" mode, Debian's default, gives huge pages only to regions that ask). Not for a
-/// matrix written in one triangle only: a huge page makes its untouched half resident too.
-void advise_huge_pages(Eigen::MatrixXd& a) {
-#if defined(__linux__)
-  const std::size_t bytes = static_cast<std::size_t>(a.size()) * sizeof(double);
-  constexpr std::uintptr_t huge = std::uintptr_t{2} << 20;
-  if (bytes < 2 * huge) return;
-  const auto begin = reinterpret_cast<std::uintptr_t>(a.data());
-  const std::uintptr_t lo = (begin + huge - 1) & ~(huge - 1), hi = (begin + bytes) & ~(huge - 1);
-  if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);  // advice only
-#else
-  (void)a;
-#endif
-}
-
-}  // namespace
 
 std::string_view to_string(RbfSolveMethod m) {
   switch (m) {
@@ -70,9 +44,14 @@ void kernel_row(const RbfPoints& points, const RbfKernel& kernel, const Eigen::V
 }
 
 Eigen::MatrixXd kernel_matrix(const RbfPoints& points, const RbfKernel& kernel) {
+  Eigen::MatrixXd a(points.size(), points.size());
+  kernel_matrix_into(points, kernel, a);
+  return a;
+}
+
+void kernel_matrix_into(const RbfPoints& points, const RbfKernel& kernel,
+                        Eigen::Ref<Eigen::MatrixXd> a) {
   const int m = points.size();
-  Eigen::MatrixXd a(m, m);
-  advise_huge_pages(a);
   if (kernel.distance == AngularDistance::Chordal) {
     // The lower triangle only (half the square roots / powers), mirrored afterwards: exactly
     // symmetric by construction. Columns are independent: split between the solve's threads.
@@ -98,7 +77,6 @@ Eigen::MatrixXd kernel_matrix(const RbfPoints& points, const RbfKernel& kernel) 
     }
   }
   a.triangularView<Eigen::StrictlyUpper>() = a.transpose();
-  return a;
 }
 
 Eigen::MatrixXd polynomial_matrix(const RbfPoints& points, const PolynomialBasis& basis) {
@@ -109,6 +87,25 @@ Eigen::MatrixXd polynomial_matrix(const RbfPoints& points, const PolynomialBasis
 }
 
 namespace {
+
+using ConstMatrixRef = Eigen::Ref<const Eigen::MatrixXd>;
+
+/// A V for a symmetric m x m A and a thin V (m x r, r <= 5): row j of A V is column j of A
+/// against V, so the product is one contiguous sweep over A, split between the solve's threads.
+/// A general product packs all of A into blocks first: another 8 MB touched at m = 1000, and a
+/// quarter of `vdfx eval`'s page faults.
+Eigen::MatrixXd symmetric_times_thin(ConstMatrixRef a, const Eigen::MatrixXd& v) {
+  const Eigen::Index m = a.rows();
+  const Eigen::MatrixXd vt = v.transpose();  // r x m: each row of V^T against a column of A
+  Eigen::MatrixXd out(m, v.cols());
+  parallel_parts(
+      m, kParallelSolveMin, [m](int part, int parts) { return m * part / parts; },
+      [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+        for (Eigen::Index j = begin; j < end; ++j)
+          out.row(j).noalias() = (vt * a.col(j)).transpose();
+      });
+  return out;
+}
 
 /// The Householder sequence of a QR of P in compact WY form, Q = H_0 ... H_{r-1} = I - V T V^T
 /// (Schreiber & Van Loan 1989; LAPACK's dlarft recurrence), so Q^T A Q costs one product A V
@@ -136,8 +133,8 @@ struct CompactWy {
   }
 
   /// Y with Q^T A Q = A - Y V^T - V Y^T for a symmetric A.
-  Eigen::MatrixXd update_factor(const Eigen::MatrixXd& a) const {
-    const Eigen::MatrixXd w = (a * v) * t;
+  Eigen::MatrixXd update_factor(ConstMatrixRef a) const {
+    const Eigen::MatrixXd w = symmetric_times_thin(a, v) * t;
     const Eigen::MatrixXd mm = t.transpose() * (v.transpose() * w);
     return w - 0.5 * v * mm;
   }
@@ -146,11 +143,10 @@ struct CompactWy {
 /// The lower triangle of K = sign (A22 - Y2 V2^T - V2 Y2^T), the null-space block of Q^T A Q
 /// (22: rows and columns r..m-1), in one pass over A's lower triangle: 2r multiply-adds per
 /// entry, where two general rank-r triangular products would each sweep the matrix again.
-/// The strict upper triangle is left unset (only the lower one is factorised).
-Eigen::MatrixXd projected_lower(const Eigen::MatrixXd& a, const Eigen::MatrixXd& y,
-                                const Eigen::MatrixXd& v, double sign) {
+/// The strict upper triangle of `k` (n2 x n2) is left as it was (only the lower one is factorised).
+void projected_lower(ConstMatrixRef a, const Eigen::MatrixXd& y, const Eigen::MatrixXd& v,
+                     double sign, Eigen::Ref<Eigen::MatrixXd> k) {
   const Eigen::Index m = a.rows(), r = y.cols(), n2 = m - r;
-  Eigen::MatrixXd k(n2, n2);  // no huge pages: its strict upper triangle stays untouched
   // Column j of K is updated with the contiguous columns of Y2 and V2 (vectorises); columns are
   // independent: split between the solve's threads.
   parallel_parts(
@@ -166,6 +162,13 @@ Eigen::MatrixXd projected_lower(const Eigen::MatrixXd& a, const Eigen::MatrixXd&
           if (sign < 0.0) kc = -kc;
         }
       });
+}
+
+/// The lower triangle of the projected block in a new matrix (the fallbacks and tests).
+Eigen::MatrixXd projected_lower(ConstMatrixRef a, const Eigen::MatrixXd& y,
+                                const Eigen::MatrixXd& v, double sign) {
+  Eigen::MatrixXd k(a.rows() - y.cols(), a.rows() - y.cols());
+  projected_lower(a, y, v, sign, k);
   return k;
 }
 
@@ -178,56 +181,62 @@ Eigen::MatrixXd mirror_lower(Eigen::MatrixXd k) {
 /// The factorised saddle-point system: solves [A P; P^T 0][w; c] = [f; g].
 ///
 /// Only what the solve needs of B = Q^T A Q is formed: its first r rows, and the lower triangle
-/// of the null-space block K = +-B22, factorised in place (no copy of the m x m matrix). The
-/// LU and least-squares fallbacks rebuild the full block when the Cholesky factorisation fails.
+/// of the null-space block K = +-B22, factorised in place (in huge pages, no copy of the m x m
+/// matrix). The LU and least-squares fallbacks rebuild the full block when the Cholesky
+/// factorisation fails or its condition estimate is too large. The estimate (Hager and Higham's,
+/// as Eigen's LLT::rcond(): about six solves with the factor, a tenth of `vdfx eval` at m = 1000)
+/// runs on a second thread where the solve has two, while the caller solves and refines with the
+/// factor; confirm() waits for it and, where it rejects the factor, falls back: solve again.
 class SaddleSolver {
  public:
-  SaddleSolver(const Eigen::MatrixXd& a, const Eigen::MatrixXd& p, bool positive)
+  SaddleSolver(ConstMatrixRef a, const Eigen::MatrixXd& p, bool positive)
       : m_(a.rows()), r_(p.cols()), qr_(p) {
     const Eigen::Index n2 = m_ - r_;
-    Eigen::MatrixXd y, v;
     if (r_ > 0) {
       const CompactWy wy(qr_);
-      y = wy.update_factor(a);
-      v = wy.v;
-      b_top_ = a.topRows(r_) - y.topRows(r_) * v.transpose() - v.topRows(r_) * y.transpose();
+      y_ = wy.update_factor(a);
+      v_ = wy.v;
+      b_top_ = a.topRows(r_) - y_.topRows(r_) * v_.transpose() - v_.topRows(r_) * y_.transpose();
     }
     if (n2 == 0) {
       method_ = RbfSolveMethod::Polynomial;
       return;
     }
     sign_ = positive ? 1.0 : -1.0;
-    k_ = projected_lower(a, y, v, sign_);
-    llt_.emplace(k_);
+    k_.emplace(n2, n2);
+    projected_lower(a, y_, v_, sign_, k_->map());
+    llt_.emplace(k_->map());
     if (llt_->info() == Eigen::Success) {
-      const double rc = llt_->rcond();
-      if (rc > 1e3 * std::numeric_limits<double>::epsilon()) {
-        method_ = RbfSolveMethod::NullSpaceCholesky;
-        condition_ = 1.0 / rc;
+      method_ = RbfSolveMethod::NullSpaceCholesky;
+#if !defined(__EMSCRIPTEN__)  // the web module is built without threads
+      if (solve_threads() > 1) {
+        rcond_ = std::async(std::launch::async, [this] { return llt_->rcond(); });
         return;
       }
+#endif
+      if (accept(llt_->rcond())) return;
     }
-    llt_.reset();
-    // The factorisation overwrote k_: rebuild the whole block for the general solvers.
-    k_.resize(0, 0);
-    const Eigen::MatrixXd b22 = mirror_lower(projected_lower(a, y, v, 1.0));
-    lu_.emplace(b22);
-    if (lu_->isInvertible() && lu_->rcond() > 1e2 * std::numeric_limits<double>::epsilon()) {
-      method_ = RbfSolveMethod::NullSpaceLu;
-      condition_ = 1.0 / lu_->rcond();
-      return;
-    }
-    lu_.reset();
-    cod_.emplace(b22);
-    method_ = RbfSolveMethod::LeastSquares;
-    condition_ = std::numeric_limits<double>::infinity();
+    fall_back(a);
   }
 
   SaddleSolver(const SaddleSolver&) = delete;
   SaddleSolver& operator=(const SaddleSolver&) = delete;
 
-  RbfSolveMethod method() const { return method_; }
-  double condition() const { return condition_; }
+  /// Waits for a condition estimate still running. True where the factorisation stands; false
+  /// where it fell back to another method: solutions computed before are to be computed again.
+  bool confirm(ConstMatrixRef a) {
+    if (!rcond_.valid()) return true;
+    if (accept(rcond_.get())) return true;
+    fall_back(a);
+    return false;
+  }
+
+  RbfSolveMethod method() const {
+    return method_;
+  }
+  double condition() const {
+    return condition_;
+  }
 
   /// f: m x D, g: r x D; writes w (m x D) and c (r x D).
   void solve(const Eigen::MatrixXd& f, const Eigen::MatrixXd& g, Eigen::MatrixXd& w,
@@ -257,16 +266,42 @@ class SaddleSolver {
   }
 
  private:
+  /// Keeps the Cholesky factorisation where its reciprocal condition estimate is not tiny.
+  bool accept(double rc) {
+    if (!(rc > 1e3 * std::numeric_limits<double>::epsilon())) return false;
+    condition_ = 1.0 / rc;
+    return true;
+  }
+
+  /// The general solvers, on the whole block rebuilt (the factorisation overwrote it).
+  void fall_back(ConstMatrixRef a) {
+    llt_.reset();
+    k_.reset();
+    const Eigen::MatrixXd b22 = mirror_lower(projected_lower(a, y_, v_, 1.0));
+    lu_.emplace(b22);
+    if (lu_->isInvertible() && lu_->rcond() > 1e2 * std::numeric_limits<double>::epsilon()) {
+      method_ = RbfSolveMethod::NullSpaceLu;
+      condition_ = 1.0 / lu_->rcond();
+      return;
+    }
+    lu_.reset();
+    cod_.emplace(b22);
+    method_ = RbfSolveMethod::LeastSquares;
+    condition_ = std::numeric_limits<double>::infinity();
+  }
+
   Eigen::Index m_, r_;
   Eigen::HouseholderQR<Eigen::MatrixXd> qr_;
-  Eigen::MatrixXd b_top_;  // the first r rows of Q^T A Q
-  Eigen::MatrixXd k_;      // +-B22 (lower triangle), overwritten by its Cholesky factor
+  Eigen::MatrixXd y_, v_;        // Q^T A Q = A - Y V^T - V Y^T (compact WY form of Q)
+  Eigen::MatrixXd b_top_;        // the first r rows of Q^T A Q
+  std::optional<HugeMatrix> k_;  // +-B22 (lower triangle), overwritten by its Cholesky factor
   double sign_ = 1.0;
   std::optional<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower>> llt_;
   std::optional<Eigen::FullPivLU<Eigen::MatrixXd>> lu_;
   std::optional<Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>> cod_;
   RbfSolveMethod method_ = RbfSolveMethod::Empty;
   double condition_ = 1.0;
+  std::future<double> rcond_;  // last: destroyed (waited for) before the factor it reads
 };
 
 }  // namespace
@@ -310,36 +345,21 @@ double rbf_residual(const RbfPoints& points, const RbfKernel& kernel, const Poly
   return worst;
 }
 
-RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
-                      const PolynomialBasis& basis, Eigen::MatrixXd* inverse,
-                      Eigen::MatrixXd* kernel_out) {
-  RbfSolution s;
-  const int m = points.size(), d = points.dimension(), r = basis.size();
-  s.diagnostics.keyframes = static_cast<int>(points.point_of_keyframe.size());
-  s.diagnostics.centres = m;
-  s.diagnostics.merged = points.merged();
-  s.diagnostics.active_terms = r;
-  s.weights.setZero(m, d);
-  s.coefficients.setZero(r, d);
-  if (m == 0) {
-    if (inverse) inverse->resize(0, 0);
-    if (kernel_out) kernel_out->resize(0, 0);
-    return s;
-  }
-  Eigen::MatrixXd a = kernel_matrix(points, kernel);
-  const Eigen::MatrixXd p = polynomial_matrix(points, basis);
-  const SaddleSolver solver(a, p, kernel.order_two());
-  s.diagnostics.method = solver.method();
-  s.diagnostics.condition_estimate = solver.condition();
+namespace {
 
-  const Eigen::MatrixXd& f = points.values;
-  const Eigen::MatrixXd g0 = Eigen::MatrixXd::Zero(r, d);
+/// Solves for `f` (with P^T w = 0), then refines with residuals in twice double precision
+/// (rbf_exact_residual.h) while that helps: up to three steps, keeping the better solution, and
+/// none once the residual is below what rounding the weights to double leaves (at N = 1000 a
+/// second step found nothing, and cost a twentieth of `vdfx eval`).
+void solve_refined(const SaddleSolver& solver, ConstMatrixRef a, const Eigen::MatrixXd& p,
+                   const Eigen::MatrixXd& f, RbfSolution& s) {
+  const Eigen::MatrixXd g0 = Eigen::MatrixXd::Zero(p.cols(), f.cols());
   solver.solve(f, g0, s.weights, s.coefficients);
-
+  s.diagnostics.refined = false;
   const double scale = max_abs(f);
-  // Refinement residuals in twice double precision (rbf_exact_residual.h).
+  double floor = 0.0;  // what rounding the weights to double leaves (rbf_exact_residual.h)
   auto residuals = [&](Eigen::MatrixXd& rf, Eigen::MatrixXd& rg) {
-    return saddle_residual_dot2(a, p, f, g0, s.weights, s.coefficients, rf, rg);
+    return saddle_residual_dot2(a, p, f, g0, s.weights, s.coefficients, rf, rg, &floor);
   };
   Eigen::MatrixXd rf, rg;
   // The double residual decides whether refinement is worth an exact-residual pass.
@@ -348,7 +368,7 @@ RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
   double res = std::max(max_abs(rf), max_abs(rg));
   for (int step = 0; step < 3 && scale > 0.0 && res > kRefineTolerance * scale; ++step) {
     if (step == 0) res = residuals(rf, rg);
-    if (res <= kRefineTolerance * scale) break;
+    if (res <= kRefineTolerance * scale || res <= floor) break;
     Eigen::MatrixXd dw, dc;
     solver.solve(rf, rg, dw, dc);
     const Eigen::MatrixXd w_old = s.weights, c_old = s.coefficients;
@@ -365,6 +385,34 @@ RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
   }
   s.diagnostics.max_residual = res;
   s.diagnostics.relative_residual = scale > 0.0 ? res / scale : res;
+}
+
+}  // namespace
+
+RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
+                      const PolynomialBasis& basis, Eigen::MatrixXd* inverse,
+                      Eigen::MatrixXd* kernel_out) {
+  RbfSolution s;
+  const int m = points.size(), d = points.dimension(), r = basis.size();
+  s.diagnostics.keyframes = static_cast<int>(points.point_of_keyframe.size());
+  s.diagnostics.centres = m;
+  s.diagnostics.merged = points.merged();
+  s.diagnostics.active_terms = r;
+  s.weights.setZero(m, d);
+  s.coefficients.setZero(r, d);
+  if (m == 0) {
+    if (inverse) inverse->resize(0, 0);
+    if (kernel_out) kernel_out->resize(0, 0);
+    return s;
+  }
+  HugeMatrix a(m, m);
+  kernel_matrix_into(points, kernel, a.map());
+  const Eigen::MatrixXd p = polynomial_matrix(points, basis);
+  SaddleSolver solver(a.map(), p, kernel.order_two());
+  solve_refined(solver, a.map(), p, points.values, s);
+  if (!solver.confirm(a.map())) solve_refined(solver, a.map(), p, points.values, s);
+  s.diagnostics.method = solver.method();
+  s.diagnostics.condition_estimate = solver.condition();
 
   if (inverse) {
     // Columns of the inverse: unit right-hand sides, ordered [polynomial; centres].
@@ -377,7 +425,7 @@ RbfSolution solve_rbf(const RbfPoints& points, const RbfKernel& kernel,
     inverse->topRightCorner(r, m) = c1;
     inverse->bottomRightCorner(m, m) = w1;
   }
-  if (kernel_out) *kernel_out = std::move(a);
+  if (kernel_out) *kernel_out = a.map();
   return s;
 }
 

@@ -50,6 +50,9 @@ struct RbfSolution {
 
 /// The kernel matrix A (m x m, symmetric).
 Eigen::MatrixXd kernel_matrix(const RbfPoints& points, const RbfKernel& kernel);
+/// The same written to `a`, m x m already (the solve's own storage).
+void kernel_matrix_into(const RbfPoints& points, const RbfKernel& kernel,
+                        Eigen::Ref<Eigen::MatrixXd> a);
 /// One row of A: phi between (n, t) and every centre, written to out (size m).
 void kernel_row(const RbfPoints& points, const RbfKernel& kernel, const Eigen::Vector3d& n,
                 double t, Eigen::Ref<Eigen::ArrayXd> out);

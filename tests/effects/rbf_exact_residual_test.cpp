@@ -67,5 +67,22 @@ TEST(SaddleResidualDot2, MatchesALongDoubleReferenceOnCancellingSystems) {
   }
 }
 
+TEST(SaddleResidualDot2, ItsRoundingFloorIsTheLargestRowsTermsNormTimesTheUnitRoundoff) {
+  // Row 0's terms: A w = (3, -4), P c = 12 -> sqrt(9 + 16 + 144) = 13; row 1's: (1, 1), 0.
+  Eigen::MatrixXd a(2, 2);
+  a << 3.0, -4.0,  //
+      1.0, 1.0;
+  const Eigen::MatrixXd w = Eigen::MatrixXd::Ones(2, 1);
+  Eigen::MatrixXd p(2, 1);
+  p << 6.0, 0.0;
+  const Eigen::MatrixXd c = Eigen::MatrixXd::Constant(1, 1, 2.0);
+  const Eigen::MatrixXd f = Eigen::MatrixXd::Constant(2, 1, 100.0);  // not a term of the floor
+  Eigen::MatrixXd rf, rg;
+  double floor = -1.0;
+  saddle_residual_dot2(a, p, f, Eigen::MatrixXd::Zero(1, 1), w, c, rf, rg, &floor);
+  EXPECT_DOUBLE_EQ(floor, 13.0 * std::ldexp(1.0, -53));
+  EXPECT_EQ(rf(0, 0), 100.0 - 3.0 + 4.0 - 12.0);
+}
+
 }  // namespace
 }  // namespace vdfx::effects

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "effects/rbf_interpolator.h"
+#include "effects/rbf_solve.h"
 #include "tests/effects/rbf_test_util.h"
 
 namespace vdfx::effects {
@@ -65,6 +66,36 @@ TEST(SolveThreads, TwoThreadsGiveTheSameSolveBitForBit) {
     const Direction d = test::random_direction(rng);
     const auto f = static_cast<std::int64_t>(rng() % 601);
     ASSERT_EQ(one.evaluate(d, f), two->evaluate(d, f)) << i;
+  }
+}
+
+TEST(SolveThreads, AFactorTheConditionEstimateRejectsFallsBackAlikeOnTwoThreads) {
+  // 40 pairs of keyframes 1e-10 degrees apart with different values: the Cholesky factorisation
+  // of the projected block succeeds, its condition estimate (about 1e13) rejects it, and the LU
+  // takes over. On two threads the estimate runs beside the first solve, which is then redone.
+  std::vector<Keyframe> k;
+  for (int i = 0; i < 40; ++i) {
+    const Keyframe a{Direction{-175.0 + i * 9.0, 0.0}, 0, {static_cast<double>(i % 3)}};
+    Keyframe b = a;
+    b.direction.azimuth_deg += 1e-10;
+    b.params = {static_cast<double>((i + 1) % 3)};
+    k.push_back(a);
+    k.push_back(b);
+  }
+  const RbfInterpolator one(k, 1, {}, 30.0);
+  std::unique_ptr<RbfInterpolator> two;
+  {
+    const ThreadsScope scope(2);
+    two = std::make_unique<RbfInterpolator>(k, 1, InterpolationSettings{}, 30.0);
+  }
+  EXPECT_EQ(one.diagnostics().method, RbfSolveMethod::NullSpaceLu);
+  EXPECT_EQ(two->diagnostics().method, RbfSolveMethod::NullSpaceLu);
+  EXPECT_GT(two->diagnostics().condition_estimate, 1e12);
+  EXPECT_EQ(one.diagnostics().max_residual, two->diagnostics().max_residual);
+  EXPECT_EQ(one.diagnostics().condition_estimate, two->diagnostics().condition_estimate);
+  for (int i = 0; i < 40; ++i) {
+    const Direction d{-175.0 + i * 9.0 + 4.5, 10.0};
+    ASSERT_EQ(one.evaluate(d, 0), two->evaluate(d, 0)) << i;
   }
 }
 
