@@ -106,6 +106,17 @@ const median = (a) => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
     // Alternated, the better of two each: the shared machine's load moves between runs.
     const eightA = await perCall(true), six = Math.min(await perCall(false), await perCall(false));
     const eight = Math.min(eightA, await perCall(true));
+    // The draw path itself, warm: 60 more draws of the current frame at turning views, each
+    // timed by the page as during playback (its evaluation: the view's rotation, module.eval,
+    // the flare and grain layout).
+    const warm = await browser.evaluate(`(() => {
+      const p = window.vdfxPlayer, before = p.stats.evalMs.length;
+      for (let k = 0; k < 60; ++k) {
+        p.view.az = -179 + 6 * k;
+        p.draw();
+      }
+      return p.stats.evalMs.slice(before);
+    })()`);
     console.log(`first frame after ${firstMs} ms (module, sidecar load and solve of 8 x ` +
                 `${keyframes} keyframes, shaders, video)`);
     console.log(`one evaluation, median of 21 runs of 2000 random views and frames: the 6 stack ` +
@@ -116,6 +127,9 @@ const median = (a) => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
                 `draw median ${median(s.drawMs).toFixed(1)} ms (${W}x${H}, SwiftShader), ` +
                 `conversion ${s.conversion}, frame upload median ${median(s.uploadMs).toFixed(1)} ms ` +
                 `(${VW}x${VH}: WebCodecs copy, chroma split, three texture uploads with mipmaps)`);
+    console.log(`playback evaluations (ms): ${s.evalMs.map((x) => x.toFixed(1)).join(" ")}`);
+    console.log(`${warm.length} more draws, warm, at turning views: evaluation median ` +
+                `${(median(warm) * 1000).toFixed(0)} us (performance.now() steps of 100 us here)`);
     console.log(`folder ${(bytes / 1e6).toFixed(2)} MB, of which the video ${(fs.statSync(path.join(site, 'video.mp4')).size / 1e6).toFixed(2)} MB`);
   } finally {
     browser.close();
