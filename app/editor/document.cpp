@@ -145,7 +145,7 @@ void Document::rebuild(EditTarget t, std::vector<effects::Keyframe> keyframes) {
 void Document::restore(EditTarget t, const EffectSnapshot& s) {
   if (!(anchors_[idx(t)] == s.anchor)) {
     anchors_[idx(t)] = s.anchor;
-    resolve_anchors();
+    if (!restoring_step_) resolve_anchors();
   }
   const effects::InterpolationSettings before = interpolation(t);
   overrides_[idx(t)] = s.interpolation;
@@ -297,12 +297,31 @@ std::uint64_t Document::solutions_version() const {
   return v;
 }
 
+namespace {
+
+/// Sets the flag for its scope, cleared also when a restore throws.
+struct RestoringStep {
+  explicit RestoringStep(bool& flag) : flag_(flag) { flag_ = true; }
+  ~RestoringStep() { flag_ = false; }
+  RestoringStep(const RestoringStep&) = delete;
+  RestoringStep& operator=(const RestoringStep&) = delete;
+  bool& flag_;
+};
+
+}  // namespace
+
+// A step may change anchors and the tracks they name together (deleting a track re-anchors its
+// effects): the anchors are resolved once, against the restored tracks, after the whole step.
 bool Document::undo() {
   const auto step = undo_.undo();
   if (!step) return false;
-  for (auto it = step->changes.rbegin(); it != step->changes.rend(); ++it)
-    restore(it->target, it->before);
-  if (step->sources) restore(step->sources->before);
+  {
+    const RestoringStep hold(restoring_step_);
+    for (auto it = step->changes.rbegin(); it != step->changes.rend(); ++it)
+      restore(it->target, it->before);
+    if (step->sources) restore(step->sources->before);
+  }
+  resolve_anchors();
   changed();
   return true;
 }
@@ -310,8 +329,12 @@ bool Document::undo() {
 bool Document::redo() {
   const auto step = undo_.redo();
   if (!step) return false;
-  if (step->sources) restore(step->sources->after);
-  for (const auto& c : step->changes) restore(c.target, c.after);
+  {
+    const RestoringStep hold(restoring_step_);
+    if (step->sources) restore(step->sources->after);
+    for (const auto& c : step->changes) restore(c.target, c.after);
+  }
+  resolve_anchors();
   changed();
   return true;
 }

@@ -120,6 +120,11 @@ class Document {
   /// Adds the track, or replaces the one of its name; effects anchored to it follow the new one.
   /// Throws io::InputError for an invalid name, no points, or points outside the video's frames.
   void put_track(effects::SubjectTrack track);
+  /// Removes the track; effects anchored to it go back to the video frame first, each keyframe
+  /// (and a fixed flare light) staying where it shows at its own frame. One undo step, "delete
+  /// track NAME". Returns how many effects were anchored to it. Throws io::InputError when there
+  /// is no track of that name.
+  int remove_track(const std::string& name);
 
   // ---- the edit being made (app/editor/pending_edit.h): at most one at a time
   /// Starts one (a new keyframe, or keyframe `moved` held) and returns it; replaces any other.
@@ -161,12 +166,14 @@ class Document {
   void resolve_anchors();
   void record(const std::string& label, EditTarget t, EffectSnapshot before);
   SourcesSnapshot sources() const { return {camera_, tracks_}; }
-  /// Puts the camera and tracks back and re-resolves the anchors (undo, redo).
+  /// Puts the camera and tracks back and re-resolves the anchors (undo, redo: after the step).
   void restore(const SourcesSnapshot& s);
   void record(const std::string& label, SourcesSnapshot before);
   void changed();
 
   io::VideoInfo video_;
+  /// Undo or redo is putting a step back: anchors are resolved once, after it (document.cpp).
+  bool restoring_step_ = false;
   effects::InterpolationSettings defaults_;
   /// The sidecar's camera and tracks (what anchors turn by), each target's anchor and its frames.
   std::optional<effects::CameraMotion> camera_;

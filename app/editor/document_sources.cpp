@@ -49,10 +49,37 @@ void Document::put_track(effects::SubjectTrack track) {
   record(label, std::move(before));
 }
 
+int Document::remove_track(const std::string& name) {
+  const auto named = [&](const effects::SubjectTrack& t) { return t.name == name; };
+  if (std::none_of(tracks_.begin(), tracks_.end(), named))
+    throw io::InputError("tracks: there is no track named " + name);
+  const std::string label = "delete track " + name;
+  int anchored = 0;
+  begin_group(label);
+  try {
+    for (const EditTarget t : all_edit_targets()) {
+      const effects::Anchor& a = anchors_[idx(t)];
+      if (a.kind != effects::Anchor::Kind::Track || a.track != name) continue;
+      set_anchor(t, effects::Anchor{});
+      ++anchored;
+    }
+    SourcesSnapshot before = sources();
+    tracks_.erase(std::find_if(tracks_.begin(), tracks_.end(), named));
+    resolve_anchors();
+    record(label, std::move(before));
+  } catch (...) {
+    end_group();
+    throw;
+  }
+  end_group();
+  undo_.rename_last(label);
+  return anchored;
+}
+
 void Document::restore(const SourcesSnapshot& s) {
   camera_ = s.camera;
   tracks_ = s.tracks;
-  resolve_anchors();
+  if (!restoring_step_) resolve_anchors();
 }
 
 void Document::record(const std::string& label, SourcesSnapshot before) {

@@ -194,6 +194,9 @@ class Editor {
   /// "Correct here": the shown track's subject is at the view centre at the current frame; it is
   /// tracked again from there (merge_correction keeps the earlier frames it saw).
   void correct_track();
+  /// "Delete NAME": removes the shown track (one undo step); effects anchored to it go back to
+  /// the video frame, their keyframes where they show.
+  void delete_track();
   /// The current effect's anchor (one undo step); false, with the reason said, when refused (a
   /// world anchor without the camera's motion, a track that is not there, during a grab).
   bool set_anchor(const effects::Anchor& anchor);

@@ -148,7 +148,10 @@ void EditorPanels::add_visualizations(ui::Panel& p, ui::Stack& col, double toggl
     lock_ = &p.add<Toggle>("lock", "Lock timeline in world", false);
     lock_->set_rect(col.next(toggles_h));
     const Rect rest = col.rest();
-    minimap_rect_ = {rest.x, rest.y, rest.w, 0.5 * rest.w + 90.0};
+    // The map keeps its 2:1 (ui/minimap.cpp); the plot below keeps room for its curve.
+    constexpr double kPlotMinH = 200.0;
+    minimap_rect_ = {rest.x, rest.y, rest.w,
+                     std::min(0.5 * rest.w + 90.0, rest.h - kPlotMinH - t.gap)};
     plot_rect_ = {rest.x, minimap_rect_.bottom() + t.gap, rest.w,
                   rest.bottom() - minimap_rect_.bottom() - t.gap};
   } else {  // Hands: toggles in one row, the hint, then the plot beside the minimap

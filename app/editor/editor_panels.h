@@ -120,6 +120,7 @@ enum class PanelControl {
   TrackCamera,      //!< "Track camera", or its cancel
   TrackCorrect,     //!< "Correct here": the shown track re-tracked from the view centre
   TrackAnchor,      //!< the current effect's anchor: the next one
+  TrackDelete,      //!< "Delete NAME": the shown track removed
 };
 
 class EditorPanels {

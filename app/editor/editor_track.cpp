@@ -95,6 +95,22 @@ void Editor::poll_tracking() {
   say(out->summary + ": undo removes it");
 }
 
+void Editor::delete_track() {
+  if (tracking_) return say("tracking runs: cancel it before deleting a track");
+  if (doc_.pending()) return say("let go of the keyframe before deleting a track");
+  const effects::SubjectTrack* shown = shown_track();
+  if (!shown) return say("no track to delete");
+  const std::string name = shown->name;
+  const int anchored = doc_.remove_track(name);
+  if (track_name_ == name) track_name_.clear();
+  selected_.reset();
+  say("deleted track " + name +
+      (anchored ? ": " + std::to_string(anchored) + (anchored == 1 ? " effect" : " effects") +
+                      " back on the video"
+                : std::string()) +
+      "; undo brings it back");
+}
+
 const effects::SubjectTrack* Editor::shown_track() const {
   const effects::Anchor& a = doc_.anchor(effect_);
   if (a.kind == effects::Anchor::Kind::Track)

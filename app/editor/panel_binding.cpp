@@ -37,6 +37,7 @@ void clicked(Editor& ed, PanelControl control) {
     case PanelControl::TrackCamera: ed.track_camera(); break;
     case PanelControl::TrackCorrect: ed.correct_track(); break;
     case PanelControl::TrackAnchor: ed.next_anchor(); break;
+    case PanelControl::TrackDelete: ed.delete_track(); break;
     default: break;
   }
 }

@@ -18,13 +18,15 @@ void TrackSection::build(ui::Panel& p, ui::Stack& col, bool two_rows) {
   camera_ = &p.add<Button>("track_camera", "Track camera");
   correct_ = &p.add<Button>("track_correct", "Correct here");
   anchor_ = &p.add<Button>("track_anchor", "Anchor: video");
-  Button* const order[] = {subject_, camera_, correct_, anchor_};
+  delete_ = &p.add<Button>("track_delete", "Delete track");
+  Button* const order[] = {subject_, camera_, correct_, anchor_, delete_};
   if (two_rows) {
-    const Rect a = col.next(row_h), b = col.next(row_h);
+    const Rect a = col.next(row_h), b = col.next(row_h), c = col.next(row_h);
     for (int i = 0; i < 4; ++i) order[i]->set_rect(split_cols(i < 2 ? a : b, 2, i % 2, gap));
+    delete_->set_rect(split_cols(c, 2, 1, gap));  // under the anchor, away from Track subject
   } else {
     const Rect row = col.next(row_h);
-    for (int i = 0; i < 4; ++i) order[i]->set_rect(split_cols(row, 4, i, gap));
+    for (int i = 0; i < 5; ++i) order[i]->set_rect(split_cols(row, 5, i, gap));
   }
 }
 
@@ -45,6 +47,8 @@ void TrackSection::show(const TrackView& v) {
   const bool track = a && a->kind == effects::Anchor::Kind::Track;
   anchor_->set_label("Anchor: " + (track ? a->track : v.anchor));
   anchor_->set_enabled(v.running.empty());
+  delete_->set_label(v.track.empty() ? "Delete track" : "Delete " + v.track);
+  delete_->set_enabled(v.running.empty() && !v.track.empty());
 }
 
 PanelControl TrackSection::control_of(const ui::Widget* w) const {
@@ -53,6 +57,7 @@ PanelControl TrackSection::control_of(const ui::Widget* w) const {
   if (w == camera_) return PanelControl::TrackCamera;
   if (w == correct_) return PanelControl::TrackCorrect;
   if (w == anchor_) return PanelControl::TrackAnchor;
+  if (w == delete_) return PanelControl::TrackDelete;
   return PanelControl::None;
 }
 

@@ -84,6 +84,11 @@ class UndoStack {
   std::size_t redo_size() const { return undone_.size(); }
   /// Label of the step undo() would revert ("" when none).
   std::string next_undo_label() const { return done_.empty() ? "" : done_.back().label; }
+  /// Names the last step (a group's step takes its first change's label; a command made of
+  /// several changes names the whole).
+  void rename_last(const std::string& label) {
+    if (!done_.empty()) done_.back().label = label;
+  }
 
  private:
   std::vector<UndoStep> done_, undone_;

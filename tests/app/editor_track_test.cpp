@@ -10,6 +10,7 @@
 #include "app/editor/editor.h"
 #include "editor_scripts.h"
 #include "editor_test_util.h"
+#include "effects/anchor.h"
 #include "effects/direction_angle.h"
 #include "io/frame_decoder.h"
 #include "io/input_error.h"
@@ -58,6 +59,44 @@ TEST(TrackDocument, ATrackIsOneUndoStepAndUndoGivesBackTheSidecar) {
   EXPECT_THROW(doc.put_track(line_track("no spaces", 10, 0.0)), io::InputError);
   EXPECT_THROW(doc.put_track(line_track("long", 11, 0.0)), io::InputError);
   EXPECT_EQ(doc.undo_stack().undo_size(), 1u);
+}
+
+TEST(TrackDocument, DeletingATrackPutsItsEffectsBackOnTheVideoInOneUndoStep) {
+  Document doc(test::empty_sidecar(10), DocumentOptions{{.async = false}});
+  doc.put_track(line_track("walker", 10, 0.0));
+  doc.put_track(line_track("dog", 10, 50.0));
+  doc.set_anchor(EffectType::Saturation, {Anchor::Kind::Track, "walker"});
+  doc.set_anchor(EffectType::Exposure, {Anchor::Kind::Track, "dog"});
+  // A keyframe at frame 5 in the walker's frame.
+  doc.add_keyframe(EffectType::Saturation, effects::Keyframe{Direction{5.0, 0.0}, 5, {2.0}});
+  const effects::Keyframe anchored = doc.keyframes(EffectType::Saturation).front();
+  // Where it shows in the video at its frame: the walker's frame undone.
+  const Direction shown =
+      effects::anchor_frames({Anchor::Kind::Track, "walker"}, nullptr, doc.tracks())
+          .unapply(anchored.direction, anchored.frame);
+  ASSERT_GT(effects::angle_between_deg(shown, anchored.direction), 1.0);  // the anchor matters
+  const std::string before = io::format_sidecar(doc.sidecar());
+  const std::size_t steps = doc.undo_stack().undo_size();
+
+  EXPECT_THROW(doc.remove_track("cat"), io::InputError);
+  EXPECT_EQ(doc.remove_track("walker"), 1);
+  EXPECT_EQ(doc.track("walker"), nullptr);
+  ASSERT_NE(doc.track("dog"), nullptr);
+  EXPECT_TRUE(doc.anchor(EffectType::Saturation).is_video());
+  EXPECT_EQ(effects::anchor_name(doc.anchor(EffectType::Exposure)), "track:dog");
+  // The keyframe stays where it showed at its frame.
+  const effects::Keyframe& k = doc.keyframes(EffectType::Saturation).front();
+  EXPECT_NEAR(effects::angle_between_deg(k.direction, shown), 0.0, 1e-9);
+  EXPECT_EQ(k.frame, 5);
+  EXPECT_EQ(doc.undo_stack().undo_size(), steps + 1);
+  EXPECT_EQ(doc.undo_stack().next_undo_label(), "delete track walker");
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(io::format_sidecar(doc.sidecar()), before);
+  EXPECT_EQ(doc.keyframes(EffectType::Saturation).front(), anchored);
+  // A track nothing is anchored to goes alone.
+  ASSERT_TRUE(doc.redo());
+  EXPECT_EQ(doc.remove_track("dog"), 1);
+  EXPECT_TRUE(doc.tracks().empty());
 }
 
 TEST(TrackDocument, TheCameraIsOneUndoStepWithOneOrientationPerFrame) {
@@ -269,6 +308,19 @@ TEST(EditorTrackPanel, DesktopClicksTrackTheCameraAndASubjectAndSetTheAnchor) {
   EXPECT_EQ(effects::anchor_name(ed.document().anchor(EffectType::Exposure)), "track:subject1");
   EXPECT_EQ(s.anchor_button().label(), "Anchor: subject1");
   EXPECT_EQ(ed.document().undo_stack().undo_size(), 4u);
+  EXPECT_EQ(s.delete_button().label(), "Delete subject1");
+  click(s.delete_button());
+  EXPECT_EQ(ed.document().track("subject1"), nullptr) << ed.hud_message();
+  EXPECT_TRUE(ed.document().anchor(EffectType::Exposure).is_video());
+  EXPECT_EQ(ed.hud_message(),
+            "deleted track subject1: 1 effect back on the video; undo brings it back");
+  EXPECT_FALSE(s.delete_button().enabled());  // nothing left to delete
+  EXPECT_EQ(s.delete_button().label(), "Delete track");
+  EXPECT_EQ(s.anchor_button().label(), "Anchor: video");
+  ASSERT_TRUE(ed.undo());
+  step();
+  EXPECT_NE(ed.document().track("subject1"), nullptr);
+  EXPECT_EQ(s.anchor_button().label(), "Anchor: subject1");
 }
 
 TEST(EditorTrackPanel, TheHeadsetsLeftTriggerPressesTheSameButtonsOnTheTimelinePanel) {
