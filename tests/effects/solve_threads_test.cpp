@@ -69,6 +69,28 @@ TEST(SolveThreads, TwoThreadsGiveTheSameSolveBitForBit) {
   }
 }
 
+TEST(SolveThreads, TheKernelMatrixIsTheSameAndExactlySymmetricOnTwoThreads) {
+  // 700 centres: the lower triangle computed, the upper one mirrored in tiles, both split.
+  std::mt19937_64 rng(9);
+  std::vector<Keyframe> k;
+  for (int i = 0; i < 700; ++i) k.push_back(test::random_keyframe(rng, 1, 0, 900));
+  const RbfPoints points = merge_keyframes(k, 1);
+  const RbfKernel kernel = RbfKernel::from(InterpolationSettings{}, 30.0);
+  const Eigen::MatrixXd one = kernel_matrix(points, kernel);
+  Eigen::MatrixXd two;
+  {
+    const ThreadsScope scope(2);
+    two = kernel_matrix(points, kernel);
+  }
+  ASSERT_EQ(one.rows(), 700);
+  EXPECT_EQ(one, two);
+  EXPECT_EQ(one, Eigen::MatrixXd(one.transpose()));
+  // An entry above the diagonal is phi of its pair, as one row computed alone gives it.
+  Eigen::ArrayXd row(700);
+  kernel_row(points, kernel, points.unit(3), points.t[3], row);
+  for (int j = 0; j < 700; ++j) ASSERT_EQ(one(3, j), row[j]) << j;
+}
+
 TEST(SolveThreads, AFactorTheConditionEstimateRejectsFallsBackAlikeOnTwoThreads) {
   // 40 pairs of keyframes 1e-10 degrees apart with different values: the Cholesky factorisation
   // of the projected block succeeds, its condition estimate (about 1e13) rejects it, and the LU
