@@ -23,6 +23,7 @@ xr::SimConfig script_sim() {
   c.window_height = kScriptViewport.height;
   c.hfov_deg = kScriptViewport.hfov_deg;
   c.look = xr::LookMode::Mouselook;  // the scripts' look() turns the way the mouse moves
+  c.look_deg_per_px = 0.2;           // the fixed rate look() drags at (not the cursor's)
   return c;
 }
 

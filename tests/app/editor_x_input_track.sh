@@ -63,10 +63,13 @@ wait_for 'any(e["type"] == "saturation" and e.get("anchor") == "track:subject1"
 click 292 273  # the value slider near its right end: saturated
 xdotool keydown space && sleep 0.4 && xdotool keyup space && sleep 0.5
 wait_for 'sum(len(e["keyframes"]) for e in s["effects"] if e["type"] == "saturation") == 1' 30
-# Look 60 degrees to the left (right-button drag to the right, 0.2 degrees a pixel).
-xdotool mousemove --window "$win" 500 300 mousedown 3
-for x in $(seq 530 30 800); do xdotool mousemove --window "$win" "$x" 300 && sleep 0.05; done
-xdotool mouseup 3 && sleep 0.5
+# Look about 60 degrees to the left: two right-button drags of 280 pixels to the right (the
+# drag follows the cursor: 0.107 degrees a pixel at the centre of a 1280-pixel, 100-degree view).
+for _ in 1 2; do
+  xdotool mousemove --window "$win" 500 300 mousedown 3
+  for x in $(seq 528 28 780); do xdotool mousemove --window "$win" "$x" 300 && sleep 0.05; done
+  xdotool mouseup 3 && sleep 0.5
+done
 click 50 273  # the slider's left end: grey
 xdotool keydown space && sleep 0.4 && xdotool keyup space && sleep 0.5
 wait_for 'sum(len(e["keyframes"]) for e in s["effects"] if e["type"] == "saturation") == 2' 30
@@ -92,6 +95,8 @@ def fail(msg):
 on, off = keys[0], keys[1]
 if abs(on["azimuth_deg"]) > 3 or abs(on["altitude_deg"]) > 3:
     fail(f"the saturated keyframe is not on the card at frame 0: {on}")
+if not -66 < off["azimuth_deg"] < -54:
+    fail(f"two drags of 280 pixels did not turn the view about 60 degrees: {off}")
 if on["params"]["amount"] - off["params"]["amount"] < 1.0:
     fail(f"the two keyframes' values are not far apart: {keys}")
 points = {p["frame"]: p for p in track["points"]}

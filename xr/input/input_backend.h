@@ -62,11 +62,18 @@ struct SimConfig {
   int window_width = 1280;  //!< pixels; updated by ViewGeometryEvent
   int window_height = 720;
   double hfov_deg = 100.0;         //!< horizontal field of view of the desktop view (its default)
-  double look_deg_per_px = 0.2;    //!< head turn per pixel of right-button drag
+  /// Head turn per pixel of right-button drag; 0 (the default): the drag follows the cursor,
+  /// the turn that moves the view's centre by one pixel (look_deg_per_px_of).
+  double look_deg_per_px = 0.0;
   LookMode look = LookMode::Drag;  //!< which way a drag turns; the key I switches it
   bool left_handed = false;        //!< mouse and the main keys drive the left hand instead
   glm::dvec3 head_position{0.0, kDefaultEyeHeight, 0.0};
 };
+
+/// The turn of one pixel of drag: config.look_deg_per_px where set, else the angle one pixel
+/// spans at the centre of a pinhole of hfov_deg over window_width pixels (at 1280 pixels and 100
+/// degrees, 0.107 degrees: the image under the cursor moves with it).
+double look_deg_per_px_of(const SimConfig& config);
 
 struct InputBackendOptions {
   SimConfig sim;

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <deque>
 #include <set>
+#include <iomanip>
 #include <sstream>
 
 #include "effects/coords.h"
@@ -145,10 +146,11 @@ class SimInputBackend final : public InputBackend {
       // Drag: the image follows the mouse (drag right turns left, drag down looks up); mouselook:
       // a first-person camera (drag right turns right, drag down looks down).
       const double sign = config_.look == LookMode::Drag ? -1.0 : 1.0;
-      azimuth_deg_ += sign * (e.x - mouse_x_) * config_.look_deg_per_px;
+      const double rate = look_deg_per_px_of(config_);
+      azimuth_deg_ += sign * (e.x - mouse_x_) * rate;
       azimuth_deg_ = std::remainder(azimuth_deg_, 360.0);
-      altitude_deg_ = std::clamp(altitude_deg_ - sign * (e.y - mouse_y_) * config_.look_deg_per_px,
-                                 -kMaxPitchDeg, kMaxPitchDeg);
+      altitude_deg_ = std::clamp(altitude_deg_ - sign * (e.y - mouse_y_) * rate, -kMaxPitchDeg,
+                                 kMaxPitchDeg);
     }
     mouse_x_ = e.x;
     mouse_y_ = e.y;
@@ -260,6 +262,12 @@ std::optional<LookMode> parse_look_mode(std::string_view name) {
   return std::nullopt;
 }
 
+double look_deg_per_px_of(const SimConfig& config) {
+  if (config.look_deg_per_px > 0.0) return config.look_deg_per_px;
+  const double tan_h = std::tan(0.5 * config.hfov_deg * kDegToRad);
+  return std::atan(2.0 * tan_h / std::max(1, config.window_width)) * kRadToDeg;
+}
+
 std::unique_ptr<InputBackend> create_sim_backend(const SimConfig& config) {
   return std::make_unique<SimInputBackend>(config);
 }
@@ -269,8 +277,14 @@ std::string sim_bindings_text(const SimConfig& config) {
   const std::string main_name = main == Hand::Left ? "left" : "right";
   std::vector<std::pair<std::string, std::string>> rows;
   std::ostringstream look;
-  look << "turn the head (/user/head/pose), " << config.look_deg_per_px << " deg per pixel, "
-       << (config.look == LookMode::Drag ? "drag: as 360 players (left turns right)"
+  look << "turn the head (/user/head/pose), ";
+  if (config.look_deg_per_px > 0.0)
+    look << config.look_deg_per_px << " deg per pixel, ";
+  else
+    look << "following the cursor (" << std::fixed << std::setprecision(3)
+         << look_deg_per_px_of(config) << std::defaultfloat << " deg per pixel at "
+         << config.window_width << " px and " << config.hfov_deg << " deg), ";
+  look << (config.look == LookMode::Drag ? "drag: as 360 players (left turns right)"
                                          : "mouselook: as games (left turns left)");
   rows.emplace_back("right mouse button drag", look.str());
   rows.emplace_back(std::string(key_name(kLookToggleKey)),

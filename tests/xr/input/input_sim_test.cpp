@@ -133,7 +133,8 @@ void PrintTo(const LookRow& r, std::ostream* os) {
 class SimLook : public ::testing::TestWithParam<LookRow> {};
 TEST_P(SimLook, RightDragTurnsTheHeadTheChosenWayAtTheDocumentedSensitivity) {
   const LookRow& r = GetParam();
-  SimConfig cfg;  // 0.2 deg per pixel
+  SimConfig cfg;
+  cfg.look_deg_per_px = 0.2;  // a fixed rate (the default follows the cursor: below)
   cfg.look = r.mode;
   auto sim = create_sim_backend(cfg);
   sim->push_event(MouseMoveEvent{640, 360});
@@ -151,6 +152,37 @@ TEST_P(SimLook, RightDragTurnsTheHeadTheChosenWayAtTheDocumentedSensitivity) {
 INSTANTIATE_TEST_SUITE_P(Rows, SimLook, ::testing::ValuesIn(kLook),
                          [](const auto& i) { return std::string(i.param.name); });
 
+// The default drag follows the cursor: what was under the cursor when the button went down is
+// under it again after the drag, in a window of any size and field of view (at 0.2 degrees a
+// pixel, the rate before, it ran ahead of the cursor by 2.5 times at 1920 pixels and 100 degrees).
+TEST(Sim, TheDefaultDragKeepsThePointUnderTheCursorUnderIt) {
+  for (const auto& [width, hfov] : {std::pair{1280, 100.0}, {1920, 100.0}, {800, 60.0}}) {
+    auto sim = create_sim_backend({});
+    sim->push_event(ViewGeometryEvent{width, width * 9 / 16, hfov});
+    const double cx = width / 2.0, cy = width * 9 / 32.0;
+    // The world direction under the view's centre: straight ahead (azimuth 0).
+    sim->push_event(MouseMoveEvent{cx, cy});
+    sim->push_event(MouseButtonEvent{MouseButton::Right, true});
+    for (int i = 1; i <= 8; ++i) sim->push_event(MouseMoveEvent{cx + 5.0 * i, cy});
+    sim->push_event(MouseButtonEvent{MouseButton::Right, false});
+    const InputState s = sim->poll(1);
+    // The pinhole's ray through the cursor, 40 pixels right of the centre, turned by the head.
+    const double tan_h = std::tan(0.5 * hfov * 3.14159265358979323846 / 180.0);
+    const glm::dvec3 ray =
+        glm::normalize(glm::dvec3((2.0 * (cx + 40.0) / width - 1.0) * tan_h, 0.0, -1.0));
+    const glm::dvec3 world = s.head.orientation * ray;
+    const double az = std::atan2(world.x, -world.z) * 180.0 / 3.14159265358979323846;
+    // One pixel at the edge of the drag spans a little less than at the centre: within a tenth
+    // of a pixel's angle here, where 0.2 degrees a pixel would be 3 to 5 degrees off.
+    EXPECT_NEAR(az, 0.0, 0.1 * look_deg_per_px_of(SimConfig{})) << width << " px, " << hfov;
+  }
+  SimConfig wide;
+  wide.window_width = 2560;
+  EXPECT_NEAR(look_deg_per_px_of(wide), 0.5 * look_deg_per_px_of(SimConfig{}), 1e-4);
+  wide.look_deg_per_px = 0.2;
+  EXPECT_EQ(look_deg_per_px_of(wide), 0.2) << "a rate set is kept";
+}
+
 TEST(Sim, DragIsTheDefaultAndTheKeyISwitchesTheLookDirection) {
   EXPECT_EQ(SimConfig{}.look, LookMode::Drag);
   auto sim = create_sim_backend({});
@@ -160,8 +192,9 @@ TEST(Sim, DragIsTheDefaultAndTheKeyISwitchesTheLookDirection) {
     sim->push_event(MouseMoveEvent{x0 + 50, 360});
     sim->push_event(MouseButtonEvent{MouseButton::Right, false});
   };
+  const double turn = 50.0 * look_deg_per_px_of(SimConfig{});
   drag_right(600);
-  EXPECT_NEAR(azimuth_deg(sim->poll(1).head), -10.0, 1e-9);
+  EXPECT_NEAR(azimuth_deg(sim->poll(1).head), -turn, 1e-9);
   sim->push_event(KeyEvent{Key::I, true});
   sim->push_event(KeyEvent{Key::I, false});
   drag_right(600);
@@ -169,7 +202,7 @@ TEST(Sim, DragIsTheDefaultAndTheKeyISwitchesTheLookDirection) {
   sim->push_event(KeyEvent{Key::I, true});
   sim->push_event(KeyEvent{Key::I, false});
   drag_right(600);
-  EXPECT_NEAR(azimuth_deg(sim->poll(3).head), -10.0, 1e-9) << "and drag again";
+  EXPECT_NEAR(azimuth_deg(sim->poll(3).head), -turn, 1e-9) << "and drag again";
   EXPECT_EQ(parse_look_mode("mouselook"), LookMode::Mouselook);
   EXPECT_EQ(parse_look_mode("drag"), LookMode::Drag);
   EXPECT_FALSE(parse_look_mode("invert").has_value());
@@ -287,7 +320,7 @@ TEST(Sim, EventsApplyAtTheNextPollAndTimeIsStamped) {
 
 TEST(Sim, BindingsTextListsEveryBinding) {
   const std::string text = sim_bindings_text({});
-  for (const char* needle : {"right mouse button drag", "0.2 deg per pixel", "Space",
+  for (const char* needle : {"right mouse button drag", "following the cursor (0.107 deg per pixel", "Space",
                              "/user/hand/right/input/trigger/value",
                              "/user/hand/right/input/a/click", "/user/hand/left/input/menu/click",
                              "/user/hand/left/input/thumbstick/y = +1", "Left arrow"}) {

@@ -22,6 +22,7 @@ void sim_look_and_place(const std::filesystem::path& file) {
   SimConfig cfg;
   cfg.hfov_deg = 90.0;  // the view this session was first recorded in (recordings/README.md)
   cfg.look = LookMode::Mouselook;  // recorded before drag became the default
+  cfg.look_deg_per_px = 0.2;       // and before the drag followed the cursor
   auto rec = create_recording_backend(create_sim_backend(cfg), file,
                                       header("sim: look right 90 deg, up 10 deg, move the cursor, "
                                              "pull the trigger twice, push the left stick"));
