@@ -218,7 +218,8 @@ void add_track_knobs(Registry& r, bool quick) {
   const int sw = quick ? 512 : 1024, sf = quick ? 40 : 90;
   const SubjectClipSpec clips[] = {{SubjectMotion::Seam, "seam", sw, sf, 0.5},
                                    {SubjectMotion::Pole, "pole", sw, sf, 0.5},
-                                   {SubjectMotion::Approach, "approach", sw, sf, 0.7}};
+                                   {SubjectMotion::Approach, "approach", sw, sf, 0.7},
+                                   {SubjectMotion::Turn, "turn", sw, sf, 0.5}};
   for (const SubjectClipSpec& c : clips)
     for (const int t : quick ? std::vector<int>{32} : std::vector<int>{16, 24, 32, 48})
       r.add("track.subject_template", std::string(c.name) + " T=" + std::to_string(t),

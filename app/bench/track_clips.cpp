@@ -147,6 +147,8 @@ std::vector<SubjectPose> subject_path(SubjectMotion motion, int frames) {
     } else if (motion == SubjectMotion::Pole) {
       p.axes = Eigen::AngleAxisd((55.0 + 70.0 * s) * kDegToRad, Eigen::Vector3d::UnitX())
                    .toRotationMatrix();
+    } else if (motion == SubjectMotion::Turn) {
+      p.axes = effects::pose_rotation({{-30.0 + 60.0 * s, 0.0}, 90.0 * s});
     } else {
       p.axes = effects::pose_rotation({{-20.0 + 30.0 * s, -5.0 + 10.0 * s}, 0.0});
       // Seen from a distance falling from 3.3 to 1 (in units where it is 20 degrees at 1).

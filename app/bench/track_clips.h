@@ -51,6 +51,8 @@ enum class SubjectMotion {
   Seam,      //!< along altitude 10 from azimuth 150 to -150, across the seam; 10 degrees wide
   Pole,      //!< over the north pole on a great circle (altitude 55 up, down at azimuth 180)
   Approach,  //!< nearly straight on, growing from 6 to 20 degrees, hidden for a fifth of the clip
+  Turn,      //!< along the horizon from azimuth -30 to 30, turning 90 degrees in its own plane:
+             //!< its look changes every frame, as a subject turning round does
 };
 
 /// Where the patch is at a frame: its centre direction and the patch's axes (columns: right, up,

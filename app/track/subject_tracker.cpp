@@ -61,35 +61,51 @@ SubjectTracker::SubjectTracker(const cv::Mat& equirect, const Eigen::Vector3d& a
   const cv::Mat view = effects::sample_view(sampler_of(equirect, o_.coverage_deg),
                                             camera_of(axes_, focal_, o_.template_px));
   // The template at each size tried (one search view a frame, matched at several sizes).
+  templates_ = sizes_of(view);
+  renewed_ = templates_;
+}
+
+std::vector<cv::Mat> SubjectTracker::sizes_of(const cv::Mat& view) const {
+  std::vector<cv::Mat> out;
   for (int k = -kSizes; k <= kSizes; ++k) {
     const int side = static_cast<int>(std::lround(o_.template_px * std::pow(o_.scale_step, k)));
     cv::Mat t;
     cv::resize(view, t, cv::Size(side, side), 0, 0, k < 0 ? cv::INTER_AREA : cv::INTER_LINEAR);
-    templates_.push_back(t);
+    out.push_back(t);
   }
+  return out;
+}
+
+void SubjectTracker::renew(const effects::EquirectSampler& sampler) {
+  renewed_ = sizes_of(effects::sample_view(sampler, camera_of(axes_, focal_ / scale_, o_.template_px)));
 }
 
 SubjectSample SubjectTracker::start() const {
   return {last_, 1.0, o_.size_deg, true};
 }
 
-SubjectTracker::Match SubjectTracker::search(const cv::Mat& equirect, double side_widths) const {
+SubjectTracker::SearchView SubjectTracker::search_view(const effects::EquirectSampler& sampler,
+                                                       double side_widths) const {
   const int side = std::max(o_.template_px + 2,
                             static_cast<int>(std::lround(o_.template_px * side_widths)) / 2 * 2);
   const Eigen::Vector3d predicted = lost_ ? last_ : (velocity_ * last_).normalized();
   const Eigen::Matrix3d axes = Eigen::Quaterniond::FromTwoVectors(last_, predicted) * axes_;
-  // One view at the last size; the template at the sizes around it: a step either way, or while
-  // lost (the subject may have changed more) two and four steps either way.
   const effects::ViewCamera camera = camera_of(axes, focal_ / scale_, side);
-  const cv::Mat view = effects::sample_view(sampler_of(equirect, o_.coverage_deg), camera);
+  return {camera, effects::sample_view(sampler, camera)};
+}
+
+SubjectTracker::Match SubjectTracker::search(const SearchView& v,
+                                             const std::vector<cv::Mat>& templates) const {
+  // The view is at the last size; the template at the sizes around it: a step either way, or
+  // while lost (the subject may have changed more) two and four steps either way.
   const std::vector<int> sizes =
       lost_ ? std::vector<int>{-4, -2, 0, 2, 4} : std::vector<int>{-1, 0, 1};
   Match best;
   for (const int k : sizes) {
-    const cv::Mat& t = templates_[static_cast<std::size_t>(k + kSizes)];
-    if (t.cols >= side) continue;
+    const cv::Mat& t = templates[static_cast<std::size_t>(k + kSizes)];
+    if (t.cols >= v.view.cols) continue;
     cv::Mat map;
-    cv::matchTemplate(view, t, map, cv::TM_CCOEFF_NORMED);
+    cv::matchTemplate(v.view, t, map, cv::TM_CCOEFF_NORMED);
     double score = 0.0;
     cv::Point at;
     cv::minMaxLoc(map, nullptr, &score, nullptr, &at);
@@ -97,18 +113,25 @@ SubjectTracker::Match SubjectTracker::search(const cv::Mat& equirect, double sid
     // matchTemplate's (x, y) puts the template's top-left corner on pixel (x, y): its centre is
     // half its side further, in pixel-edge coordinates.
     const cv::Point2d p = refine_peak(map, at);
-    best = {score, camera.ray(p.x + 0.5 * t.cols, p.y + 0.5 * t.rows),
+    best = {score, v.camera.ray(p.x + 0.5 * t.cols, p.y + 0.5 * t.rows),
             scale_ * t.cols / static_cast<double>(o_.template_px)};
   }
   return best;
 }
 
 SubjectSample SubjectTracker::step(const cv::Mat& equirect) {
-  const Match m = search(equirect, lost_ ? 2.0 * o_.search : o_.search);
-  if (m.score < (lost_ ? o_.found_score : o_.lost_score)) {
-    lost_ = true;
-    velocity_ = Eigen::Quaterniond::Identity();
-    return {last_, 0.0, o_.size_deg * scale_, false};
+  const effects::EquirectSampler sampler = sampler_of(equirect, o_.coverage_deg);
+  const SearchView v = search_view(sampler, lost_ ? 2.0 * o_.search : o_.search);
+  const double bar = lost_ ? o_.found_score : o_.lost_score;
+  // The start's template wherever it matches; else the renewed one, above its own bar.
+  Match m = search(v, templates_);
+  if (m.score < bar) {
+    m = search(v, renewed_);
+    if (m.score < std::max(bar, o_.renew_score)) {
+      lost_ = true;
+      velocity_ = Eigen::Quaterniond::Identity();
+      return {last_, 0.0, o_.size_deg * scale_, false};
+    }
   }
   const Eigen::Quaterniond moved = Eigen::Quaterniond::FromTwoVectors(last_, m.direction);
   velocity_ = lost_ ? Eigen::Quaterniond::Identity() : moved;
@@ -116,6 +139,7 @@ SubjectSample SubjectTracker::step(const cv::Mat& equirect) {
   last_ = m.direction;
   scale_ = m.scale;
   lost_ = false;
+  renew(sampler);
   return {last_, std::min(1.0, m.score), o_.size_deg * scale_, true};
 }
 

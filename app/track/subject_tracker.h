@@ -11,16 +11,25 @@
 ///    subject's last size; the template, resized to that size and a scale_step either way (the
 ///    subject growing or shrinking), is found in it by normalised cross-correlation (OpenCV's
 ///    matchTemplate, TM_CCOEFF_NORMED) with a sub-pixel peak;
-///  - a peak below lost_score means the subject is not seen (hidden, gone, or changed beyond
-///    recognition): the last confident direction is held and searched around in a view twice as
-///    wide, with the template two and four steps either way too, until a peak of found_score picks
-///    it up again.
+///  - a subject's look changes (it turns round, its light changes): each frame it is seen, a
+///    second template is cut from that frame where it was found (at its size there). The start's
+///    template is tried first and decides wherever it matches (it cannot drift); where it does not,
+///    the renewed one is tried, with a higher bar (renew_score: a template renewed from a poor
+///    match would slide onto the background). Matthews, Ishikawa and Baker ("The template update
+///    problem", 2004) keep the first template against drift the same way;
+///  - a peak below lost_score (with either template) means the subject is not seen (hidden, gone,
+///    or changed beyond recognition): the last confident direction is held and searched around in
+///    a view twice as wide, with the templates two and four steps either way too, until a peak of
+///    found_score picks it up again.
 /// Confidence is the peak's correlation where the subject is seen, 0 where it is held.
 #pragma once
 
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 #include <vector>
+
+#include "effects/equirect_sampler.h"
+#include "effects/view_camera.h"
 
 namespace vdfx::app::track {
 
@@ -30,6 +39,7 @@ struct SubjectOptions {
   double search = 3.0;       //!< the search view's side, in subject widths
   double lost_score = 0.6;   //!< correlation below: not seen
   double found_score = 0.7;  //!< correlation needed to pick a lost subject up again
+  double renew_score = 0.8;  //!< correlation the renewed template needs where the start's fails
   double scale_step = 1.05;  //!< the sizes tried each frame: 1/step, 1, step times the last
   int coverage_deg = 360;    //!< of the frames' images: 360, or 180 (VR180)
 };
@@ -62,11 +72,24 @@ class SubjectTracker {
     Eigen::Vector3d direction;
     double scale = 1.0;
   };
-  Match search(const cv::Mat& equirect, double side_widths) const;
+  struct SearchView {
+    effects::ViewCamera camera;
+    cv::Mat view;
+  };
+  /// The view searched: `side_widths` subject widths wide at the last size, centred on the
+  /// prediction.
+  SearchView search_view(const effects::EquirectSampler& sampler, double side_widths) const;
+  /// The best match of `templates` (one of templates_, renewed_) in the view.
+  Match search(const SearchView& v, const std::vector<cv::Mat>& templates) const;
+  /// A template at every size tried from `view` (template_px square).
+  std::vector<cv::Mat> sizes_of(const cv::Mat& view) const;
+  /// The renewed template: the view of the last confident direction at the subject's last size.
+  void renew(const effects::EquirectSampler& sampler);
 
   SubjectOptions o_;
   double focal_ = 0.0;              //!< template pixels per radian at scale 1
   std::vector<cv::Mat> templates_;  //!< the start's view resized by scale_step^-4 .. ^4
+  std::vector<cv::Mat> renewed_;    //!< the same from the last frame the subject was seen in
   Eigen::Matrix3d axes_;            //!< the view's camera-to-world, centred on the last direction
   Eigen::Vector3d last_;            //!< the last confident direction
   Eigen::Quaterniond velocity_ = Eigen::Quaterniond::Identity();  //!< last frame's motion
