@@ -2,6 +2,9 @@
 /// @brief Sidecar reading and writing (format 1).
 #include "io/sidecar.h"
 
+#include <algorithm>
+#include <stdexcept>
+
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/sidecar_anchor.h"
@@ -134,6 +137,27 @@ std::string format_sidecar(const Sidecar& sidecar) {
 
 void write_sidecar(const std::filesystem::path& path, const Sidecar& sidecar) {
   write_file_atomic(path, format_sidecar(sidecar));
+}
+
+int rename_track(Sidecar& s, const std::string& from, const std::string& to) {
+  const auto named = [](const std::string& n) {
+    return [&n](const effects::SubjectTrack& t) { return t.name == n; };
+  };
+  const auto it = std::find_if(s.tracks.begin(), s.tracks.end(), named(from));
+  if (it == s.tracks.end() || !effects::valid_track_name(to) ||
+      std::any_of(s.tracks.begin(), s.tracks.end(), named(to)))
+    throw std::invalid_argument("rename_track: no track " + from + ", or " + to + " not free");
+  it->name = to;
+  int renamed = 0;
+  const auto rename = [&](effects::Anchor& a) {
+    if (a.kind != effects::Anchor::Kind::Track || a.track != from) return;
+    a.track = to;
+    ++renamed;
+  };
+  for (effects::EffectTrack& e : s.effects) rename(e.anchor);
+  for (effects::FlareEffect& f : s.flares) rename(f.anchor);
+  for (effects::GrainEffect& g : s.grains) rename(g.anchor);
+  return renamed;
 }
 
 Sidecar new_sidecar(VideoInfo video) {

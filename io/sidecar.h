@@ -59,6 +59,11 @@ struct Sidecar {
   bool operator==(const Sidecar&) const = default;
 };
 
+/// Renames the track `from` to `to` and every anchor naming it (effects, flares, grain layers:
+/// track:FROM becomes track:TO); returns how many anchors were renamed. The caller checks that
+/// `from` is there and `to` is a valid name not taken (throws std::invalid_argument otherwise).
+int rename_track(Sidecar& s, const std::string& from, const std::string& to);
+
 /// A new, empty sidecar for a video, as vdfx starts one: the author's time scale
 /// (effects::kAuthorTimeScale, docs/interpolation.md "Time") instead of the paper's c = 1.
 Sidecar new_sidecar(VideoInfo video);

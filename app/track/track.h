@@ -96,4 +96,21 @@ SubjectReport track_subject_into(const SubjectRequest& request, io::Sidecar& sid
 /// Follows the subject and writes --sidecar-out (stopped as run_track_camera is).
 SubjectReport run_track_subject(const SubjectRequest& request);
 
+/// `vdfx track rename FROM TO`: no video, only the sidecar.
+struct RenameRequest {
+  io::SidecarOptions sidecar;
+  std::string from, to;
+};
+
+struct RenameReport {
+  int anchors = 0;  //!< anchors that named the track (now track:TO)
+  std::string sidecar_path;
+};
+
+/// Renames the track `from` of the sidecar the command starts from (io/sidecar_target.h) to `to`,
+/// with every anchor naming it, and writes --sidecar-out. Throws UsageError (`to` not a valid
+/// name) and io::InputError (no sidecar to start from, no track `from`, `to` taken, an editor
+/// holding the sidecar's lock), naming the file and the JSON pointer.
+RenameReport run_track_rename(const RenameRequest& request);
+
 }  // namespace vdfx::app::track

@@ -1,7 +1,7 @@
 /// @file
-/// @brief `vdfx track camera|subject VIDEO ...` (docs/anchors.md): options into a
-/// track::CameraRequest or SubjectRequest, then run_track_camera / run_track_subject and their
-/// report.
+/// @brief `vdfx track camera|subject VIDEO ...` and `vdfx track rename FROM TO` (docs/anchors.md):
+/// options into a track::CameraRequest, SubjectRequest or RenameRequest, then run_track_camera /
+/// run_track_subject / run_track_rename and their report.
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -120,7 +120,26 @@ int cmd_track(const Args& args) {
       ->check(finite_range(1.0, 90.0));
   subject->add_flag("--replace", sub.replace, "replace a track of the same name");
 
+  track::RenameRequest ren;
+  CLI::App* rename = cli.add_subcommand(
+      "rename", "renames a track, and every anchor naming it, in the sidecar (no video needed)");
+  rename->add_option("from", ren.from, "the track's name now")->required();
+  rename->add_option("to", ren.to, "its new name ([A-Za-z0-9_-], up to 64)")->required();
+  rename->add_option("--sidecar-in", c.in,
+                     "rename in this sidecar (default: --sidecar-out, renamed in place)");
+  rename->add_option("--sidecar-out", c.out, "write the sidecar here")->required();
+  rename->add_flag("--force", ren.sidecar.force,
+                   "replace an existing --sidecar-out other than --sidecar-in");
+
   if (const auto code = parse_cli(cli, args)) return *code;
+  if (rename->parsed()) {
+    fill_sidecar(c, ren.sidecar);
+    const track::RenameReport report = track::run_track_rename(ren);
+    std::printf("track '%s' renamed '%s' (%d %s) -> %s\n", ren.from.c_str(), ren.to.c_str(),
+                report.anchors, report.anchors == 1 ? "anchor" : "anchors",
+                report.sidecar_path.c_str());
+    return kExitOk;
+  }
   const StopSignals stop;  // the tracking stops at its next frame, nothing written
   if (camera->parsed()) {
     fill_sidecar(c, cam.sidecar);

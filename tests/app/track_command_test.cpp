@@ -1,17 +1,21 @@
 /// @file
-/// @brief `vdfx track camera|subject` through the real executable (docs/anchors.md): what it
-/// writes into the sidecar and says, the CAMM track offered and used, a track added beside others
-/// and replaced only when asked, every hidden frame reported, and bad input with the contract's
-/// exit codes; and the library calls the editor makes (progress, cancel).
+/// @brief `vdfx track camera|subject|rename` through the real executable (docs/anchors.md): what
+/// it writes into the sidecar and says, the CAMM track offered and used, a track added beside
+/// others and replaced only when asked, every hidden frame reported, a track renamed with the
+/// anchors naming it, and bad input with the contract's exit codes; and the library calls the
+/// editor makes (progress, cancel).
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "app/track/track.h"
 #include "io/sidecar.h"
 #include "tests/app/command_test_util.h"
 #include "tests/app/track_test_util.h"
 #include "tests/camm_clip.h"
+#include "tests/lock_holder.h"
 
 namespace vdfx::app::testing {
 namespace {
@@ -124,6 +128,95 @@ TEST(TrackCommand, SubjectTracksAreAddedBesideOthersAndReplacedOnlyWhenAsked) {
               1.0)
         << "frame " << f;
   }
+}
+
+/// Two tracks over 20 frames ("ball" turning 2 degrees a frame, "other" still), a saturation
+/// anchored to ball, a flare anchored to ball, an exposure anchored to other.
+io::Sidecar two_track_sidecar() {
+  io::Sidecar s = io::new_sidecar({"clip.mp4", 30.0, 20, 512, 256});
+  effects::SubjectTrack ball{"ball", {}}, other{"other", {}};
+  for (int f = 0; f < 20; ++f) {
+    ball.points.push_back({f, {2.0 * f, 5.0}, 0.9});
+    other.points.push_back({f, {-90.0, 0.0}, 0.9});
+  }
+  s.tracks = {ball, other};
+  effects::EffectTrack sat;
+  sat.type = effects::EffectType::Saturation;
+  sat.anchor = {effects::Anchor::Kind::Track, "ball"};
+  sat.keyframes = {{{0.0, 5.0}, 0, {2.0}}, {{-60.0, 0.0}, 0, {0.2}}};
+  effects::EffectTrack exposure;
+  exposure.type = effects::EffectType::Exposure;
+  exposure.anchor = {effects::Anchor::Kind::Track, "other"};
+  exposure.keyframes = {{{-90.0, 0.0}, 0, {1.0}}, {{0.0, 0.0}, 0, {0.0}}};
+  s.effects = {sat, exposure};
+  effects::FlareEffect flare;
+  flare.anchor = {effects::Anchor::Kind::Track, "ball"};
+  flare.keyframes = {{{0.0, 5.0}, 0, {1.0}}};
+  s.flares = {flare};
+  return s;
+}
+
+std::string file_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(TrackCommand, RenameRenamesTheTrackAndEveryAnchorNamingItAndRefusesClashes) {
+  const fs::path dir = test_dir();
+  const fs::path file = dir / "r.vdfx.json";
+  io::write_sidecar(file, two_track_sidecar());
+  const std::string views = " --at 20,5,10 --at -40,0,15 --at -90,0,3";
+  const auto before = run_vdfx("eval " + file.string() + views);
+  ASSERT_EQ(before.exit_code, 0) << before.output;
+
+  const auto renamed = run_vdfx("track rename ball actor --sidecar-out " + file.string());
+  ASSERT_EQ(renamed.exit_code, 0) << renamed.output;
+  EXPECT_NE(renamed.output.find("track 'ball' renamed 'actor' (2 anchors)"), std::string::npos)
+      << renamed.output;
+  const io::Sidecar s = io::read_sidecar(file);
+  ASSERT_EQ(s.tracks.size(), 2u);
+  EXPECT_EQ(s.tracks[0].name, "actor");
+  EXPECT_EQ(s.tracks[1].name, "other");
+  EXPECT_EQ(s.tracks[0].points, two_track_sidecar().tracks[0].points);
+  EXPECT_EQ(effects::anchor_name(s.effects[0].anchor), "track:actor");
+  EXPECT_EQ(effects::anchor_name(s.effects[1].anchor), "track:other");
+  EXPECT_EQ(effects::anchor_name(s.flares[0].anchor), "track:actor");
+  // The effects evaluate exactly as before: only the name changed.
+  const auto after = run_vdfx("eval " + file.string() + views);
+  EXPECT_EQ(after.output, before.output);
+
+  // Refused, the file left as it was: a name not there, a name taken, a name not allowed, an
+  // editor holding the file.
+  const std::string kept = file_text(file);
+  const auto missing = run_vdfx("track rename ball x --sidecar-out " + file.string());
+  EXPECT_EQ(missing.exit_code, 1) << missing.output;
+  EXPECT_NE(missing.output.find("r.vdfx.json: /tracks: no track named 'ball' (it has actor, other)"),
+            std::string::npos)
+      << missing.output;
+  const auto taken = run_vdfx("track rename actor other --sidecar-out " + file.string());
+  EXPECT_EQ(taken.exit_code, 1) << taken.output;
+  EXPECT_NE(taken.output.find("/tracks/1/name: a track named 'other' is already there"),
+            std::string::npos)
+      << taken.output;
+  EXPECT_EQ(run_vdfx("track rename actor 'a b' --sidecar-out " + file.string()).exit_code, 2);
+  {
+    test_files::LockHolder editor(file);
+    const auto locked = run_vdfx("track rename actor b --sidecar-out " + file.string());
+    EXPECT_EQ(locked.exit_code, 1) << locked.output;
+  }
+  const auto nothing = run_vdfx("track rename actor b --sidecar-out " + (dir / "no.json").string());
+  EXPECT_EQ(nothing.exit_code, 1) << nothing.output;
+  EXPECT_NE(nothing.output.find("no.json: no such sidecar"), std::string::npos) << nothing.output;
+  EXPECT_EQ(file_text(file), kept);
+
+  // From --sidecar-in into another file: the input is left alone.
+  const fs::path copy = dir / "copy.vdfx.json";
+  ASSERT_EQ(run_vdfx("track rename actor walker --sidecar-in " + file.string() +
+                     " --sidecar-out " + copy.string())
+                .exit_code,
+            0);
+  EXPECT_EQ(file_text(file), kept);
+  EXPECT_EQ(io::read_sidecar(copy).tracks[0].name, "walker");
 }
 
 TEST(TrackCommand, SubjectSaysWhichFramesItHeld) {
