@@ -77,7 +77,8 @@ std::vector<cv::Mat> SubjectTracker::sizes_of(const cv::Mat& view) const {
 }
 
 void SubjectTracker::renew(const effects::EquirectSampler& sampler) {
-  renewed_ = sizes_of(effects::sample_view(sampler, camera_of(axes_, focal_ / scale_, o_.template_px)));
+  renewed_ =
+      sizes_of(effects::sample_view(sampler, camera_of(axes_, focal_ / scale_, o_.template_px)));
 }
 
 SubjectSample SubjectTracker::start() const {

@@ -338,7 +338,8 @@ RenameReport run_track_rename(const RenameRequest& r) {
   };
   if (named(r.from) == sidecar.tracks.end()) {
     std::string names;
-    for (const effects::SubjectTrack& t : sidecar.tracks) names += (names.empty() ? "" : ", ") + t.name;
+    for (const effects::SubjectTrack& t : sidecar.tracks)
+      names += (names.empty() ? "" : ", ") + t.name;
     throw io::InputError(path + ": /tracks: no track named '" + r.from + "' (" +
                          (names.empty() ? "it has none" : "it has " + names) + ")");
   }

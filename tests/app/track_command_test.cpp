@@ -190,8 +190,9 @@ TEST(TrackCommand, RenameRenamesTheTrackAndEveryAnchorNamingItAndRefusesClashes)
   const std::string kept = file_text(file);
   const auto missing = run_vdfx("track rename ball x --sidecar-out " + file.string());
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
-  EXPECT_NE(missing.output.find("r.vdfx.json: /tracks: no track named 'ball' (it has actor, other)"),
-            std::string::npos)
+  EXPECT_NE(
+      missing.output.find("r.vdfx.json: /tracks: no track named 'ball' (it has actor, other)"),
+      std::string::npos)
       << missing.output;
   const auto taken = run_vdfx("track rename actor other --sidecar-out " + file.string());
   EXPECT_EQ(taken.exit_code, 1) << taken.output;
@@ -211,8 +212,8 @@ TEST(TrackCommand, RenameRenamesTheTrackAndEveryAnchorNamingItAndRefusesClashes)
 
   // From --sidecar-in into another file: the input is left alone.
   const fs::path copy = dir / "copy.vdfx.json";
-  ASSERT_EQ(run_vdfx("track rename actor walker --sidecar-in " + file.string() +
-                     " --sidecar-out " + copy.string())
+  ASSERT_EQ(run_vdfx("track rename actor walker --sidecar-in " + file.string() + " --sidecar-out " +
+                     copy.string())
                 .exit_code,
             0);
   EXPECT_EQ(file_text(file), kept);

@@ -61,7 +61,7 @@ std::optional<LookMode> parse_look_mode(std::string_view name);
 struct SimConfig {
   int window_width = 1280;  //!< pixels; updated by ViewGeometryEvent
   int window_height = 720;
-  double hfov_deg = 100.0;         //!< horizontal field of view of the desktop view (its default)
+  double hfov_deg = 100.0;  //!< horizontal field of view of the desktop view (its default)
   /// Head turn per pixel of right-button drag; 0 (the default): the drag follows the cursor,
   /// the turn that moves the view's centre by one pixel (look_deg_per_px_of).
   double look_deg_per_px = 0.0;

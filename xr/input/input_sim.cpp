@@ -16,8 +16,8 @@
 #include <array>
 #include <cmath>
 #include <deque>
-#include <set>
 #include <iomanip>
+#include <set>
 #include <sstream>
 
 #include "effects/coords.h"
@@ -149,8 +149,8 @@ class SimInputBackend final : public InputBackend {
       const double rate = look_deg_per_px_of(config_);
       azimuth_deg_ += sign * (e.x - mouse_x_) * rate;
       azimuth_deg_ = std::remainder(azimuth_deg_, 360.0);
-      altitude_deg_ = std::clamp(altitude_deg_ - sign * (e.y - mouse_y_) * rate, -kMaxPitchDeg,
-                                 kMaxPitchDeg);
+      altitude_deg_ =
+          std::clamp(altitude_deg_ - sign * (e.y - mouse_y_) * rate, -kMaxPitchDeg, kMaxPitchDeg);
     }
     mouse_x_ = e.x;
     mouse_y_ = e.y;

@@ -320,8 +320,8 @@ TEST(Sim, EventsApplyAtTheNextPollAndTimeIsStamped) {
 
 TEST(Sim, BindingsTextListsEveryBinding) {
   const std::string text = sim_bindings_text({});
-  for (const char* needle : {"right mouse button drag", "following the cursor (0.107 deg per pixel", "Space",
-                             "/user/hand/right/input/trigger/value",
+  for (const char* needle : {"right mouse button drag", "following the cursor (0.107 deg per pixel",
+                             "Space", "/user/hand/right/input/trigger/value",
                              "/user/hand/right/input/a/click", "/user/hand/left/input/menu/click",
                              "/user/hand/left/input/thumbstick/y = +1", "Left arrow"}) {
     EXPECT_NE(text.find(needle), std::string::npos) << needle << "\n" << text;
