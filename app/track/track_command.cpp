@@ -86,7 +86,8 @@ void print_subject(const track::SubjectRequest& r, const track::SubjectReport& r
 
 int cmd_track(const Args& args) {
   CLI::App cli{
-      "the camera's orientation, or a subject's direction, at every frame (docs/anchors.md)",
+      "the camera's orientation, or a subject's direction, at every frame; or a track renamed "
+      "(docs/anchors.md)",
       "vdfx track"};
   cli.require_subcommand(1);
   SidecarArgs c;
