@@ -3,7 +3,6 @@
 #include "io/sidecar.h"
 
 #include <algorithm>
-#include <stdexcept>
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
@@ -139,14 +138,22 @@ void write_sidecar(const std::filesystem::path& path, const Sidecar& sidecar) {
   write_file_atomic(path, format_sidecar(sidecar));
 }
 
-int rename_track(Sidecar& s, const std::string& from, const std::string& to) {
-  const auto named = [](const std::string& n) {
-    return [&n](const effects::SubjectTrack& t) { return t.name == n; };
+int rename_track(Sidecar& s, const std::string& from, const std::string& to,
+                 const std::string& file) {
+  const auto named = [&s](const std::string& n) {
+    return std::find_if(s.tracks.begin(), s.tracks.end(),
+                        [&n](const effects::SubjectTrack& t) { return t.name == n; });
   };
-  const auto it = std::find_if(s.tracks.begin(), s.tracks.end(), named(from));
-  if (it == s.tracks.end() || !effects::valid_track_name(to) ||
-      std::any_of(s.tracks.begin(), s.tracks.end(), named(to)))
-    throw std::invalid_argument("rename_track: no track " + from + ", or " + to + " not free");
+  const auto it = named(from);
+  if (it == s.tracks.end()) {
+    std::string names;
+    for (const effects::SubjectTrack& t : s.tracks) names += (names.empty() ? "" : ", ") + t.name;
+    throw InputError(file + ": /tracks: no track named '" + from + "' (" +
+                     (names.empty() ? "it has none" : "it has " + names) + ")");
+  }
+  if (const auto taken = named(to); taken != s.tracks.end())
+    throw InputError(file + ": /tracks/" + std::to_string(taken - s.tracks.begin()) +
+                     "/name: a track named '" + to + "' is already there");
   it->name = to;
   int renamed = 0;
   const auto rename = [&](effects::Anchor& a) {

@@ -60,9 +60,11 @@ struct Sidecar {
 };
 
 /// Renames the track `from` to `to` and every anchor naming it (effects, flares, grain layers:
-/// track:FROM becomes track:TO); returns how many anchors were renamed. The caller checks that
-/// `from` is there and `to` is a valid name not taken (throws std::invalid_argument otherwise).
-int rename_track(Sidecar& s, const std::string& from, const std::string& to);
+/// track:FROM becomes track:TO); returns how many anchors were renamed. `to` must be a valid
+/// track name (the caller checks: a usage error). Throws InputError naming `file` and the JSON
+/// pointer, `s` unchanged, when there is no track `from` or a track is already named `to`.
+int rename_track(Sidecar& s, const std::string& from, const std::string& to,
+                 const std::string& file);
 
 /// A new, empty sidecar for a video, as vdfx starts one: the author's time scale
 /// (effects::kAuthorTimeScale, docs/interpolation.md "Time") instead of the paper's c = 1.

@@ -237,9 +237,14 @@ CameraReport run_track_camera(const CameraRequest& request) {
 
 namespace {
 
+/// A usage error where `name` (given as `what`) cannot name a track.
+void check_track_name(const std::string& what, const std::string& name) {
+  if (!effects::valid_track_name(name))
+    throw UsageError(what + " must be 1 to 64 of A-Z, a-z, 0-9, '_' and '-', got '" + name + "'");
+}
+
 void check_subject_request(const SubjectRequest& r) {
-  if (!effects::valid_track_name(r.name))
-    throw UsageError("--name must be 1 to 64 of A-Z, a-z, 0-9, '_' and '-', got '" + r.name + "'");
+  check_track_name("--name", r.name);
   if (!(r.options.size_deg >= 1.0 && r.options.size_deg <= 90.0))
     throw UsageError("--size must be within [1, 90] degrees");
 }
@@ -320,9 +325,7 @@ SubjectReport run_track_subject(const SubjectRequest& request) {
 }
 
 RenameReport run_track_rename(const RenameRequest& r) {
-  if (!effects::valid_track_name(r.to))
-    throw UsageError("the new name must be 1 to 64 of A-Z, a-z, 0-9, '_' and '-', got '" + r.to +
-                     "'");
+  check_track_name("the new name", r.to);
   // Without --sidecar-in the rename is in place: --force has nothing to replace.
   io::SidecarOptions options = r.sidecar;
   if (!options.in) options.force = false;
@@ -331,25 +334,9 @@ RenameReport run_track_rename(const RenameRequest& r) {
     throw io::InputError(r.sidecar.out.string() +
                          ": no such sidecar (and no --sidecar-in): there is no track to rename");
   io::Sidecar sidecar = io::read_sidecar_base(target, {});
-  const std::string path = target.base->string();
-  const auto named = [&](const std::string& n) {
-    return std::find_if(sidecar.tracks.begin(), sidecar.tracks.end(),
-                        [&](const effects::SubjectTrack& t) { return t.name == n; });
-  };
-  if (named(r.from) == sidecar.tracks.end()) {
-    std::string names;
-    for (const effects::SubjectTrack& t : sidecar.tracks)
-      names += (names.empty() ? "" : ", ") + t.name;
-    throw io::InputError(path + ": /tracks: no track named '" + r.from + "' (" +
-                         (names.empty() ? "it has none" : "it has " + names) + ")");
-  }
-  if (const auto taken = named(r.to); taken != sidecar.tracks.end())
-    throw io::InputError(path + ": /tracks/" + std::to_string(taken - sidecar.tracks.begin()) +
-                         "/name: a track named '" + r.to + "' is already there");
   RenameReport report;
-  report.anchors = io::rename_track(sidecar, r.from, r.to);
+  report.anchors = io::rename_track(sidecar, r.from, r.to, target.base->string());
   io::write_sidecar(r.sidecar.out, sidecar);
-  report.sidecar_path = r.sidecar.out.string();
   return report;
 }
 

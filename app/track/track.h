@@ -104,7 +104,6 @@ struct RenameRequest {
 
 struct RenameReport {
   int anchors = 0;  //!< anchors that named the track (now track:TO)
-  std::string sidecar_path;
 };
 
 /// Renames the track `from` of the sidecar the command starts from (io/sidecar_target.h) to `to`,

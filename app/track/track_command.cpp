@@ -138,7 +138,7 @@ int cmd_track(const Args& args) {
     const track::RenameReport report = track::run_track_rename(ren);
     std::printf("track '%s' renamed '%s' (%d %s) -> %s\n", ren.from.c_str(), ren.to.c_str(),
                 report.anchors, report.anchors == 1 ? "anchor" : "anchors",
-                report.sidecar_path.c_str());
+                ren.sidecar.out.string().c_str());
     return kExitOk;
   }
   const StopSignals stop;  // the tracking stops at its next frame, nothing written

@@ -7,8 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "app/track/track.h"
 #include "io/sidecar.h"
@@ -16,6 +14,7 @@
 #include "tests/app/track_test_util.h"
 #include "tests/camm_clip.h"
 #include "tests/lock_holder.h"
+#include "tests/test_files.h"
 
 namespace vdfx::app::testing {
 namespace {
@@ -156,11 +155,6 @@ io::Sidecar two_track_sidecar() {
   return s;
 }
 
-std::string file_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 TEST(TrackCommand, RenameRenamesTheTrackAndEveryAnchorNamingItAndRefusesClashes) {
   const fs::path dir = test_dir();
   const fs::path file = dir / "r.vdfx.json";
@@ -187,7 +181,7 @@ TEST(TrackCommand, RenameRenamesTheTrackAndEveryAnchorNamingItAndRefusesClashes)
 
   // Refused, the file left as it was: a name not there, a name taken, a name not allowed, an
   // editor holding the file.
-  const std::string kept = file_text(file);
+  const std::string kept = test_files::slurp(file);
   const auto missing = run_vdfx("track rename ball x --sidecar-out " + file.string());
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
   EXPECT_NE(
@@ -208,7 +202,7 @@ TEST(TrackCommand, RenameRenamesTheTrackAndEveryAnchorNamingItAndRefusesClashes)
   const auto nothing = run_vdfx("track rename actor b --sidecar-out " + (dir / "no.json").string());
   EXPECT_EQ(nothing.exit_code, 1) << nothing.output;
   EXPECT_NE(nothing.output.find("no.json: no such sidecar"), std::string::npos) << nothing.output;
-  EXPECT_EQ(file_text(file), kept);
+  EXPECT_EQ(test_files::slurp(file), kept);
 
   // From --sidecar-in into another file: the input is left alone.
   const fs::path copy = dir / "copy.vdfx.json";
@@ -216,7 +210,7 @@ TEST(TrackCommand, RenameRenamesTheTrackAndEveryAnchorNamingItAndRefusesClashes)
                      copy.string())
                 .exit_code,
             0);
-  EXPECT_EQ(file_text(file), kept);
+  EXPECT_EQ(test_files::slurp(file), kept);
   EXPECT_EQ(io::read_sidecar(copy).tracks[0].name, "walker");
 }
 
