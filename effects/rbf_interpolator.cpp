@@ -72,7 +72,7 @@ void RbfInterpolator::solve_global(std::span<const Keyframe> keyframes, int dime
   basis_ = select_polynomial_basis(points_);
   const RbfSolution s = solve_rbf(points_, kernel_, basis_);
   weights_t_ = s.weights.transpose();
-  coeffs_t_ = s.coefficients.transpose();
+  fold_polynomial(s.coefficients.transpose());
   diagnostics_ = s.diagnostics;
   find_frame_span();
 }
@@ -149,10 +149,26 @@ RbfInterpolator::RbfInterpolator(RbfPoints points, const RbfKernel& kernel, Poly
       kernel_(kernel),
       basis_(std::move(basis)),
       weights_t_(solution.weights.transpose()),
-      coeffs_t_(solution.coefficients.transpose()),
       diagnostics_(solution.diagnostics),
       neutral_(std::move(neutral)) {
+  fold_polynomial(solution.coefficients.transpose());
   find_frame_span();
+}
+
+void RbfInterpolator::fold_polynomial(const Eigen::MatrixXd& coefficients_t) {
+  const int d = static_cast<int>(coefficients_t.rows());
+  poly_const_ = Eigen::VectorXd::Zero(d);
+  poly_lin_ = Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor>::Zero(d, 4);
+  poly_shift_ << basis_.dir_shift, basis_.t_shift;
+  for (int j = 0; j < basis_.size(); ++j) {
+    const int c = basis_.columns[static_cast<std::size_t>(j)];
+    if (c == PolynomialBasis::One)
+      poly_const_ = coefficients_t.col(j);
+    else if (c == PolynomialBasis::T)
+      poly_lin_.col(3) = coefficients_t.col(j) / basis_.t_scale;
+    else
+      poly_lin_.col(c - PolynomialBasis::X) = coefficients_t.col(j) / basis_.dir_scale;
+  }
 }
 
 void RbfInterpolator::find_frame_span() {
@@ -192,15 +208,13 @@ void RbfInterpolator::evaluate_into(const Eigen::Vector3d& n, std::int64_t frame
   }
   // Integer difference first: exact for any frame numbers below 2^53.
   const double t = static_cast<double>(effective_frame(frame) - points_.frame_origin);
-  double prow[5];
-  basis_.row(n, t, prow);
+  const Eigen::Vector4d v = Eigen::Vector4d(n.x(), n.y(), n.z(), t) - poly_shift_;
   // Small products row by row, as dot products: Eigen's general matrix-vector product costs
   // tens of nanoseconds more, and more or less by where the caller's `out` lies (a stack's
   // anchored effects, 4 keyframes each, ran 19 % slower for it; docs/anchors.md). Past
   // kRowDotsUpTo centres its vectorised sweep over the columns is the faster.
   constexpr int kRowDotsUpTo = 32;
-  const Eigen::Map<const Eigen::RowVectorXd> p(prow, basis_.size());
-  for (int r = 0; r < d; ++r) out[r] = coeffs_t_.row(r).dot(p);
+  for (int r = 0; r < d; ++r) out[r] = poly_const_[r] + poly_lin_.row(r).dot(v.transpose());
 
   // Blocks of centres small enough to stay in L1 and on the stack (no allocation per call).
   constexpr int kBlock = 256;
@@ -245,6 +259,34 @@ void RbfInterpolator::evaluate_local(const Eigen::Vector3d& n, std::int64_t fram
   double other[kMaxLocalDimension];
   windows_[static_cast<std::size_t>(b.b)]->evaluate_into(n, f, other);
   for (int i = 0; i < dimension(); ++i) out[i] += b.weight * (other[i] - out[i]);
+}
+
+std::shared_ptr<const RbfInterpolator> RbfInterpolator::turned_for_frame(const Eigen::Matrix3d& m,
+                                                                         std::int64_t frame) const {
+  auto out = std::make_shared<RbfInterpolator>(*this);
+  if (!local()) {
+    out->turn_globally(m);
+    return out;
+  }
+  // Only the windows this frame blends are ever evaluated at it (evaluate_local).
+  const WindowBlend b = blend_at(layout_, static_cast<double>(effective_frame(frame)));
+  for (const int j : {b.a, b.b}) {
+    auto& w = out->windows_[static_cast<std::size_t>(j)];
+    if (w != windows_[static_cast<std::size_t>(j)]) continue;  // b.a == b.b: already turned
+    w = w->turned_for_frame(m, frame);
+  }
+  return out;
+}
+
+void RbfInterpolator::turn_globally(const Eigen::Matrix3d& m) {
+  // |m u - c| = |u - m^T c| (and so is the angle): the centres turn the other way.
+  for (int i = 0; i < points_.size(); ++i) {
+    const Eigen::Vector3d c = m.transpose() * points_.unit(i);
+    points_.x[i] = c.x(), points_.y[i] = c.y(), points_.z[i] = c.z();
+  }
+  // P's direction terms g (m u - s) = (g m) (u - m^T s).
+  poly_lin_.leftCols<3>() = (poly_lin_.leftCols<3>() * m).eval();
+  poly_shift_.head<3>() = m.transpose() * poly_shift_.head<3>();
 }
 
 }  // namespace vdfx::effects

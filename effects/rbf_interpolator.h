@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -87,12 +88,21 @@ class RbfInterpolator {
   /// own frames).
   const RbfDiagnostics& diagnostics() const { return diagnostics_; }
   const RbfKernel& kernel() const { return kernel_; }
-  /// The global solve's polynomial and centres (empty when local: see windows()).
+  /// The global solve's polynomial and centres (empty when local: see windows()); in a
+  /// turned_for_frame copy the centres are turned, the basis stays the solve's choice.
   const PolynomialBasis& basis() const { return basis_; }
   const RbfPoints& points() const { return points_; }
   const Eigen::VectorXd& neutral() const { return neutral_; }
   /// The frame an evaluation at `frame` uses: clamped into the keyframes' frame span when held.
   std::int64_t effective_frame(std::int64_t frame) const;
+  /// This interpolator with its directions turned by the rotation `m`, for evaluations at
+  /// `frame` only: its evaluate(u, frame) is this one's evaluate(m u, frame) to rounding, at the
+  /// cost of an evaluation without the turn (the distances to the turned centres are those to
+  /// the turned direction; the polynomial's direction terms are turned with them). Global: every
+  /// centre turned, O(centres); local: the one or two windows `frame` blends, the others shared
+  /// untouched (so other frames evaluate wrongly). For StackAtFrame.
+  std::shared_ptr<const RbfInterpolator> turned_for_frame(const Eigen::Matrix3d& m,
+                                                          std::int64_t frame) const;
 
  private:
   struct GlobalTag {};
@@ -103,12 +113,21 @@ class RbfInterpolator {
   void find_frame_span();
   void combine_window_diagnostics(std::span<const WindowCore> cores);
   void evaluate_local(const Eigen::Vector3d& unit, std::int64_t frame, double* out) const;
+  /// The global solve's centres and polynomial turned (turned_for_frame).
+  void turn_globally(const Eigen::Matrix3d& m);
+  /// Sets poly_* from the basis and the solve's coefficients (D x r).
+  void fold_polynomial(const Eigen::MatrixXd& coefficients_t);
 
   RbfPoints points_;  // structure of arrays: x, y, z, t contiguous
   RbfKernel kernel_;
   PolynomialBasis basis_;
   Eigen::MatrixXd weights_t_;  // D x m: one column per centre
-  Eigen::MatrixXd coeffs_t_;   // D x r
+  // P(n, t) = poly_const_ + poly_lin_ ([n; t] - poly_shift_): the basis's columns with their
+  // scales folded in, zero for columns it left out (no switch or division per evaluation, and
+  // a turn is a product with poly_lin_'s direction block).
+  Eigen::VectorXd poly_const_;
+  Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor> poly_lin_;
+  Eigen::Vector4d poly_shift_ = Eigen::Vector4d::Zero();
   RbfDiagnostics diagnostics_;
   Eigen::VectorXd neutral_;
   std::int64_t first_frame_ = 0, last_frame_ = 0;                //!< the keyframes' frame span

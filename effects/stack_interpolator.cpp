@@ -69,4 +69,23 @@ StackParams StackInterpolator::evaluate(const Eigen::Vector3d& unit, std::int64_
   return p;
 }
 
+namespace {
+StackInterpolator::Solutions turned_solutions(const StackInterpolator& stack, std::int64_t frame) {
+  StackInterpolator::Solutions out;
+  for (int e = 0; e < kEffectCount; ++e) {
+    const auto type = static_cast<EffectType>(e);
+    const RbfInterpolator* s = stack.interpolator(type);
+    if (!s) continue;
+    const AnchorFrames& a = stack.anchor(type);
+    // The RBF sees a.apply(u, frame) = R u: its centres turn by R instead, once.
+    out[static_cast<std::size_t>(e)] =
+        a.identity() ? stack.solution(type) : s->turned_for_frame(a.at(frame), frame);
+  }
+  return out;
+}
+}  // namespace
+
+StackAtFrame::StackAtFrame(const StackInterpolator& stack, std::int64_t frame)
+    : turned_(turned_solutions(stack, frame)), frame_(frame) {}
+
 }  // namespace vdfx::effects

@@ -39,6 +39,9 @@ class StackInterpolator {
   const RbfInterpolator* interpolator(EffectType type) const {
     return solutions_[index(type)].get();
   }
+  const std::shared_ptr<const RbfInterpolator>& solution(EffectType type) const {
+    return solutions_[index(type)];
+  }
   const AnchorFrames& anchor(EffectType type) const { return anchors_[index(type)].frames; }
 
  private:
@@ -50,6 +53,24 @@ class StackInterpolator {
   /// Per effect: it has the anchor of the last anchored active effect before it, so the
   /// direction turned for that one serves it too.
   std::array<bool, kEffectCount> reuse_{};
+};
+
+/// The stack at one frame, for many directions (the per-pixel grid: 32,768 evaluations of one
+/// frame): each anchored effect's centres are turned into the video frame at that frame once, so
+/// each evaluation costs what an unanchored one does (docs/anchors.md, "Measured: anchor cost").
+/// evaluate(d) is stack.evaluate(d, frame) to rounding. Immutable: share it between threads.
+class StackAtFrame {
+ public:
+  StackAtFrame(const StackInterpolator& stack, std::int64_t frame);
+  StackParams evaluate(const Direction& direction) const {
+    return turned_.evaluate(direction, frame_);
+  }
+  StackParams evaluate(const Eigen::Vector3d& unit) const { return turned_.evaluate(unit, frame_); }
+  std::int64_t frame() const { return frame_; }
+
+ private:
+  StackInterpolator turned_;  //!< no anchors: the anchored effects' solutions turned
+  std::int64_t frame_;
 };
 
 }  // namespace vdfx::effects

@@ -183,6 +183,15 @@ effects::StackParams Editor::params_for_view(const Direction& direction, std::in
   return sp;
 }
 
+std::function<effects::StackParams(const effects::Direction&)> Editor::params_at(
+    std::int64_t frame) const {
+  const PendingEdit* p = doc_.pending();
+  if (unaltered_ || (p && p->target().stack_effect()))
+    return [this, frame](const Direction& d) { return params_for_view(d, frame); };
+  return [at = std::make_shared<const effects::StackAtFrame>(doc_.interpolator(), frame)](
+             const Direction& d) { return at->evaluate(d); };
+}
+
 std::shared_ptr<const effects::RbfInterpolator> Editor::interpolant(EditTarget target) const {
   const PendingEdit* p = doc_.pending();
   if (p && p->target() == target && p->changes_interpolant()) return p->interpolant();

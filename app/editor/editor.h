@@ -20,6 +20,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,6 +74,11 @@ class Editor {
   /// held, the current effect's interpolant is the pending edit's.
   effects::StackParams params_for_view(const effects::Direction& direction,
                                        std::int64_t frame) const;
+  /// params_for_view at one frame for many directions (the per-pixel bake): without a pending
+  /// edit of a stack effect, the anchored effects' centres are turned once for the frame
+  /// (effects::StackAtFrame). Valid until the next update().
+  std::function<effects::StackParams(const effects::Direction&)> params_at(
+      std::int64_t frame) const;
   /// The panels for quad layers, with world poses (Panel::pose()) and textures (Panel::texture()).
   std::vector<ui::Panel*> panels() { return panels_.all(); }
   /// One of them by id (kEffectPanelId, ...), or null.

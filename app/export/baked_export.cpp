@@ -148,13 +148,13 @@ BakedGridCache::Grid make_grid(const effects::StackInterpolator& stack, std::int
   auto grid = std::make_shared<BakedGrid>();
   grid->fields = kFields;
   grid->rows.resize(gy.size() * kFields * static_cast<std::size_t>(w));
+  const effects::StackAtFrame at(stack, frame);  // anchored centres turned once for the frame
   cv::parallel_for_(cv::Range(0, static_cast<int>(gy.size())), [&](const cv::Range& r) {
     std::vector<double> exact(cols * kFields);  // one grid row's exact parameters
     for (int j = r.start; j < r.end; ++j) {
       const auto jj = static_cast<std::size_t>(j);
       for (std::size_t i = 0; i < cols; ++i)
-        flatten(stack.evaluate(pixel_direction(gx[i], gy[jj], w, h, coverage), frame),
-                &exact[i * kFields]);
+        flatten(at.evaluate(pixel_direction(gx[i], gy[jj], w, h, coverage)), &exact[i * kFields]);
       for (int k = 0; k < kFields; ++k) {
         float* plane = grid->rows.data() + (jj * kFields + static_cast<std::size_t>(k)) * w;
         for (int x = 0; x < w; ++x) {

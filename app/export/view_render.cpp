@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
@@ -224,8 +225,10 @@ ViewScene view_scene(const std::filesystem::path& input, const io::Sidecar& side
   s.equirect = std::move(equirect);
   s.eye_image = eye;
   // Every evaluation goes through this check: view mode once, per-pixel mode per cell or pixel.
-  s.evaluate = [&stack, &r](const effects::Direction& d) {
-    effects::StackParams p = stack.evaluate(d, r.frame);
+  // One frame: the anchored effects' centres are turned for it once (effects::StackAtFrame).
+  s.evaluate = [at = std::make_shared<const effects::StackAtFrame>(stack, r.frame),
+                &r](const effects::Direction& d) {
+    effects::StackParams p = at->evaluate(d);
     require_finite(p, r.sidecar_name, d, r.frame);
     return p;
   };

@@ -67,6 +67,10 @@ class EditorClient : public FrameClient {
   void update(const xr::InputState& input, std::int64_t display_time_ns, FrameInfo& info) override;
   effects::StackParams params(const effects::Direction& direction,
                               std::int64_t video_frame) override;
+  std::function<effects::StackParams(const effects::Direction&)> params_at(
+      std::int64_t video_frame) override {
+    return editor_.params_at(video_frame);
+  }
   unsigned active_effects() const override { return active_; }
   std::uint64_t params_revision() const override { return revision_; }
   std::vector<xr::QuadLayer> quads() override;

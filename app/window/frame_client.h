@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
@@ -62,6 +63,13 @@ class FrameClient {
   /// for every cell of the baked equirect grid (FrameLoopOptions::bake_width x bake_height).
   virtual effects::StackParams params(const effects::Direction& direction,
                                       std::int64_t video_frame) = 0;
+  /// params() at one video frame for many directions (the per-pixel bake). A client whose
+  /// stack has anchored effects overrides it to turn their centres once for the frame
+  /// (effects::StackAtFrame) instead of each cell's direction.
+  virtual std::function<effects::StackParams(const effects::Direction&)> params_at(
+      std::int64_t video_frame) {
+    return [this, video_frame](const effects::Direction& d) { return params(d, video_frame); };
+  }
   /// effects::shader_bit mask of the effects that have keyframes (only these are compiled in).
   virtual unsigned active_effects() const = 0;
   /// Changes whenever params() would answer differently for the same arguments (an edit); the

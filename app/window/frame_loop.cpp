@@ -169,8 +169,7 @@ struct FrameLoop::Impl {
   void bake(std::int64_t frame, FrameLoopStats& stats) {
     const auto t0 = Clock::now();
     const xr::ParamGrid grid =
-        xr::bake_param_grid([&](const effects::Direction& d) { return client.params(d, frame); },
-                            o.bake_width, o.bake_height);
+        xr::bake_param_grid(client.params_at(frame), o.bake_width, o.bake_height);
     compositor->set_param_grid(grid);
     stats.add_cpu("bake", ms_since(t0));
     grid_valid = true;

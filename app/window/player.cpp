@@ -83,6 +83,12 @@ effects::StackParams Player::params(const effects::Direction& direction, std::in
   return interp_.evaluate(direction, frame);
 }
 
+std::function<effects::StackParams(const effects::Direction&)> Player::params_at(
+    std::int64_t frame) {
+  return [at = std::make_shared<const effects::StackAtFrame>(interp_, frame)](
+             const effects::Direction& d) { return at->evaluate(d); };
+}
+
 std::vector<effects::FlareLayout> Player::flares(const xr::Pose& head, std::int64_t frame,
                                                  const io::Picture* picture) {
   return flare_layouts(flares_, head, frame, picture);

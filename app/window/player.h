@@ -36,6 +36,8 @@ class Player : public FrameClient {
   void on_desktop_event(const xr::DesktopEvent& event) override;
   void update(const xr::InputState& input, std::int64_t display_time_ns, FrameInfo& info) override;
   effects::StackParams params(const effects::Direction& direction, std::int64_t frame) override;
+  std::function<effects::StackParams(const effects::Direction&)> params_at(
+      std::int64_t frame) override;
   std::vector<effects::GrainFrame> grains(const xr::Pose& head_in_local,
                                           std::int64_t display_time_ns,
                                           std::int64_t frame) override;

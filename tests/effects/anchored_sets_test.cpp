@@ -143,6 +143,76 @@ HeadPose looking_at(const Direction& d) {
   return h;
 }
 
+/// A camera that turns about all three axes, differently at each of `frames` frames.
+CameraMotion tumbling_camera(int frames) {
+  CameraMotion c;
+  c.source = CameraMotion::Source::Given;
+  for (int f = 0; f < frames; ++f)
+    c.orientation.push_back(from_eigen(Eigen::AngleAxisd(0.7 * f, Eigen::Vector3d::UnitY()) *
+                                       Eigen::AngleAxisd(0.3 + 0.2 * f, Eigen::Vector3d::UnitX()) *
+                                       Eigen::AngleAxisd(-0.4 * f, Eigen::Vector3d::UnitZ())));
+  return c;
+}
+
+/// `count` keyframes of `type` at frames 0..frames-1; on the horizon only when `flat` (the
+/// polynomial then has no y term, which the turned solve must add).
+EffectTrack spread_keyframes(EffectType type, int count, int frames, bool flat, Anchor anchor) {
+  EffectTrack t;
+  t.type = type;
+  t.anchor = std::move(anchor);
+  const int dim = effect_spec(type).dimension();
+  for (int k = 0; k < count; ++k) {
+    const Direction d{wrap_azimuth_deg(137.0 * k), flat ? 0.0 : 80.0 * std::sin(1.3 * k)};
+    std::vector<double> v;
+    for (int i = 0; i < dim; ++i) v.push_back(0.5 + 0.4 * std::sin(2.1 * k + i));
+    t.keyframes.push_back({d, (k * 7) % frames, v});
+  }
+  return t;
+}
+
+TEST(StackAtFrame, EvaluatesAsTheStackAtItsFrameWithTheCentresTurnedOnce) {
+  constexpr int kClip = 400;
+  const CameraMotion camera = tumbling_camera(kClip);
+  SubjectTrack actor{"actor", {}};
+  for (int f = 0; f < kClip; ++f)
+    actor.points.push_back(
+        {f, {wrap_azimuth_deg(-170.0 + 3.0 * f), 40.0 * std::sin(0.05 * f)}, 1.0});
+  const std::vector<SubjectTrack> tracks{actor};
+  EffectTrack local = spread_keyframes(EffectType::Saturation, 300, kClip, false, kWorld);
+  local.interpolation = InterpolationSettings{};
+  local.interpolation->reach_s = 1.5;  // windows of a few seconds at 30 fps: blended
+  const StackInterpolator stack(
+      {spread_keyframes(EffectType::Exposure, 12, kClip, true, kWorld),
+       spread_keyframes(EffectType::Tint, 9, kClip, false, {Anchor::Kind::Track, "actor"}),
+       spread_keyframes(EffectType::Contrast, 5, kClip, false, {}), local},
+      {}, 30.0, {&camera, tracks});
+  ASSERT_TRUE(stack.interpolator(EffectType::Saturation)->local());
+  ASSERT_FALSE(stack.interpolator(EffectType::Exposure)->basis().has(PolynomialBasis::Y));
+  StackInterpolator::Solutions exposure_only{};
+  exposure_only[static_cast<std::size_t>(EffectType::Exposure)] =
+      stack.solution(EffectType::Exposure);
+  const StackInterpolator unanchored(exposure_only);  // the same solve, no anchor
+  double worst = 0.0, moved = 0.0;
+  for (const std::int64_t f : {0, 1, 57, 199, 250, 399, 450}) {
+    const StackAtFrame at(stack, f);
+    EXPECT_EQ(at.frame(), f);
+    for (double az = -175.0; az < 180.0; az += 25.0)
+      for (double alt = -85.0; alt < 90.0; alt += 34.0) {
+        const Direction d{az, alt};
+        const StackParams want = stack.evaluate(d, f), got = at.evaluate(d);
+        const StackParams unturned = unanchored.evaluate(d, f);
+        for (const double e :
+             {got.exposure_stops - want.exposure_stops, got.tint_gain[0] - want.tint_gain[0],
+              got.tint_gain[2] - want.tint_gain[2], got.contrast - want.contrast,
+              got.saturation - want.saturation})
+          worst = std::max(worst, std::abs(e));
+        moved = std::max(moved, std::abs(unturned.exposure_stops - want.exposure_stops));
+      }
+  }
+  EXPECT_LT(worst, 1e-11);
+  EXPECT_GT(moved, 0.1);  // the anchors do turn the field: the comparison is not vacuous
+}
+
 TEST(AnchoredFlares, IntensityAtTheTurnedGazeAndAFixedLightStaysInItsAnchorsFrame) {
   const CameraMotion camera = turning_camera();
   FlareEffect f;
