@@ -10,7 +10,6 @@ namespace vdfx::effects {
 namespace {
 
 constexpr std::string_view kTrackPrefix = "track:";
-constexpr std::size_t kMaxTrackName = 64;
 
 }  // namespace
 
@@ -34,7 +33,7 @@ std::optional<Anchor> parse_anchor(std::string_view text) {
 }
 
 bool valid_track_name(std::string_view name) {
-  if (name.empty() || name.size() > kMaxTrackName) return false;
+  if (name.empty() || name.size() > kMaxTrackNameLength) return false;
   return std::all_of(name.begin(), name.end(), [](char ch) {
     return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
            ch == '_' || ch == '-';

@@ -69,6 +69,8 @@ struct SubjectTrack {
   bool operator==(const SubjectTrack&) const = default;
 };
 
+/// The longest track name.
+inline constexpr std::size_t kMaxTrackNameLength = 64;
 /// Whether `name` may name a track: [A-Za-z0-9_-]{1,64}.
 bool valid_track_name(std::string_view name);
 

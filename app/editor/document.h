@@ -125,6 +125,10 @@ class Document {
   /// track NAME". Returns how many effects were anchored to it. Throws io::InputError when there
   /// is no track of that name.
   int remove_track(const std::string& name);
+  /// Renames the track and every anchor naming it (keyframes untouched: the track is the same).
+  /// One undo step, "rename track FROM to TO"; returns how many effects were anchored to it.
+  /// Throws io::InputError when there is no track FROM, TO is not a track name or is taken.
+  int rename_track(const std::string& from, const std::string& to);
 
   // ---- the edit being made (app/editor/pending_edit.h): at most one at a time
   /// Starts one (a new keyframe, or keyframe `moved` held) and returns it; replaces any other.
@@ -166,6 +170,10 @@ class Document {
   void resolve_anchors();
   void record(const std::string& label, EditTarget t, EffectSnapshot before);
   SourcesSnapshot sources() const { return {camera_, tracks_}; }
+  /// The targets anchored to the track of that name.
+  std::vector<EditTarget> anchored_to(const std::string& track_name) const;
+  /// Runs `body` (its changes) as one undo step named `label`; returns what it returns.
+  int one_step(const std::string& label, const std::function<int()>& body);
   /// Puts the camera and tracks back and re-resolves the anchors (undo, redo: after the step).
   void restore(const SourcesSnapshot& s);
   void record(const std::string& label, SourcesSnapshot before);

@@ -54,26 +54,69 @@ int Document::remove_track(const std::string& name) {
   if (std::none_of(tracks_.begin(), tracks_.end(), named))
     throw io::InputError("tracks: there is no track named " + name);
   const std::string label = "delete track " + name;
-  int anchored = 0;
-  begin_group(label);
-  try {
-    for (const EditTarget t : all_edit_targets()) {
-      const effects::Anchor& a = anchors_[idx(t)];
-      if (a.kind != effects::Anchor::Kind::Track || a.track != name) continue;
-      set_anchor(t, effects::Anchor{});
-      ++anchored;
-    }
+  return one_step(label, [&] {
+    const std::vector<EditTarget> anchored = anchored_to(name);
+    for (const EditTarget t : anchored) set_anchor(t, effects::Anchor{});
     SourcesSnapshot before = sources();
     tracks_.erase(std::find_if(tracks_.begin(), tracks_.end(), named));
     resolve_anchors();
     record(label, std::move(before));
+    return static_cast<int>(anchored.size());
+  });
+}
+
+int Document::rename_track(const std::string& from, const std::string& to) {
+  if (!track(from)) throw io::InputError("tracks: there is no track named " + from);
+  if (!effects::valid_track_name(to))
+    throw io::InputError("tracks: '" + to + "' is not a track name ([A-Za-z0-9_-]{1,64})");
+  if (track(to)) throw io::InputError("tracks: a track named " + to + " is already there");
+  const std::string label = "rename track " + from + " to " + to;
+  return one_step(label, [&] {
+    // The new name beside the old for a moment, so that every anchor resolves at every step.
+    SourcesSnapshot before = sources();
+    effects::SubjectTrack renamed = *track(from);
+    renamed.name = to;
+    tracks_.push_back(std::move(renamed));
+    record(label, std::move(before));
+    const std::vector<EditTarget> anchored = anchored_to(from);
+    for (const EditTarget t : anchored) {
+      EffectSnapshot was = snapshot(t);
+      anchors_[idx(t)].track = to;  // the same rotations: no keyframe moves
+      resolve_anchors();
+      record(std::string(t.name()) + " anchor", t, std::move(was));
+    }
+    before = sources();
+    const auto old = std::find_if(tracks_.begin(), tracks_.end(),
+                                  [&](const effects::SubjectTrack& s) { return s.name == from; });
+    *old = std::move(tracks_.back());  // in the old one's place
+    tracks_.pop_back();
+    resolve_anchors();
+    record(label, std::move(before));
+    return static_cast<int>(anchored.size());
+  });
+}
+
+std::vector<EditTarget> Document::anchored_to(const std::string& track_name) const {
+  std::vector<EditTarget> out;
+  for (const EditTarget t : all_edit_targets()) {
+    const effects::Anchor& a = anchors_[idx(t)];
+    if (a.kind == effects::Anchor::Kind::Track && a.track == track_name) out.push_back(t);
+  }
+  return out;
+}
+
+int Document::one_step(const std::string& label, const std::function<int()>& body) {
+  begin_group(label);
+  int result = 0;
+  try {
+    result = body();
   } catch (...) {
     end_group();
     throw;
   }
   end_group();
   undo_.rename_last(label);
-  return anchored;
+  return result;
 }
 
 void Document::restore(const SourcesSnapshot& s) {

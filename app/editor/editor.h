@@ -203,6 +203,14 @@ class Editor {
   /// "Delete NAME": removes the shown track (one undo step); effects anchored to it go back to
   /// the video frame, their keyframes where they show.
   void delete_track();
+  /// "Rename NAME": opens the on-screen keyboard (app/editor/rename_keyboard.h) on the shown
+  /// track's name. rename_key types one key's text (a character, "Shift" or "Back");
+  /// commit_rename renames the track and every anchor naming it (one undo step) and closes the
+  /// keyboard, or says why not and keeps it open; cancel_rename closes it.
+  void begin_rename();
+  void rename_key(const std::string& key);
+  void commit_rename();
+  void cancel_rename();
   /// The current effect's anchor (one undo step); false, with the reason said, when refused (a
   /// world anchor without the camera's motion, a track that is not there, during a grab).
   bool set_anchor(const effects::Anchor& anchor);
@@ -320,6 +328,7 @@ class Editor {
   double suggest_strength_ = 1.0;  //!< inside update(): the panels are shown once, at its end
   std::unique_ptr<TrackWorker> tracking_;  //!< the tracking job running, if any
   std::string track_name_;                 //!< the track last tracked or chosen
+  RenameView rename_;                      //!< the rename being typed (open: the keyboard shows)
 };
 
 }  // namespace vdfx::app

@@ -1,5 +1,5 @@
 /// @file
-/// @brief EditorPanels: building and placing the editor's panels in both layouts.
+/// @brief EditorPanels: building the editor's panels in both layouts.
 #include "app/editor/editor_panels.h"
 
 #include <algorithm>
@@ -11,16 +11,6 @@
 namespace vdfx::app {
 
 using effects::EffectType;
-
-xr::Pose anchor_pose(Anchor anchor, const xr::InputState& input) {
-  switch (anchor) {
-    case Anchor::LeftHand: return input.left.grip;
-    case Anchor::RightHand: return input.right.grip;
-    case Anchor::Head: return input.head;
-    case Anchor::World: break;
-  }
-  return {};
-}
 
 namespace {
 
@@ -50,12 +40,17 @@ std::string grain_style_title(effects::GrainStyle s) {
 
 EditorPanels::EditorPanels(std::shared_ptr<const ui::FontSet> fonts, std::int64_t frame_count,
                            PanelLayout layout, DesktopViewport viewport)
-    : layout_(layout), marker_(std::make_unique<TrackMarker>(fonts)), viewport_(viewport) {
+    : layout_(layout),
+      marker_(std::make_unique<TrackMarker>(fonts)),
+      keyboard_(std::make_unique<RenameKeyboard>(fonts)),
+      viewport_(viewport) {
   if (layout_ == PanelLayout::Hands) {
     build_effect_panel(fonts, kEffectW, kEffectH, glm::dvec2(0.25, 0.25 * kEffectH / kEffectW));
     build_hands_timeline(fonts, frame_count);
     effect_place_ = {Anchor::LeftHand, offset({0.05, 0.16, -0.05}, -20.0)};
     timeline_place_ = {Anchor::RightHand, offset({-0.05, 0.12, -0.05}, -20.0)};
+    keyboard_offset_ = offset({0.0, -0.12, -0.6}, 10.0);  // ahead, below the eyes
+    keyboard_place_ = {Anchor::Head, keyboard_offset_};
   } else {
     build_desktop_panels(fonts, frame_count);
     set_viewport(viewport);
@@ -207,6 +202,7 @@ void EditorPanels::build_hands_timeline(std::shared_ptr<const ui::FontSet> fonts
 PanelControl EditorPanels::control_of(const ui::Widget* w, EditTarget target) const {
   if (!w) return PanelControl::None;
   if (const PanelControl c = track_.control_of(w); c != PanelControl::None) return c;
+  if (const PanelControl c = keyboard_->control_of(w); c != PanelControl::None) return c;
   if (w == effect_widgets_[static_cast<std::size_t>(target.index())] ||
       (target.is_grain() && w == grain_size_))
     return PanelControl::EffectValues;
@@ -283,54 +279,6 @@ void EditorPanels::show_effect(EditTarget target) {
     auto_light_->set_rect(ui::split_cols(light, 2, 1, t.gap));
   }
   menu_->select(target.index());
-}
-
-std::vector<ui::Panel*> EditorPanels::all() {
-  // Drawn in this order: the track's marker belongs to the scene, under the panels.
-  std::vector<ui::Panel*> out{&marker_->panel(), effect_.get(), timeline_.get()};
-  if (views_) out.push_back(views_.get());
-  if (hud_) out.push_back(hud_.get());
-  return out;
-}
-
-ui::Panel* EditorPanels::panel(std::string_view id) {
-  for (ui::Panel* p : all())
-    if (p->id() == id) return p;
-  return nullptr;
-}
-
-const ui::Panel* EditorPanels::panel(std::string_view id) const {
-  return const_cast<EditorPanels*>(this)->panel(id);
-}
-
-const PanelPlacement& EditorPanels::placement(std::string_view id) const {
-  if (id == kTimelinePanelId) return timeline_place_;
-  if (id == kViewsPanelId) return views_place_;
-  if (id == kHudPanelId) return hud_place_;
-  return effect_place_;
-}
-
-void EditorPanels::place(const xr::InputState& input) {
-  const auto put = [&](ui::Panel* p, const PanelPlacement& place) {
-    if (p && place.anchor != Anchor::World)
-      p->set_world_pose(anchor_pose(place.anchor, input) * place.offset);
-  };
-  put(effect_.get(), effect_place_);
-  put(timeline_.get(), timeline_place_);
-  put(views_.get(), views_place_);
-  put(hud_.get(), hud_place_);
-  marker_->set_head(input.head);
-}
-
-std::vector<ui::Panel*> EditorPanels::reachable_by(xr::Hand hand) {
-  // On the desktop the mouse is the right hand's ray; the sim's left hand only has buttons.
-  if (layout_ == PanelLayout::Desktop && hand == xr::Hand::Left) return {};
-  const Anchor own = hand == xr::Hand::Left ? Anchor::LeftHand : Anchor::RightHand;
-  std::vector<ui::Panel*> out;
-  if (effect_place_.anchor != own) out.push_back(effect_.get());
-  if (timeline_place_.anchor != own) out.push_back(timeline_.get());
-  if (views_) out.push_back(views_.get());  // the HUD takes no input
-  return out;
 }
 
 void EditorPanels::lock_timeline(bool locked) {

@@ -34,6 +34,7 @@
 
 #include "app/editor/edit_target.h"
 #include "app/editor/editor_view.h"
+#include "app/editor/rename_keyboard.h"
 #include "app/editor/track_marker.h"
 #include "app/editor/track_section.h"
 #include "effects/effect_types.h"
@@ -121,6 +122,10 @@ enum class PanelControl {
   TrackCorrect,     //!< "Correct here": the shown track re-tracked from the view centre
   TrackAnchor,      //!< the current effect's anchor: the next one
   TrackDelete,      //!< "Delete NAME": the shown track removed
+  TrackRename,      //!< "Rename NAME": the on-screen keyboard opened on the shown track
+  RenameKey,        //!< one of its keys (RenameKeyboard::key_of)
+  RenameCancel,
+  RenameCommit,
 };
 
 class EditorPanels {
@@ -176,6 +181,7 @@ class EditorPanels {
   const ui::TimelineStrip& strip() const { return *strip_; }
   const TrackSection& track_section() const { return track_; }
   const TrackMarker& track_marker() const { return *marker_; }
+  const RenameKeyboard& rename_keyboard() const { return *keyboard_; }
   const ui::Plot& plot() const { return *plot_; }
   const ui::Minimap& minimap() const { return *minimap_; }
   const ui::Toggle& minimap_toggle() const { return *show_minimap_; }
@@ -234,6 +240,11 @@ class EditorPanels {
 
   TrackSection track_;  //!< Desktop: on the views panel; Hands: on the timeline panel
   std::unique_ptr<TrackMarker> marker_;  //!< the shown track in the view (no input)
+  /// Shown while a track is renamed: over the view (Desktop); Hands: in the world where it was
+  /// opened, keyboard_offset_ from the head then (not head-locked: it would swim with the head).
+  std::unique_ptr<RenameKeyboard> keyboard_;
+  PanelPlacement keyboard_place_;
+  xr::Pose keyboard_offset_;
 
   // timeline panel
   ui::Button* play_ = nullptr;

@@ -16,6 +16,7 @@ constexpr int kDeskEffectW = 800, kDeskEffectH = 1600;
 constexpr int kDeskTimelineW = 2310, kDeskTimelineH = 560;
 constexpr int kDeskViewsW = 800, kDeskViewsH = 1140;
 constexpr int kDeskHudW = 1500, kDeskHudH = 110;
+constexpr int kDeskRenameW = RenameKeyboard::kWidth, kDeskRenameH = RenameKeyboard::kHeight;
 constexpr int kDeskMargin = 12;         //!< screen pixels between panels and the window edge
 constexpr double kDeskDistanceM = 1.0;  //!< head-locked quads at this depth
 /// Layout pixels the Desktop layout needs across and down the window at scale 1.
@@ -90,6 +91,7 @@ void EditorPanels::set_viewport(const DesktopViewport& v) {
   put(*timeline_, timeline_place_, screen_rect(kTimelinePanelId));
   put(*views_, views_place_, screen_rect(kViewsPanelId));
   put(*hud_, hud_place_, screen_rect(kHudPanelId));
+  put(keyboard_->panel(), keyboard_place_, screen_rect(kRenamePanelId));
 }
 
 ScreenRect EditorPanels::screen_rect(std::string_view id) const {
@@ -105,6 +107,10 @@ ScreenRect EditorPanels::screen_rect(std::string_view id) const {
   if (id == kViewsPanelId)
     return {v.width - m - px(kDeskViewsW), m, px(kDeskViewsW), px(kDeskViewsH)};
   if (id == kHudPanelId) return {(v.width - px(kDeskHudW)) / 2, m, px(kDeskHudW), px(kDeskHudH)};
+  if (id == kRenamePanelId)  // over the view, just above the timeline
+    return {(v.width - px(kDeskRenameW)) / 2,
+            v.height - 2 * m - px(kDeskTimelineH) - px(kDeskRenameH), px(kDeskRenameW),
+            px(kDeskRenameH)};
   return {};
 }
 

@@ -85,6 +85,7 @@ void EditorPanels::show_timeline(const EditorView& v) {
   strip_->set_track_band({v.track.first, v.track.last, v.track.held});
   track_.show(v.track);
   marker_->show(v.track);
+  keyboard_->show(v.track.rename);
   if (hint_) hint_->set_text(v.status);
   if (hud_line_) {
     hud_line_->set_text(v.hud_line);

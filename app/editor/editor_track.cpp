@@ -1,7 +1,8 @@
 /// @file
 /// @brief The editor's tracking (docs/editor.md, "Tracking"): a subject or the camera tracked on
 /// a worker with progress and cancel, its result one undo step; a track corrected from a point
-/// dropped at the current frame; the current effect's anchor chosen.
+/// dropped at the current frame; the current effect's anchor chosen; a track renamed.
+#include <cctype>
 
 #include "app/editor/editor.h"
 #include "app/editor/text_format.h"
@@ -111,6 +112,48 @@ void Editor::delete_track() {
       "; undo brings it back");
 }
 
+void Editor::begin_rename() {
+  if (tracking_) return say("tracking runs: cancel it before renaming a track");
+  const effects::SubjectTrack* shown = shown_track();
+  if (!shown) return say("no track to rename");
+  rename_ = RenameView{true, shown->name, shown->name, false, false};
+  say("type the new name of " + shown->name + " on the keys, then Rename");
+}
+
+void Editor::rename_key(const std::string& key) {
+  if (!rename_.open) return;
+  if (key == "Shift") {
+    rename_.upper = !rename_.upper;
+  } else if (key == "Back") {
+    if (!rename_.text.empty()) rename_.text.pop_back();
+  } else if (key.size() == 1 && rename_.text.size() < effects::kMaxTrackNameLength) {
+    const auto c = static_cast<unsigned char>(key[0]);
+    rename_.text += static_cast<char>(rename_.upper ? std::toupper(c) : c);
+  }
+}
+
+void Editor::commit_rename() {
+  if (!rename_.open) return;
+  if (doc_.pending()) return say("let go of the keyframe before renaming a track");
+  const std::string from = rename_.from, to = rename_.text;
+  try {
+    const int anchored = doc_.rename_track(from, to);
+    if (track_name_ == from) track_name_ = to;
+    rename_ = {};
+    say("renamed track " + from + " to " + to +
+        (anchored ? ": " + std::to_string(anchored) + (anchored == 1 ? " effect" : " effects") +
+                        " anchored to it"
+                  : std::string()) +
+        "; undo takes the old name back");
+  } catch (const io::InputError& e) {
+    say(e.what());
+  }
+}
+
+void Editor::cancel_rename() {
+  rename_ = {};
+}
+
 const effects::SubjectTrack* Editor::shown_track() const {
   const effects::Anchor& a = doc_.anchor(effect_);
   if (a.kind == effects::Anchor::Kind::Track)
@@ -167,6 +210,9 @@ TrackView Editor::track_view() const {
       v.marker_held = p.confidence <= 0.0;
     }
   }
+  v.rename = rename_;
+  v.rename.can_commit =
+      rename_.open && effects::valid_track_name(rename_.text) && !doc_.track(rename_.text);
   if (tracking_)
     v.line = "tracking " + v.running + fmt(" %.0f %%", 100.0 * v.progress) + ": press to cancel";
   else if (t)

@@ -38,6 +38,9 @@ void clicked(Editor& ed, PanelControl control) {
     case PanelControl::TrackCorrect: ed.correct_track(); break;
     case PanelControl::TrackAnchor: ed.next_anchor(); break;
     case PanelControl::TrackDelete: ed.delete_track(); break;
+    case PanelControl::TrackRename: ed.begin_rename(); break;
+    case PanelControl::RenameCancel: ed.cancel_rename(); break;
+    case PanelControl::RenameCommit: ed.commit_rename(); break;
     default: break;
   }
 }
@@ -80,6 +83,8 @@ void handle_panel_event(Editor& ed, const EditorPanels& p, const ui::Event& e) {
       break;
     default: break;
   }
+  if (e.kind == ui::EventKind::Clicked && control == PanelControl::RenameKey)
+    ed.rename_key(p.rename_keyboard().key_of(e.source));
   if (e.kind == ui::EventKind::Clicked) clicked(ed, control);
   if (e.kind == ui::EventKind::ValueChanged) changed(ed, control, e.new_value);
 }

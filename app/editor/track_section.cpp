@@ -19,14 +19,16 @@ void TrackSection::build(ui::Panel& p, ui::Stack& col, bool two_rows) {
   correct_ = &p.add<Button>("track_correct", "Correct here");
   anchor_ = &p.add<Button>("track_anchor", "Anchor: video");
   delete_ = &p.add<Button>("track_delete", "Delete track");
-  Button* const order[] = {subject_, camera_, correct_, anchor_, delete_};
+  rename_ = &p.add<Button>("track_rename", "Rename track");
+  Button* const order[] = {subject_, camera_, correct_, anchor_, rename_, delete_};
   if (two_rows) {
     const Rect a = col.next(row_h), b = col.next(row_h), c = col.next(row_h);
     for (int i = 0; i < 4; ++i) order[i]->set_rect(split_cols(i < 2 ? a : b, 2, i % 2, gap));
+    rename_->set_rect(split_cols(c, 2, 0, gap));
     delete_->set_rect(split_cols(c, 2, 1, gap));  // under the anchor, away from Track subject
   } else {
     const Rect row = col.next(row_h);
-    for (int i = 0; i < 5; ++i) order[i]->set_rect(split_cols(row, 5, i, gap));
+    for (int i = 0; i < 6; ++i) order[i]->set_rect(split_cols(row, 6, i, gap));
   }
 }
 
@@ -49,6 +51,8 @@ void TrackSection::show(const TrackView& v) {
   anchor_->set_enabled(v.running.empty());
   delete_->set_label(v.track.empty() ? "Delete track" : "Delete " + v.track);
   delete_->set_enabled(v.running.empty() && !v.track.empty());
+  rename_->set_label(v.track.empty() ? "Rename track" : "Rename " + v.track);
+  rename_->set_enabled(v.running.empty() && !v.track.empty() && !v.rename.open);
 }
 
 PanelControl TrackSection::control_of(const ui::Widget* w) const {
@@ -58,6 +62,7 @@ PanelControl TrackSection::control_of(const ui::Widget* w) const {
   if (w == correct_) return PanelControl::TrackCorrect;
   if (w == anchor_) return PanelControl::TrackAnchor;
   if (w == delete_) return PanelControl::TrackDelete;
+  if (w == rename_) return PanelControl::TrackRename;
   return PanelControl::None;
 }
 

@@ -16,8 +16,8 @@ enum class PanelControl;
 
 class TrackSection {
  public:
-  /// Adds the buttons to `p`, taking their rows from `col`: two rows of two and Delete below
-  /// (narrow panels), or one row of five.
+  /// Adds the buttons to `p`, taking their rows from `col`: two rows of two and Rename and
+  /// Delete below (narrow panels), or one row of six.
   void build(ui::Panel& p, ui::Stack& col, bool two_rows);
   /// Writes the view onto the buttons (setters compare: an unchanged view redraws nothing).
   void show(const TrackView& view);
@@ -29,6 +29,7 @@ class TrackSection {
   const ui::Button& correct_button() const { return *correct_; }
   const ui::Button& anchor_button() const { return *anchor_; }
   const ui::Button& delete_button() const { return *delete_; }
+  const ui::Button& rename_button() const { return *rename_; }
 
  private:
   ui::Button* subject_ = nullptr;
@@ -36,6 +37,7 @@ class TrackSection {
   ui::Button* correct_ = nullptr;
   ui::Button* anchor_ = nullptr;  //!< "Anchor: video" / world / track:NAME; a press: the next
   ui::Button* delete_ = nullptr;  //!< "Delete NAME": the shown track
+  ui::Button* rename_ = nullptr;  //!< "Rename NAME": the shown track (app/editor/rename_keyboard.h)
 };
 
 }  // namespace vdfx::app

@@ -12,6 +12,15 @@
 
 namespace vdfx::app {
 
+/// The track rename in progress (app/editor/rename_keyboard.h shows it).
+struct RenameView {
+  bool open = false;
+  std::string from;         //!< the track being renamed
+  std::string text;         //!< the name typed so far
+  bool upper = false;       //!< Shift: letters upper case
+  bool can_commit = false;  //!< the text is a track name, new and free
+};
+
 struct TrackView {
   bool available = false;  //!< a video to track
   /// The run in progress: which button it belongs to ("subject", "camera", "correct") and how far
@@ -29,6 +38,7 @@ struct TrackView {
   /// The shown track at the current frame: where the marker is drawn, and whether it is held.
   std::optional<effects::Direction> marker;
   bool marker_held = false;
+  RenameView rename;
 };
 
 }  // namespace vdfx::app

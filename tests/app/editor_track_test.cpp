@@ -99,6 +99,47 @@ TEST(TrackDocument, DeletingATrackPutsItsEffectsBackOnTheVideoInOneUndoStep) {
   EXPECT_TRUE(doc.tracks().empty());
 }
 
+TEST(TrackDocument, RenamingATrackRenamesEveryAnchorNamingItInOneUndoStep) {
+  Document doc(test::empty_sidecar(10), DocumentOptions{{.async = false}});
+  doc.put_track(line_track("walker", 10, 0.0));
+  doc.put_track(line_track("dog", 10, 50.0));
+  doc.set_anchor(EffectType::Saturation, {Anchor::Kind::Track, "walker"});
+  doc.set_anchor(EffectType::Contrast, {Anchor::Kind::Track, "walker"});
+  doc.set_anchor(EffectType::Exposure, {Anchor::Kind::Track, "dog"});
+  doc.add_keyframe(EffectType::Saturation, effects::Keyframe{Direction{5.0, 0.0}, 5, {2.0}});
+  const std::vector<effects::Keyframe> keyframes = doc.keyframes(EffectType::Saturation);
+  const std::string before = io::format_sidecar(doc.sidecar());
+  io::Sidecar renamed = doc.sidecar();  // as `vdfx track rename` would write it, below
+  const std::size_t steps = doc.undo_stack().undo_size();
+
+  // Refused, the document as it was: no such track, a name taken, not a name.
+  EXPECT_THROW(doc.rename_track("cat", "alice"), io::InputError);
+  EXPECT_THROW(doc.rename_track("walker", "dog"), io::InputError);
+  EXPECT_THROW(doc.rename_track("walker", "al ice"), io::InputError);
+  EXPECT_THROW(doc.rename_track("walker", ""), io::InputError);
+  EXPECT_EQ(io::format_sidecar(doc.sidecar()), before);
+  EXPECT_EQ(doc.undo_stack().undo_size(), steps);
+
+  EXPECT_EQ(doc.rename_track("walker", "Alice_2"), 2);
+  ASSERT_EQ(doc.tracks().size(), 2u);
+  EXPECT_EQ(doc.tracks()[0].name, "Alice_2");  // in the old one's place
+  EXPECT_EQ(doc.tracks()[0].points, line_track("x", 10, 0.0).points);
+  EXPECT_EQ(doc.track("walker"), nullptr);
+  EXPECT_EQ(effects::anchor_name(doc.anchor(EffectType::Saturation)), "track:Alice_2");
+  EXPECT_EQ(effects::anchor_name(doc.anchor(EffectType::Contrast)), "track:Alice_2");
+  EXPECT_EQ(effects::anchor_name(doc.anchor(EffectType::Exposure)), "track:dog");
+  EXPECT_EQ(doc.keyframes(EffectType::Saturation), keyframes);  // not one bit moved
+  EXPECT_EQ(doc.undo_stack().undo_size(), steps + 1);
+  EXPECT_EQ(doc.undo_stack().next_undo_label(), "rename track walker to Alice_2");
+  // The sidecar is the one `vdfx track rename` writes.
+  io::rename_track(renamed, "walker", "Alice_2", "before.vdfx.json");
+  EXPECT_EQ(io::format_sidecar(doc.sidecar()), io::format_sidecar(renamed));
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(io::format_sidecar(doc.sidecar()), before);
+  ASSERT_TRUE(doc.redo());
+  EXPECT_EQ(effects::anchor_name(doc.anchor(EffectType::Contrast)), "track:Alice_2");
+}
+
 TEST(TrackDocument, TheCameraIsOneUndoStepWithOneOrientationPerFrame) {
   Document doc(test::empty_sidecar(10), DocumentOptions{{.async = false}});
   EXPECT_THROW(doc.set_camera(still_camera(9)), io::InputError);
@@ -277,22 +318,34 @@ TEST(EditorTrack, ACorrectionReTracksFromThePointDroppedAsOneUndoStep) {
 
 // ---- the buttons, as a person presses them
 
-TEST(EditorTrackPanel, DesktopClicksTrackTheCameraAndASubjectAndSetTheAnchor) {
-  auto sim = xr::create_sim_backend({});
-  Editor ed(clip_sidecar(), DocumentOptions{{.async = false}},
-            on_clip(false, PanelLayout::Desktop));
-  std::int64_t t = 0;
-  const auto step = [&] {
+/// The editor on the clip in the Desktop layout, its widgets clicked through the desktop sim.
+struct DesktopClicks {
+  DesktopClicks()
+      : sim(xr::create_sim_backend({})),
+        ed(clip_sidecar(), DocumentOptions{{.async = false}},
+           on_clip(false, PanelLayout::Desktop)) {
+    step();
+  }
+  void step() {
     for (int i = 0; i < 3; ++i, t += test::kFrameNs) ed.update(sim->poll(t), t);
-  };
-  const auto click = [&](const ui::Button& b) {
-    const glm::dvec2 c = test::cursor_for(kViewsPanelId, b.rect().centre(), kFrames);
+  }
+  void click(const char* panel, const ui::Widget& w) {
+    const glm::dvec2 c = test::cursor_for(panel, w.rect().centre(), kFrames);
     sim->push_event(xr::MouseMoveEvent{c.x, c.y});
     sim->push_event(xr::MouseButtonEvent{xr::MouseButton::Left, true});
     sim->push_event(xr::MouseButtonEvent{xr::MouseButton::Left, false});
     step();
-  };
-  step();
+  }
+  std::unique_ptr<xr::InputBackend> sim;
+  Editor ed;
+  std::int64_t t = 0;
+};
+
+TEST(EditorTrackPanel, DesktopClicksTrackTheCameraAndASubjectAndSetTheAnchor) {
+  DesktopClicks d;
+  Editor& ed = d.ed;
+  const auto step = [&] { d.step(); };
+  const auto click = [&](const ui::Button& b) { d.click(kViewsPanelId, b); };
   const TrackSection& s = ed.ui().track_section();
   EXPECT_FALSE(s.correct_button().enabled());  // nothing to correct yet
   click(s.camera_button());
@@ -317,6 +370,62 @@ TEST(EditorTrackPanel, DesktopClicksTrackTheCameraAndASubjectAndSetTheAnchor) {
   EXPECT_FALSE(s.delete_button().enabled());  // nothing left to delete
   EXPECT_EQ(s.delete_button().label(), "Delete track");
   EXPECT_EQ(s.anchor_button().label(), "Anchor: video");
+  ASSERT_TRUE(ed.undo());
+  step();
+  EXPECT_NE(ed.document().track("subject1"), nullptr);
+  EXPECT_EQ(s.anchor_button().label(), "Anchor: subject1");
+}
+
+TEST(EditorTrackPanel, DesktopClicksRenameATrackOnTheOnScreenKeys) {
+  DesktopClicks d;
+  Editor& ed = d.ed;
+  const auto step = [&] { d.step(); };
+  const auto click_on = [&](const char* panel, const ui::Widget& w) { d.click(panel, w); };
+  const RenameKeyboard& keys = ed.ui().rename_keyboard();
+  const auto type = [&](const std::string& key) {
+    const ui::Button* b = keys.key(key);
+    ASSERT_NE(b, nullptr) << key;
+    click_on(kRenamePanelId, *b);
+  };
+  const TrackSection& s = ed.ui().track_section();
+  EXPECT_FALSE(s.rename_button().enabled());  // no track yet
+  click_on(kViewsPanelId, s.subject_button());
+  ASSERT_NE(ed.document().track("subject1"), nullptr) << ed.hud_message();
+  click_on(kViewsPanelId, s.anchor_button());  // video -> the track (no camera)
+  ASSERT_EQ(effects::anchor_name(ed.document().anchor(EffectType::Exposure)), "track:subject1");
+  EXPECT_FALSE(keys.panel().visible());
+  EXPECT_EQ(s.rename_button().label(), "Rename subject1");
+
+  // Opened on the name, typed over, and cancelled: nothing changes.
+  click_on(kViewsPanelId, s.rename_button());
+  EXPECT_TRUE(keys.panel().visible());
+  type("Back");
+  type("9");
+  EXPECT_EQ(ed.track_view().rename.text, "subject9");
+  click_on(kRenamePanelId, keys.cancel_button());
+  EXPECT_FALSE(keys.panel().visible());
+  EXPECT_NE(ed.document().track("subject1"), nullptr);
+  const std::size_t steps = ed.document().undo_stack().undo_size();
+
+  // Opened again: cleared, typed with Shift for the capital, and renamed.
+  click_on(kViewsPanelId, s.rename_button());
+  for (int i = 0; i < 8; ++i) type("Back");
+  EXPECT_EQ(ed.track_view().rename.text, "");
+  EXPECT_FALSE(keys.commit_button().enabled());  // not a name
+  for (const char* k : {"Shift", "a", "Shift", "l", "i", "c", "e", "_", "2"}) type(k);
+  EXPECT_EQ(ed.track_view().rename.text, "Alice_2");
+  EXPECT_TRUE(keys.commit_button().enabled());
+  click_on(kRenamePanelId, keys.commit_button());
+  EXPECT_FALSE(keys.panel().visible());
+  EXPECT_EQ(ed.document().track("subject1"), nullptr);
+  ASSERT_NE(ed.document().track("Alice_2"), nullptr) << ed.hud_message();
+  EXPECT_EQ(effects::anchor_name(ed.document().anchor(EffectType::Exposure)), "track:Alice_2");
+  EXPECT_EQ(ed.hud_message(),
+            "renamed track subject1 to Alice_2: 1 effect anchored to it; undo takes the old name "
+            "back");
+  EXPECT_EQ(ed.document().undo_stack().undo_size(), steps + 1);
+  EXPECT_EQ(s.rename_button().label(), "Rename Alice_2");
+  EXPECT_EQ(s.anchor_button().label(), "Anchor: Alice_2");
   ASSERT_TRUE(ed.undo());
   step();
   EXPECT_NE(ed.document().track("subject1"), nullptr);
@@ -348,6 +457,55 @@ TEST(EditorTrackPanel, TheHeadsetsLeftTriggerPressesTheSameButtonsOnTheTimelineP
   frame(&b, 0.0);
   ASSERT_NE(ed.document().track("subject1"), nullptr) << ed.hud_message();
   EXPECT_EQ(ed.document().undo_stack().undo_size(), 1u);
+}
+
+TEST(EditorTrackPanel, TheHeadsetsKeyboardStaysWhereItOpenedAndEitherRayTypesOnIt) {
+  Editor ed(clip_sidecar(), DocumentOptions{{.async = false}}, on_clip(false));
+  xr::ActionSync sync;
+  std::int64_t t = 0;
+  // A frame with the head looking at azimuth `head_az` and the right hand's ray on `aim_at`.
+  const auto frame = [&](double head_az, const ui::Widget* aim_at, double trigger) {
+    xr::InputState in = test::looking(head_az, 0.0, ++t);
+    in.right.tracked = true;
+    in.right.aim = {{0.2, 1.3, -0.1}, xr::look_rotation(0.0, -30.0)};
+    if (aim_at) {
+      const glm::dvec3 target = ed.panel(kRenamePanelId)->world_of_pixel(aim_at->rect().centre());
+      const glm::dvec3 d = glm::normalize(target - in.right.aim.position);
+      const Direction dir = effects::from_unit(Eigen::Vector3d(d.x, d.y, d.z));
+      in.right.aim.orientation = xr::look_rotation(dir.azimuth_deg, dir.altitude_deg);
+    }
+    in.right.grip = in.right.aim;
+    in.right.trigger = trigger;
+    ed.update(sync.sync(in), t);
+  };
+  const auto press = [&](double head_az, const ui::Widget& w) {
+    frame(head_az, &w, 0.0);
+    frame(head_az, &w, 1.0);
+    frame(head_az, &w, 0.0);
+  };
+  frame(0.0, nullptr, 0.0);
+  ed.track_subject();
+  ASSERT_TRUE(ed.wait_for_tracking(std::chrono::seconds(60)));
+  frame(0.0, nullptr, 0.0);
+  ASSERT_NE(ed.document().track("subject1"), nullptr) << ed.hud_message();
+  const RenameKeyboard& keys = ed.ui().rename_keyboard();
+  ed.begin_rename();
+  frame(0.0, nullptr, 0.0);
+  frame(0.0, nullptr, 0.0);
+  ASSERT_TRUE(keys.panel().visible());
+  const glm::dvec3 opened = keys.panel().pose().position;
+  EXPECT_LT(opened.z, -0.4);  // ahead of the head, which looks down -z
+  frame(50.0, nullptr, 0.0);  // the head turns: the keyboard stays in the world
+  EXPECT_LT(glm::length(keys.panel().pose().position - opened), 1e-9);
+  press(50.0, *keys.key("x"));
+  EXPECT_EQ(ed.track_view().rename.text, "subject1x");
+  press(50.0, keys.cancel_button());
+  EXPECT_FALSE(keys.panel().visible());
+  ed.begin_rename();  // opened again while the head looks 50 degrees to the right
+  frame(50.0, nullptr, 0.0);
+  frame(50.0, nullptr, 0.0);
+  EXPECT_GT(glm::length(keys.panel().pose().position - opened), 0.3);
+  EXPECT_EQ(ed.document().track("subject1")->name, "subject1");  // cancelled: unchanged
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 # the track, drops a saturated keyframe on the card and a grey one 60 degrees away, then plays.
 # Checked afterwards on what the editor saved: the track follows the card, the effect is
 # anchored to it, and `vdfx eval` finds the saturated value on the card wherever it has walked
-# (not where it started). Screenshots before and after playing are left in the output folder.
+# (not where it started); then renames the track "card" on the on-screen keyboard, and the effect's
+# anchor follows. Screenshots before and after playing and of the keyboard are left in the output
+# folder.
 # Button places are those of the desktop layout in a 1280 x 720 window
 # (tests/app/golden/edit_desktop_view.png shows them).
 # usage: editor_x_input_track.sh VDFX OUT_DIR   (needs $DISPLAY; ctest runs it under Xvfb)
@@ -76,6 +78,15 @@ wait_for 'sum(len(e["keyframes"]) for e in s["effects"] if e["type"] == "saturat
 click 383 515  # play
 sleep 3
 shot playing.png
+# Rename the track on the on-screen keyboard (over the view, above the timeline): its name
+# rubbed out with Back, "card" typed, Rename; the effect's anchor follows.
+click 1034 117  # Rename subject1
+for _ in $(seq 8); do click 877 393; done  # Back
+for key in "587 439" "376 393" "534 347" "481 393"; do click $key; done  # c a r d
+shot rename.png
+click 877 260  # Rename
+wait_for '[t["name"] for t in s["tracks"]] == ["card"] and any(e.get("anchor") == "track:card"
+              for e in s["effects"])' 30
 kill -INT $pid
 wait $pid || true
 trap - EXIT
@@ -85,7 +96,7 @@ python3 - "$vdfx" <<'PY'
 import json, math, subprocess, sys
 vdfx = sys.argv[1]
 s = json.load(open("walk.vdfx.json"))
-track = next(t for t in s["tracks"] if t["name"] == "subject1")
+track = next(t for t in s["tracks"] if t["name"] == "card")
 sat = next(e for e in s["effects"] if e["type"] == "saturation")
 keys = sorted(sat["keyframes"], key=lambda k: -k["params"]["amount"])
 def truth(f):

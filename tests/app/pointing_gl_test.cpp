@@ -115,8 +115,9 @@ class PointingScene {
         ed_(sidecar(), DocumentOptions{{.async = false}}, editor_options()),
         sim_(xr::create_sim_backend(sim_config())),
         comp_(compositor_config(profile_)) {
-    ed_.update(sim_->poll(t_), t_);  // panels placed for the head at rest
-    panels_ = ed_.panels();
+    ed_.update(sim_->poll(t_), t_);    // panels placed for the head at rest
+    for (ui::Panel* p : ed_.panels())  // as the window draws them: hidden ones not
+      if (p->visible()) panels_.push_back(p);
     targets_ = paint_ids(panels_, images_);
     quads_ = id_quads(panels_, images_, textures_);
     comp_.set_video_frame(cv::Mat(32, 64, CV_8UC3, cv::Scalar::all(0)));
