@@ -9,6 +9,14 @@
 
 namespace vdfx::app {
 
+namespace {
+/// Throws io::InputError for a name a track may not have.
+void check_track_name(const std::string& name) {
+  if (!effects::valid_track_name(name))
+    throw io::InputError("tracks: '" + name + "' is not a track name ([A-Za-z0-9_-]{1,64})");
+}
+}  // namespace
+
 const effects::SubjectTrack* Document::track(std::string_view name) const {
   for (const effects::SubjectTrack& t : tracks_)
     if (t.name == name) return &t;
@@ -28,8 +36,7 @@ void Document::set_camera(effects::CameraMotion camera) {
 }
 
 void Document::put_track(effects::SubjectTrack track) {
-  if (!effects::valid_track_name(track.name))
-    throw io::InputError("tracks: '" + track.name + "' is not a track name ([A-Za-z0-9_-]{1,64})");
+  check_track_name(track.name);
   if (track.points.empty()) throw io::InputError("tracks/" + track.name + ": no points");
   for (const effects::TrackPoint& p : track.points)
     if (p.frame < 0 || p.frame >= video_.frames)
@@ -67,8 +74,7 @@ int Document::remove_track(const std::string& name) {
 
 int Document::rename_track(const std::string& from, const std::string& to) {
   if (!track(from)) throw io::InputError("tracks: there is no track named " + from);
-  if (!effects::valid_track_name(to))
-    throw io::InputError("tracks: '" + to + "' is not a track name ([A-Za-z0-9_-]{1,64})");
+  check_track_name(to);
   if (track(to)) throw io::InputError("tracks: a track named " + to + " is already there");
   const std::string label = "rename track " + from + " to " + to;
   return one_step(label, [&] {

@@ -54,6 +54,7 @@ RenameKeyboard::RenameKeyboard(std::shared_ptr<const ui::FontSet> fonts)
           p.add<Button>("rename_key_" + std::to_string(keys_.size()), shown(chars[i], false));
       b.set_rect(split_cols(row, kColumns, first + static_cast<int>(i), t.gap));
       keys_.push_back(&b);
+      chars_ += chars[i];
     }
     if (r == 2) {  // after "l"
       back_ = &p.add<Button>("rename_back", "Back");
@@ -72,9 +73,7 @@ void RenameKeyboard::show(const RenameView& v) {
   if (!v.open) return;
   title_->set_text("Rename " + v.from + " to");
   text_->set_text(v.text + "_");
-  std::size_t k = 0;
-  for (const char* row : kRows)
-    for (const char* c = row; *c; ++c) keys_[k++]->set_label(shown(*c, v.upper));
+  for (std::size_t k = 0; k < keys_.size(); ++k) keys_[k]->set_label(shown(chars_[k], v.upper));
   shift_->set_label(v.upper ? "SHIFT" : "Shift");
   commit_->set_enabled(v.can_commit);
 }
@@ -89,10 +88,8 @@ PanelControl RenameKeyboard::control_of(const ui::Widget* w) const {
 std::string RenameKeyboard::key_of(const ui::Widget* w) const {
   if (w == shift_) return "Shift";
   if (w == back_) return "Back";
-  std::size_t k = 0;
-  for (const char* row : kRows)
-    for (const char* c = row; *c; ++c, ++k)
-      if (keys_[k] == w) return std::string(1, *c);
+  for (std::size_t k = 0; k < keys_.size(); ++k)
+    if (keys_[k] == w) return std::string(1, chars_[k]);
   return {};
 }
 
@@ -100,12 +97,9 @@ const ui::Button* RenameKeyboard::key(const std::string& text) const {
   if (text == "Shift") return shift_;
   if (text == "Back") return back_;
   if (text.size() != 1) return nullptr;
-  const char want = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
-  std::size_t k = 0;
-  for (const char* row : kRows)
-    for (const char* c = row; *c; ++c, ++k)
-      if (*c == want) return keys_[k];
-  return nullptr;
+  const std::size_t k =
+      chars_.find(static_cast<char>(std::tolower(static_cast<unsigned char>(text[0]))));
+  return k == std::string::npos ? nullptr : keys_[k];
 }
 
 }  // namespace vdfx::app

@@ -47,7 +47,8 @@ class RenameKeyboard {
   std::unique_ptr<ui::Panel> panel_;
   ui::Label* title_ = nullptr;
   ui::Label* text_ = nullptr;
-  std::vector<ui::Button*> keys_;  //!< characters, then Shift and Back
+  std::vector<ui::Button*> keys_;  //!< one per character: keys_[k] types chars_[k]
+  std::string chars_;
   ui::Button* shift_ = nullptr;
   ui::Button* back_ = nullptr;
   ui::Button* cancel_ = nullptr;

@@ -432,22 +432,29 @@ TEST(EditorTrackPanel, DesktopClicksRenameATrackOnTheOnScreenKeys) {
   EXPECT_EQ(s.anchor_button().label(), "Anchor: subject1");
 }
 
+/// A tracked hand at `position` whose ray (and grip) points at `aim_at`'s centre on `panel`, or
+/// along `rest` when there is none, with its trigger at `trigger`.
+void aim_hand(xr::HandState& hand, const glm::dvec3& position, const glm::dquat& rest,
+              const ui::Panel& panel, const ui::Widget* aim_at, double trigger) {
+  hand.tracked = true;
+  hand.aim = {position, rest};
+  if (aim_at) {
+    const glm::dvec3 d = glm::normalize(panel.world_of_pixel(aim_at->rect().centre()) - position);
+    const Direction dir = effects::from_unit(Eigen::Vector3d(d.x, d.y, d.z));
+    hand.aim.orientation = xr::look_rotation(dir.azimuth_deg, dir.altitude_deg);
+  }
+  hand.grip = hand.aim;
+  hand.trigger = trigger;
+}
+
 TEST(EditorTrackPanel, TheHeadsetsLeftTriggerPressesTheSameButtonsOnTheTimelinePanel) {
   Editor ed(clip_sidecar(), DocumentOptions{{.async = false}}, on_clip(false));
   xr::ActionSync sync;
   std::int64_t t = 0;
   const auto frame = [&](const ui::Button* aim_at, double trigger) {
     xr::InputState in = test::looking(0.0, 0.0, ++t);
-    in.left.tracked = true;
-    in.left.aim = {{-0.2, 1.3, -0.1}, xr::look_rotation(-40.0, -30.0)};
-    if (aim_at) {
-      const glm::dvec3 target = ed.panel(kTimelinePanelId)->world_of_pixel(aim_at->rect().centre());
-      const glm::dvec3 d = glm::normalize(target - in.left.aim.position);
-      const Direction dir = effects::from_unit(Eigen::Vector3d(d.x, d.y, d.z));
-      in.left.aim.orientation = xr::look_rotation(dir.azimuth_deg, dir.altitude_deg);
-    }
-    in.left.grip = in.left.aim;
-    in.left.trigger = trigger;
+    aim_hand(in.left, {-0.2, 1.3, -0.1}, xr::look_rotation(-40.0, -30.0),
+             *ed.panel(kTimelinePanelId), aim_at, trigger);
     ed.update(sync.sync(in), t);
   };
   frame(nullptr, 0.0);  // the panels find their places
@@ -466,16 +473,8 @@ TEST(EditorTrackPanel, TheHeadsetsKeyboardStaysWhereItOpenedAndEitherRayTypesOnI
   // A frame with the head looking at azimuth `head_az` and the right hand's ray on `aim_at`.
   const auto frame = [&](double head_az, const ui::Widget* aim_at, double trigger) {
     xr::InputState in = test::looking(head_az, 0.0, ++t);
-    in.right.tracked = true;
-    in.right.aim = {{0.2, 1.3, -0.1}, xr::look_rotation(0.0, -30.0)};
-    if (aim_at) {
-      const glm::dvec3 target = ed.panel(kRenamePanelId)->world_of_pixel(aim_at->rect().centre());
-      const glm::dvec3 d = glm::normalize(target - in.right.aim.position);
-      const Direction dir = effects::from_unit(Eigen::Vector3d(d.x, d.y, d.z));
-      in.right.aim.orientation = xr::look_rotation(dir.azimuth_deg, dir.altitude_deg);
-    }
-    in.right.grip = in.right.aim;
-    in.right.trigger = trigger;
+    aim_hand(in.right, {0.2, 1.3, -0.1}, xr::look_rotation(0.0, -30.0), *ed.panel(kRenamePanelId),
+             aim_at, trigger);
     ed.update(sync.sync(in), t);
   };
   const auto press = [&](double head_az, const ui::Widget& w) {
