@@ -2,7 +2,6 @@
 /// @brief The null-space solve of the RBF saddle-point system.
 #include "effects/rbf_solve.h"
 
-#include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "effects/cholesky.h"
 #include "effects/huge_matrix.h"
 #include "effects/rbf_exact_residual.h"
 #include "effects/solve_threads.h"
@@ -209,11 +209,12 @@ Eigen::MatrixXd mirror_lower(Eigen::MatrixXd k) {
 ///
 /// Only what the solve needs of B = Q^T A Q is formed: its first r rows, and the lower triangle
 /// of the null-space block K = +-B22, factorised in place (in huge pages, no copy of the m x m
-/// matrix). The LU and least-squares fallbacks rebuild the full block when the Cholesky
-/// factorisation fails or its condition estimate is too large. The estimate (Hager and Higham's,
-/// as Eigen's LLT::rcond(): about six solves with the factor, a tenth of `vdfx eval` at m = 1000)
-/// runs on a second thread where the solve has two, while the caller solves and refines with the
-/// factor; confirm() waits for it and, where it rejects the factor, falls back: solve again.
+/// matrix; on the solve's threads, effects/cholesky.h). The LU and least-squares fallbacks rebuild
+/// the full block when the Cholesky factorisation fails or its condition estimate is too large. The
+/// estimate (Hager and Higham's, as Eigen's LLT::rcond(): about six solves with the factor, a tenth
+/// of `vdfx eval` at m = 1000) runs on a second thread where the solve has two, while the caller
+/// solves and refines with the factor; confirm() waits for it and, where it rejects the factor,
+/// falls back: solve again.
 class SaddleSolver {
  public:
   SaddleSolver(ConstMatrixRef a, const Eigen::MatrixXd& p, bool positive)
@@ -232,16 +233,17 @@ class SaddleSolver {
     sign_ = positive ? 1.0 : -1.0;
     k_.emplace(n2, n2);
     projected_lower(a, y_, v_, sign_, k_->map());
-    llt_.emplace(k_->map());
-    if (llt_->info() == Eigen::Success) {
+    const double norm1 = symmetric_norm1_lower(k_->map());
+    if (cholesky_in_place(k_->map())) {
+      factor_.emplace(k_->map(), norm1);
       method_ = RbfSolveMethod::NullSpaceCholesky;
 #if !defined(__EMSCRIPTEN__)  // the web module is built without threads
       if (solve_threads() > 1) {
-        rcond_ = std::async(std::launch::async, [this] { return llt_->rcond(); });
+        rcond_ = std::async(std::launch::async, [this] { return factor_->rcond(); });
         return;
       }
 #endif
-      if (accept(llt_->rcond())) return;
+      if (accept(factor_->rcond())) return;
     }
     fall_back(a);
   }
@@ -279,7 +281,9 @@ class SaddleSolver {
       Eigen::MatrixXd rhs = qf.bottomRows(n2);
       if (r_ > 0) rhs.noalias() -= b_top_.rightCols(n2).transpose() * y.topRows(r_);
       switch (method_) {
-        case RbfSolveMethod::NullSpaceCholesky: y.bottomRows(n2) = sign_ * llt_->solve(rhs); break;
+        case RbfSolveMethod::NullSpaceCholesky:
+          y.bottomRows(n2) = sign_ * factor_->solve(rhs);
+          break;
         case RbfSolveMethod::NullSpaceLu: y.bottomRows(n2) = lu_->solve(rhs); break;
         default: y.bottomRows(n2) = cod_->solve(rhs); break;
       }
@@ -302,7 +306,7 @@ class SaddleSolver {
 
   /// The general solvers, on the whole block rebuilt (the factorisation overwrote it).
   void fall_back(ConstMatrixRef a) {
-    llt_.reset();
+    factor_.reset();
     k_.reset();
     const Eigen::MatrixXd b22 = mirror_lower(projected_lower(a, y_, v_, 1.0));
     lu_.emplace(b22);
@@ -323,7 +327,7 @@ class SaddleSolver {
   Eigen::MatrixXd b_top_;        // the first r rows of Q^T A Q
   std::optional<HugeMatrix> k_;  // +-B22 (lower triangle), overwritten by its Cholesky factor
   double sign_ = 1.0;
-  std::optional<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower>> llt_;
+  std::optional<CholeskyFactor> factor_;  // reads k_
   std::optional<Eigen::FullPivLU<Eigen::MatrixXd>> lu_;
   std::optional<Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>> cod_;
   RbfSolveMethod method_ = RbfSolveMethod::Empty;
@@ -389,12 +393,21 @@ void solve_refined(const SaddleSolver& solver, ConstMatrixRef a, const Eigen::Ma
     return saddle_residual_dot2(a, p, f, g0, s.weights, s.coefficients, rf, rg, &floor);
   };
   Eigen::MatrixXd rf, rg;
-  // The double residual decides whether refinement is worth an exact-residual pass.
-  rf = f - a * s.weights - p * s.coefficients;
-  rg = -p.transpose() * s.weights;
-  double res = std::max(max_abs(rf), max_abs(rg));
+  // The double residual decides whether refinement is worth an exact-residual pass. From
+  // kParallelSolveMin centres refinement runs nearly always (the first residual at N = 1000 is
+  // about 1e-10 of the values) and the exact pass, on the solve's threads, decides alone: one
+  // sweep of the m x m matrix fewer.
+  const bool gate = a.rows() < kParallelSolveMin;
+  double res = 0.0;
+  if (gate) {
+    rf = f - a * s.weights - p * s.coefficients;
+    rg = -p.transpose() * s.weights;
+    res = std::max(max_abs(rf), max_abs(rg));
+  } else {
+    res = residuals(rf, rg);
+  }
   for (int step = 0; step < 3 && scale > 0.0 && res > kRefineTolerance * scale; ++step) {
-    if (step == 0) res = residuals(rf, rg);
+    if (step == 0 && gate) res = residuals(rf, rg);
     if (res <= kRefineTolerance * scale || res <= floor) break;
     Eigen::MatrixXd dw, dc;
     solver.solve(rf, rg, dw, dc);
