@@ -102,7 +102,10 @@ class TwoThreadCholesky {
   explicit TwoThreadCholesky(Matrix a) : a_(a) {}
 
   bool run() {
-    std::thread helper([this] { work(false); });
+    std::thread helper([this, cpu = current_cpu()] {
+      leave_creators_cpu(cpu);
+      work(false);
+    });
     work(true);
     helper.join();
     if (error_) std::rethrow_exception(error_);

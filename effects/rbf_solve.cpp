@@ -123,7 +123,9 @@ using ConstMatrixRef = Eigen::Ref<const Eigen::MatrixXd>;
 /// quarter of `vdfx eval`'s page faults.
 Eigen::MatrixXd symmetric_times_thin(ConstMatrixRef a, const Eigen::MatrixXd& v) {
   const Eigen::Index m = a.rows();
-  const Eigen::MatrixXd vt = v.transpose();  // r x m: each row of V^T against a column of A
+  // r x m, row-major: r contiguous dot products with each column of A (column-major, Eigen sweeps
+  // the m columns of V^T four entries at a time).
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> vt = v.transpose();
   Eigen::MatrixXd out(m, v.cols());
   parallel_parts(
       m, kParallelSolveMin, [m](int part, int parts) { return m * part / parts; },
@@ -239,7 +241,10 @@ class SaddleSolver {
       method_ = RbfSolveMethod::NullSpaceCholesky;
 #if !defined(__EMSCRIPTEN__)  // the web module is built without threads
       if (solve_threads() > 1) {
-        rcond_ = std::async(std::launch::async, [this] { return factor_->rcond(); });
+        rcond_ = std::async(std::launch::async, [this, cpu = current_cpu()] {
+          leave_creators_cpu(cpu);
+          return factor_->rcond();
+        });
         return;
       }
 #endif

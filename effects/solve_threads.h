@@ -26,6 +26,16 @@ void parallel_parts(std::ptrdiff_t n, std::ptrdiff_t min_n,
                     const std::function<std::ptrdiff_t(int k, int parts)>& cut,
                     const std::function<void(std::ptrdiff_t begin, std::ptrdiff_t end)>& fn);
 
+/// The CPU the calling thread runs on (-1 where that is not known).
+int current_cpu();
+
+/// Called first by a thread just started by one running on `creator_cpu`: moves it to another
+/// of the process's CPUs where there is one, then allows it all of them again. Linux often
+/// starts a new thread on its creator's CPU and leaves it there for milliseconds (seen on this
+/// project's 2-core machine in about half of the starts), so two threads meant to share out the
+/// solve took turns on one core. Does nothing with -1, one allowed CPU, or off Linux.
+void leave_creators_cpu(int creator_cpu);
+
 /// The cut for columns j = 0 .. n - 1 whose work is proportional to n - j (a lower triangle):
 /// equal shares of the triangle.
 std::ptrdiff_t triangle_cut(std::ptrdiff_t n, int k, int parts);

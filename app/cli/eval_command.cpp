@@ -135,7 +135,10 @@ int cmd_eval(const Args& args) {
   const std::size_t half = points.size() >= kParallelViews ? points.size() / 2 : points.size();
   std::future<std::string> rest;
   if (half < points.size())
-    rest = std::async(std::launch::async, [&] { return lines.write(all.subspan(half)); });
+    rest = std::async(std::launch::async, [&, cpu = effects::current_cpu()] {
+      effects::leave_creators_cpu(cpu);
+      return lines.write(all.subspan(half));
+    });
   lines.print(all.first(half), std::cout);
   if (rest.valid()) {
     const std::string out = rest.get();

@@ -4,10 +4,12 @@
 #include "effects/solve_threads.h"
 
 #include <gtest/gtest.h>
+#include <sched.h>
 
 #include <atomic>
 #include <random>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "effects/rbf_interpolator.h"
@@ -48,6 +50,40 @@ TEST(SolveThreads, PartsCoverTheRangeOnceAndBalanceATriangle) {
                      if (b > 0) throw std::runtime_error("part");
                    }),
                std::runtime_error);
+}
+
+TEST(SolveThreads, AHelperLeavesItsCreatorsCpuAndMayUseEveryCpuAfterwards) {
+  cpu_set_t allowed;
+  ASSERT_EQ(sched_getaffinity(0, sizeof allowed, &allowed), 0);
+  if (CPU_COUNT(&allowed) < 2)
+    GTEST_SKIP() << "this process may use one CPU only: no other CPU to leave for";
+  // Whether the scheduler starts a thread beside its creator depends on the machine's state, so
+  // the move itself is asked: a thread on CPU c that calls leave_creators_cpu(c) is elsewhere
+  // when it returns, and may again run anywhere. A busy machine (the suite runs two tests at
+  // once) may move it back before it looks: most calls, not all, are asked.
+  int elsewhere = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    std::thread helper([&] {
+      const int here = current_cpu();
+      ASSERT_GE(here, 0);
+      leave_creators_cpu(here);
+      if (sched_getcpu() != here) ++elsewhere;
+      cpu_set_t after;
+      ASSERT_EQ(sched_getaffinity(0, sizeof after, &after), 0);
+      EXPECT_TRUE(CPU_EQUAL(&after, &allowed)) << trial;
+    });
+    helper.join();
+  }
+  EXPECT_GE(elsewhere, 17);
+  // Nothing to do: an unknown CPU, or a thread already elsewhere.
+  const int here = current_cpu();
+  leave_creators_cpu(-1);
+  EXPECT_EQ(current_cpu(), here);
+  leave_creators_cpu(here == 0 ? 1 : 0);
+  EXPECT_EQ(current_cpu(), here);
+  cpu_set_t now;
+  sched_getaffinity(0, sizeof now, &now);
+  EXPECT_TRUE(CPU_EQUAL(&now, &allowed));
 }
 
 TEST(SolveThreads, TwoThreadsGiveTheSameSolveBitForBit) {
