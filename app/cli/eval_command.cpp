@@ -2,8 +2,10 @@
 /// @brief `vdfx eval SIDECAR --at AZ,ALT,FRAME [--at ...]`: the interpolated parameters of every
 /// effect, one JSON object per --at and per line (JSON Lines), for scripts.
 #include <algorithm>
+#include <exception>
 #include <future>
 #include <iostream>
+#include <optional>
 #include <span>
 #include <string>
 #include <thread>
@@ -107,15 +109,38 @@ int cmd_eval(const Args& args) {
       ->required()
       ->allow_extra_args(false);
   if (auto code = parse_cli(cli, args)) return *code;
+  // Many views: they are read on a second thread while the sidecar is read here. A bad --at
+  // still wins over a bad sidecar (a usage error, reported first, as when read in turn).
+  const auto read_points = [&at_texts] {
+    std::vector<EvalPoint> points;
+    points.reserve(at_texts.size());
+    for (const auto& t : at_texts) points.push_back(parse_eval_point(t));
+    return points;
+  };
+  std::future<std::vector<EvalPoint>> points_read;
+  if (at_texts.size() >= kParallelViews)
+    points_read = std::async(std::launch::async, [&read_points, cpu = effects::current_cpu()] {
+      effects::leave_creators_cpu(cpu);
+      return read_points();
+    });
+  std::optional<io::Sidecar> read;
+  std::exception_ptr read_error;
+  if (points_read.valid()) {
+    try {
+      read.emplace(io::read_sidecar(path));
+    } catch (...) {
+      read_error = std::current_exception();
+    }
+  }
   std::vector<EvalPoint> points;
   try {
-    for (const auto& t : at_texts) points.push_back(parse_eval_point(t));
+    points = points_read.valid() ? points_read.get() : read_points();
   } catch (const CLI::ValidationError& e) {
     std::cerr << "vdfx eval: " << e.what() << "\n";
     return kExitUsage;
   }
-
-  const io::Sidecar sidecar = io::read_sidecar(path);
+  if (read_error) std::rethrow_exception(read_error);
+  const io::Sidecar sidecar = read ? std::move(*read) : io::read_sidecar(path);
   for (const EvalPoint& p : points) {
     if (p.frame >= sidecar.video.frames)
       throw io::InputError(path + ": --at frame " + std::to_string(p.frame) +

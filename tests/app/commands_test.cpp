@@ -70,6 +70,34 @@ TEST(Commands, EvalPrintsParsableJsonPerView) {
   EXPECT_NE(beyond.output.find("frame 5"), std::string::npos) << beyond.output;
 }
 
+TEST(Commands, EvalManyViewsPrintsThemInOrderAndABadViewWinsOverABadSidecar) {
+  // From 64 views eval reads the views beside the sidecar and evaluates the second half on a
+  // second thread: the lines still follow the options, and the errors come as read in turn.
+  const auto dir = test_dir();
+  write_text(dir / "s.vdfx.json", exposure_sidecar());
+  std::string views;
+  for (int i = 0; i < 150; ++i) views += " --at " + std::to_string(-149 + 2 * i) + ",0,0";
+  const CommandResult r = run_vdfx("eval " + (dir / "s.vdfx.json").string() + views);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::istringstream lines(r.output);
+  std::string line;
+  int n = 0;
+  while (std::getline(lines, line)) {
+    const nlohmann::json j = nlohmann::json::parse(line);
+    ASSERT_DOUBLE_EQ(j["at"]["azimuth_deg"].get<double>(), -149.0 + 2 * n) << n;
+    ++n;
+  }
+  EXPECT_EQ(n, 150);
+
+  const std::string missing = (dir / "missing.vdfx.json").string();
+  const CommandResult bad_view = run_vdfx("eval " + missing + views + " --at 0,0,x");
+  EXPECT_EQ(bad_view.exit_code, 2) << bad_view.output;
+  EXPECT_NE(bad_view.output.find("'0,0,x'"), std::string::npos) << bad_view.output;
+  const CommandResult bad_file = run_vdfx("eval " + missing + views);
+  EXPECT_EQ(bad_file.exit_code, 1) << bad_file.output;
+  EXPECT_NE(bad_file.output.find("missing.vdfx.json"), std::string::npos) << bad_file.output;
+}
+
 TEST(Commands, RenderViewAndPixelModes) {
   const auto dir = test_dir();
   write_test_panorama(dir);
