@@ -1,6 +1,11 @@
 /// @file
 /// @brief `vdfx eval SIDECAR --at AZ,ALT,FRAME [--at ...]`: the interpolated parameters of every
 /// effect, one JSON object per --at and per line (JSON Lines), for scripts.
+#if defined(__linux__)
+#include <fcntl.h>
+#include <unistd.h>
+#endif
+
 #include <algorithm>
 #include <exception>
 #include <future>
@@ -28,6 +33,8 @@ namespace {
 constexpr std::size_t kParallelViews = 64;
 /// Views formatted between two writes to standard output.
 constexpr std::size_t kChunkViews = 128;
+/// About the length of one view's line with the six effects and no flare or grain.
+constexpr std::size_t kLineBytes = 420;
 
 /// One JSON object per view and line: "at", "effects" (io::append_stack_params_json), then the
 /// flares' intensities and the grains' intensities and sizes, in file order.
@@ -92,6 +99,19 @@ struct EvalLines {
     out += "]}\n";
   }
 };
+
+/// Lets a pipe on standard output hold about `bytes` (Linux, at most 1 MiB: the unprivileged
+/// maximum by default). The lines for thousands of views are most of a megabyte, and through a
+/// 64 KiB pipe eval waits for its reader after every 64 KiB; a file or a terminal is left as it
+/// is, and so is the pipe where the system refuses.
+void widen_stdout_pipe(std::size_t bytes) {
+#if defined(__linux__)
+  constexpr std::size_t kMost = std::size_t{1} << 20;
+  (void)fcntl(STDOUT_FILENO, F_SETPIPE_SZ, static_cast<int>(std::min(bytes, kMost)));
+#else
+  (void)bytes;
+#endif
+}
 
 }  // namespace
 
@@ -158,6 +178,7 @@ int cmd_eval(const Args& args) {
   // order of the --at options.
   const std::span<const EvalPoint> all(points);
   const std::size_t half = points.size() >= kParallelViews ? points.size() / 2 : points.size();
+  if (half < points.size()) widen_stdout_pipe(points.size() * kLineBytes);
   std::future<std::string> rest;
   if (half < points.size())
     rest = std::async(std::launch::async, [&, cpu = effects::current_cpu()] {
