@@ -7,7 +7,9 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "effects/solve_threads.h"
@@ -101,13 +103,11 @@ class TwoThreadCholesky {
  public:
   explicit TwoThreadCholesky(Matrix a) : a_(a) {}
 
-  bool run() {
-    std::thread helper([this, cpu = current_cpu()] {
-      leave_creators_cpu(cpu);
-      work(false);
-    });
-    work(true);
-    helper.join();
+  /// Nothing where the helpers are not to be had (the parts then run in turn: the caller's job).
+  std::optional<bool> run() {
+    // Both parts at once or neither: each waits for the other between the phases.
+    const std::function<void()> tasks[] = {[this] { work(true); }, [this] { work(false); }};
+    if (!try_run_on_helpers(tasks)) return std::nullopt;
     if (error_) std::rethrow_exception(error_);
     return definite_;
   }
@@ -163,7 +163,8 @@ bool cholesky_in_place(Eigen::Ref<Eigen::MatrixXd> a) {
   if (n < kParallelSolveMin)
     return Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(a) == -1;
 #if !defined(__EMSCRIPTEN__)  // the web module is built without threads
-  if (solve_threads() > 1) return TwoThreadCholesky(a).run();
+  if (solve_threads() > 1)
+    if (const std::optional<bool> definite = TwoThreadCholesky(a).run()) return *definite;
 #endif
   for (Index k = 0; k < n; k += kCholeskyBlock) {
     BlockStep step(a, k);

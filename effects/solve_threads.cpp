@@ -2,6 +2,9 @@
 /// @brief The solve's thread count and its split of independent loops.
 #include "effects/solve_threads.h"
 
+#if !defined(__EMSCRIPTEN__)
+#include <pthread.h>
+#endif
 #if defined(__linux__) && !defined(__EMSCRIPTEN__)
 #include <sched.h>
 #define VDFX_CPU_AFFINITY 1
@@ -9,8 +12,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <exception>
+#include <memory>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -54,6 +61,120 @@ void leave_creators_cpu(int creator_cpu) {
 #endif
 }
 
+namespace {
+
+#if !defined(__EMSCRIPTEN__)
+/// The helper threads, started when first needed and kept: a thread's start and its move off
+/// its creator's CPU cost about 0.1 ms, and one solve shares out a dozen loops. One caller at a
+/// time; another (or a task that shares out a loop of its own) runs its tasks in turn instead.
+class HelperPool {
+ public:
+  static HelperPool& get() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+      // A child forked while helpers ran has none: it starts its own.
+      pthread_atfork(nullptr, nullptr, [] { pool() = new HelperPool; });
+    });
+    return *pool();
+  }
+
+  /// False, running nothing, where another caller holds the helpers.
+  bool try_run(std::span<const std::function<void()>> tasks) {
+    std::unique_lock<std::mutex> caller(caller_, std::try_to_lock);
+    if (!caller.owns_lock()) return false;
+    const int cpu = current_cpu();
+    while (helpers_.size() + 1 < tasks.size()) helpers_.push_back(std::make_unique<Helper>(cpu));
+    for (std::size_t k = 1; k < tasks.size(); ++k) helpers_[k - 1]->post(&tasks[k]);
+    tasks[0]();
+    for (std::size_t k = 1; k < tasks.size(); ++k) helpers_[k - 1]->wait();
+    return true;
+  }
+
+ private:
+  /// One kept thread: waits for a task, runs it, says so.
+  class Helper {
+   public:
+    explicit Helper(int creator_cpu) {
+      std::thread([this, creator_cpu] {
+        leave_creators_cpu(creator_cpu);
+        loop();
+      }).detach();  // kept for the process's life, as the pool is
+    }
+    void post(const std::function<void()>* task) {
+      done_.store(false, std::memory_order_relaxed);
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        task_.store(task, std::memory_order_release);
+      }
+      wake_.notify_one();
+    }
+    /// Until the posted task has run (the parts are of equal work: a short wait, spun).
+    void wait() const {
+      for (int spins = 0; !done_.load(std::memory_order_acquire); ++spins)
+        if (spins > 4000) std::this_thread::yield();
+    }
+
+   private:
+    void loop() {
+      for (;;) {
+        (*next())();  // the callers' tasks catch their own exceptions (parallel_parts' do)
+        task_.store(nullptr, std::memory_order_relaxed);
+        done_.store(true, std::memory_order_release);
+      }
+    }
+    /// The next task: looked for without sleeping for kStayAwake after the last one (a solve's
+    /// loops come a fraction of a millisecond apart; waking a sleeping thread took about 50 us on
+    /// this project's virtual machine), then waited for.
+    const std::function<void()>* next() {
+      const auto until = std::chrono::steady_clock::now() + kStayAwake;
+      for (unsigned spins = 1;; ++spins) {
+        if (const auto* task = task_.load(std::memory_order_acquire)) return task;
+#if defined(__x86_64__)
+        __builtin_ia32_pause();
+#endif
+        if (spins % 256 == 0 && std::chrono::steady_clock::now() > until) break;
+      }
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [this] { return task_.load(std::memory_order_acquire) != nullptr; });
+      return task_.load(std::memory_order_acquire);
+    }
+
+    static constexpr std::chrono::milliseconds kStayAwake{2};
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::atomic<const std::function<void()>*> task_{nullptr};
+    std::atomic<bool> done_{true};
+  };
+
+  static HelperPool*& pool() {
+    static HelperPool* p = new HelperPool;  // never destroyed: its threads outlive main
+    return p;
+  }
+
+  std::mutex caller_;
+  std::vector<std::unique_ptr<Helper>> helpers_;
+};
+#endif
+
+}  // namespace
+
+bool try_run_on_helpers(std::span<const std::function<void()>> tasks) {
+#if defined(__EMSCRIPTEN__)  // the web module is built without threads
+  return tasks.empty();
+#else
+  if (tasks.size() <= 1) {
+    for (const auto& task : tasks) task();
+    return true;
+  }
+  return HelperPool::get().try_run(tasks);
+#endif
+}
+
+void run_on_helpers(std::span<const std::function<void()>> tasks) {
+  if (!try_run_on_helpers(tasks))
+    for (const auto& task : tasks) task();
+}
+
 void parallel_parts(std::ptrdiff_t n, std::ptrdiff_t min_n,
                     const std::function<std::ptrdiff_t(int k, int parts)>& cut,
                     const std::function<void(std::ptrdiff_t begin, std::ptrdiff_t end)>& fn) {
@@ -69,24 +190,17 @@ void parallel_parts(std::ptrdiff_t n, std::ptrdiff_t min_n,
   std::vector<std::ptrdiff_t> at{0};
   for (int k = 1; k < parts; ++k) at.push_back(std::clamp(cut(k, parts), at.back(), n));
   at.push_back(n);
-  std::vector<std::thread> helpers;
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(parts));
-  const int cpu = current_cpu();
-  for (int k = 1; k < parts; ++k)
-    helpers.emplace_back([&, k] {
-      leave_creators_cpu(cpu);
+  std::vector<std::function<void()>> tasks;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(parts); ++k)
+    tasks.emplace_back([&, k] {
       try {
-        fn(at[static_cast<std::size_t>(k)], at[static_cast<std::size_t>(k) + 1]);
+        fn(at[k], at[k + 1]);
       } catch (...) {
-        errors[static_cast<std::size_t>(k)] = std::current_exception();
+        errors[k] = std::current_exception();
       }
     });
-  try {
-    fn(at[0], at[1]);
-  } catch (...) {
-    errors[0] = std::current_exception();
-  }
-  for (std::thread& t : helpers) t.join();
+  run_on_helpers(tasks);
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
 }
