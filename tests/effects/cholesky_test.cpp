@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
+#include <functional>
 #include <limits>
 #include <random>
 
@@ -81,6 +82,19 @@ TEST(Cholesky, TwoThreadsGiveTheSameFactorBitForBit) {
     const Eigen::MatrixXd l2 = two.triangularView<Eigen::Lower>();
     EXPECT_EQ(l1, l2) << n;
   }
+}
+
+TEST(Cholesky, WhereTheHelpersAreTakenItFactorsInTurnToTheSameBits) {
+  // Inside a task the helpers are held by its caller: the two parts, each waiting for the other
+  // between the phases, must not be started one after the other; the factor comes in turn.
+  const Eigen::MatrixXd a = spd(600, 13);
+  const ThreadsScope scope(2);
+  const Eigen::MatrixXd alone = factor(a);
+  Eigen::MatrixXd inside;
+  const std::function<void()> tasks[] = {[&] { inside = factor(a); }, [] {}};
+  ASSERT_TRUE(try_run_on_helpers(tasks));
+  EXPECT_EQ(Eigen::MatrixXd(inside.triangularView<Eigen::Lower>()),
+            Eigen::MatrixXd(alone.triangularView<Eigen::Lower>()));
 }
 
 TEST(Cholesky, RefusesAnIndefiniteMatrixOnOneThreadAndOnTwo) {

@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 #include <sched.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
+#include <functional>
 #include <random>
 #include <stdexcept>
 #include <thread>
@@ -84,6 +87,50 @@ TEST(SolveThreads, AHelperLeavesItsCreatorsCpuAndMayUseEveryCpuAfterwards) {
   cpu_set_t now;
   sched_getaffinity(0, sizeof now, &now);
   EXPECT_TRUE(CPU_EQUAL(&now, &allowed));
+}
+
+TEST(SolveThreads, HelpersRunEachTaskOnceBesideTheCallerAndAreNotNested) {
+  std::vector<std::thread::id> ran(3);
+  std::atomic<int> inner_ran{0};
+  std::atomic<bool> nested_refused{false};
+  const std::function<void()> tasks[] = {
+      [&] { ran[0] = std::this_thread::get_id(); },
+      [&] {
+        ran[1] = std::this_thread::get_id();
+        // A task asking for the helpers gets none: they are held by its caller.
+        const std::function<void()> inner[] = {[&] { ++inner_ran; }, [&] { ++inner_ran; }};
+        nested_refused = !try_run_on_helpers(inner);
+        run_on_helpers(inner);  // in turn, here
+      },
+      [&] { ran[2] = std::this_thread::get_id(); }};
+  for (int round = 0; round < 3; ++round) {  // the same kept threads, again
+    inner_ran = 0;
+    ASSERT_TRUE(try_run_on_helpers(tasks));
+    EXPECT_EQ(ran[0], std::this_thread::get_id());
+    EXPECT_NE(ran[1], ran[0]);
+    EXPECT_NE(ran[2], ran[0]);
+    EXPECT_NE(ran[2], ran[1]);
+    EXPECT_TRUE(nested_refused);
+    EXPECT_EQ(inner_ran, 2);
+  }
+}
+
+TEST(SolveThreads, AChildForkedAfterTheHelpersRanGetsHelpersOfItsOwn) {
+  const std::function<void()> warm[] = {[] {}, [] {}};
+  ASSERT_TRUE(try_run_on_helpers(warm));
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    // The parent's helper threads are not in the child: waiting on them would never end.
+    std::atomic<int> ran{0};
+    const std::function<void()> tasks[] = {[&] { ++ran; }, [&] { ++ran; }};
+    const bool ok = try_run_on_helpers(tasks) && ran == 2;
+    _exit(ok ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
 }
 
 TEST(SolveThreads, TwoThreadsGiveTheSameSolveBitForBit) {
