@@ -35,6 +35,14 @@ int solve_threads() {
   return g_threads.load(std::memory_order_relaxed);
 }
 
+int usable_cpus() {
+#if defined(VDFX_CPU_AFFINITY)
+  cpu_set_t allowed;
+  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) return std::max(1, CPU_COUNT(&allowed));
+#endif
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
 int current_cpu() {
 #if defined(VDFX_CPU_AFFINITY)
   return sched_getcpu();

@@ -36,6 +36,10 @@ void parallel_parts(std::ptrdiff_t n, std::ptrdiff_t min_n,
                     const std::function<std::ptrdiff_t(int k, int parts)>& cut,
                     const std::function<void(std::ptrdiff_t begin, std::ptrdiff_t end)>& fn);
 
+/// The CPUs this process may run on (its affinity mask: a container or `taskset` may allow
+/// fewer than the machine has), at least 1.
+int usable_cpus();
+
 /// The CPU the calling thread runs on (-1 where that is not known).
 int current_cpu();
 

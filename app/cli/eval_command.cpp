@@ -167,8 +167,9 @@ int cmd_eval(const Args& args) {
                            " is beyond the video's " + std::to_string(sidecar.video.frames) +
                            " frames (/video/frames)");
   }
-  // Nothing else runs in this process: the solve's independent loops may use every core.
-  effects::set_solve_threads(static_cast<int>(std::thread::hardware_concurrency()));
+  // Nothing else runs in this process: the solve's independent loops may use every core it is
+  // allowed (two threads on one allowed core would take turns, spinning while they wait).
+  effects::set_solve_threads(effects::usable_cpus());
   const effects::StackInterpolator stack = io::stack_of(sidecar);
   const effects::FlareSet flares = io::flare_set_of(sidecar);
   const effects::GrainSet grains = io::grain_set_of(sidecar);

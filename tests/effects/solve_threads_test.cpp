@@ -78,6 +78,7 @@ TEST(SolveThreads, AHelperLeavesItsCreatorsCpuAndMayUseEveryCpuAfterwards) {
     helper.join();
   }
   EXPECT_GE(elsewhere, 17);
+  EXPECT_EQ(usable_cpus(), CPU_COUNT(&allowed));
   // Nothing to do: an unknown CPU, or a thread already elsewhere.
   const int here = current_cpu();
   leave_creators_cpu(-1);
@@ -125,6 +126,23 @@ TEST(SolveThreads, AChildForkedAfterTheHelpersRanGetsHelpersOfItsOwn) {
     std::atomic<int> ran{0};
     const std::function<void()> tasks[] = {[&] { ++ran; }, [&] { ++ran; }};
     const bool ok = try_run_on_helpers(tasks) && ran == 2;
+    _exit(ok ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+}
+
+TEST(SolveThreads, UsableCpusAreTheOnesTheProcessIsAllowed) {
+  // In a child, so that this process keeps its CPUs: allowed one, it counts one.
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(current_cpu(), &one);
+    const bool ok = sched_setaffinity(0, sizeof one, &one) == 0 && usable_cpus() == 1;
     _exit(ok ? 0 : 1);
   }
   int status = 0;
