@@ -4,13 +4,10 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
-#include <atomic>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <functional>
-#include <mutex>
-#include <optional>
-#include <thread>
 
 #include "effects/solve_threads.h"
 
@@ -23,26 +20,6 @@ using Eigen::Index;
 
 /// Right-hand sides up to which CholeskyFactor::solve goes a column at a time.
 constexpr Eigen::Index kVectorSolves = 4;
-
-/// Two threads meeting between the factorisation's phases. Spins (a phase is a fraction of a
-/// millisecond), yielding the core after a while in case the other thread is not running.
-class Barrier {
- public:
-  void wait() {
-    const unsigned phase = phase_.load(std::memory_order_acquire);
-    if (arrived_.fetch_add(1, std::memory_order_acq_rel) == 1) {
-      arrived_.store(0, std::memory_order_relaxed);
-      phase_.store(phase + 1, std::memory_order_release);
-      return;
-    }
-    for (int spins = 0; phase_.load(std::memory_order_acquire) == phase; ++spins)
-      if (spins > 2000) std::this_thread::yield();
-  }
-
- private:
-  std::atomic<int> arrived_{0};
-  std::atomic<unsigned> phase_{0};
-};
 
 /// Start of part p (of kCholeskyParts) of n items, rounded to whole 8-row kernel panels.
 Index even_cut(Index n, int p) {
@@ -97,64 +74,25 @@ class BlockStep {
   Index k_, w_;
 };
 
-/// The factorisation on two threads: the calling one factorises each diagonal block, then both
-/// take the panel's parts, then the trailing update's parts, meeting between the phases.
-class TwoThreadCholesky {
- public:
-  explicit TwoThreadCholesky(Matrix a) : a_(a) {}
-
-  /// Nothing where the helpers are not to be had (the parts then run in turn: the caller's job).
-  std::optional<bool> run() {
-    // Both parts at once or neither: each waits for the other between the phases.
-    const std::function<void()> tasks[] = {[this] { work(true); }, [this] { work(false); }};
-    if (!try_run_on_helpers(tasks)) return std::nullopt;
-    if (error_) std::rethrow_exception(error_);
-    return definite_;
-  }
-
- private:
-  void work(bool leader) {
-    for (Index k = 0; k < a_.rows(); k += kCholeskyBlock) {
-      BlockStep step(a_, k);
-      if (leader) {
-        guarded([&] { definite_ = definite_ && step.factor_diagonal(); });
-        // Decided once, before the threads meet, so that both stop at the same step.
-        stop_ = !definite_ || failed_.load(std::memory_order_acquire);
-        next_panel_.store(0, std::memory_order_relaxed);
-        next_update_.store(0, std::memory_order_relaxed);
+/// fn(p) for each part p, the parts shared out to the solve's threads (effects/solve_threads.h:
+/// each taken by whichever thread comes first). An exception (Eigen's allocations) reaches the
+/// caller once every part has ended.
+template <typename Fn>
+void run_parts(const Fn& fn) {
+  std::array<std::exception_ptr, kCholeskyParts> errors;
+  std::array<std::function<void()>, kCholeskyParts> tasks;
+  for (int p = 0; p < kCholeskyParts; ++p)
+    tasks[static_cast<std::size_t>(p)] = [&fn, &errors, p] {
+      try {
+        fn(p);
+      } catch (...) {
+        errors[static_cast<std::size_t>(p)] = std::current_exception();
       }
-      barrier_.wait();
-      if (stop_) return;
-      for (int p; (p = next_panel_.fetch_add(1)) < kCholeskyParts;)
-        guarded([&] { step.solve_panel(p); });
-      barrier_.wait();
-      for (int p; (p = next_update_.fetch_add(1)) < kCholeskyParts;)
-        guarded([&] { step.update_trailing(p); });
-      barrier_.wait();
-    }
-  }
-
-  /// Runs fn; an exception (Eigen's allocations) is kept for the caller, and both threads stop
-  /// at the next block column.
-  template <typename Fn>
-  void guarded(Fn&& fn) {
-    try {
-      fn();
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(error_mutex_);
-      if (!error_) error_ = std::current_exception();
-      failed_.store(true, std::memory_order_release);
-    }
-  }
-
-  Matrix a_;
-  Barrier barrier_;
-  std::atomic<int> next_panel_{0}, next_update_{0};
-  bool definite_ = true, stop_ = false;  // written by the leader before a barrier, read after it
-  std::atomic<bool> failed_{false};
-  std::mutex error_mutex_;
-  std::exception_ptr error_;
-};
+    };
+  run_on_helpers(tasks);
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
 
 }  // namespace
 
@@ -162,15 +100,11 @@ bool cholesky_in_place(Eigen::Ref<Eigen::MatrixXd> a) {
   const Index n = a.rows();
   if (n < kParallelSolveMin)
     return Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(a) == -1;
-#if !defined(__EMSCRIPTEN__)  // the web module is built without threads
-  if (solve_threads() > 1)
-    if (const std::optional<bool> definite = TwoThreadCholesky(a).run()) return *definite;
-#endif
   for (Index k = 0; k < n; k += kCholeskyBlock) {
     BlockStep step(a, k);
     if (!step.factor_diagonal()) return false;
-    for (int p = 0; p < kCholeskyParts; ++p) step.solve_panel(p);
-    for (int p = 0; p < kCholeskyParts; ++p) step.update_trailing(p);
+    run_parts([&step](int p) { step.solve_panel(p); });
+    run_parts([&step](int p) { step.update_trailing(p); });
   }
   return true;
 }

@@ -7,7 +7,8 @@
 /// own blocked LLT), the panel below it is solved against that factor, and the trailing lower
 /// triangle is updated with the panel (a symmetric rank-k update and a matrix product). The
 /// panel's rows and the trailing columns are cut into kCholeskyParts fixed parts of equal work,
-/// which the threads take in turn: a part is the same Eigen call whichever thread runs it, so the
+/// each taken by whichever of the solve's threads comes first (a thread the system does not run
+/// meanwhile holds nothing up): a part is the same Eigen call whichever thread runs it, so the
 /// factor has the same bits on one thread as on two. Below kParallelSolveMin columns it is
 /// Eigen's LLT itself.
 #pragma once
@@ -18,7 +19,7 @@ namespace vdfx::effects {
 
 /// Columns per block column (a multiple of the GEMM kernels' 4- and 8-row panels).
 inline constexpr Eigen::Index kCholeskyBlock = 96;
-/// Parts of a panel's rows and of a trailing update, taken by the threads in turn.
+/// Parts of a panel's rows and of a trailing update, taken by whichever thread comes first.
 inline constexpr int kCholeskyParts = 4;
 
 /// Factorises the symmetric positive definite matrix whose lower triangle `a` holds:

@@ -73,8 +73,11 @@ namespace {
 
 #if !defined(__EMSCRIPTEN__)
 /// The helper threads, started when first needed and kept: a thread's start and its move off
-/// its creator's CPU cost about 0.1 ms, and one solve shares out a dozen loops. One caller at a
-/// time; another (or a task that shares out a loop of its own) runs its tasks in turn instead.
+/// its creator's CPU cost about 0.1 ms, and one solve shares out a dozen loops. A run's tasks
+/// are claimed one at a time by whichever thread comes first, the caller included, and the
+/// caller waits only for tasks a helper has claimed: a helper that the system does not run
+/// meanwhile (the other core busy) holds nothing up. One caller at a time; another (or a task
+/// that shares out a loop of its own) runs its tasks in turn instead.
 class HelperPool {
  public:
   static HelperPool& get() {
@@ -88,18 +91,43 @@ class HelperPool {
 
   /// False, running nothing, where another caller holds the helpers.
   bool try_run(std::span<const std::function<void()>> tasks) {
-    std::unique_lock<std::mutex> caller(caller_, std::try_to_lock);
-    if (!caller.owns_lock()) return false;
+    // A flag, not a mutex: the caller's own tasks may ask again (a mutex's owner may not).
+    bool expected = false;
+    if (!busy_.compare_exchange_strong(expected, true, std::memory_order_acquire)) return false;
+    struct Release {
+      std::atomic<bool>& busy;
+      ~Release() { busy.store(false, std::memory_order_release); }
+    } release{busy_};
     const int cpu = current_cpu();
-    while (helpers_.size() + 1 < tasks.size()) helpers_.push_back(std::make_unique<Helper>(cpu));
-    for (std::size_t k = 1; k < tasks.size(); ++k) helpers_[k - 1]->post(&tasks[k]);
-    tasks[0]();
-    for (std::size_t k = 1; k < tasks.size(); ++k) helpers_[k - 1]->wait();
+    const std::size_t wanted =
+        std::min(tasks.size(), static_cast<std::size_t>(solve_threads())) - 1;
+    while (helpers_.size() < wanted) helpers_.push_back(std::make_unique<Helper>(cpu));
+    const auto job = std::make_shared<Job>(tasks);
+    for (std::size_t h = 0; h < wanted; ++h) helpers_[h]->post(job);
+    job->work();
+    // Only tasks already claimed are waited for (each is a fraction of a millisecond): spun.
+    for (int spins = 0; job->done.load(std::memory_order_acquire) < tasks.size(); ++spins)
+      if (spins > 4000) std::this_thread::yield();
     return true;
   }
 
  private:
-  /// One kept thread: waits for a task, runs it, says so.
+  /// One run's tasks. Shared with the helpers: one that looks only after the run has ended
+  /// finds nothing left to claim and never reads the tasks (the caller's, gone by then).
+  struct Job {
+    explicit Job(std::span<const std::function<void()>> t) : tasks(t) {}
+    /// Claims and runs tasks until none is left.
+    void work() {
+      for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < tasks.size();) {
+        tasks[k]();  // the callers' tasks catch their own exceptions (parallel_parts' do)
+        done.fetch_add(1, std::memory_order_release);
+      }
+    }
+    std::span<const std::function<void()>> tasks;
+    std::atomic<std::size_t> next{0}, done{0};
+  };
+
+  /// One kept thread: waits for a run, helps with it.
   class Helper {
    public:
     explicit Helper(int creator_cpu) {
@@ -108,50 +136,49 @@ class HelperPool {
         loop();
       }).detach();  // kept for the process's life, as the pool is
     }
-    void post(const std::function<void()>* task) {
-      done_.store(false, std::memory_order_relaxed);
+    void post(std::shared_ptr<Job> job) {
       {
         const std::lock_guard<std::mutex> lock(mutex_);
-        task_.store(task, std::memory_order_release);
+        job_ = std::move(job);
+        posted_.fetch_add(1, std::memory_order_release);
       }
       wake_.notify_one();
-    }
-    /// Until the posted task has run (the parts are of equal work: a short wait, spun).
-    void wait() const {
-      for (int spins = 0; !done_.load(std::memory_order_acquire); ++spins)
-        if (spins > 4000) std::this_thread::yield();
     }
 
    private:
     void loop() {
-      for (;;) {
-        (*next())();  // the callers' tasks catch their own exceptions (parallel_parts' do)
-        task_.store(nullptr, std::memory_order_relaxed);
-        done_.store(true, std::memory_order_release);
+      for (unsigned seen = 0;;) {
+        wait_for_post(seen);
+        std::shared_ptr<Job> job;
+        {
+          const std::lock_guard<std::mutex> lock(mutex_);
+          seen = posted_.load(std::memory_order_relaxed);
+          job = std::move(job_);
+        }
+        if (job) job->work();
       }
     }
-    /// The next task: looked for without sleeping for kStayAwake after the last one (a solve's
-    /// loops come a fraction of a millisecond apart; waking a sleeping thread took about 50 us on
-    /// this project's virtual machine), then waited for.
-    const std::function<void()>* next() {
+    /// Until a run is posted after the `seen`th: looked for without sleeping for kStayAwake (a
+    /// solve's loops come a fraction of a millisecond apart; waking a sleeping thread took about
+    /// 50 us on this project's virtual machine), then waited for.
+    void wait_for_post(unsigned seen) {
       const auto until = std::chrono::steady_clock::now() + kStayAwake;
       for (unsigned spins = 1;; ++spins) {
-        if (const auto* task = task_.load(std::memory_order_acquire)) return task;
+        if (posted_.load(std::memory_order_acquire) != seen) return;
 #if defined(__x86_64__)
         __builtin_ia32_pause();
 #endif
         if (spins % 256 == 0 && std::chrono::steady_clock::now() > until) break;
       }
       std::unique_lock<std::mutex> lock(mutex_);
-      wake_.wait(lock, [this] { return task_.load(std::memory_order_acquire) != nullptr; });
-      return task_.load(std::memory_order_acquire);
+      wake_.wait(lock, [&] { return posted_.load(std::memory_order_relaxed) != seen; });
     }
 
     static constexpr std::chrono::milliseconds kStayAwake{2};
     std::mutex mutex_;
     std::condition_variable wake_;
-    std::atomic<const std::function<void()>*> task_{nullptr};
-    std::atomic<bool> done_{true};
+    std::shared_ptr<Job> job_;
+    std::atomic<unsigned> posted_{0};
   };
 
   static HelperPool*& pool() {
@@ -159,7 +186,7 @@ class HelperPool {
     return p;
   }
 
-  std::mutex caller_;
+  std::atomic<bool> busy_{false};  // a run is under way
   std::vector<std::unique_ptr<Helper>> helpers_;
 };
 #endif

@@ -20,16 +20,17 @@ inline constexpr std::ptrdiff_t kParallelSolveMin = 384;
 void set_solve_threads(int threads);
 int solve_threads();
 
-/// Runs tasks[0] on the calling thread and the others on helper threads kept for the process
-/// (started when first needed, each moved off its creator's CPU), returning when all have
-/// ended: true. False, running none of them, where another caller holds the helpers (or a task
-/// asks for them itself), and in the web module. Tasks must not throw.
+/// Runs the tasks on the calling thread and solve_threads() - 1 helper threads kept for the
+/// process (started when first needed, each moved off its creator's CPU), each task taken by
+/// whichever thread comes first, the caller waiting only for tasks a helper has taken; returns
+/// when all have ended: true. False, running none of them, where another caller holds the
+/// helpers (or a task asks for them itself), and in the web module. Tasks must not throw.
 bool try_run_on_helpers(std::span<const std::function<void()>> tasks);
 
 /// The same, running the tasks on the calling thread in turn where the helpers are not to be had.
 void run_on_helpers(std::span<const std::function<void()>> tasks);
 
-/// Runs fn(begin, end) over [0, n) in solve_threads() parts, the first on the calling thread;
+/// Runs fn(begin, end) over [0, n) in solve_threads() parts (run_on_helpers);
 /// parts end at `cut(k, parts)` (k = 1 .. parts - 1, ascending), so the caller can balance
 /// uneven work. One part (n below `min_n`, or one thread) runs inline.
 void parallel_parts(std::ptrdiff_t n, std::ptrdiff_t min_n,

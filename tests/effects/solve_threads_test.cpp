@@ -8,7 +8,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <random>
 #include <stdexcept>
@@ -91,41 +93,74 @@ TEST(SolveThreads, AHelperLeavesItsCreatorsCpuAndMayUseEveryCpuAfterwards) {
 }
 
 TEST(SolveThreads, HelpersRunEachTaskOnceBesideTheCallerAndAreNotNested) {
-  std::vector<std::thread::id> ran(3);
-  std::atomic<int> inner_ran{0};
-  std::atomic<bool> nested_refused{false};
-  const std::function<void()> tasks[] = {
-      [&] { ran[0] = std::this_thread::get_id(); },
-      [&] {
-        ran[1] = std::this_thread::get_id();
-        // A task asking for the helpers gets none: they are held by its caller.
-        const std::function<void()> inner[] = {[&] { ++inner_ran; }, [&] { ++inner_ran; }};
-        nested_refused = !try_run_on_helpers(inner);
-        run_on_helpers(inner);  // in turn, here
-      },
-      [&] { ran[2] = std::this_thread::get_id(); }};
-  for (int round = 0; round < 3; ++round) {  // the same kept threads, again
-    inner_ran = 0;
+  const ThreadsScope scope(2);
+  for (int round = 0; round < 3; ++round) {  // the same kept helper, again
+    std::array<std::atomic<int>, 6> runs{};
+    std::array<std::thread::id, 2> first_two;
+    std::atomic<bool> second_started{false};
+    std::atomic<int> inner_ran{0};
+    std::atomic<bool> nested_refused{false};
+    std::vector<std::function<void()>> tasks;
+    // Tasks 0 and 1 are taken first, one by each thread: task 0 waits (5 s at most) until
+    // task 1 has started, which it can only on the other thread.
+    tasks.emplace_back([&] {
+      ++runs[0];
+      first_two[0] = std::this_thread::get_id();
+      const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+      while (!second_started && std::chrono::steady_clock::now() < until) {
+      }
+    });
+    tasks.emplace_back([&] {
+      ++runs[1];
+      first_two[1] = std::this_thread::get_id();
+      second_started = true;
+      // A task asking for the helpers gets none: they are held by its caller.
+      const std::function<void()> inner[] = {[&] { ++inner_ran; }, [&] { ++inner_ran; }};
+      nested_refused = !try_run_on_helpers(inner);
+      run_on_helpers(inner);  // in turn, here
+    });
+    for (std::size_t k = 2; k < runs.size(); ++k) tasks.emplace_back([&, k] { ++runs[k]; });
     ASSERT_TRUE(try_run_on_helpers(tasks));
-    EXPECT_EQ(ran[0], std::this_thread::get_id());
-    EXPECT_NE(ran[1], ran[0]);
-    EXPECT_NE(ran[2], ran[0]);
-    EXPECT_NE(ran[2], ran[1]);
-    EXPECT_TRUE(nested_refused);
-    EXPECT_EQ(inner_ran, 2);
+    for (const auto& r : runs) EXPECT_EQ(r.load(), 1) << round;
+    EXPECT_NE(first_two[0], first_two[1]) << round;
+    EXPECT_TRUE(nested_refused) << round;
+    EXPECT_EQ(inner_ran, 2) << round;
   }
+  // On one thread the caller runs every task itself.
+  set_solve_threads(1);
+  std::vector<std::thread::id> ran(3);
+  const std::function<void()> alone[] = {[&] { ran[0] = std::this_thread::get_id(); },
+                                         [&] { ran[1] = std::this_thread::get_id(); },
+                                         [&] { ran[2] = std::this_thread::get_id(); }};
+  ASSERT_TRUE(try_run_on_helpers(alone));
+  for (const auto& id : ran) EXPECT_EQ(id, std::this_thread::get_id());
 }
 
 TEST(SolveThreads, AChildForkedAfterTheHelpersRanGetsHelpersOfItsOwn) {
+  const ThreadsScope scope(2);
   const std::function<void()> warm[] = {[] {}, [] {}};
   ASSERT_TRUE(try_run_on_helpers(warm));
   const pid_t child = fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
     // The parent's helper threads are not in the child: waiting on them would never end.
+    // Task 0 waits (5 s at most) for task 1 to start: on a second thread, the child's own.
+    std::atomic<bool> second{false};
     std::atomic<int> ran{0};
-    const std::function<void()> tasks[] = {[&] { ++ran; }, [&] { ++ran; }};
-    const bool ok = try_run_on_helpers(tasks) && ran == 2;
+    const std::function<void()> tasks[] = {
+        [&] {
+          ++ran;
+          const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+          while (!second && std::chrono::steady_clock::now() < until) {
+          }
+        },
+        [&] {
+          ++ran;
+          second = true;
+        }};
+    const auto start = std::chrono::steady_clock::now();
+    const bool ok = try_run_on_helpers(tasks) && ran == 2 &&
+                    std::chrono::steady_clock::now() - start < std::chrono::seconds(4);
     _exit(ok ? 0 : 1);
   }
   int status = 0;
