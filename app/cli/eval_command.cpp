@@ -31,10 +31,6 @@ namespace {
 
 /// Views up to which eval stays on one thread.
 constexpr std::size_t kParallelViews = 64;
-/// Views formatted between two writes to standard output.
-constexpr std::size_t kChunkViews = 128;
-/// About the length of one view's line with the six effects and no flare or grain.
-constexpr std::size_t kLineBytes = 420;
 
 /// One JSON object per view and line: "at", "effects" (io::append_stack_params_json), then the
 /// flares' intensities and the grains' intensities and sizes, in file order.
@@ -54,17 +50,6 @@ struct EvalLines {
     out.reserve(out.size() * points.size() * 5 / 4);
     for (const EvalPoint& p : points.subspan(1)) write_one(p, out);
     return out;
-  }
-
-  /// The lines of `points` printed to `os` a chunk at a time from one buffer.
-  void print(std::span<const EvalPoint> points, std::ostream& os) const {
-    std::string chunk;
-    for (std::size_t at = 0; at < points.size(); at += kChunkViews) {
-      chunk.clear();
-      for (const EvalPoint& p : points.subspan(at, std::min(kChunkViews, points.size() - at)))
-        write_one(p, chunk);
-      os.write(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-    }
   }
 
   void write_one(const EvalPoint& p, std::string& out) const {
@@ -100,10 +85,10 @@ struct EvalLines {
   }
 };
 
-/// Lets a pipe on standard output hold about `bytes` (Linux, at most 1 MiB: the unprivileged
-/// maximum by default). The lines for thousands of views are most of a megabyte, and through a
-/// 64 KiB pipe eval waits for its reader after every 64 KiB; a file or a terminal is left as it
-/// is, and so is the pipe where the system refuses.
+/// Lets a pipe on standard output hold `bytes` (Linux, at most 1 MiB: the unprivileged maximum by
+/// default). The lines for thousands of views are most of a megabyte, and through a 64 KiB pipe
+/// eval waits for its reader after every 64 KiB; a file or a terminal is left as it is, and so
+/// is the pipe where the system refuses.
 void widen_stdout_pipe(std::size_t bytes) {
 #if defined(__linux__)
   constexpr std::size_t kMost = std::size_t{1} << 20;
@@ -174,23 +159,22 @@ int cmd_eval(const Args& args) {
   const effects::FlareSet flares = io::flare_set_of(sidecar);
   const effects::GrainSet grains = io::grain_set_of(sidecar);
   const EvalLines lines{path, stack, flares, grains};
-  // Many views: the second half on a second thread (the interpolators are immutable) into one
-  // string, printed after the first half, which is printed as it is formatted: the lines in the
-  // order of the --at options.
+  // Many views: the second half on a second thread (the interpolators are immutable). Nothing is
+  // printed before every view has been evaluated (a view whose parameters are not finite is an
+  // error, with no line printed before it), then the halves in the order of the --at options.
   const std::span<const EvalPoint> all(points);
   const std::size_t half = points.size() >= kParallelViews ? points.size() / 2 : points.size();
-  if (half < points.size()) widen_stdout_pipe(points.size() * kLineBytes);
   std::future<std::string> rest;
   if (half < points.size())
     rest = std::async(std::launch::async, [&, cpu = effects::current_cpu()] {
       effects::leave_creators_cpu(cpu);
       return lines.write(all.subspan(half));
     });
-  lines.print(all.first(half), std::cout);
-  if (rest.valid()) {
-    const std::string out = rest.get();
-    std::cout.write(out.data(), static_cast<std::streamsize>(out.size()));
-  }
+  const std::string first = lines.write(all.first(half));
+  const std::string second = rest.valid() ? rest.get() : std::string();
+  if (!second.empty()) widen_stdout_pipe(first.size() + second.size());
+  std::cout.write(first.data(), static_cast<std::streamsize>(first.size()));
+  std::cout.write(second.data(), static_cast<std::streamsize>(second.size()));
   std::cout << std::flush;
   return kExitOk;
 }
