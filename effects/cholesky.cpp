@@ -4,10 +4,7 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <exception>
-#include <functional>
 
 #include "effects/solve_threads.h"
 
@@ -74,26 +71,6 @@ class BlockStep {
   Index k_, w_;
 };
 
-/// fn(p) for each part p, the parts shared out to the solve's threads (effects/solve_threads.h:
-/// each taken by whichever thread comes first). An exception (Eigen's allocations) reaches the
-/// caller once every part has ended.
-template <typename Fn>
-void run_parts(const Fn& fn) {
-  std::array<std::exception_ptr, kCholeskyParts> errors;
-  std::array<std::function<void()>, kCholeskyParts> tasks;
-  for (int p = 0; p < kCholeskyParts; ++p)
-    tasks[static_cast<std::size_t>(p)] = [&fn, &errors, p] {
-      try {
-        fn(p);
-      } catch (...) {
-        errors[static_cast<std::size_t>(p)] = std::current_exception();
-      }
-    };
-  run_on_helpers(tasks);
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
-}
-
 }  // namespace
 
 bool cholesky_in_place(Eigen::Ref<Eigen::MatrixXd> a) {
@@ -103,8 +80,9 @@ bool cholesky_in_place(Eigen::Ref<Eigen::MatrixXd> a) {
   for (Index k = 0; k < n; k += kCholeskyBlock) {
     BlockStep step(a, k);
     if (!step.factor_diagonal()) return false;
-    run_parts([&step](int p) { step.solve_panel(p); });
-    run_parts([&step](int p) { step.update_trailing(p); });
+    // The parts are taken by whichever of the solve's threads comes first.
+    for_each_part(kCholeskyParts, [&step](int p) { step.solve_panel(p); });
+    for_each_part(kCholeskyParts, [&step](int p) { step.update_trailing(p); });
   }
   return true;
 }

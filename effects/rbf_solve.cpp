@@ -241,10 +241,7 @@ class SaddleSolver {
       method_ = RbfSolveMethod::NullSpaceCholesky;
 #if !defined(__EMSCRIPTEN__)  // the web module is built without threads
       if (solve_threads() > 1) {
-        rcond_ = std::async(std::launch::async, [this, cpu = current_cpu()] {
-          leave_creators_cpu(cpu);
-          return factor_->rcond();
-        });
+        rcond_ = async_beside([this] { return factor_->rcond(); });
         return;
       }
 #endif

@@ -210,6 +210,22 @@ void run_on_helpers(std::span<const std::function<void()>> tasks) {
     for (const auto& task : tasks) task();
 }
 
+void for_each_part(int parts, const std::function<void(int part)>& fn) {
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(parts));
+  std::vector<std::function<void()>> tasks;
+  for (int k = 0; k < parts; ++k)
+    tasks.emplace_back([&fn, &errors, k] {
+      try {
+        fn(k);
+      } catch (...) {
+        errors[static_cast<std::size_t>(k)] = std::current_exception();
+      }
+    });
+  run_on_helpers(tasks);
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
 void parallel_parts(std::ptrdiff_t n, std::ptrdiff_t min_n,
                     const std::function<std::ptrdiff_t(int k, int parts)>& cut,
                     const std::function<void(std::ptrdiff_t begin, std::ptrdiff_t end)>& fn) {
@@ -225,19 +241,9 @@ void parallel_parts(std::ptrdiff_t n, std::ptrdiff_t min_n,
   std::vector<std::ptrdiff_t> at{0};
   for (int k = 1; k < parts; ++k) at.push_back(std::clamp(cut(k, parts), at.back(), n));
   at.push_back(n);
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(parts));
-  std::vector<std::function<void()>> tasks;
-  for (std::size_t k = 0; k < static_cast<std::size_t>(parts); ++k)
-    tasks.emplace_back([&, k] {
-      try {
-        fn(at[k], at[k + 1]);
-      } catch (...) {
-        errors[k] = std::current_exception();
-      }
-    });
-  run_on_helpers(tasks);
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
+  for_each_part(parts, [&at, &fn](int k) {
+    fn(at[static_cast<std::size_t>(k)], at[static_cast<std::size_t>(k) + 1]);
+  });
 }
 
 std::ptrdiff_t triangle_cut(std::ptrdiff_t n, int k, int parts) {

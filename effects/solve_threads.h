@@ -9,7 +9,9 @@
 
 #include <cstddef>
 #include <functional>
+#include <future>
 #include <span>
+#include <type_traits>
 
 namespace vdfx::effects {
 
@@ -30,7 +32,11 @@ bool try_run_on_helpers(std::span<const std::function<void()>> tasks);
 /// The same, running the tasks on the calling thread in turn where the helpers are not to be had.
 void run_on_helpers(std::span<const std::function<void()>> tasks);
 
-/// Runs fn(begin, end) over [0, n) in solve_threads() parts (run_on_helpers);
+/// fn(part) for part = 0 .. parts - 1 through run_on_helpers; an exception thrown by a part
+/// reaches the caller once every part has ended (the first part's, where several throw).
+void for_each_part(int parts, const std::function<void(int part)>& fn);
+
+/// Runs fn(begin, end) over [0, n) in solve_threads() parts (for_each_part);
 /// parts end at `cut(k, parts)` (k = 1 .. parts - 1, ascending), so the caller can balance
 /// uneven work. One part (n below `min_n`, or one thread) runs inline.
 void parallel_parts(std::ptrdiff_t n, std::ptrdiff_t min_n,
@@ -54,5 +60,14 @@ void leave_creators_cpu(int creator_cpu);
 /// The cut for columns j = 0 .. n - 1 whose work is proportional to n - j (a lower triangle):
 /// equal shares of the triangle.
 std::ptrdiff_t triangle_cut(std::ptrdiff_t n, int k, int parts);
+
+/// Starts fn() on a new thread moved off the caller's CPU (leave_creators_cpu), as std::async.
+template <typename Fn>
+auto async_beside(Fn fn) -> std::future<std::invoke_result_t<Fn&>> {
+  return std::async(std::launch::async, [fn = std::move(fn), cpu = current_cpu()]() mutable {
+    leave_creators_cpu(cpu);
+    return fn();
+  });
+}
 
 }  // namespace vdfx::effects

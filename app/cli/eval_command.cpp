@@ -13,7 +13,6 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <thread>
 
 #include "app/cli/cli_util.h"
 #include "app/cli/command_functions.h"
@@ -114,8 +113,8 @@ int cmd_eval(const Args& args) {
       ->required()
       ->allow_extra_args(false);
   if (auto code = parse_cli(cli, args)) return *code;
-  // Many views: they are read on a second thread while the sidecar is read here. A bad --at
-  // still wins over a bad sidecar (a usage error, reported first, as when read in turn).
+  // Many views are read on a second thread while the sidecar is read here. A bad --at still wins
+  // over a bad sidecar (a usage error, reported first).
   const auto read_points = [&at_texts] {
     std::vector<EvalPoint> points;
     points.reserve(at_texts.size());
@@ -123,19 +122,13 @@ int cmd_eval(const Args& args) {
     return points;
   };
   std::future<std::vector<EvalPoint>> points_read;
-  if (at_texts.size() >= kParallelViews)
-    points_read = std::async(std::launch::async, [&read_points, cpu = effects::current_cpu()] {
-      effects::leave_creators_cpu(cpu);
-      return read_points();
-    });
+  if (at_texts.size() >= kParallelViews) points_read = effects::async_beside(read_points);
   std::optional<io::Sidecar> read;
   std::exception_ptr read_error;
-  if (points_read.valid()) {
-    try {
-      read.emplace(io::read_sidecar(path));
-    } catch (...) {
-      read_error = std::current_exception();
-    }
+  try {
+    read.emplace(io::read_sidecar(path));
+  } catch (...) {
+    read_error = std::current_exception();
   }
   std::vector<EvalPoint> points;
   try {
@@ -145,7 +138,7 @@ int cmd_eval(const Args& args) {
     return kExitUsage;
   }
   if (read_error) std::rethrow_exception(read_error);
-  const io::Sidecar sidecar = read ? std::move(*read) : io::read_sidecar(path);
+  const io::Sidecar& sidecar = *read;
   for (const EvalPoint& p : points) {
     if (p.frame >= sidecar.video.frames)
       throw io::InputError(path + ": --at frame " + std::to_string(p.frame) +
@@ -166,10 +159,7 @@ int cmd_eval(const Args& args) {
   const std::size_t half = points.size() >= kParallelViews ? points.size() / 2 : points.size();
   std::future<std::string> rest;
   if (half < points.size())
-    rest = std::async(std::launch::async, [&, cpu = effects::current_cpu()] {
-      effects::leave_creators_cpu(cpu);
-      return lines.write(all.subspan(half));
-    });
+    rest = effects::async_beside([&] { return lines.write(all.subspan(half)); });
   const std::string first = lines.write(all.first(half));
   const std::string second = rest.valid() ? rest.get() : std::string();
   if (!second.empty()) widen_stdout_pipe(first.size() + second.size());

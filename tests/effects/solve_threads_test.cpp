@@ -30,6 +30,22 @@ struct ThreadsScope {
   ~ThreadsScope() { set_solve_threads(1); }
 };
 
+/// Spins until `flag` is set, 5 s at most (a task waiting for another to start beside it).
+void spin_until(const std::atomic<bool>& flag) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (!flag && std::chrono::steady_clock::now() < until) {
+  }
+}
+
+/// Whether `check` returns true in a forked child (this process keeps its threads and CPUs).
+bool true_in_child(const std::function<bool()>& check) {
+  const pid_t child = fork();
+  if (child == 0) _exit(check() ? 0 : 1);
+  int status = 0;
+  return child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) &&
+         WEXITSTATUS(status) == 0;
+}
+
 TEST(SolveThreads, PartsCoverTheRangeOnceAndBalanceATriangle) {
   const ThreadsScope scope(3);
   std::vector<std::atomic<int>> seen(1000);
@@ -106,9 +122,7 @@ TEST(SolveThreads, HelpersRunEachTaskOnceBesideTheCallerAndAreNotNested) {
     tasks.emplace_back([&] {
       ++runs[0];
       first_two[0] = std::this_thread::get_id();
-      const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-      while (!second_started && std::chrono::steady_clock::now() < until) {
-      }
+      spin_until(second_started);
     });
     tasks.emplace_back([&] {
       ++runs[1];
@@ -140,50 +154,33 @@ TEST(SolveThreads, AChildForkedAfterTheHelpersRanGetsHelpersOfItsOwn) {
   const ThreadsScope scope(2);
   const std::function<void()> warm[] = {[] {}, [] {}};
   ASSERT_TRUE(try_run_on_helpers(warm));
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
+  EXPECT_TRUE(true_in_child([] {
     // The parent's helper threads are not in the child: waiting on them would never end.
     // Task 0 waits (5 s at most) for task 1 to start: on a second thread, the child's own.
     std::atomic<bool> second{false};
     std::atomic<int> ran{0};
-    const std::function<void()> tasks[] = {
-        [&] {
-          ++ran;
-          const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-          while (!second && std::chrono::steady_clock::now() < until) {
-          }
-        },
-        [&] {
-          ++ran;
-          second = true;
-        }};
+    const std::function<void()> tasks[] = {[&] {
+                                             ++ran;
+                                             spin_until(second);
+                                           },
+                                           [&] {
+                                             ++ran;
+                                             second = true;
+                                           }};
     const auto start = std::chrono::steady_clock::now();
-    const bool ok = try_run_on_helpers(tasks) && ran == 2 &&
-                    std::chrono::steady_clock::now() - start < std::chrono::seconds(4);
-    _exit(ok ? 0 : 1);
-  }
-  int status = 0;
-  ASSERT_EQ(waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0);
+    return try_run_on_helpers(tasks) && ran == 2 &&
+           std::chrono::steady_clock::now() - start < std::chrono::seconds(4);
+  }));
 }
 
 TEST(SolveThreads, UsableCpusAreTheOnesTheProcessIsAllowed) {
   // In a child, so that this process keeps its CPUs: allowed one, it counts one.
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
+  EXPECT_TRUE(true_in_child([] {
     cpu_set_t one;
     CPU_ZERO(&one);
     CPU_SET(current_cpu(), &one);
-    const bool ok = sched_setaffinity(0, sizeof one, &one) == 0 && usable_cpus() == 1;
-    _exit(ok ? 0 : 1);
-  }
-  int status = 0;
-  ASSERT_EQ(waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0);
+    return sched_setaffinity(0, sizeof one, &one) == 0 && usable_cpus() == 1;
+  }));
 }
 
 TEST(SolveThreads, TwoThreadsGiveTheSameSolveBitForBit) {
